@@ -1,0 +1,168 @@
+"""The constant-lightness parallelepiped clip (Smits & Meyer 1990, Section 3.2).
+
+Stage 3 of the pipeline. An out-of-gamut colour is pulled along the ray towards
+the grey of the same luminance Y on the display's neutral diagonal (black to the
+display's white, R = G = B -- not x = y = z) until it meets the display's RGB
+parallelepiped. Y is preserved; saturation drops; hue moves a little (more where a
+gamut face is nearly parallel to the plane of constant Y).
+
+Two forms with identical results (tested to 1e-9):
+
+- :func:`clip_XYZ` -- the paper's form in CIE XYZ: a Cohen-Sutherland style outcode
+  test against the six planes of the parallelepiped (three through the origin,
+  three parallel to them), the grey point ``W * Y / Y_W``, up to three plane
+  intersections, keep the one furthest from the input.
+- :func:`clip_RGB` -- the faster form the paper mentions for colours already in the
+  display's linear RGB: the same ray test against the unit cube.
+
+Defined behaviour at every edge (both forms, float32 or float64 in, same dtype out):
+
+- in-gamut colours are returned unchanged (bit for bit);
+- ``Y <= 0`` gives black, ``Y >= Y_W`` gives white;
+- a NaN anywhere in a pixel gives NaN in that pixel only;
+- components are first limited to +-1e100, so +-Inf and huge values give a finite,
+  in-gamut result (the limit of the clip as the component grows);
+- a colour exactly on a face or edge is inside; rays nearly parallel to a face are
+  fine because every division is by ``grey - value`` of a channel that is out of
+  [0, 1] while the grey is inside (0, 1), so its magnitude exceeds min(g, 1 - g).
+
+Baselines for comparison: :func:`clamp_RGB` (per-channel clamp) and
+:func:`aces_gamut_compress_RGB` (OCIO's ACES 1.3 reference gamut compression).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import colorimetry
+
+__all__ = [
+    "DISPLAYS",
+    "LIMIT",
+    "clip_XYZ",
+    "clip_RGB",
+    "in_gamut",
+    "clamp_RGB",
+    "aces_gamut_compress_RGB",
+    "ACES_GAMUT_COMP13_PARAMS",
+]
+
+#: The display gamuts we ship, by the name used in the OCIO config.
+DISPLAYS = ("sRGB", "Display P3", "Rec.2020")
+
+#: Magnitude to which components are limited before clipping (+-Inf included).
+LIMIT = 1e100
+
+#: OCIO ACES_GamutComp13 parameters: limits (cyan, magenta, yellow), thresholds
+#: (cyan, magenta, yellow), power -- the ACES 1.3 reference gamut compression.
+ACES_GAMUT_COMP13_PARAMS = (1.147, 1.264, 1.312, 0.815, 0.803, 0.880, 1.2)
+
+
+def _display_matrix(display: str) -> np.ndarray:
+    if display not in colorimetry.RGB_SPACES:
+        raise ValueError(f"display must be one of {DISPLAYS}, got {display!r}")
+    return colorimetry.matrix_XYZ_to_RGB(display)
+
+
+def _prepare(values, name):
+    """Float64 (N, 3) working copy, its original shape/dtype, and the NaN rows."""
+    a = np.asarray(values)
+    if a.ndim == 0 or a.shape[-1] != 3:
+        raise ValueError(f"{name} must have a last axis of length 3, got shape {a.shape}")
+    dtype = a.dtype if a.dtype in (np.float32, np.float64) else np.float64
+    work = a.reshape(-1, 3).astype(np.float64)
+    nan_rows = np.isnan(work).any(axis=1)
+    work = np.clip(np.nan_to_num(work, nan=0.0), -LIMIT, LIMIT)
+    return work, a.shape, dtype, nan_rows
+
+
+def _finish(out, shape, dtype, nan_rows):
+    out[nan_rows] = np.nan
+    return out.reshape(shape).astype(dtype, copy=False)
+
+
+def _fraction_to_boundary(value, grey, lower, upper):
+    """Per channel, the fraction ``t`` of the way from the grey to ``value`` at which
+    the ray leaves the slab ``lower <= . <= upper`` (1 when it never does).
+
+    ``value``/``lower``/``upper``: (N, 3); ``grey``: (N, 3), strictly inside the slab.
+    This is the paper's plane intersection ``s`` written as ``t = 1 - s`` so that
+    huge inputs do not cancel: ``t = (grey - bound) / (grey - value)``.
+    """
+    t = np.ones_like(value)
+    below = value < lower
+    above = value > upper
+    np.divide(grey - lower, grey - value, out=t, where=below)
+    np.divide(grey - upper, grey - value, out=t, where=above)
+    return t, below | above
+
+
+def clip_RGB(RGB, display: str = "sRGB"):
+    """Constant-lightness clip of display-linear RGB into the unit cube.
+
+    ``RGB`` is any array with a last axis of 3 in the linear RGB of ``display``
+    (RGB = 1 is the display's white). Returns the clipped RGB, same shape and dtype.
+    """
+    M = _display_matrix(display)
+    luminance = np.linalg.inv(M)[1]  # Y = luminance . RGB
+    rgb, shape, dtype, nan_rows = _prepare(RGB, "RGB")
+    Y = rgb @ luminance
+    grey = np.clip(Y / luminance.sum(), 0.0, 1.0)[:, None] * np.ones(3)
+    t, outside = _fraction_to_boundary(rgb, grey, 0.0, 1.0)
+    t = t.min(axis=1, keepdims=True)
+    clipped = np.clip(grey + t * (rgb - grey), 0.0, 1.0)
+    out = np.where(outside.any(axis=1, keepdims=True), clipped, rgb)
+    out[Y <= 0.0] = 0.0
+    out[Y >= luminance.sum()] = 1.0
+    return _finish(out, shape, dtype, nan_rows)
+
+
+def clip_XYZ(XYZ, display: str = "sRGB"):
+    """Constant-lightness clip of D65-relative XYZ into ``display``'s gamut (the
+    paper's XYZ form). Returns XYZ, same shape and dtype.
+
+    1. Outcodes: for each plane pair ``n_j . X = 0`` and ``n_j . X = 1`` (``n_j`` the
+       rows of the XYZ -> RGB matrix) the colour is below, between or above.
+    2. Grey point on the neutral diagonal at the colour's Y: ``G = W Y / Y_W``,
+       ``W`` the display white (RGB = 1), not x = y = z.
+    3. The ray from X towards G meets each plane the colour is outside of; the
+       intersection furthest from X (smallest remaining fraction t) is the result.
+    """
+    M = _display_matrix(display)
+    white = np.linalg.inv(M) @ np.ones(3)
+    xyz, shape, dtype, nan_rows = _prepare(XYZ, "XYZ")
+    Y = xyz[:, 1]
+    grey = np.clip(Y / white[1], 0.0, 1.0)[:, None] * white
+    plane_value = xyz @ M.T  # signed position against the three plane pairs
+    grey_value = grey @ M.T
+    t, outside = _fraction_to_boundary(plane_value, grey_value, 0.0, 1.0)
+    t = t.min(axis=1, keepdims=True)
+    out = np.where(outside.any(axis=1, keepdims=True), grey + t * (xyz - grey), xyz)
+    out[Y <= 0.0] = 0.0
+    out[Y >= white[1]] = white
+    return _finish(out, shape, dtype, nan_rows)
+
+
+def in_gamut(RGB, tolerance: float = 0.0):
+    """True where all channels lie in [-tolerance, 1 + tolerance]."""
+    a = np.asarray(RGB)
+    return np.all((a >= -tolerance) & (a <= 1.0 + tolerance), axis=-1)
+
+
+def clamp_RGB(RGB):
+    """Baseline: the per-channel clamp to [0, 1] (NaN stays NaN)."""
+    return np.clip(np.asarray(RGB), 0.0, 1.0)
+
+
+def aces_gamut_compress_RGB(RGB):
+    """Baseline: OCIO's ACES 1.3 reference gamut compression (``ACES_GamutComp13``)
+    applied to display-linear RGB, then a clamp to [0, 1]. Runs through an OCIO CPU
+    processor; returns float32."""
+    import PyOpenColorIO as ocio
+
+    transform = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
+                                            list(ACES_GAMUT_COMP13_PARAMS))
+    cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
+    a = np.ascontiguousarray(np.asarray(RGB, dtype=np.float32).reshape(-1, 3))
+    cpu.applyRGB(a)
+    return np.clip(a.reshape(np.shape(RGB)), 0.0, 1.0)

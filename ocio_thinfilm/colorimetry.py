@@ -1,0 +1,208 @@
+"""Colorimetry: reflectance spectra -> CIE XYZ -> linear RGB (paper Section 2.1).
+
+Stage 2 of the pipeline. Matching functions, illuminants and RGB colourspaces all
+come from colour-science's datasets; nothing here is a typed-in matrix.
+
+Conventions
+-----------
+- XYZ is relative: the perfect reflector (R == 1) under the chosen illuminant has
+  Y = 1 (CIE 1931 2 degree observer and D65 by default).
+- RGB matrices map that D65-relative XYZ to linear RGB with RGB = (1, 1, 1) at the
+  colourspace's white; spaces whose white is not D65 (ACES) get a Bradford
+  adaptation from D65.
+
+Public functions
+----------------
+- :func:`spectral_weights` -- (W, 3) integration weights for a wavelength grid
+- :func:`reflectance_to_XYZ` -- weights applied to a spectrum array
+- :func:`film_XYZ` -- XYZ of the paper's single-film models (band-limited by default)
+- :func:`morpho_XYZ` -- XYZ of the Morpho multilayer (Eq. 9 + 14) against angle
+- :func:`matrix_XYZ_to_RGB`, :func:`XYZ_to_RGB`, :func:`RGB_to_XYZ`
+- :func:`white_XYZ`, :func:`delta_E2000`, :func:`spectral_locus_XYZ`
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from . import spectra
+
+__all__ = [
+    "DEFAULT_OBSERVER",
+    "DEFAULT_ILLUMINANT",
+    "RGB_SPACES",
+    "spectral_weights",
+    "reflectance_to_XYZ",
+    "film_XYZ",
+    "morpho_XYZ",
+    "matrix_XYZ_to_RGB",
+    "XYZ_to_RGB",
+    "RGB_to_XYZ",
+    "white_XYZ",
+    "delta_E2000",
+    "spectral_locus_XYZ",
+]
+
+DEFAULT_OBSERVER = "CIE 1931 2 Degree Standard Observer"
+DEFAULT_ILLUMINANT = "D65"
+
+#: Our names for RGB spaces -> colour-science colourspace names.
+RGB_SPACES = {
+    "sRGB": "sRGB",
+    "Rec.709": "ITU-R BT.709",
+    "Display P3": "Display P3",
+    "Rec.2020": "ITU-R BT.2020",
+    "ACEScg": "ACEScg",
+    "ACES2065-1": "ACES2065-1",
+}
+
+FILM_KINDS = ("phase-change", "no-phase-change")
+
+
+@lru_cache(maxsize=32)
+def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray:
+    import colour
+
+    wl = np.asarray(wl_key)
+    try:
+        cmfs = colour.MSDS_CMFS[observer]
+    except KeyError:
+        raise ValueError(f"observer must be one of colour.MSDS_CMFS, got {observer!r}") from None
+    try:
+        sd = colour.SDS_ILLUMINANTS[illuminant]
+    except KeyError:
+        raise ValueError(
+            f"illuminant must be one of colour.SDS_ILLUMINANTS, got {illuminant!r}") from None
+    # colour-science interpolates (Sprague for the 1 nm CMFs / 5 nm D65) and holds the
+    # end values constant outside the tabulated range.
+    cmf = np.asarray(cmfs.copy().extrapolate(colour.SpectralShape(wl.min(), wl.max(), 1))[wl])
+    s = np.asarray(sd.copy().extrapolate(colour.SpectralShape(wl.min(), wl.max(), 1))[wl])
+    lower, upper = spectra.bin_edges(wl)
+    w = cmf * (s * (upper - lower))[:, None]  # bin widths: trapezoid rule
+    return w / w[:, 1].sum()
+
+
+def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
+                     illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+    """Integration weights ``W`` (shape (len(wavelengths), 3)) so that
+    ``XYZ = R @ W`` and the perfect reflector has Y = 1.
+
+    ``W[i] = cmf(l_i) S(l_i) (upper_i - lower_i) / sum(ybar S dl)`` with the bins
+    of :func:`ocio_thinfilm.spectra.bin_edges`: the trapezoid rule on the grid, and
+    the exact integral of a bin-averaged (band-limited) spectrum.
+    """
+    wl = spectra.check_wavelengths(wavelengths)
+    return _weights_cached(tuple(wl.tolist()), observer, illuminant).copy()
+
+
+def reflectance_to_XYZ(reflectance, wavelengths, observer: str = DEFAULT_OBSERVER,
+                       illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+    """Relative XYZ of reflectance spectra whose last axis is ``wavelengths``."""
+    return np.asarray(reflectance) @ spectral_weights(wavelengths, observer, illuminant)
+
+
+def _chunked_XYZ(model, values, wavelengths, observer, illuminant, chunk=4096):
+    """Apply ``model(values_chunk) -> spectra`` and integrate, chunk by chunk (memory)."""
+    values = np.asarray(values, dtype=np.float64)
+    flat = values.reshape(-1)
+    w = spectral_weights(wavelengths, observer, illuminant)
+    out = np.empty((flat.size, 3))
+    for start in range(0, flat.size, chunk):
+        out[start:start + chunk] = model(flat[start:start + chunk]) @ w
+    return out.reshape(values.shape + (3,))
+
+
+def film_XYZ(optical_thickness_nm, kind: str = "phase-change", *, step: float = 5.0,
+             band_limited: bool = True, wavelengths=None, observer: str = DEFAULT_OBSERVER,
+             illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+    """XYZ of the paper's single film (Eq. 7 or 8) against optical thickness t' (nm).
+
+    ``kind`` is ``"phase-change"`` (Eq. 7) or ``"no-phase-change"`` (Eq. 8). The
+    spectrum is sampled every ``step`` nm over 360-780 nm unless ``wavelengths`` is
+    given; ``band_limited`` integrates each bin exactly (see :mod:`.spectra`).
+    """
+    if kind not in FILM_KINDS:
+        raise ValueError(f"kind must be one of {FILM_KINDS}, got {kind!r}")
+    wl = spectra.wavelength_grid(step=step) if wavelengths is None else wavelengths
+
+    def model(t):
+        return spectra.two_beam_reflectance(t, wl, phase_change=kind == "phase-change",
+                                            band_limited=band_limited)
+
+    return _chunked_XYZ(model, optical_thickness_nm, wl, observer, illuminant)
+
+
+def morpho_XYZ(theta_degrees, *, layers: int = spectra.MORPHO["layers"], d1=spectra.MORPHO["d1"],
+               d2=spectra.MORPHO["d2"], n=spectra.MORPHO["n"], step: float = 5.0,
+               band_limited: bool = True, wavelengths=None, observer: str = DEFAULT_OBSERVER,
+               illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+    """XYZ of the Morpho multilayer (Eq. 9 with the Eq. 14 thickness) against the
+    viewing angle in degrees."""
+    wl = spectra.wavelength_grid(step=step) if wavelengths is None else wavelengths
+
+    def model(theta):
+        t = spectra.morpho_layer_thickness(theta, d1, d2, n)
+        return spectra.multilayer_reflectance(t, wl, layers, band_limited=band_limited)
+
+    return _chunked_XYZ(model, theta_degrees, wl, observer, illuminant)
+
+
+@lru_cache(maxsize=16)
+def _matrix_cached(space: str) -> np.ndarray:
+    import colour
+
+    if space == "CIE-XYZ-D65":
+        return np.eye(3)
+    if space not in RGB_SPACES:
+        raise ValueError(f"space must be one of {sorted(RGB_SPACES)}, got {space!r}")
+    cs = colour.RGB_COLOURSPACES[RGB_SPACES[space]]
+    # Normalised primary matrix from the primaries and white: RGB = 1 is the white.
+    rgb_to_xyz = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
+    d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
+    if not np.allclose(cs.whitepoint, d65, atol=1e-4):
+        cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
+            colour.xy_to_XYZ(d65), colour.xy_to_XYZ(cs.whitepoint), transform="Bradford")
+        return np.linalg.inv(rgb_to_xyz) @ cat
+    return np.linalg.inv(rgb_to_xyz)
+
+
+def matrix_XYZ_to_RGB(space: str = "sRGB") -> np.ndarray:
+    """3x3 matrix from D65-relative XYZ to the linear RGB of ``space``."""
+    return _matrix_cached(space).copy()
+
+
+def XYZ_to_RGB(XYZ, space: str = "sRGB") -> np.ndarray:
+    """Linear RGB of ``space`` from D65-relative XYZ (last axis 3)."""
+    return np.asarray(XYZ) @ _matrix_cached(space).T
+
+
+def RGB_to_XYZ(RGB, space: str = "sRGB") -> np.ndarray:
+    """D65-relative XYZ from linear RGB of ``space`` (last axis 3)."""
+    return np.asarray(RGB) @ np.linalg.inv(_matrix_cached(space)).T
+
+
+def white_XYZ(space: str = "sRGB") -> np.ndarray:
+    """XYZ of the colourspace's white, RGB = (1, 1, 1)."""
+    return RGB_to_XYZ(np.ones(3), space)
+
+
+def delta_E2000(XYZ_a, XYZ_b) -> np.ndarray:
+    """CIE Delta E 2000 between two D65-relative XYZ arrays (via CIELAB, D65 white)."""
+    import colour
+
+    d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
+    lab_a = colour.XYZ_to_Lab(np.asarray(XYZ_a, dtype=np.float64), d65)
+    lab_b = colour.XYZ_to_Lab(np.asarray(XYZ_b, dtype=np.float64), d65)
+    return colour.delta_E(lab_a, lab_b, method="CIE 2000")
+
+
+def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
+    """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs
+    (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm."""
+    import colour
+
+    wl = np.arange(380.0, 701.0) if wavelengths is None else spectra.check_wavelengths(wavelengths)
+    xyz = np.asarray(colour.MSDS_CMFS[DEFAULT_OBSERVER][wl])
+    return xyz * (Y / xyz[:, 1:2])

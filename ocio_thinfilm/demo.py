@@ -1,0 +1,66 @@
+"""``ocio-thinfilm demo``: the colour of a soap film, and a strip of Newton's colours."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import clip, colorimetry, spectra
+from .io import write_image
+
+SOAP_INDEX = 1.33
+
+
+def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 0.0) -> dict:
+    """Every stage's value for one soap film (phase change, n = 1.33)."""
+    t_opt = spectra.optical_thickness(thickness_nm, SOAP_INDEX, theta)
+    XYZ = colorimetry.film_XYZ(t_opt)
+    rgb = colorimetry.XYZ_to_RGB(XYZ, display)
+    clipped = clip.clip_RGB(rgb, display)
+    return {"optical_thickness_nm": float(t_opt), "XYZ": XYZ, "linear_rgb": rgb,
+            "clipped_rgb": clipped, "encoded": _encode(clipped)}
+
+
+def _encode(rgb):
+    import colour
+
+    return colour.cctf_encoding(np.clip(rgb, 0, 1), function="sRGB")
+
+
+def soap_strip(width: int = 1024, height: int = 96, max_thickness_nm: float = 2000.0,
+               display: str = "sRGB") -> np.ndarray:
+    """Display-encoded strip of soap-film colours, physical thickness 0..max left to
+    right. Top half: constant-lightness clip; bottom half: per-channel clamp."""
+    t = np.linspace(0.0, max_thickness_nm, width)
+    rgb = colorimetry.XYZ_to_RGB(colorimetry.film_XYZ(spectra.optical_thickness(t, SOAP_INDEX)),
+                                 display)
+    top = _encode(clip.clip_RGB(rgb, display))
+    bottom = _encode(clip.clamp_RGB(rgb))
+    rows = [top] * (height // 2) + [bottom] * (height - height // 2)
+    return np.stack(rows).astype(np.float32)
+
+
+def run(args) -> int:
+    result = soap_film_colour(args.thickness)
+    print(f"Soap film, n = {SOAP_INDEX}, t = {args.thickness:g} nm, normal incidence "
+          f"(t' = {result['optical_thickness_nm']:g} nm)")
+    print(f"  XYZ (D65, Y_white = 1)      {np.array2string(result['XYZ'], precision=4)}")
+    print(f"  linear sRGB, unclipped      {np.array2string(result['linear_rgb'], precision=4)}")
+    print(f"  constant-lightness clip     {np.array2string(result['clipped_rgb'], precision=4)}")
+    code = "#" + "".join(f"{int(round(v * 255)):02X}" for v in result["encoded"])
+    print(f"  sRGB-encoded                {code}")
+    out = Path(args.out)
+    write_image(out, soap_strip())
+    print(f"wrote {out}: soap-film colours for 0-2 um (top: constant-lightness clip, "
+          "bottom: channel clamp)")
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("demo", help="print a soap film's colour and write a strip of "
+                                    "Newton's colours")
+    p.add_argument("--thickness", type=float, default=300.0,
+                   help="physical film thickness in nm (default 300)")
+    p.add_argument("--out", default="docs/soap_strip.png", help="PNG to write")
+    p.set_defaults(func=run)
