@@ -48,6 +48,9 @@ def main(argv=None) -> int:
     except (UsageError, ValueError) as error:
         print(f"ocio-thinfilm {args.command}: error: {error}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # e.g. `ocio-thinfilm demo | head`
+        sys.stderr.close()
+        return 0
     except OSError as error:
         print(f"ocio-thinfilm {args.command}: error: {error}", file=sys.stderr)
         return 2
