@@ -90,8 +90,9 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     ``XYZ = R @ W`` and the perfect reflector has Y = 1.
 
     ``W[i] = cmf(l_i) S(l_i) (upper_i - lower_i) / sum(ybar S dl)`` with the bins
-    of :func:`ocio_thinfilm.spectra.bin_edges`: the trapezoid rule on the grid, and
-    the exact integral of a bin-averaged (band-limited) spectrum.
+    of :func:`ocio_thinfilm.spectra.bin_edges`: the trapezoid rule on the grid; for a
+    band-limited (hat-averaged) spectrum, the exact integral of ``R`` against the
+    linearly interpolated weights.
     """
     wl = spectra.check_wavelengths(wavelengths)
     return _weights_cached(tuple(wl.tolist()), observer, illuminant).copy()

@@ -23,12 +23,17 @@ The interference models are cosine series in a round-trip phase
 ``phi(lambda) = 2*pi*P/lambda`` (``P`` the optical path difference). A fixed
 wavelength sampling aliases once ``phi`` turns by more than ~pi within one bin
 (thick films). With ``band_limited=True`` each sample returns the *exact average*
-of ``R`` over its wavelength bin taken in wavenumber (``phi`` is linear in
-``1/lambda``), i.e. every harmonic ``cos(k*phi)`` becomes
-``cos(k*phi_c) * sinc(k*dphi/2)``. One implementation, :func:`_cosine_series`,
-serves all three interference models; the colorimetry stage then integrates the bin
-averages with the matching-function weights (trapezoid rule), so thick films tend
-to their incoherent average instead of false colours.
+of ``R`` under the trapezoid rule's hat function of that sample (the triangle from
+the previous to the next sample), taken in wavenumber (``phi`` is linear in
+``1/lambda``): every harmonic ``cos(k*phi)`` becomes
+``cos(k*phi_c) * sinc(k*dphi/2)**2`` (a triangle is a box convolved with itself).
+The colorimetry stage's trapezoid sum then equals the exact integral of ``R``
+against the linearly interpolated matching-function weights. (A plain box average
+over one bin, ``sinc`` instead of ``sinc**2``, leaves a residual oscillation of up
+to 22 % that aliases: Delta E2000 1.4 at t' = 33 um with 5 nm sampling, against
+0.16 with the hat.) One implementation, :func:`_cosine_series`, serves all three
+interference models, so thick films tend to their incoherent average instead of
+false colours.
 """
 
 from __future__ import annotations
@@ -152,12 +157,13 @@ def _phase(path, wl, band_limited):
 
 
 def _cosine_series(coefficients, phi_c, dphi):
-    """Sum ``c_0 + sum_k Re(c_k exp(i k phi))``, each harmonic averaged over its bin.
+    """Sum ``c_0 + sum_k Re(c_k exp(i k phi))``, each harmonic hat-averaged.
 
     ``coefficients`` is a list; entry k is a (broadcastable) array of the k-th
-    harmonic's coefficient, complex allowed. The bin average of ``exp(i k phi)``
-    with ``phi`` uniform over ``[phi_c - dphi/2, phi_c + dphi/2]`` is
-    ``exp(i k phi_c) * sinc(k dphi / 2)`` (np.sinc is the normalised sinc).
+    harmonic's coefficient, complex allowed. The average of ``exp(i k phi)``
+    under the triangle of half-width ``dphi`` centred on ``phi_c`` (the trapezoid
+    rule's hat function: ``dphi`` is the phase step between neighbouring samples) is
+    ``exp(i k phi_c) * sinc(k dphi / 2)**2`` (np.sinc is the normalised sinc).
     """
     total = np.real(np.asarray(coefficients[0]))[..., None] + np.zeros_like(phi_c)
     for k, c in enumerate(coefficients[1:], start=1):
@@ -167,7 +173,7 @@ def _cosine_series(coefficients, phi_c, dphi):
         else:
             term = c * np.cos(k * phi_c)
         if dphi is not None:
-            term = term * np.sinc(k * dphi / (2.0 * np.pi))
+            term = term * np.sinc(k * dphi / (2.0 * np.pi)) ** 2
         total = total + term
     return total
 
