@@ -1,0 +1,187 @@
+"""Perlin (1985) gradient noise and turbulence, vectorised over whole images.
+
+Used by the example scenes (paper Section 4): Eq. 13's ``turb(x, y)`` that perturbs
+the oil slick, the air currents on the soap film and the asphalt texture.
+
+Public functions
+----------------
+- :func:`noise` -- Perlin's gradient ("improved lattice") noise in 1-3 dimensions:
+  pseudo-random unit gradients on the integer lattice, hashed by a permutation
+  table, blended with Perlin's cubic s-curve ``3t^2 - 2t^3``. Zero at every lattice
+  point, roughly in [-1, 1], mean 0.
+- :func:`turbulence` -- ``sum_i |noise(2^i p)| / 2^i`` over octaves (Perlin 1985,
+  "An Image Synthesizer", Section 'Turbulence'), with optional per-pixel
+  band-limiting: octaves finer than a pixel fade to their mean instead of aliasing.
+
+Everything is array-in/array-out (float32 inside, any broadcastable shapes), with no
+Python loop over pixels; the only loops are over octaves and lattice corners. The
+result depends only on the coordinates and ``seed`` (NumPy's PCG64 builds the
+tables), so a seed always gives the same bytes on the same platform.
+
+References
+----------
+Perlin, K. (1985) An Image Synthesizer. Computer Graphics 19(3), 287-296.
+"""
+
+from __future__ import annotations
+
+import os
+from functools import lru_cache
+
+import numpy as np
+
+__all__ = ["noise", "turbulence", "TABLE_SIZE", "MEAN_ABS_NOISE"]
+
+#: Lattice period: the noise repeats every 256 units along each axis.
+TABLE_SIZE = 256
+
+#: Mean of |noise| in 1, 2 and 3 dimensions (measured, 10^6 samples, seed 0): what
+#: a fully band-limited octave of :func:`turbulence` fades to.
+MEAN_ABS_NOISE = {1: 0.37, 2: 0.234, 3: 0.171}
+
+
+@lru_cache(maxsize=64)
+def _tables(seed: int, dims: int):
+    """Permutation (doubled, int32) and, per axis, the unit gradients already
+    gathered through the permutation (``g[perm]``, float32, doubled): the last hash
+    step and the gradient lookup are one gather."""
+    if isinstance(seed, (bool, np.bool_)) or int(seed) != seed or seed < 0:
+        raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
+    rng = np.random.Generator(np.random.PCG64([int(seed), dims, 1985]))
+    perm = rng.permutation(TABLE_SIZE).astype(np.int32)
+    # Uniform directions on the circle / sphere (Perlin's random unit gradients).
+    g = rng.standard_normal((TABLE_SIZE, dims))
+    g /= np.linalg.norm(g, axis=1, keepdims=True)
+    # Scale so the noise spans roughly [-1, 1] (a 1-D gradient of +-1 peaks at 0.5).
+    g *= {1: 2.0, 2: 1.4142135, 3: 1.1547005}[dims]
+    perm2 = np.concatenate([perm, perm])
+    gperm = [np.ascontiguousarray(g[perm2, k], dtype=np.float32) for k in range(dims)]
+    return perm2, gperm
+
+
+#: Points per work chunk: small enough for the cache, large enough for NumPy.
+_CHUNK = 1 << 16
+
+
+def _scurve(t):
+    return t * t * (np.float32(3.0) - np.float32(2.0) * t)
+
+
+def _noise_chunk(coords, perm, gperm):
+    """Noise at flat float32 coordinate arrays (one chunk)."""
+    dims = len(coords)
+    cell, frac, fade = [], [], []
+    for c in coords:
+        f = np.floor(c)
+        fr = c - f
+        cell.append(f.astype(np.int32) & (TABLE_SIZE - 1))
+        frac.append(fr)
+        fade.append(_scurve(fr))
+    # Hash prefixes over all but the last axis: 2^(dims-1) of them.
+    prefixes = {(): None}
+    for axis in range(dims - 1):
+        nxt = {}
+        for key, h in prefixes.items():
+            for o in (0, 1):
+                idx = cell[axis] + o if h is None else h + cell[axis] + o
+                nxt[key + (o,)] = perm[idx]
+        prefixes = nxt
+    last = dims - 1
+    values = {}
+    for key, h in prefixes.items():
+        for o in (0, 1):
+            idx = cell[last] + o if h is None else h + cell[last] + o
+            offsets = key + (o,)
+            d = gperm[0][idx] * (frac[0] - offsets[0]) if dims else None
+            for axis in range(1, dims):
+                d += gperm[axis][idx] * (frac[axis] - offsets[axis])
+            values[offsets] = d
+    # Blend along the last axis first, then inwards, with the s-curve weights.
+    for axis in reversed(range(dims)):
+        merged = {}
+        for key in {k[:axis] for k in values}:
+            lo, hi = values[key + (0,)], values[key + (1,)]
+            merged[key] = lo + fade[axis] * (hi - lo)
+        values = merged
+    return values[()]
+
+
+def noise(x, y=None, z=None, *, seed: int = 0) -> np.ndarray:
+    """Perlin gradient noise at the points ``(x[, y[, z]])`` (broadcast together).
+
+    Returns float32 of the broadcast shape. Lattice period 256; deterministic for a
+    given ``seed``; different seeds give independent fields. Coordinates are taken
+    in float32 (fine for the scenes' ranges, |p| < 10^4).
+    """
+    if y is None and z is not None:
+        raise ValueError("noise takes x, (x, y) or (x, y, z)")
+    coords = [c for c in (x, y, z) if c is not None]
+    dims = len(coords)
+    perm, gperm = _tables(seed, dims)
+    coords = np.broadcast_arrays(*[np.asarray(c, dtype=np.float32) for c in coords])
+    shape = coords[0].shape
+    flat = [np.ascontiguousarray(c).reshape(-1) for c in coords]
+    if flat[0].size and not all(np.all(np.isfinite(c)) for c in flat):
+        raise ValueError("noise coordinates must be finite")
+    out = np.empty(flat[0].size, np.float32)
+
+    def work(start):
+        part = [c[start:start + _CHUNK] for c in flat]
+        out[start:start + _CHUNK] = _noise_chunk(part, perm, gperm)
+
+    starts = range(0, out.size, _CHUNK)
+    if len(starts) > 1 and _WORKERS > 1:
+        # NumPy releases the GIL in its loops: chunks run in parallel threads. Each
+        # chunk writes its own slice, so the result does not depend on scheduling.
+        list(_pool().map(work, starts))
+    else:
+        for start in starts:
+            work(start)
+    return out.reshape(shape)
+
+
+_WORKERS = max(1, min(4, os.cpu_count() or 1))
+
+
+@lru_cache(maxsize=1)
+def _pool():
+    from concurrent.futures import ThreadPoolExecutor
+
+    return ThreadPoolExecutor(max_workers=_WORKERS, thread_name_prefix="noise")
+
+
+def turbulence(x, y=None, z=None, *, octaves: int = 6, seed: int = 0,
+               filter_width=None) -> np.ndarray:
+    """Perlin's turbulence ``sum_{i<octaves} |noise(2^i p)| / 2^i`` (float32).
+
+    ``filter_width`` (scalar or array broadcasting with the coordinates) is the size
+    of one pixel in noise units. Octave ``i`` is kept in full while a pixel covers
+    less than a quarter of its lattice cell (``filter_width * 2^i < 0.25``), fades
+    linearly to its mean (:data:`MEAN_ABS_NOISE`) by half a cell, and is skipped when
+    every pixel is past that -- a cheap band limit that keeps distant texture from
+    aliasing into sparkle. The result lies in about ``[0, 2)``.
+    """
+    if isinstance(octaves, bool) or int(octaves) != octaves or octaves < 1:
+        raise ValueError(f"octaves must be an integer >= 1, got {octaves!r}")
+    coords = [np.asarray(c, dtype=np.float32) for c in (x, y, z) if c is not None]
+    shape = np.broadcast_shapes(*[c.shape for c in coords])
+    fw = None if filter_width is None else np.asarray(filter_width, dtype=np.float32)
+    total = np.zeros(shape, np.float32)
+    mean = np.float32(MEAN_ABS_NOISE[len(coords)])
+    for i in range(int(octaves)):
+        f = np.float32(2 ** i)
+        amp = np.float32(1.0 / f)
+        if fw is None:
+            weight = None
+        else:
+            weight = np.clip(np.float32(2.0) - np.float32(4.0) * f * fw, 0.0, 1.0)
+            if not np.any(weight > 0):
+                total += amp * mean
+                continue
+        # Offset each octave so their lattices do not line up at the origin.
+        shifted = [c * f + np.float32(17.31 * i) for c in coords]
+        n = np.abs(noise(*shifted, seed=seed))
+        if weight is not None:
+            n = weight * n + (np.float32(1.0) - weight) * mean
+        total += amp * n
+    return total
