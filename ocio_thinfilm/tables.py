@@ -20,6 +20,550 @@ these names; the implementation is filled in by the LUT/config work):
   for ``view`` in ``VIEWS``.
 - ``apply(transform, pixels)``: apply an OCIO transform to a float32 (..., 3) array
   with OCIO's CPU processor; returns a new array.
+
+Design (measured; see ``benchmarks/bench_luts.py``)
+---------------------------------------------------
+1D tables
+    The thickness tables are indexed through a log shaper (OCIO ``LogAffineTransform``,
+    CLF ``Log``): ``u = log2(1 + t'/t0) / log2(1 + t'_max/t0)`` with ``t0 = 1 um`` and
+    ``t'_max = 100 um``, then a linear ``Lut1D`` of :data:`FILM_SIZE` entries. At
+    100 um the band-limited film colour is the incoherent grey (half the
+    illuminant), so the LUT's own clamp beyond the range gives the right limit: no
+    NaN, no wrap-around; negative thicknesses give black (t' = 0). The Morpho table
+    is uniform in cos(theta) over [0, 1] (the clamp gives grazing / normal incidence
+    outside).
+3D clip LUT
+    Built in CIE xyY (OCIO ``FixedFunction XYZ_TO_xyY``): the LUT's axes are the
+    chromaticity (x, y), shaped towards the display white, and the luminance Y,
+    shaped towards Y = 1; it outputs the same shaped (x, y, Y) coordinates and the
+    inverse shapers and ``xyY -> XYZ`` follow. The clip keeps Y, and tetrahedral
+    interpolation reproduces any affine function of the grid coordinates exactly, so
+    Y passes through unchanged and in-gamut colours are reproduced exactly (up to
+    float32); only cells that cross the gamut boundary carry interpolation error.
+    A final clamp to [0, 1] guarantees the result is in gamut.
 """
 
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import numpy as np
+
+from . import clip, colorimetry
+
+__all__ = [
+    "BUILT",
+    "VIEWS",
+    "FILM_KINDS",
+    "FILM_SIZE",
+    "FILM_T0_UM",
+    "FILM_TMAX_UM",
+    "MORPHO_SIZE",
+    "CLIP_SIZE",
+    "SPECTRAL_STEP",
+    "Table1D",
+    "film_table",
+    "morpho_table",
+    "clip_lut",
+    "clip_transform",
+    "view_transform",
+    "display_matrix_transform",
+    "display_encoding_transform",
+    "apply",
+    "group",
+    "xyY_forward_transform",
+    "xyY_inverse_transform",
+    "transform_id",
+]
+
 VIEWS = ("Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression", "Raw")
+
+#: Tables and LUTs computed in this process (cache hits are not re-appended).
+BUILT: list[str] = []
+
+FILM_KINDS = colorimetry.FILM_KINDS
+#: Default entries of a thickness table (log-shaped, 0-100 um); max dE2000 <= 0.05.
+FILM_SIZE = 8192
+#: Log shaper knee t0 and the end of the thickness range, micrometres.
+FILM_T0_UM = 1.0
+FILM_TMAX_UM = 100.0
+#: Default entries of the Morpho angle table (uniform in cos(theta)).
+MORPHO_SIZE = 1024
+#: Default edge length of the 3D clip LUT.
+CLIP_SIZE = 33
+#: Wavelength step (nm) of the spectra behind the tables (band-limited integration).
+SPECTRAL_STEP = 5.0
+
+#: ``urn:aswf:ocio:transformId:1.0:<Vendor>:<Type>:<Name>:1.0`` (OpenColorIO-Config-ACES).
+VENDOR = "OCIO-ThinFilm"
+
+_LOCK = threading.RLock()
+
+
+def transform_id(kind: str, name: str) -> str:
+    """Transform ID in the style of the ACES OCIO configs."""
+    safe = "".join(c if c.isalnum() else "_" for c in name).strip("_")
+    return f"urn:aswf:ocio:transformId:1.0:{VENDOR}:{kind}:{safe}:1.0"
+
+
+# --------------------------------------------------------------------------- #
+# OCIO helpers
+# --------------------------------------------------------------------------- #
+def _ocio():
+    import PyOpenColorIO as ocio
+
+    return ocio
+
+
+def group(transforms, *, name: str | None = None, description: str | None = None,
+          id: str | None = None, input_descriptor: str | None = None,
+          output_descriptor: str | None = None):
+    """A ``GroupTransform`` of ``transforms`` with CLF-style metadata."""
+    ocio = _ocio()
+    g = ocio.GroupTransform()
+    for t in transforms:
+        g.appendTransform(t)
+    md = g.getFormatMetadata()
+    if name:
+        md.setName(name)
+    if id:
+        md.setID(id)
+    if description:
+        md.addChildElement("Description", description)
+    if input_descriptor:
+        md.addChildElement("InputDescriptor", input_descriptor)
+    if output_descriptor:
+        md.addChildElement("OutputDescriptor", output_descriptor)
+    return g
+
+
+def _matrix(m3=None, offset=(0.0, 0.0, 0.0)):
+    ocio = _ocio()
+    m = np.eye(4)
+    if m3 is not None:
+        m[:3, :3] = m3
+    return ocio.MatrixTransform([float(v) for v in m.ravel()],
+                                [float(v) for v in offset] + [0.0])
+
+
+def _range(lo, hi):
+    ocio = _ocio()
+    r = ocio.RangeTransform()
+    r.setMinInValue(lo)
+    r.setMaxInValue(hi)
+    r.setMinOutValue(lo)
+    r.setMaxOutValue(hi)
+    return r
+
+
+#: Components are limited to +-LIMIT before XYZ -> xyY (+-Inf and NaN become finite).
+LIMIT = 1e6
+
+
+def xyY_forward_transform():
+    ocio = _ocio()
+    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
+
+
+def xyY_inverse_transform():
+    ocio = _ocio()
+    t = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
+    t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return t
+
+
+def apply(transform, pixels) -> np.ndarray:
+    """Apply an OCIO transform to a (..., 3) array with OCIO's CPU processor.
+
+    The input is converted to float32 and not modified; returns a new float32 array
+    of the same shape.
+    """
+    ocio = _ocio()
+    a = np.asarray(pixels, dtype=np.float32)
+    if a.ndim == 0 or a.shape[-1] != 3:
+        raise ValueError(f"pixels must have a last axis of length 3, got shape {a.shape}")
+    out = np.ascontiguousarray(a.reshape(-1, 3)).copy()
+    cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
+    if out.size:
+        cpu.applyRGB(out)
+    return out.reshape(a.shape)
+
+
+# --------------------------------------------------------------------------- #
+# 1D tables
+# --------------------------------------------------------------------------- #
+@dataclass(frozen=True, eq=False)
+class Table1D:
+    """A 1D table: pixel value (all three channels equal) -> exact XYZ.
+
+    ``kind``: ``"phase-change"``, ``"no-phase-change"`` or ``"morpho"``.
+    ``values``: (size, 3) XYZ at the table's nodes. ``encoding``: ``"log"``
+    (thickness in um through the log shaper, nodes at ``u = i / (size - 1)``) or
+    ``"linear"`` (pixel in [domain_min, domain_max] spread uniformly over the nodes).
+    """
+
+    kind: str
+    values: np.ndarray
+    encoding: str
+    domain_min: float
+    domain_max: float
+    t0: float = 0.0
+    description: str = ""
+    name: str = ""
+    nodes: np.ndarray = field(default=None, repr=False)
+
+    @property
+    def size(self) -> int:
+        return int(self.values.shape[0])
+
+    # -- numpy path -------------------------------------------------------- #
+    def shaper(self, x) -> np.ndarray:
+        """Normalised table coordinate u in [0, 1] (clamped) of pixel values ``x``."""
+        x = np.nan_to_num(np.asarray(x, dtype=np.float64), nan=0.0)
+        if self.encoding == "log":
+            t = np.maximum(x, 0.0)
+            u = np.log1p(np.minimum(t, 1e30) / self.t0) / np.log1p(self.domain_max / self.t0)
+        else:
+            u = (x - self.domain_min) / (self.domain_max - self.domain_min)
+        return np.clip(u, 0.0, 1.0)
+
+    def lookup(self, x) -> np.ndarray:
+        """XYZ for pixel values ``x`` (any shape), by the same linear interpolation
+        OCIO applies (returns shape ``x.shape + (3,)``, float64)."""
+        u = self.shaper(x) * (self.size - 1)
+        i = np.minimum(np.floor(u).astype(np.int64), self.size - 2)
+        f = (u - i)[..., None]
+        return self.values[i] * (1.0 - f) + self.values[i + 1] * f
+
+    # -- OCIO path --------------------------------------------------------- #
+    def shaper_transform(self):
+        """OCIO transform: pixel value -> u in [0, 1] (before the LUT's clamp)."""
+        ocio = _ocio()
+        if self.encoding == "log":
+            t = ocio.LogAffineTransform()
+            t.setBase(2.0)
+            scale = 1.0 / np.log2(1.0 + self.domain_max / self.t0)
+            t.setLogSideSlopeValue([scale] * 3)
+            t.setLogSideOffsetValue([0.0] * 3)
+            t.setLinSideSlopeValue([1.0 / self.t0] * 3)
+            t.setLinSideOffsetValue([1.0] * 3)
+            return t
+        span = self.domain_max - self.domain_min
+        return _matrix(np.eye(3) / span, [-self.domain_min / span] * 3)
+
+    def lut_transform(self):
+        ocio = _ocio()
+        t = ocio.Lut1DTransform()
+        t.setLength(self.size)
+        t.setData(np.ascontiguousarray(self.values, dtype=np.float32).ravel())
+        t.setInterpolation(ocio.INTERP_LINEAR)
+        return t
+
+    def transform(self):
+        """OCIO transform from the pixel encoding to CIE-XYZ-D65 (a GroupTransform
+        with CLF metadata: shaper, then the Lut1D)."""
+        ops = [self.lut_transform()]
+        if self.encoding == "log":
+            # Negative thickness: log of (1 + t/t0) < 1 is negative -> clamped to
+            # u = 0 by the LUT; t <= -t0 is clamped by OCIO's log to a tiny argument.
+            ops.insert(0, self.shaper_transform())
+        elif (self.domain_min, self.domain_max) != (0.0, 1.0):
+            ops.insert(0, self.shaper_transform())
+        return group(ops, name=self.name, id=transform_id("Input", self.name),
+                     description=self.description,
+                     input_descriptor=self.input_descriptor,
+                     output_descriptor="CIE-XYZ-D65 (perfect reflector Y = 1)")
+
+    @property
+    def input_descriptor(self) -> str:
+        if self.kind == "morpho":
+            return "cos(theta): facing ratio N.V, all channels equal"
+        return "optical thickness t' = n t cos(theta_t) in micrometres, all channels equal"
+
+    def rgb(self, display: str = "sRGB", clipped: bool = True) -> np.ndarray:
+        """Per-display variant: the nodes in display-linear RGB, constant-lightness
+        clipped (``clipped=True``) or raw."""
+        rgb = colorimetry.XYZ_to_RGB(self.values, display)
+        return clip.clip_RGB(rgb, display) if clipped else rgb
+
+
+def _check_size(size, minimum=2, maximum=1 << 20, what="size"):
+    if isinstance(size, bool) or not isinstance(size, (int, np.integer)):
+        raise ValueError(f"{what} must be an integer, got {size!r}")
+    if not minimum <= size <= maximum:
+        raise ValueError(f"{what} must be in [{minimum}, {maximum}], got {size}")
+    return int(size)
+
+
+def _check_positive(name, value):
+    value = float(value)
+    if not np.isfinite(value) or value <= 0:
+        raise ValueError(f"{name} must be a positive finite number, got {value:g}")
+    return value
+
+
+@lru_cache(maxsize=32)
+def _film_table(kind, size, tmax_um, t0_um, step):
+    u = np.linspace(0.0, 1.0, size)
+    t_um = t0_um * np.expm1(u * np.log1p(tmax_um / t0_um))
+    t_um[-1] = tmax_um
+    values = colorimetry.film_XYZ(t_um * 1000.0, kind, step=step)
+    BUILT.append(f"film:{kind}:{size}")
+    name = f"Thin Film {'Phase-Change' if kind == 'phase-change' else 'No-Phase-Change'} Thickness"
+    values.setflags(write=False)
+    t_um.setflags(write=False)
+    return Table1D(kind=kind, values=values, encoding="log", domain_min=0.0,
+                   domain_max=float(tmax_um), t0=float(t0_um), nodes=t_um, name=name,
+                   description=(f"Smits & Meyer 1990 Eq. {7 if kind == 'phase-change' else 8}: "
+                                f"exact XYZ (D65, CIE 1931 2 deg, band-limited {step:g} nm) of a "
+                                f"{kind} thin film against optical thickness 0-{tmax_um:g} um; "
+                                f"log2 shaper (t0 = {t0_um:g} um), {size}-entry Lut1D."))
+
+
+def film_table(kind: str = "phase-change", size: int = FILM_SIZE, *,
+               max_thickness_um: float = FILM_TMAX_UM, t0_um: float = FILM_T0_UM,
+               step: float = SPECTRAL_STEP) -> Table1D:
+    """Thickness table of the paper's single film (Eq. 7 / Eq. 8).
+
+    Pixel value = optical thickness t' in micrometres (all channels equal) -> the
+    film's exact XYZ, the perfect reflector at Y = 1 under D65. Nodes are log-spaced
+    (see the module docstring); beyond ``max_thickness_um`` the table holds its last
+    entry, the incoherent grey.
+    """
+    if kind not in FILM_KINDS:
+        raise ValueError(f"film kind must be one of {FILM_KINDS}, got {kind!r}")
+    size = _check_size(size)
+    tmax = _check_positive("max thickness (um)", max_thickness_um)
+    t0 = _check_positive("t0 (um)", t0_um)
+    step = _check_positive("spectral step (nm)", step)
+    with _LOCK:
+        return _film_table(kind, size, tmax, t0, step)
+
+
+@lru_cache(maxsize=8)
+def _morpho_table(size, step):
+    c = np.linspace(0.0, 1.0, size)
+    theta = np.degrees(np.arccos(c))
+    values = colorimetry.morpho_XYZ(theta, step=step)
+    BUILT.append(f"morpho:{size}")
+    values.setflags(write=False)
+    c.setflags(write=False)
+    return Table1D(kind="morpho", values=values, encoding="linear", domain_min=0.0,
+                   domain_max=1.0, nodes=c, name="Thin Film Morpho Iridescence",
+                   description=(f"Smits & Meyer 1990 Eq. 9 + 14: exact XYZ (D65, CIE 1931 2 deg, "
+                                f"band-limited {step:g} nm) of the Morpho wing multilayer against "
+                                f"cos(theta) (facing ratio N.V) in [0, 1]; {size}-entry Lut1D."))
+
+
+def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Table1D:
+    """Angle table of the Morpho multilayer (Eq. 9 + 14): pixel value = cos(theta) of
+    the viewing angle (N.V) -> exact XYZ. Values outside [0, 1] are clamped
+    (grazing / normal incidence)."""
+    size = _check_size(size)
+    step = _check_positive("spectral step (nm)", step)
+    with _LOCK:
+        return _morpho_table(size, step)
+
+
+# --------------------------------------------------------------------------- #
+# 3D clip LUT
+# --------------------------------------------------------------------------- #
+#: Chromaticity domain of the LUT (covers the spectral locus, x <= 0.735, y <= 0.834).
+XY_DOMAIN_MAX = (0.75, 0.85)
+#: Shaper exponents/offsets (moncurve, mirrored) for (x, y) about the white and 1 - Y.
+SHAPER_GAMMA = (2.0, 2.0, 2.0)
+SHAPER_OFFSET = (0.01, 0.01, 0.01)
+
+
+def _white_xy(display):
+    W = colorimetry.white_XYZ(display)
+    return W[:2] / W.sum()
+
+
+def _shaper_parts(display, gamma=SHAPER_GAMMA, offset=SHAPER_OFFSET):
+    """Per-channel invertible shaper xyY -> u in [0, 1]^3 (a list of OCIO transforms).
+
+    x, y: distance from the display white, normalised to [-1, 1], through an inverse
+    (mirrored) moncurve that spreads grid points near the white, then to [0, 1].
+    Y: 1 - Y through the same curve (grid points near Y = 1), then 1 - s.
+    """
+    ocio = _ocio()
+    xw, yw = _white_xy(display)
+    dx = max(xw, XY_DOMAIN_MAX[0] - xw)
+    dy = max(yw, XY_DOMAIN_MAX[1] - yw)
+    pre = _matrix(np.diag([1 / dx, 1 / dy, -1.0]), [-xw / dx, -yw / dy, 1.0])
+    ops = [pre]
+    if any(g != 1.0 for g in gamma):
+        curve = ocio.ExponentWithLinearTransform([*map(float, gamma), 1.0],
+                                                 [*map(float, offset), 0.0])
+        curve.setNegativeStyle(ocio.NEGATIVE_MIRROR)
+        curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+        ops.append(curve)
+    ops.append(_matrix(np.diag([0.5, 0.5, -1.0]), [0.5, 0.5, 1.0]))
+    return ops
+
+
+def _inverse(transforms):
+    ocio = _ocio()
+    g = group(transforms)
+    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return g
+
+
+@dataclass(frozen=True, eq=False)
+class ClipLUT:
+    """The baked constant-lightness clip for one display (see :func:`clip_lut`)."""
+
+    display: str
+    size: int
+    values: np.ndarray  # (size, size, size, 3) shaped xyY, index [x][y][Y]
+    gamma: tuple
+    offset: tuple
+
+    @property
+    def name(self) -> str:
+        return f"Constant-Lightness Clip {self.display}"
+
+    def lut_transform(self):
+        ocio = _ocio()
+        t = ocio.Lut3DTransform()
+        t.setGridSize(self.size)
+        t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
+        t.setData(np.ascontiguousarray(self.values, dtype=np.float32).ravel())
+        return t
+
+    def shaper(self):
+        return _shaper_parts(self.display, self.gamma, self.offset)
+
+    def core_transform(self):
+        """CLF-writable part, shaped xyY in -> xyY out: shaper, Lut3D, inverse shaper."""
+        return group(self.shaper() + [self.lut_transform(), _inverse(self.shaper())],
+                     name=self.name, id=transform_id("Gamut_Map", self.name),
+                     description=(f"Smits & Meyer 1990 constant-lightness clip into {self.display} "
+                                  f"(Section 3.2), baked as a {self.size}^3 tetrahedral Lut3D over "
+                                  "CIE xyY with per-axis shapers (towards the white and Y = 1); "
+                                  "apply after XYZ_TO_xyY and follow with its inverse."),
+                     input_descriptor="CIE xyY (D65, Y = 1 at display white)",
+                     output_descriptor=f"CIE xyY clipped into the {self.display} gamut")
+
+
+def _clip_vertices(display, size, gamma, offset):
+    """Vertex values of the xyY clip LUT (float64)."""
+    import colour
+
+    g = np.linspace(0.0, 1.0, size)
+    U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
+    shaper = _shaper_parts(display, gamma, offset)
+    c = apply(_inverse(shaper), U).astype(np.float64)  # xyY at the vertices (OCIO's own)
+    c[..., 2] = np.where(U[..., 2] == 0.0, 0.0, np.where(U[..., 2] == 1.0, 1.0, c[..., 2]))
+    xyY = c.copy()
+    # Y = 0: the limit of the clip as Y -> 0+ (homogeneous), so dark colours keep
+    # their chromaticity; y <= 0 is outside every gamut, any tiny value works.
+    xyY[..., 2] = np.maximum(xyY[..., 2], 1e-9)
+    xyY[..., 1] = np.maximum(xyY[..., 1], 1e-9)
+    XYZ = colour.xyY_to_XYZ(xyY)
+    clipped = clip.clip_XYZ(XYZ, display)
+    out_xyY = colour.XYZ_to_xyY(clipped)
+    out = apply(group(shaper), out_xyY).astype(np.float64)
+    inside = np.all(clipped == XYZ, axis=-1)
+    out[inside] = U[inside]  # identity exactly (affine in the grid coordinates)
+    out[..., 2] = U[..., 2]  # the clip keeps Y: exact by construction
+    return out
+
+
+@lru_cache(maxsize=16)
+def _clip_lut(display, size, gamma, offset):
+    values = _clip_vertices(display, size, gamma, offset)
+    values.setflags(write=False)
+    BUILT.append(f"clip3d:{display}:{size}")
+    return ClipLUT(display=display, size=size, values=values, gamma=gamma, offset=offset)
+
+
+def _check_display(display):
+    if display not in clip.DISPLAYS:
+        raise ValueError(f"display must be one of {clip.DISPLAYS}, got {display!r}")
+    return display
+
+
+def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE, *, gamma=SHAPER_GAMMA,
+             offset=SHAPER_OFFSET) -> ClipLUT:
+    """The baked clip LUT for ``display`` (cached)."""
+    _check_display(display)
+    size = _check_size(size, 2, 129, "clip LUT size")
+    with _LOCK:
+        return _clip_lut(display, size, tuple(map(float, gamma)), tuple(map(float, offset)))
+
+
+def display_matrix_transform(display: str, inverse: bool = False):
+    """CIE-XYZ-D65 -> display-linear RGB (or back) as an OCIO MatrixTransform."""
+    M = colorimetry.matrix_XYZ_to_RGB(_check_display(display) if display in clip.DISPLAYS
+                                      else display)
+    return _matrix(np.linalg.inv(M) if inverse else M)
+
+
+def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE, **kwargs):
+    """OCIO transform CIE-XYZ-D65 -> display-linear RGB, constant-lightness clipped.
+
+    Range limit (+-1e6, NaN -> finite), ``XYZ_TO_xyY``, the clip LUT (shaper, Lut3D,
+    inverse shaper), ``xyY -> XYZ``, the display matrix, a clamp to [0, 1].
+    """
+    lut = clip_lut(display, size, **kwargs)
+    return group([_range(-LIMIT, LIMIT), xyY_forward_transform(), lut.core_transform(),
+                  xyY_inverse_transform(), display_matrix_transform(display), _range(0.0, 1.0)],
+                 name=lut.name, id=transform_id("Gamut_Map", lut.name))
+
+
+#: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.
+DISPLAY_ENCODINGS = {
+    "sRGB": ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055),
+    "Display P3": ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055),
+    "Rec.2020": ("BT.1886 gamma 2.4", 2.4, None),
+}
+
+
+def display_encoding_transform(display: str):
+    """Display-linear RGB -> display code values (the display's inverse EOTF)."""
+    ocio = _ocio()
+    _, gamma, offset = DISPLAY_ENCODINGS[_check_display(display)]
+    if offset is None:
+        t = ocio.ExponentTransform([gamma, gamma, gamma, 1.0])
+        t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
+    else:
+        t = ocio.ExponentWithLinearTransform([gamma] * 3 + [1.0], [offset] * 3 + [0.0])
+    t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return t
+
+
+def aces_gamut_compression_transform():
+    ocio = _ocio()
+    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
+                                       list(clip.ACES_GAMUT_COMP13_PARAMS))
+
+
+def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
+    """CIE-XYZ-D65 -> display-linear RGB in [0, 1] for ``view`` (not for Raw)."""
+    _check_display(display)
+    if view == "Constant-Lightness Clip":
+        return clip_transform(display, size)
+    if view == "Channel Clamp":
+        return group([display_matrix_transform(display), _range(0.0, 1.0)])
+    if view == "ACES Gamut Compression":
+        return group([display_matrix_transform(display), aces_gamut_compression_transform(),
+                      _range(0.0, 1.0)])
+    raise ValueError(f"view must be one of {VIEWS[:3]}, got {view!r}")
+
+
+def view_transform(display: str, view: str, size: int = CLIP_SIZE):
+    """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
+
+    ``Raw`` passes values through unchanged (an empty group).
+    """
+    _check_display(display)
+    if view not in VIEWS:
+        raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
+    if view == "Raw":
+        return group([])
+    return group([view_linear_transform(display, view, size),
+                  display_encoding_transform(display)])
