@@ -1,0 +1,418 @@
+"""The drop-in OpenColorIO config (stage 5): data -> factories -> config -> validate.
+
+In the style of OpenColorIO-Config-ACES: the config is described as plain data
+(:func:`config_data`), turned into OCIO objects by small factories
+(:func:`colorspace_factory`, :func:`view_transform_factory`, ...), assembled by one
+entry point, :func:`generate_config`, which validates the result, and written by
+:func:`write_config` (LUTs as CLF with IDs and descriptors, then ``config.ocio``).
+
+Reference spaces: the scene reference and the display reference are both
+CIE-XYZ-D65 with the perfect reflector (and the display white) at Y = 1. Scene-linear
+is ``Linear Rec.709 (sRGB)`` (what Blender users expect): scene-linear 1.0 is the
+display white and every view maps it to code value 1.0 (no tone mapping).
+
+Public names
+------------
+- :data:`CONFIG_NAME`, :data:`PROFILE_VERSION`, :data:`DISPLAY_SPACES`, :data:`ROLES`
+- :func:`config_data` -- the config as data, plus the LUT files it needs
+- :func:`colorspace_factory`, :func:`view_transform_factory`, :func:`named_lut`
+- :func:`generate_config` -- data -> validated ``PyOpenColorIO.Config``
+- :func:`write_config` -- write ``config.ocio`` and ``luts/*.clf`` into a directory
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import clip, colorimetry, tables
+
+__all__ = [
+    "CONFIG_NAME",
+    "PROFILE_VERSION",
+    "LUT_DIRECTORY",
+    "DISPLAY_SPACES",
+    "ROLES",
+    "THIN_FILM_SPACES",
+    "ConfigData",
+    "colorspace_factory",
+    "view_transform_factory",
+    "named_lut",
+    "config_data",
+    "generate_config",
+    "write_config",
+    "lut_files",
+]
+
+CONFIG_NAME = "ocio-thinfilm"
+PROFILE_VERSION = (2, 1)
+LUT_DIRECTORY = "luts"
+
+#: Display -> (display colour space name, description).
+DISPLAY_SPACES = {
+    "sRGB": ("sRGB - Display", "sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, "
+                               "sRGB piecewise encoding"),
+    "Display P3": ("Display P3 - Display", "Apple Display P3: P3 primaries, D65, "
+                                           "sRGB piecewise encoding"),
+    "Rec.2020": ("Rec.1886 Rec.2020 - Display", "ITU-R BT.2020 primaries, D65, "
+                                                "BT.1886 gamma 2.4 encoding"),
+}
+
+#: Scene-linear RGB spaces: name -> (colorimetry space, description).
+LINEAR_SPACES = {
+    "ACES2065-1": ("ACES2065-1", "ACES2065-1: AP0 primaries, ACES white (Bradford from D65)"),
+    "ACEScg": ("ACEScg", "ACEScg: AP1 primaries, ACES white (Bradford from D65)"),
+    "Linear Rec.709 (sRGB)": ("Rec.709", "Scene-linear Rec.709 / sRGB primaries, D65"),
+    "Linear P3-D65": ("Display P3", "Scene-linear P3 primaries, D65"),
+    "Linear Rec.2020": ("Rec.2020", "Scene-linear Rec.2020 primaries, D65"),
+}
+
+#: Thin-film input spaces: name -> (table factory, arguments, LUT file stem).
+THIN_FILM_SPACES = {
+    "Thin Film Phase-Change Thickness": ("film", ("phase-change",),
+                                         "ThinFilm_PhaseChange_Thickness"),
+    "Thin Film No-Phase-Change Thickness": ("film", ("no-phase-change",),
+                                            "ThinFilm_NoPhaseChange_Thickness"),
+    "Thin Film Morpho Iridescence": ("morpho", (), "ThinFilm_Morpho_Iridescence"),
+}
+
+ROLES = {
+    "scene_linear": "Linear Rec.709 (sRGB)",
+    "rendering": "Linear Rec.709 (sRGB)",
+    "default": "Linear Rec.709 (sRGB)",
+    "data": "Raw",
+    "reference": "CIE-XYZ-D65",
+    "color_picking": "sRGB - Texture",
+    "texture_paint": "Linear Rec.709 (sRGB)",
+    "matte_paint": "sRGB - Texture",
+    "compositing_log": "ACEScct",
+    "color_timing": "ACEScct",
+    "aces_interchange": "ACES2065-1",
+    "cie_xyz_d65_interchange": "CIE-XYZ-D65",
+    "default_byte": "sRGB - Texture",
+    "default_float": "Linear Rec.709 (sRGB)",
+    "default_sequencer": "sRGB - Texture",
+}
+
+
+# --------------------------------------------------------------------------- #
+# Data
+# --------------------------------------------------------------------------- #
+@dataclass
+class ConfigData:
+    """The config as data (cf. OpenColorIO-Config-ACES ``ConfigData``)."""
+
+    name: str
+    description: str
+    roles: dict
+    colorspaces: list  # dicts for colorspace_factory
+    view_transforms: list  # dicts for view_transform_factory
+    displays: dict  # display -> list of view dicts
+    file_rules: list
+    luts: dict = field(default_factory=dict)  # file name -> GroupTransform
+    profile_version: tuple = PROFILE_VERSION
+
+
+def named_lut(stem: str) -> str:
+    return f"{stem}.clf"
+
+
+def _file_transform(filename):
+    import PyOpenColorIO as ocio
+
+    t = ocio.FileTransform(filename)
+    t.setInterpolation(ocio.INTERP_DEFAULT)
+    return t
+
+
+def lut_files(clip_size: int = tables.CLIP_SIZE, film_size: int = tables.FILM_SIZE,
+              morpho_size: int = tables.MORPHO_SIZE) -> dict:
+    """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses."""
+    files = {}
+    for space, (factory, args, stem) in THIN_FILM_SPACES.items():
+        table = (tables.film_table(*args, size=film_size) if factory == "film"
+                 else tables.morpho_table(size=morpho_size))
+        files[named_lut(stem)] = table.transform()
+    for display in clip.DISPLAYS:
+        lut = tables.clip_lut(display, clip_size)
+        files[named_lut(_clip_stem(display))] = lut.core_transform()
+    return files
+
+
+def _clip_stem(display):
+    return "ConstantLightnessClip_" + display.replace(".", "").replace(" ", "")
+
+
+def _matrix_to_reference(space):
+    """Linear RGB of ``space`` -> CIE-XYZ-D65."""
+    M = colorimetry.matrix_XYZ_to_RGB(space)
+    return tables._matrix(np.linalg.inv(M))
+
+
+def _view_parts(display, view, inline, luts):
+    """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view."""
+    if view == "Constant-Lightness Clip":
+        core = (luts[named_lut(_clip_stem(display))] if inline
+                else _file_transform(named_lut(_clip_stem(display))))
+        linear = [tables._range(-tables.LIMIT, tables.LIMIT), tables.xyY_forward_transform(),
+                  core, tables.xyY_inverse_transform(),
+                  tables.display_matrix_transform(display), tables._range(0.0, 1.0)]
+    else:
+        linear = [tables.view_linear_transform(display, view)]
+    return tables.group(linear + [tables.display_matrix_transform(display, inverse=True)])
+
+
+def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
+                film_size: int = tables.FILM_SIZE,
+                morpho_size: int = tables.MORPHO_SIZE) -> ConfigData:
+    """The config as data. ``inline=True`` puts the LUTs into the transforms
+    (an in-memory config needing no files, for baking and tests); otherwise colour
+    spaces refer to ``luts/*.clf`` by FileTransform."""
+    luts = lut_files(clip_size, film_size, morpho_size)
+    ref = "CIE-XYZ-D65"
+    cs = []
+    cs.append(dict(name=ref, family="Utility", encoding="scene-linear",
+                   categories=["file-io", "working-space"],
+                   aliases=["cie_xyz_d65"],
+                   description="CIE XYZ, D65-relative: the perfect reflector under D65 has "
+                               "Y = 1 (CIE 1931 2 degree observer). The reference space."))
+    for name, (space, description) in LINEAR_SPACES.items():
+        cs.append(dict(name=name, family="Scene-Linear", encoding="scene-linear",
+                       categories=["file-io", "working-space"],
+                       description=description, to_reference=_matrix_to_reference(space)))
+    acescct = _acescct_to_reference()
+    cs.append(dict(name="ACEScct", family="ACES", encoding="log",
+                   categories=["file-io", "working-space"],
+                   description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
+                   to_reference=acescct))
+    cs.append(dict(name="sRGB - Texture", family="Texture", encoding="sdr-video",
+                   categories=["file-io", "texture"],
+                   aliases=["srgb_tx"],
+                   description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour "
+                               "picking)",
+                   to_reference=tables.group([
+                       _invert(tables.display_encoding_transform("sRGB")),
+                       _matrix_to_reference("Rec.709")])))
+    cs.append(dict(name="Raw", family="Utility", encoding="data", is_data=True,
+                   categories=["file-io"], aliases=["Utility - Raw"],
+                   description="Non-colour data: passed through unchanged"))
+    for name, (factory, args, stem) in THIN_FILM_SPACES.items():
+        table = (tables.film_table(*args, size=film_size) if factory == "film"
+                 else tables.morpho_table(size=morpho_size))
+        if factory == "film":
+            encoding = ("Pixel value (all three channels equal) = optical thickness t' = "
+                        "n t cos(theta_t) in micrometres; beyond 100 um the incoherent grey, "
+                        "negative values black.")
+        else:
+            encoding = ("Pixel value (all three channels equal) = cos(theta), the facing "
+                        "ratio N.V of the viewing direction; clamped to [0, 1] (0 = grazing, "
+                        "1 = normal incidence).")
+        cs.append(dict(name=name, family="Thin Film", encoding="scene-linear",
+                       categories=["file-io"],
+                       description=f"{table.description} {encoding}",
+                       to_reference=(luts[named_lut(stem)] if inline
+                                     else _file_transform(named_lut(stem)))))
+    for display, (name, description) in DISPLAY_SPACES.items():
+        cs.append(dict(name=name, family="Display", encoding="sdr-video",
+                       categories=["file-io"], reference_space="display",
+                       description=description,
+                       from_reference=tables.group([
+                           tables.display_matrix_transform(display),
+                           tables.display_encoding_transform(display)])))
+
+    view_transforms, displays = [], {}
+    descriptions = {
+        "Constant-Lightness Clip": "Smits & Meyer 1990 Section 3.2: display-linear RGB "
+                                   "clipped at constant luminance Y towards the display's "
+                                   "neutral axis (3D LUT over CIE xyY); scene-linear 1.0 is "
+                                   "display white, above white gives white, no tone mapping.",
+        "Channel Clamp": "Baseline: display-linear RGB clamped per channel to [0, 1].",
+        "ACES Gamut Compression": "Baseline: OCIO's ACES 1.3 reference gamut compression "
+                                  "(ACES_GamutComp13) in display-linear RGB, then a clamp "
+                                  "to [0, 1].",
+    }
+    for display, (display_space, _) in DISPLAY_SPACES.items():
+        views = []
+        for view in tables.VIEWS:
+            if view == "Raw":
+                views.append(dict(name="Raw", colorspace="Raw"))
+                continue
+            vt = f"{view} - {display}"
+            view_transforms.append(dict(name=vt, family="Thin Film",
+                                        description=f"{descriptions[view]} Display: {display}.",
+                                        from_reference=_view_parts(display, view, inline, luts)))
+            views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
+        displays[display] = views
+
+    file_rules = [
+        dict(name="OpenEXR", colorspace="scene_linear", pattern="*", extension="[eE][xX][rR]"),
+        dict(name="PNG", colorspace="sRGB - Texture", pattern="*", extension="[pP][nN][gG]"),
+        dict(name="JPEG", colorspace="sRGB - Texture", pattern="*",
+             extension="[jJ][pP][gG]"),
+        dict(name="Default", colorspace="default"),
+    ]
+    return ConfigData(
+        name=CONFIG_NAME,
+        description=("Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
+                     "Colors\") with the paper's constant-lightness gamut clip. Reference: "
+                     "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
+                     "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."),
+        roles=dict(ROLES), colorspaces=cs, view_transforms=view_transforms,
+        displays=displays, file_rules=file_rules, luts=luts)
+
+
+def _invert(transform):
+    import PyOpenColorIO as ocio
+
+    g = tables.group([transform])
+    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return g
+
+
+def _acescct_to_reference():
+    """ACEScct -> CIE-XYZ-D65: inverse ACEScct curve (LogCameraTransform), AP1 -> XYZ."""
+    import PyOpenColorIO as ocio
+
+    curve = ocio.LogCameraTransform([0.0078125] * 3)
+    curve.setBase(2.0)
+    curve.setLogSideSlopeValue([1.0 / 17.52] * 3)
+    curve.setLogSideOffsetValue([9.72 / 17.52] * 3)
+    curve.setLinSideSlopeValue([1.0] * 3)
+    curve.setLinSideOffsetValue([0.0] * 3)
+    curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return tables.group([curve, _matrix_to_reference("ACEScg")])
+
+
+# --------------------------------------------------------------------------- #
+# Factories
+# --------------------------------------------------------------------------- #
+def colorspace_factory(name, family="", encoding="", categories=(), description="",
+                       to_reference=None, from_reference=None, is_data=False, aliases=(),
+                       reference_space="scene"):
+    """One ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES)."""
+    import PyOpenColorIO as ocio
+
+    kind = (ocio.REFERENCE_SPACE_DISPLAY if reference_space == "display"
+            else ocio.REFERENCE_SPACE_SCENE)
+    cs = ocio.ColorSpace(kind)
+    cs.setName(name)
+    cs.setFamily(family)
+    cs.setEncoding(encoding)
+    cs.setDescription(description)
+    cs.setIsData(bool(is_data))
+    cs.setBitDepth(ocio.BIT_DEPTH_F32)
+    for category in categories:
+        cs.addCategory(category)
+    for alias in aliases:
+        cs.addAlias(alias)
+    if to_reference is not None:
+        cs.setTransform(to_reference, ocio.COLORSPACE_DIR_TO_REFERENCE)
+    if from_reference is not None:
+        cs.setTransform(from_reference, ocio.COLORSPACE_DIR_FROM_REFERENCE)
+    return cs
+
+
+def view_transform_factory(name, family="", description="", from_reference=None,
+                           reference_space="scene"):
+    """One ``PyOpenColorIO.ViewTransform`` from data."""
+    import PyOpenColorIO as ocio
+
+    kind = (ocio.REFERENCE_SPACE_DISPLAY if reference_space == "display"
+            else ocio.REFERENCE_SPACE_SCENE)
+    vt = ocio.ViewTransform(kind)
+    vt.setName(name)
+    vt.setFamily(family)
+    vt.setDescription(description)
+    if from_reference is not None:
+        vt.setTransform(from_reference, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    return vt
+
+
+def generate_config(data: ConfigData | None = None, *, validate: bool = True,
+                    search_path: str = LUT_DIRECTORY, working_dir: str | None = None):
+    """Build (and by default validate) the OCIO config from ``data``."""
+    import PyOpenColorIO as ocio
+
+    data = data or config_data()
+    config = ocio.Config.CreateRaw()
+    for cs_name in list(config.getColorSpaceNames()):
+        config.removeColorSpace(cs_name)
+    config.setVersion(*data.profile_version)
+    config.setName(data.name)
+    config.setDescription(data.description)
+    config.setSearchPath(search_path)
+    if working_dir:
+        config.setWorkingDir(str(working_dir))
+    config.clearEnvironmentVars()
+    config.setFamilySeparator("/")
+    for spec in data.colorspaces:
+        config.addColorSpace(colorspace_factory(**spec))
+    for spec in data.view_transforms:
+        config.addViewTransform(view_transform_factory(**spec))
+    config.setDefaultViewTransformName(data.view_transforms[0]["name"])
+    config.clearDisplays()
+    for display, views in data.displays.items():
+        for view in views:
+            if "view_transform" in view:
+                config.addDisplayView(display, view["name"], view["view_transform"],
+                                      view["display_colorspace"], "", "", "")
+            else:
+                config.addDisplayView(display, view["name"], view["colorspace"], "")
+    config.setActiveDisplays(", ".join(data.displays))
+    config.setActiveViews(", ".join(tables.VIEWS))
+    for role in list(dict(config.getRoles())):
+        config.setRole(role, None)
+    for role, space in data.roles.items():
+        config.setRole(role, space)
+    rules = ocio.FileRules()
+    position = 0
+    for rule in data.file_rules:
+        if rule["name"] == "Default":
+            rules.setDefaultRuleColorSpace(rule["colorspace"])
+            continue
+        rules.insertRule(position, rule["name"], rule["colorspace"], rule["pattern"],
+                         rule["extension"])
+        position += 1
+    config.setFileRules(rules)
+    config.setInactiveColorSpaces("")
+    if validate:
+        config.validate()
+    return config
+
+
+def write_config(directory, *, clip_size: int = tables.CLIP_SIZE,
+                 film_size: int = tables.FILM_SIZE, morpho_size: int = tables.MORPHO_SIZE,
+                 progress=None) -> Path:
+    """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
+
+    ``progress``: optional callable ``progress(step_name)`` called once per file.
+    Returns the config path. The files carry no timestamps: equal inputs give equal
+    bytes.
+    """
+    import PyOpenColorIO as ocio
+
+    directory = Path(directory)
+    data = config_data(clip_size=clip_size, film_size=film_size, morpho_size=morpho_size)
+    (directory / LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
+    raw = ocio.Config.CreateRaw()
+    for filename, transform in sorted(data.luts.items()):
+        transform.write("Academy/ASC Common LUT Format",
+                        str(directory / LUT_DIRECTORY / filename), raw)
+        if progress:
+            progress(filename)
+    config = generate_config(data, validate=False, working_dir=directory)
+    config.validate()
+    # Check that every FileTransform resolves and every processor builds.
+    for display in config.getDisplays():
+        for view in config.getViews(display):
+            config.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+    for name in config.getColorSpaceNames():
+        config.getProcessor(name, "CIE-XYZ-D65")
+    path = directory / "config.ocio"
+    text = config.serialize()
+    path.write_text(text if text.endswith("\n") else text + "\n")
+    if progress:
+        progress("config.ocio")
+    return path
