@@ -233,6 +233,8 @@ def _fmt(x, digits=3):
         return "–"
     if isinstance(x, str):
         return x
+    if isinstance(x, (int, np.integer)) and not isinstance(x, bool):
+        return str(x)
     if not np.isfinite(x):
         return str(x)
     if x == 0:
@@ -298,6 +300,8 @@ def machine_description() -> dict:
                              text=True, cwd=Path(__file__).parent, timeout=5)
         if rev.returncode == 0:
             info["git"] = rev.stdout.strip()
+    with contextlib.suppress(OSError, AttributeError):
+        info["load_average_1_5_15min"] = " / ".join(f"{v:.2f}" for v in os.getloadavg())
     info["date_utc"] = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     return info
 
@@ -848,6 +852,11 @@ def stability_rows():
             f"R in [{_fmt(float(ra.min()), 6)}, {_fmt(float(ra.max()), 6)}], |ΔR| {_fmt(diff)}",
             np.all(np.isfinite(ra)) and ra.min() >= 0 and ra.max() <= 1 and diff < 1e-9,
             "test_grazing_matches_colour_tmm")
+        rb = np.concatenate([spectra.airy_reflectance(d, wl, 1.33, th, band_limited=True).ravel()
+                             for th in (80.0, 89.0, 89.9)])
+        add("grazing 80/89/89.9°, exact film, band-limited", "bin averages of R stay in [0, 1]",
+            f"R in [{_fmt(float(rb.min()), 4)}, {_fmt(float(rb.max()), 4)}]",
+            rb.min() >= -1e-9 and rb.max() <= 1 + 1e-9, "test_grazing_band_limited_airy_within_0_1")
         r90 = spectra.airy_reflectance(d, wl, 1.33, 90.0)
         add("exactly 90°, exact film", "R = 1 (grazing limit)", f"R in [{_fmt(float(r90.min()))}, "
             f"{_fmt(float(r90.max()))}]", np.allclose(r90, 1.0, atol=1e-12), "test_grazing_limit_90")
@@ -1047,16 +1056,418 @@ def _section_stability(ctx):
     ])
 
 
+
+# --------------------------------------------------------------------------- #
+# Sections 1b-1d: tables and LUTs (need ocio_thinfilm.tables)
+# --------------------------------------------------------------------------- #
+def _tables_missing(title):
+    return (f"### {title}\n\nSkipped: `ocio_thinfilm.tables` does not implement the interface "
+            "contract in this checkout.")
+
+
+def _test_thicknesses(q, hi_um=1.5, n=None):
+    rng = np.random.default_rng(11)
+    n = n or (4000 if q else 40000)
+    return rng.uniform(0.0, hi_um, n)
+
+
+def _section_table1d(ctx):
+    tables = _tables()
+    if tables is None:
+        return _tables_missing("1b. 1D table size and spacing")
+    q = ctx.quick
+    d_size = _default(tables.film_table, "size")
+    d_t0 = _default(tables.film_table, "t0_um")
+    tmax = _default(tables.film_table, "max_thickness_um")
+    step = _default(tables.film_table, "step")
+    sizes = [1024, 4096, d_size] if q else sorted({256, 1024, 2048, 4096, 8192, 16384, d_size})
+    spacings = {f"log, t0 = {d_t0:g} µm (shipped)": d_t0, "log, t0 = 0.1 µm": 0.1,
+                f"uniform 0–{tmax:g} µm": ("uniform", tmax),
+                "uniform 0–1.5 µm (clamps beyond)": ("uniform", 1.5)}
+    if q:
+        spacings = {k: v for k, v in spacings.items() if v != 0.1}
+    thin = _test_thicknesses(q)              # t' in 0–1.5 um, micrometres
+    thick = _test_thicknesses(q, tmax, n=thin.size // 4)
+    x_um = np.concatenate([thin, thick])
+    direct = colorimetry.film_XYZ(x_um * 1000.0, step=step)  # same spectra, no table
+    img = np.repeat(x_um[: (65536 if q else 262144)].astype(np.float32)[:, None], 3, axis=1)
+    rows, series, raw = [], {}, []
+    default_pt = None
+    ocio_check = 0.0
+    for label, t0 in spacings.items():
+        series[label] = []
+        for size in sizes:
+            t_start = time.perf_counter()
+            if isinstance(t0, tuple):  # uniform nodes, the shipped Table1D class
+                nodes = np.linspace(0.0, t0[1], size)
+                table = tables.Table1D(kind="phase-change", values=colorimetry.film_XYZ(
+                    nodes * 1000.0, step=step), encoding="linear", domain_min=0.0,
+                    domain_max=float(t0[1]), nodes=nodes, name="uniform")
+            else:
+                table = tables.film_table("phase-change", size, t0_um=t0)
+            bake = time.perf_counter() - t_start
+            de = colorimetry.delta_E2000(table.lookup(x_um), direct)
+            s_thin, s_all = _stats(de[: thin.size]), _stats(de)
+            tf = table.transform()
+            cpu = _ocio_cpu(tf)
+            mpix = _ocio_apply_speed(cpu, img)
+            via = tables.apply(tf, img[:4096])
+            ocio_check = max(ocio_check, float(np.max(colorimetry.delta_E2000(
+                via.astype(np.float64), table.lookup(img[:4096, 0].astype(np.float64))))))
+            if not isinstance(t0, tuple) and t0 == d_t0 and size == d_size:
+                ctx.results["default_table1d"] = {"size": size, "thin": s_thin, "all": s_all}
+            rows.append([label, size, s_thin["mean"], s_thin["p99"], s_thin["max"], s_all["max"],
+                         bake, mpix])
+            series[label].append((1.0 / mpix, s_thin["p99"], s_thin["max"], size))
+            raw.append({"spacing": label, "t0_um": t0, "size": size, "thin": s_thin, "all": s_all,
+                        "bake_s": bake, "apply_Mpix_s": mpix})
+            if size == d_size and not isinstance(t0, tuple) and t0 == d_t0:
+                default_pt = (1.0 / mpix, s_thin["p99"], f"{size}, log t0 {d_t0:g} µm")
+    ctx.results["table1d"] = {"rows": raw, "ocio_vs_numpy_dE_max": ocio_check}
+    img_md = _pareto_plot(ctx, "knob_table1d.png", "1D thickness table: error vs apply cost",
+                          series, xlabel="apply cost through OCIO (µs per Mpixel⁻¹ = s / Mpixel)",
+                          default=default_pt, ylabel="ΔE2000 over t' 0–1.5 µm (p99, max)")
+    return "\n".join([
+        "### 1b. 1D table size and spacing",
+        "",
+        f"The soap-film thickness table (`tables.film_table`, 0–{tmax:g} µm, linear "
+        "interpolation through OCIO's Lut1D behind a log shaper) against direct evaluation of the "
+        f"same spectra ({step:g} nm band-limited) at {thin.size} random t' in 0–1.5 µm and "
+        f"{thick.size} in 0–{tmax:g} µm: the error is the table's alone. Bake = first build "
+        f"(uncached); apply = OCIO CPU processor on {img.shape[0]} pixels, one thread. "
+        f"OCIO path vs the numpy `lookup`: ΔE2000 max {_fmt(ocio_check)} (float32).",
+        "",
+        _table(["spacing", "size", "0–1.5 µm mean", "p99", "max", f"0–{tmax:g} µm max",
+                "bake (s)", "apply Mpixel/s"], rows),
+        "",
+        f"Defaults (from `film_table`'s signature): size {d_size}, t0 = {d_t0:g} µm.",
+        "",
+        img_md,
+    ])
+
+
+def _walk(transform):
+    """Yield every leaf transform of (nested) GroupTransforms."""
+    import PyOpenColorIO as ocio
+
+    if isinstance(transform, ocio.GroupTransform):
+        for child in transform:
+            yield from _walk(child)
+    else:
+        yield transform
+
+
+def _with_interp(transform, interp):
+    import PyOpenColorIO as ocio
+
+    for t in _walk(transform):
+        if isinstance(t, ocio.Lut3DTransform):
+            t.setInterpolation(interp)
+    return transform
+
+
+def _lut_test_sets(q):
+    """XYZ test colours: interference colours, and real colours (mixtures of spectral
+    colours, the spectral locus itself) at many luminances."""
+    rng = np.random.default_rng(7)
+    t = rng.uniform(0.0, 1500.0, 3000 if q else 20000)
+    interference = np.concatenate([
+        colorimetry.film_XYZ(t), colorimetry.film_XYZ(t, kind="no-phase-change"),
+        colorimetry.morpho_XYZ(rng.uniform(0.0, 89.0, 1000 if q else 5000))])
+    locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(400.0, 701.0, 5.0))
+    n = 5000 if q else 40000
+    w = rng.dirichlet(np.full(3, 0.3), n)
+    picks = rng.integers(0, locus.shape[0], (n, 3))
+    mix = np.einsum("nk,nkc->nc", w, locus[picks])
+    mix = mix / mix[:, 1:2] * rng.uniform(0.01, 0.99, (n, 1))
+    return {"interference colours": interference, "real colours (spectral mixtures)": mix}
+
+
+def _naive_lut_transform(display, size, interp):
+    """Baseline: a Lut3D over XYZ / white in [0, 1]^3, no shaper (clamps outside)."""
+    import PyOpenColorIO as ocio
+    import colour  # noqa: F401
+
+    W = colorimetry.white_XYZ(display)
+    g = np.linspace(0.0, 1.0, size)
+    U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)  # [r][g][b] = (X, Y, Z)/W
+    rgb = clip.clip_XYZ(U * W, display) @ colorimetry.matrix_XYZ_to_RGB(display).T
+    lut = ocio.Lut3DTransform()
+    lut.setGridSize(size)
+    lut.setInterpolation(interp)
+    lut.setData(np.ascontiguousarray(rgb, dtype=np.float32).ravel())
+    scale = ocio.MatrixTransform(_m44(np.diag(1.0 / W)))
+    return ocio.GroupTransform([scale, lut, ocio.RangeTransform(0.0, 1.0, 0.0, 1.0)])
+
+
+def _rgb_domain_lut_transform(display, size, interp, lo, hi):
+    """Variant: a Lut3D over display-linear RGB in [lo, hi]^3 (affine range shaper)."""
+    import PyOpenColorIO as ocio
+
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    g = np.linspace(lo, hi, size)
+    U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
+    rgb = clip.clip_RGB(U, display)
+    lut = ocio.Lut3DTransform()
+    lut.setGridSize(size)
+    lut.setInterpolation(interp)
+    lut.setData(np.ascontiguousarray(rgb, dtype=np.float32).ravel())
+    m = np.eye(4)
+    m[:3, :3] = M / (hi - lo)
+    shaper = ocio.MatrixTransform([float(v) for v in m.ravel()], [-lo / (hi - lo)] * 3 + [0.0])
+    return ocio.GroupTransform([shaper, lut, ocio.RangeTransform(0.0, 1.0, 0.0, 1.0)])
+
+
+def _section_lut3d(ctx):
+    import PyOpenColorIO as ocio
+
+    tables = _tables()
+    if tables is None or not hasattr(tables, "clip_transform"):
+        return _tables_missing("1c. 3D LUT size, domain/shaper and interpolation")
+    q = ctx.quick
+    display = "sRGB"
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    Minv = np.linalg.inv(M)
+    d_size = _default(tables.clip_transform, "size")
+    sizes = sorted({17, d_size}) if q else sorted({17, 33, 65, d_size})
+    sets = _lut_test_sets(q)
+    refs = {k: clip.clip_XYZ(v, display) for k, v in sets.items()}
+    allx = np.concatenate(list(sets.values()))
+    rgb_int = sets["interference colours"] @ M.T
+    lo = float(np.floor(rgb_int.min() * 4) / 4)
+    hi = float(np.ceil(rgb_int.max() * 4) / 4)
+    h, w = (256, 256) if q else (512, 1024)
+    img = np.resize(allx, (h * w, 3)).astype(np.float32)
+    interps = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "linear": ocio.INTERP_LINEAR}
+    domains = {
+        "xyY + shapers (shipped)": lambda size, it: _with_interp(tables.clip_transform(display, size), it),
+        f"display RGB [{lo:g}, {hi:g}]³, affine": lambda size, it: _rgb_domain_lut_transform(display, size, it, lo, hi),
+        "XYZ/white [0, 1], no shaper": lambda size, it: _naive_lut_transform(display, size, it),
+    }
+    rows, series, raw = [], {}, []
+    default_pt = None
+    for d_name, make in domains.items():
+        for i_name, interp in interps.items():
+            key = f"{d_name}, {i_name}"
+            series[key] = []
+            for size in sizes:
+                t_start = time.perf_counter()
+                tf = make(size, interp)
+                bake = time.perf_counter() - t_start
+                stats = {}
+                for s_name, xyz in sets.items():
+                    out = tables.apply(tf, xyz).astype(np.float64) @ Minv.T
+                    stats[s_name] = _stats(colorimetry.delta_E2000(out, refs[s_name]))
+                mpix = _ocio_apply_speed(_ocio_cpu(tf), img)
+                a, b = stats["interference colours"], stats["real colours (spectral mixtures)"]
+                rows.append([d_name, i_name, size, a["mean"], a["p99"], a["max"], b["mean"],
+                             b["p99"], b["max"], bake, mpix])
+                series[key].append((1.0 / mpix, a["p99"], a["max"], size))
+                raw.append({"domain": d_name, "interp": i_name, "size": size, "stats": stats,
+                            "bake_s": bake, "apply_Mpix_s": mpix})
+                if d_name.endswith("(shipped)") and i_name == "tetrahedral" and size == d_size:
+                    default_pt = (1.0 / mpix, a["p99"], f"{size}³ xyY tetrahedral")
+                    ctx.results["default_lut3d"] = raw[-1]
+    ctx.results["lut3d"] = {"rows": raw, "rgb_domain": [lo, hi]}
+    img_md = _pareto_plot(ctx, "knob_lut3d.png", "3D clip LUT: error vs apply cost (interference colours)",
+                          series, xlabel="apply cost through OCIO (s / Mpixel, one thread)",
+                          default=default_pt)
+    n_int = sets["interference colours"].shape[0]
+    n_real = sets["real colours (spectral mixtures)"].shape[0]
+    return "\n".join([
+        "### 1c. 3D LUT size, domain/shaper and interpolation",
+        "",
+        "The constant-lightness clip into sRGB baked into a Lut3D, applied through OCIO "
+        "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
+        f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} real "
+        "colours (random mixtures of up to three spectral colours at Y 0.01–0.99, so many lie "
+        "far outside sRGB). Domains: the shipped `tables.clip_transform` (CIE xyY with shapers); "
+        "display-linear RGB over the box that holds the interference colours, with an affine "
+        "shaper (real colours beyond it are clamped by the LUT); "
+        "and the naive XYZ/white cube without shaper. Bake = building the transform "
+        "(the shipped LUT's vertex computation is cached per size, so only its first "
+        f"interpolation row pays it); apply = OCIO CPU, one thread, {w}×{h} pixels.",
+        "",
+        _table(["domain", "interp", "size", "interf. mean", "p99", "max", "real mean", "p99", "max",
+                "bake (s)", "Mpixel/s"], rows),
+        "",
+        f"Default (from `clip_transform`'s signature): {d_size}³, xyY with shapers, tetrahedral.",
+        "",
+        img_md,
+    ])
+
+
+def _section_analytic_vs_lut(ctx):
+    tables = _tables()
+    if tables is None or not hasattr(tables, "clip_transform"):
+        return _tables_missing("1d. Analytic per-pixel evaluation vs LUT application")
+    q = ctx.quick
+    display = "sRGB"
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    Minv = np.linalg.inv(M)
+    n = 16384 if q else 131072
+    x_um = _test_thicknesses(q, 1.5, n)
+    step = _default(colorimetry.film_XYZ, "step")
+    reference = clip.clip_XYZ(_film_XYZ_chunked(x_um * 1000.0, 0.25 if q else 0.1, True, chunk=512))
+    table = tables.film_table("phase-change")
+    img = np.repeat(x_um.astype(np.float32)[:, None], 3, axis=1)
+    lut_tf = tables.group([table.transform(), tables.clip_transform(display)])
+    lut_cpu = _ocio_cpu(lut_tf)
+    paths = {
+        f"analytic: film_XYZ ({step:g} nm) + clip_RGB, numpy":
+            lambda: clip.clip_RGB(colorimetry.film_XYZ(x_um * 1000.0) @ M.T, display),
+        "table lookup (numpy) + clip_RGB (numpy)":
+            lambda: clip.clip_RGB(table.lookup(x_um) @ M.T, display),
+        "Lut1D + 3D clip LUT, OCIO (shipped)": lambda: tables.apply(lut_tf, img),
+    }
+    rows, series, raw = [], {}, []
+    for name, fn in paths.items():
+        out = np.asarray(fn(), dtype=np.float64)
+        de = _stats(colorimetry.delta_E2000(out @ Minv.T, reference))
+        if "OCIO" in name:
+            mpix = _ocio_apply_speed(lut_cpu, img)
+        else:
+            mpix = n / _best_time(fn, repeat=2, min_time=0.05, max_calls=3) / 1e6
+        rows.append([name, de["mean"], de["p99"], de["max"], mpix])
+        series[name] = [(1.0 / mpix, de["p99"], de["max"], "")]
+        raw.append({"path": name, "dE": de, "Mpix_s": mpix})
+    ctx.results["analytic_vs_lut"] = raw
+    img_md = _pareto_plot(ctx, "knob_apply.png", "Analytic per pixel vs LUT: error vs cost",
+                          series, xlabel="cost (s / Mpixel, one thread)",
+                          default=(series[list(paths)[-1]][0][0], series[list(paths)[-1]][0][1],
+                                   "shipped OCIO path"))
+    return "\n".join([
+        "### 1d. Analytic per-pixel evaluation vs LUT application",
+        "",
+        f"From a thickness image ({n} random t' in 0–1.5 µm) to clipped display-linear sRGB, "
+        "against the analytic clip of a fine reference spectrum "
+        f"({0.25 if q else 0.1:g} nm band-limited). Throughput per pixel, one thread.",
+        "",
+        _table(["path", "ΔE2000 mean", "p99", "max", "Mpixel/s"], rows),
+        "",
+        img_md,
+    ])
+
+
+# --------------------------------------------------------------------------- #
+# Section 4: throughput against a memory copy
+# --------------------------------------------------------------------------- #
+def _section_throughput(ctx):
+    import OpenImageIO as oiio
+    import PyOpenColorIO as ocio
+    import matplotlib.pyplot as plt
+
+    tables = _tables()
+    if tables is None or not hasattr(tables, "view_transform"):
+        return "## 4. Throughput\n\nSkipped: `tables.view_transform` is not available."
+    q = ctx.quick
+    h, w = (540, 1024) if q else (2160, 4096)
+    threads = os.cpu_count() or 1
+    rng = np.random.default_rng(3)
+    xyz = _lut_test_sets(True)["interference colours"]
+    img = xyz[rng.integers(0, xyz.shape[0], h * w)].astype(np.float32).reshape(h, w, 3)
+    flat = img.reshape(-1, 3)
+    work = np.empty_like(img)
+    px = h * w
+    rep = 2 if q else 3
+    copy1 = px / _best_time(lambda: np.copyto(work, img), repeat=rep, min_time=0.1) / 1e6
+    strips = np.array_split(np.arange(h), max(threads * 4, 1))
+    pool = ThreadPoolExecutor(threads)
+
+    def pool_copy():
+        list(pool.map(lambda s: np.copyto(work[s[0]:s[-1] + 1], img[s[0]:s[-1] + 1]), strips))
+
+    copyN = px / _best_time(pool_copy, repeat=rep, min_time=0.1) / 1e6
+    src = oiio.ImageBuf(oiio.ImageSpec(w, h, 3, "float"))
+    src.set_pixels(oiio.ROI(), img)
+    dst = oiio.ImageBuf(oiio.ImageSpec(w, h, 3, "float"))
+    oiio_copy = {n: px / _best_time(lambda n=n: oiio.ImageBufAlgo.copy(dst, src, nthreads=n),
+                                    repeat=rep, min_time=0.1) / 1e6 for n in (1, 0)}
+    rows, raw = [], {"image": [w, h], "threads": threads,
+                     "copy_Mpix_s": {"numpy 1 thread": copy1, f"numpy {threads} threads": copyN,
+                                     "OIIO 1 thread": oiio_copy[1], "OIIO all threads": oiio_copy[0]},
+                     "views": {}}
+    with tempfile.TemporaryDirectory() as tmp:
+        for view in tables.VIEWS:
+            tf = tables.view_transform("sRGB", view)
+            cpu = _ocio_cpu(tf)
+
+            def one():
+                np.copyto(work, img)
+                cpu.applyRGB(work.reshape(-1, 3))
+
+            def many():
+                np.copyto(work, img)
+                list(pool.map(lambda s: cpu.applyRGB(work[s[0]:s[-1] + 1].reshape(-1, 3)), strips))
+
+            c_sec = px / copy1 / 1e6
+            v1 = px / max(_best_time(one, repeat=rep, min_time=0.1, max_calls=5) - c_sec, 1e-9) / 1e6
+            vN = px / max(_best_time(many, repeat=rep, min_time=0.1, max_calls=5) - px / copyN / 1e6,
+                          1e-9) / 1e6
+            path = os.path.join(tmp, f"view{len(raw['views'])}.ctf")
+            g = ocio.GroupTransform()
+            g.appendTransform(tf)
+            g.write("Color Transform Format", path, ocio.Config.CreateRaw())
+            o = {}
+            for n in (1, 0):
+                o[n] = px / _best_time(lambda n=n: oiio.ImageBufAlgo.ociofiletransform(
+                    dst, src, path, unpremult=False, nthreads=n), repeat=rep, min_time=0.1,
+                    max_calls=5) / 1e6
+            raw["views"][view] = {"ocio_1": v1, "ocio_pool": vN, "oiio_1": o[1], "oiio_all": o[0]}
+            rows.append([view, v1, vN, o[1], o[0], v1 / copy1, o[0] / oiio_copy[0]])
+    pool.shutdown()
+    ctx.results["throughput"] = raw
+    fig, ax = plt.subplots(figsize=(8, 4))
+    names = list(raw["views"])
+    xs = np.arange(len(names))
+    for i, (k, label) in enumerate([("ocio_1", "OCIO CPU, 1 thread"),
+                                    ("ocio_pool", f"OCIO CPU, {threads}-thread strip pool"),
+                                    ("oiio_1", "oiiotool engine (OIIO IBA), 1 thread"),
+                                    ("oiio_all", "oiiotool engine (OIIO IBA), all threads")]):
+        ax.bar(xs + (i - 1.5) * 0.2, [raw["views"][v][k] for v in names], 0.2, label=label)
+    ax.axhline(copy1, color="k", ls="--", lw=1, label=f"memory copy, 1 thread ({copy1:.0f})")
+    ax.axhline(oiio_copy[0], color="grey", ls=":", lw=1,
+               label=f"OIIO copy, all threads ({oiio_copy[0]:.0f})")
+    ax.set_yscale("log")
+    ax.set_xticks(xs)
+    ax.set_xticklabels(names, fontsize=8)
+    ax.set_ylabel("Mpixel/s")
+    ax.set_title(f"Views on a {w}×{h} float RGB image vs a memory copy")
+    ax.legend(fontsize=7)
+    img_md = ctx.savefig(fig, "throughput.png")
+    return "\n".join([
+        "## 4. Throughput against the physical limit",
+        "",
+        f"Each view of `tables.view_transform('sRGB', view)` (CIE-XYZ-D65 → sRGB-encoded) on a "
+        f"{w}×{h} float32 RGB image of interference colours ({px * 12 / 2 ** 20:.0f} MiB). The "
+        "bound is a plain memory copy of the same buffer: numpy `copyto` "
+        f"{copy1:.0f} Mpixel/s on one thread, {copyN:.0f} on {threads} threads; OIIO "
+        f"`ImageBufAlgo.copy` {oiio_copy[1]:.0f} (1 thread) / {oiio_copy[0]:.0f} (all threads). "
+        "OCIO's CPU processor applies single-threaded per call, so 'all threads' is either a "
+        f"thread pool of {threads} over image strips (OCIO releases the GIL) or OIIO's "
+        "`ImageBufAlgo.ociofiletransform` — the engine behind `oiiotool --ociofiletransform`, "
+        "run on the view written as a CTF file — with nthreads = 0 (all).",
+        "",
+        _table(["view", "OCIO 1 thread", f"OCIO pool ×{threads}", "OIIO 1 thread", "OIIO all",
+                "1 thread ÷ copy", "all threads ÷ OIIO copy"], rows),
+        "",
+        img_md,
+    ])
+
 # --------------------------------------------------------------------------- #
 # Driver
 # --------------------------------------------------------------------------- #
 SECTIONS = [
     ("machine", _section_machine),
     ("1a spectral step", _section_spectral_step),
+    ("1b 1D tables", _section_table1d),
+    ("1c 3D LUT", _section_lut3d),
+    ("1d analytic vs LUT", _section_analytic_vs_lut),
     ("2a gamut mapping", _section_gamut),
     ("2b Gaussian fits", _section_gaussian),
     ("2c TMM", _section_tmm),
     ("3 stability", _section_stability),
+    ("4 throughput", _section_throughput),
 ]
 
 
@@ -1079,6 +1490,8 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
         parts.append(fn(ctx))
         timings[name] = time.perf_counter() - t0
     total = time.perf_counter() - start
+    load_after = " / ".join(f"{v:.2f}" for v in os.getloadavg()) if hasattr(os, "getloadavg") else "?"
+    ctx.results["load_average_after"] = load_after
     ctx.results["section_seconds"] = timings
     ctx.results["total_seconds"] = total
     head = [
@@ -1088,7 +1501,10 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
         "All numbers and plots were measured in this run on the machine below; speeds are "
         "ratios between measurements of the same run.",
         "",
-        "Section times: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()) + ".",
+        "Section times: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()) + ". "
+        f"Load average (1/5/15 min) at the start {ctx.results['machine'].get('load_average_1_5_15min', '?')}"
+        f", at the end {load_after}: other processes share the cores, so absolute speeds vary "
+        "between runs; the ratios within one run are the figures to read.",
         "",
     ]
     text = "\n".join(head) + "\n" + "\n\n".join(parts) + "\n"
