@@ -372,9 +372,13 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 # --------------------------------------------------------------------------- #
 #: Chromaticity domain of the LUT (covers the spectral locus, x <= 0.735, y <= 0.834).
 XY_DOMAIN_MAX = (0.75, 0.85)
-#: Shaper exponents/offsets (moncurve, mirrored) for (x, y) about the white and 1 - Y.
-SHAPER_GAMMA = (2.0, 2.0, 2.0)
-SHAPER_OFFSET = (0.01, 0.01, 0.01)
+#: Clip LUT domains (see :func:`_shaper_parts`) and the default.
+CLIP_DOMAINS = ("xy", "aligned")
+CLIP_DOMAIN = "xy"
+#: Default shaper exponents / offsets (mirrored moncurve) for the (x, y, 1 - Y) axes.
+#: In the "aligned" domain the chromaticity axes stay affine (exponent 1).
+SHAPER_GAMMA = {"aligned": (1.0, 1.0, 2.0), "xy": (2.0, 2.0, 2.0)}
+SHAPER_OFFSET = {"aligned": (0.0, 0.0, 0.01), "xy": (0.01, 0.01, 0.01)}
 
 
 def _white_xy(display):
@@ -382,26 +386,98 @@ def _white_xy(display):
     return W[:2] / W.sum()
 
 
-def _shaper_parts(display, gamma=SHAPER_GAMMA, offset=SHAPER_OFFSET):
-    """Per-channel invertible shaper xyY -> u in [0, 1]^3 (a list of OCIO transforms).
+def _primaries_xy(display):
+    P = colorimetry.RGB_to_XYZ(np.eye(3), display)
+    return P[:, :2] / P.sum(axis=1, keepdims=True)
 
-    x, y: distance from the display white, normalised to [-1, 1], through an inverse
-    (mirrored) moncurve that spreads grid points near the white, then to [0, 1].
-    Y: 1 - Y through the same curve (grid points near Y = 1), then 1 - s.
+
+#: The canonical triangle the display primaries are sent to in the "aligned" domain:
+#: its edges a = 0, b = 1 and a = b are grid planes and tetrahedral split planes.
+_CANONICAL = np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 1.0]])
+
+
+def _locus_xy():
+    L = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
+    return L[:, :2] / L.sum(axis=1, keepdims=True)
+
+
+@lru_cache(maxsize=32)
+def _aligned_plan(display, size):
+    """Affine chromaticity map of the "aligned" domain for ``display`` and ``size``.
+
+    An affine map of the (x, y) plane sends the display's primaries to the canonical
+    triangle (0, 0), (0, 1), (1, 1); the gamut faces R = 0, G = 0, B = 0 (lines
+    through pairs of primaries in every constant-Y plane) become the planes a = 0,
+    b = 1 and a = b. With nodes at multiples of 1/k on both axes those planes are
+    made of grid faces and of the tetrahedral split planes, so no LUT cell straddles
+    them. Of the six assignments of primaries to corners, the one giving the most
+    nodes per unit (k) while covering the spectral locus is kept.
+    Returns (A (2x2), o (2,), k, m_a, m_b): u_a = (a + m_a / k) k / (size - 1).
     """
+    import itertools
+
+    cells = size - 1
+    P = _primaries_xy(display)
+    xy = np.vstack([_locus_xy(), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]])
+    best = None
+    for perm in itertools.permutations(range(3)):
+        sol = np.linalg.solve(np.c_[P[list(perm)], np.ones(3)], _CANONICAL)
+        A, o = sol[:2].T, sol[2]
+        ab = _locus_xy() @ A.T + o
+        lo, hi = ab.min(axis=0), ab.max(axis=0)
+        k = int(np.floor(cells / float((hi - lo).max())))
+        while k > 0:
+            ma, mb = int(np.ceil(-lo[0] * k - 1e-9)), int(np.ceil(-lo[1] * k - 1e-9))
+            if (cells - ma) / k >= hi[0] and (cells - mb) / k >= hi[1] and ma >= 0 and mb >= 0:
+                break
+            k -= 1
+        if k > 0 and (best is None or k > best[2]):
+            best = (A, o, k, ma, mb)
+    del xy
+    if best is None:
+        raise ValueError(f"clip LUT size {size} is too small for the aligned domain")
+    return best
+
+
+def _moncurve(gamma, offset, inverse):
     ocio = _ocio()
+    curve = ocio.ExponentWithLinearTransform([*map(float, gamma), 1.0],
+                                             [*map(float, offset), 0.0])
+    curve.setNegativeStyle(ocio.NEGATIVE_MIRROR)
+    if inverse:
+        curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return curve
+
+
+def _shaper_parts(display, size, domain="aligned", gamma=None, offset=None):
+    """Per-axis shaper xyY -> LUT coordinates u in [0, 1]^3 (a list of OCIO
+    transforms, CLF-writable: matrices and a mirrored moncurve).
+
+    "aligned": the affine map of :func:`_aligned_plan` on (x, y); Y through
+    ``1 - moncurve^-1(1 - Y)`` (grid points towards Y = 1).
+    "xy": distance from the display white over [0, 0.75] x [0, 0.85], normalised to
+    [-1, 1], through the inverse moncurve (grid points near the white), to [0, 1].
+    """
+    gamma = SHAPER_GAMMA[domain] if gamma is None else tuple(gamma)
+    offset = SHAPER_OFFSET[domain] if offset is None else tuple(offset)
+    if domain == "aligned":
+        A, o, k, ma, mb = _aligned_plan(display, size)
+        s = k / (size - 1)
+        M = np.eye(3)
+        M[:2, :2] = A * s
+        M[2, 2] = -1.0
+        ops = [_matrix(M, [(o[0] + ma / k) * s, (o[1] + mb / k) * s, 1.0])]
+        ops.append(_moncurve(gamma, offset, True))
+        ops.append(_matrix(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0]))
+        return ops
+    if domain != "xy":
+        raise ValueError(f"clip LUT domain must be one of {CLIP_DOMAINS}, got {domain!r}")
     xw, yw = _white_xy(display)
     dx = max(xw, XY_DOMAIN_MAX[0] - xw)
     dy = max(yw, XY_DOMAIN_MAX[1] - yw)
-    pre = _matrix(np.diag([1 / dx, 1 / dy, -1.0]), [-xw / dx, -yw / dy, 1.0])
-    ops = [pre]
-    if any(g != 1.0 for g in gamma):
-        curve = ocio.ExponentWithLinearTransform([*map(float, gamma), 1.0],
-                                                 [*map(float, offset), 0.0])
-        curve.setNegativeStyle(ocio.NEGATIVE_MIRROR)
-        curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-        ops.append(curve)
-    ops.append(_matrix(np.diag([0.5, 0.5, -1.0]), [0.5, 0.5, 1.0]))
+    ops = [_matrix(np.diag([1 / dx, 1 / dy, -1.0]), [-xw / dx, -yw / dy, 1.0]),
+           _moncurve(gamma, offset, True),
+           _matrix(np.diag([0.5, 0.5, -1.0]), [0.5, 0.5, 1.0])]
     return ops
 
 
@@ -418,7 +494,8 @@ class ClipLUT:
 
     display: str
     size: int
-    values: np.ndarray  # (size, size, size, 3) shaped xyY, index [x][y][Y]
+    values: np.ndarray  # (size, size, size, 3) LUT coordinates out, index [u0][u1][uY]
+    domain: str
     gamma: tuple
     offset: tuple
 
@@ -435,27 +512,28 @@ class ClipLUT:
         return t
 
     def shaper(self):
-        return _shaper_parts(self.display, self.gamma, self.offset)
+        return _shaper_parts(self.display, self.size, self.domain, self.gamma, self.offset)
 
     def core_transform(self):
-        """CLF-writable part, shaped xyY in -> xyY out: shaper, Lut3D, inverse shaper."""
+        """CLF-writable part, CIE xyY in -> xyY out: shaper, Lut3D, inverse shaper."""
         return group(self.shaper() + [self.lut_transform(), _inverse(self.shaper())],
                      name=self.name, id=transform_id("Gamut_Map", self.name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into {self.display} "
                                   f"(Section 3.2), baked as a {self.size}^3 tetrahedral Lut3D over "
-                                  "CIE xyY with per-axis shapers (towards the white and Y = 1); "
-                                  "apply after XYZ_TO_xyY and follow with its inverse."),
+                                  f"CIE xyY ({self.domain} domain, see ocio_thinfilm.tables; Y shaped "
+                                  "towards 1, exact by construction). "
+                                  "Apply after XYZ_TO_xyY and follow with its inverse."),
                      input_descriptor="CIE xyY (D65, Y = 1 at display white)",
                      output_descriptor=f"CIE xyY clipped into the {self.display} gamut")
 
 
-def _clip_vertices(display, size, gamma, offset):
-    """Vertex values of the xyY clip LUT (float64)."""
+def _clip_vertices(display, size, domain, gamma, offset):
+    """Vertex values of the clip LUT (float64), in the LUT's output coordinates."""
     import colour
 
     g = np.linspace(0.0, 1.0, size)
     U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
-    shaper = _shaper_parts(display, gamma, offset)
+    shaper = _shaper_parts(display, size, domain, gamma, offset)
     c = apply(_inverse(shaper), U).astype(np.float64)  # xyY at the vertices (OCIO's own)
     c[..., 2] = np.where(U[..., 2] == 0.0, 0.0, np.where(U[..., 2] == 1.0, 1.0, c[..., 2]))
     xyY = c.copy()
@@ -465,20 +543,20 @@ def _clip_vertices(display, size, gamma, offset):
     xyY[..., 1] = np.maximum(xyY[..., 1], 1e-9)
     XYZ = colour.xyY_to_XYZ(xyY)
     clipped = clip.clip_XYZ(XYZ, display)
-    out_xyY = colour.XYZ_to_xyY(clipped)
-    out = apply(group(shaper), out_xyY).astype(np.float64)
-    inside = np.all(clipped == XYZ, axis=-1)
+    inside = np.all(clipped == XYZ, axis=-1)  # the clip returns in-gamut colours unchanged
+    out = apply(group(shaper), colour.XYZ_to_xyY(clipped)).astype(np.float64)
     out[inside] = U[inside]  # identity exactly (affine in the grid coordinates)
     out[..., 2] = U[..., 2]  # the clip keeps Y: exact by construction
     return out
 
 
 @lru_cache(maxsize=16)
-def _clip_lut(display, size, gamma, offset):
-    values = _clip_vertices(display, size, gamma, offset)
+def _clip_lut(display, size, domain, gamma, offset):
+    values = _clip_vertices(display, size, domain, gamma, offset)
     values.setflags(write=False)
     BUILT.append(f"clip3d:{display}:{size}")
-    return ClipLUT(display=display, size=size, values=values, gamma=gamma, offset=offset)
+    return ClipLUT(display=display, size=size, values=values, domain=domain, gamma=gamma,
+                   offset=offset)
 
 
 def _check_display(display):
@@ -487,13 +565,18 @@ def _check_display(display):
     return display
 
 
-def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE, *, gamma=SHAPER_GAMMA,
-             offset=SHAPER_OFFSET) -> ClipLUT:
-    """The baked clip LUT for ``display`` (cached)."""
+def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE, *, domain: str = CLIP_DOMAIN,
+             gamma=None, offset=None) -> ClipLUT:
+    """The baked clip LUT for ``display`` (cached): vertex values from
+    :func:`ocio_thinfilm.clip.clip_XYZ` on a ``size``^3 grid over shaped CIE xyY."""
     _check_display(display)
-    size = _check_size(size, 2, 129, "clip LUT size")
+    size = _check_size(size, 5, 129, "clip LUT size")
+    if domain not in CLIP_DOMAINS:
+        raise ValueError(f"clip LUT domain must be one of {CLIP_DOMAINS}, got {domain!r}")
+    gamma = tuple(map(float, SHAPER_GAMMA[domain] if gamma is None else gamma))
+    offset = tuple(map(float, SHAPER_OFFSET[domain] if offset is None else offset))
     with _LOCK:
-        return _clip_lut(display, size, tuple(map(float, gamma)), tuple(map(float, offset)))
+        return _clip_lut(display, size, domain, gamma, offset)
 
 
 def display_matrix_transform(display: str, inverse: bool = False):
