@@ -189,6 +189,8 @@ class SpectrumScene(Scene):
             labels.append((x0 + panel // 2, int(header * 0.45), view, font))
             labels.append((x0 + strip // 2, int(header * 0.9), "spectrum", small))
             labels.append((x0 + strip + gap + strip // 2, int(header * 0.9), "film", small))
+        if small < 7:  # too small to read: no captions on thumbnails
+            labels = []
         return Picture(
             xyz=xyz,
             aovs={"wavelength": wavelength, "thickness": thickness},

@@ -1,0 +1,334 @@
+"""The ``render`` command and the paper's scenes (ocio_thinfilm.render / .scenes).
+
+Reference images: ``tests/reference/<scene>.png`` are 64x64 renders (seed 0, sRGB,
+Constant-Lightness Clip) compared with OpenImageIO's ``idiff``:
+
+    idiff -warn 0.004 -fail 0.02 -failpercent 1 -hardfail 0.25 reference new
+
+i.e. a pixel differing by more than 0.02 (5 of 255 code values) in any channel
+counts as failing; the test fails if more than 1 % of the pixels fail or any pixel
+differs by more than 0.25. Differences up to one code value (0.004) are only a
+warning. That tolerates last-bit differences of float32 maths between CPUs around
+the 8-bit rounding, but catches any real change of the scenes, the tables or the
+views. Regenerate after an intended change with ``python tests/test_render.py``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm import cli, colorimetry, render, scenes, tables
+from ocio_thinfilm.io import read_image
+
+REFERENCE = Path(__file__).parent / "reference"
+REF_SIZE = "64"
+IDIFF_THRESHOLDS = ["-warn", "0.004", "-fail", "0.02", "-failpercent", "1",
+                    "-hardfail", "0.25"]
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _env():
+    env = dict(os.environ)
+    env["PYTHONPATH"] = str(ROOT) + os.pathsep + env.get("PYTHONPATH", "")
+    return env
+
+
+def _channels(path) -> dict:
+    """EXR channels by name (OpenEXR stores the channels sorted by name)."""
+    import OpenImageIO as oiio
+
+    names = oiio.ImageInput.open(str(path)).spec().channelnames
+    pixels = read_image(path)
+    return {n: pixels[..., i] for i, n in enumerate(names)}
+
+
+def _cli(capsys, *argv):
+    code = cli.main(["render", *argv])
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+@pytest.fixture(scope="module")
+def stills(tmp_path_factory):
+    """All four scenes at 48x40, rendered once for the module."""
+    out = tmp_path_factory.mktemp("stills")
+    assert cli.main(["render", "all", "--size", "48x40", "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+# --------------------------------------------------------------------------- #
+# Command line
+# --------------------------------------------------------------------------- #
+def test_writes_an_exr_and_a_png_per_scene(stills):
+    names = sorted(p.name for p in stills.iterdir())
+    assert names == sorted(f"{s}.{ext}" for s in scenes.SCENES for ext in ("exr", "png"))
+    for s in scenes.SCENES:
+        png = read_image(stills / f"{s}.png")
+        assert png.shape == (40, 48, 3)
+        assert png.max() > 0.2  # not a black frame
+
+
+def test_output_is_byte_identical_for_the_same_command(stills, tmp_path):
+    assert cli.main(["render", "all", "--size", "48x40", "--out", str(tmp_path),
+                     "--quiet"]) == 0
+    for p in stills.iterdir():
+        assert (tmp_path / p.name).read_bytes() == p.read_bytes(), p.name
+
+
+def test_seed_changes_the_noise_but_not_the_spectrum(stills, tmp_path):
+    assert cli.main(["render", "all", "--size", "48x40", "--out", str(tmp_path),
+                     "--seed", "5", "--quiet"]) == 0
+    assert (tmp_path / "spectrum.png").read_bytes() == (stills / "spectrum.png").read_bytes()
+    for s in ("oil", "soap", "morpho"):
+        assert not np.array_equal(read_image(tmp_path / f"{s}.exr"),
+                                  read_image(stills / f"{s}.exr")), s
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["nosuch"], "unknown scene"),
+    (["oil", "--size", "0"], "--size"),
+    (["oil", "--size", "-5"], "--size"),
+    (["oil", "--size", "64x0"], "--size"),
+    (["oil", "--size", "100000"], "--size"),
+    (["oil", "--size", "5000x5000"], "--size"),
+    (["oil", "--size", "big"], "--size"),
+    (["oil", "--frames", "3-1"], "--frames"),
+    (["oil", "--frames", "0-2"], "--frames"),
+    (["oil", "--frames", "1-x"], "--frames"),
+    (["oil", "--seed", "-1"], "--seed"),
+    (["oil", "--display", "CRT"], "--display"),
+    (["oil", "--view", "Filmic"], "--view"),
+])
+def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, tmp_path, argv, message):
+    out = tmp_path / "out"
+    code, stdout, stderr = _cli(capsys, *argv, "--out", str(out))
+    assert code == 2
+    assert stderr.count("\n") == 1 and stderr.startswith("ocio-thinfilm render: error:")
+    assert message in stderr
+    assert not out.exists()
+
+
+def test_unwritable_output_is_one_line_exit_2(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a directory")
+    code, _, stderr = _cli(capsys, "oil", "--size", "16", "--out", str(blocker / "sub"))
+    assert code == 2 and stderr.count("\n") == 1 and "not writable" in stderr
+    assert blocker.read_text() == "not a directory"
+
+
+def test_failed_write_leaves_no_partial_files(capsys, tmp_path, monkeypatch):
+    from ocio_thinfilm import io
+
+    real = io.write_image
+
+    def failing(path, *args, **kwargs):
+        if str(path).endswith(".png"):
+            raise OSError("disk full (simulated)")
+        return real(path, *args, **kwargs)
+
+    monkeypatch.setattr(render, "write_image", failing)
+    code, _, stderr = _cli(capsys, "soap", "--size", "16", "--out", str(tmp_path))
+    assert code == 2 and "disk full" in stderr
+    # The EXR is complete or absent; no temporary files are left behind.
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+    for p in tmp_path.glob("*.exr"):
+        assert read_image(p).shape == (16, 16, 5)
+
+
+# --------------------------------------------------------------------------- #
+# Pictures: through the tables and the views
+# --------------------------------------------------------------------------- #
+def test_exr_is_scene_linear_xyz_with_aovs_and_documented(stills):
+    import OpenImageIO as oiio
+
+    for name, aovs in (("spectrum", ["wavelength", "thickness"]), ("oil", ["angle", "thickness"]),
+                       ("soap", ["angle", "thickness"]), ("morpho", ["angle", "cos_theta"])):
+        spec = oiio.ImageInput.open(str(stills / f"{name}.exr")).spec()
+        assert list(spec.channelnames[:3]) == ["R", "G", "B"]
+        assert sorted(spec.channelnames[3:]) == sorted(aovs)
+        assert "CIE XYZ" in spec.getattribute("ocio_thinfilm:colorspace")
+        for aov in aovs:
+            assert spec.getattribute(f"ocio_thinfilm:aov:{aov}")
+    morpho = oiio.ImageInput.open(str(stills / "morpho.exr")).spec()
+    assert morpho.getattribute("ocio_thinfilm:exposure") == scenes.MorphoScene.EXPOSURE
+
+
+def test_png_is_the_exr_through_the_chosen_view(stills):
+    exr = read_image(stills / "oil.exr")
+    png = read_image(stills / "oil.png")
+    expected = np.clip(tables.apply(tables.view_transform("sRGB", render.DEFAULT_VIEW),
+                                    exr[..., :3]), 0, 1)
+    # Half-float EXR and 8-bit PNG: within a couple of code values.
+    assert np.abs(expected - png).max() < 3 / 255
+
+
+def test_spectrum_film_strip_is_the_exact_film_colour(stills):
+    """The film strips come through the film table's OCIO transform: compare the EXR
+    with direct spectral integration at the thickness AOV."""
+    ch = _channels(stills / "spectrum.exr")
+    t = ch["thickness"]
+    strip = t > 0.05
+    exact = colorimetry.film_XYZ(t[strip].astype(np.float64) * 1000.0, "phase-change")
+    got = np.stack([ch["R"], ch["G"], ch["B"]], axis=-1)[strip]
+    assert np.abs(got - exact).max() < 0.01  # half-float EXR, LUT interpolation
+    wl = ch["wavelength"]
+    assert 379 < wl[wl > 0].min() < 390 and 690 < wl.max() < 701
+
+
+def test_spectrum_shows_three_views_side_by_side(tmp_path):
+    picture, rgb = render.render_scene("spectrum", (480, 320))
+    assert [r[2] for r in picture.regions] == list(scenes.SpectrumScene.VIEWS)
+    assert [l[2] for l in picture.labels[::3]] == list(scenes.SpectrumScene.VIEWS)
+    # The same XYZ in each panel, different display colours: the views differ.
+    thirds = [rgb[60:300, x0:x1] for x0, x1, _ in picture.regions]
+    w = min(t.shape[1] for t in thirds)
+    assert not np.allclose(thirds[0][:, :w], thirds[1][:, :w], atol=0.02)
+    assert not np.allclose(thirds[1][:, :w], thirds[2][:, :w], atol=0.02)
+
+
+def test_constant_lightness_view_keeps_the_luminance_of_the_spectrum():
+    picture, rgb = render.render_scene("spectrum", (240, 160), view="Channel Clamp")
+    import colour
+
+    x0, x1, view = picture.regions[0]
+    assert view == "Constant-Lightness Clip"
+    wl = picture.aovs["wavelength"][:, x0:x1]
+    mask = wl > 0
+    Y_scene = picture.xyz[..., 1][:, x0:x1][mask]
+    lin = colour.cctf_decoding(rgb[:, x0:x1][mask].astype(np.float64), function="sRGB")
+    Y_shown = colorimetry.RGB_to_XYZ(lin, "sRGB")[:, 1]
+    assert np.abs(Y_shown - Y_scene).max() < 0.02
+
+
+def test_soap_is_black_at_the_top_and_coloured_below():
+    picture, rgb = render.render_scene("soap", (128, 128))
+    t = picture.aovs["thickness"]
+    inside = t > 0
+    rows = np.nonzero(inside.any(axis=1))[0]
+    top = picture.aovs["thickness"][rows[0]:rows[0] + 6]
+    assert np.median(top) < 0.03  # the black film: t' under ~30 nm
+    band = t[90:110][inside[90:110]]
+    assert band.mean() > 0.5
+    assert picture.aovs["angle"].max() > 70  # grazing at the silhouette
+
+
+def test_oil_view_angle_and_thickness():
+    picture, _ = render.render_scene("oil", (96, 96))
+    angle, t = picture.aovs["angle"], picture.aovs["thickness"]
+    # Camera looking down at the road at an angle: steeper towards the bottom.
+    assert angle[0].mean() > angle[-1].mean() + 10
+    assert 0 < angle.min() and angle.max() < 90
+    # Eq. 13: thickest in the middle, negligible at the borders.
+    assert t[40:56, 40:56].mean() > 0.4 and t[:4].max() < 0.05
+
+
+def test_morpho_is_blue_and_darkens_with_angle():
+    picture, _ = render.render_scene("morpho", (128, 128))
+    xyz, angle = picture.xyz, picture.aovs["angle"]
+    facing, oblique = angle < 10, (angle > 30) & (angle < 45)
+    assert facing.any() and oblique.any()
+    x = xyz[..., 0] / xyz.sum(axis=-1)
+    assert x[facing].mean() < 0.2  # blue-violet chromaticity
+    assert xyz[..., 1][facing].mean() > 3 * xyz[..., 1][oblique].mean()
+
+
+# --------------------------------------------------------------------------- #
+# Only the declared tables are built
+# --------------------------------------------------------------------------- #
+def _built(*argv, tmp_path):
+    code = ("import json, sys; from ocio_thinfilm import cli, tables; "
+            "rc = cli.main(sys.argv[1:]); print(json.dumps(tables.BUILT)); sys.exit(rc)")
+    out = subprocess.run([sys.executable, "-c", code, "render", *argv, "--size", "16",
+                          "--out", str(tmp_path), "--quiet"], capture_output=True, text=True,
+                         env=_env(), check=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def test_morpho_builds_only_its_table_and_the_displays_clip(tmp_path):
+    built = _built("morpho", "--display", "Display P3", tmp_path=tmp_path)
+    assert [b.split(":")[0] for b in built].count("film") == 0
+    assert sorted(built) == sorted([f"morpho:{tables.MORPHO_SIZE}",
+                                    f"clip3d:Display P3:{tables.CLIP_SIZE}"])
+
+
+def test_a_view_without_the_clip_builds_no_3d_lut(tmp_path):
+    assert _built("oil", "--view", "Channel Clamp", tmp_path=tmp_path) == [
+        f"film:phase-change:{tables.FILM_SIZE}"]
+
+
+# --------------------------------------------------------------------------- #
+# Frames
+# --------------------------------------------------------------------------- #
+def test_frame_range_one_process_per_frame(tmp_path):
+    subprocess.run([sys.executable, "-m", "ocio_thinfilm", "render", "morpho", "--frames",
+                    "2-3", "--size", "24", "--out", str(tmp_path), "--quiet", "--jobs", "2"],
+                   check=True, env=_env())
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == ["morpho.0002.exr", "morpho.0002.png", "morpho.0003.exr", "morpho.0003.png"]
+    # Frames are independent: frame 3 alone (in this process) gives the same bytes.
+    alone = tmp_path / "alone"
+    assert cli.main(["render", "morpho", "--frames", "3-3", "--size", "24", "--out",
+                     str(alone), "--quiet"]) == 0
+    assert (alone / "morpho.0003.png").read_bytes() == (tmp_path / "morpho.0003.png").read_bytes()
+    assert (alone / "morpho.0003.exr").read_bytes() == (tmp_path / "morpho.0003.exr").read_bytes()
+
+
+@pytest.mark.parametrize("name, aov", [("oil", "thickness"), ("soap", "thickness"),
+                                       ("morpho", "angle")])
+def test_animated_parameters_change_with_the_frame(name, aov):
+    a, _ = render.render_scene(name, (48, 48), frame=1)
+    b, _ = render.render_scene(name, (48, 48), frame=12)
+    assert not np.allclose(a.aovs[aov], b.aovs[aov])
+    if name == "oil":  # the slick spreads: thinner in the middle
+        assert b.aovs[aov][20:28, 20:28].mean() < a.aovs[aov][20:28, 20:28].mean()
+    if name == "soap":  # the film drains: more black film
+        assert (b.aovs[aov] < 0.03).sum() > (a.aovs[aov] < 0.03).sum()
+
+
+def test_spectrum_ignores_the_frame():
+    a, _ = render.render_scene("spectrum", (48, 48), frame=1)
+    b, _ = render.render_scene("spectrum", (48, 48), frame=7)
+    assert np.array_equal(a.xyz, b.xyz)
+
+
+# --------------------------------------------------------------------------- #
+# Reference images
+# --------------------------------------------------------------------------- #
+@pytest.fixture(scope="module")
+def reference_renders(tmp_path_factory):
+    out = tmp_path_factory.mktemp("reference")
+    assert cli.main(["render", "all", "--size", REF_SIZE, "--out", str(out), "--quiet"]) == 0
+    return out
+
+
+@pytest.mark.skipif(shutil.which("idiff") is None, reason="OpenImageIO's idiff not on PATH")
+@pytest.mark.parametrize("name", list(scenes.SCENES))
+def test_matches_the_reference_image(reference_renders, name):
+    ref = REFERENCE / f"{name}.png"
+    new = reference_renders / f"{name}.png"
+    result = subprocess.run(["idiff", *IDIFF_THRESHOLDS, str(ref), str(new)],
+                            capture_output=True, text=True)
+    assert result.returncode in (0, 1), result.stdout + result.stderr  # 0 pass, 1 warn
+
+
+def _regenerate() -> None:
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        assert cli.main(["render", "all", "--size", REF_SIZE, "--out", tmp, "--quiet"]) == 0
+        REFERENCE.mkdir(exist_ok=True)
+        for name in scenes.SCENES:
+            shutil.copyfile(Path(tmp) / f"{name}.png", REFERENCE / f"{name}.png")
+            print(f"wrote {REFERENCE / f'{name}.png'}")
+
+
+if __name__ == "__main__":
+    _regenerate()
