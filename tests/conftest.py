@@ -1,0 +1,92 @@
+"""Shared fixtures and independent reference implementations for the core tests.
+
+Everything here is a *reference*: written from the textbook formulas (or taken from
+colour-science), never copied from the code under test.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, settings
+
+# Property tests generate large numpy arrays per example: no per-example deadline,
+# deterministic examples so CI runs are reproducible.
+settings.register_profile(
+    "core",
+    deadline=None,
+    derandomize=True,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+settings.load_profile("core")
+
+
+@pytest.fixture(scope="session")
+def colour():
+    import colour as colour_module
+
+    return colour_module
+
+
+def colour_thin_film_R(n_stack, thickness, wavelengths, theta):
+    """colour-science's TMM single film, unpolarised, reshaped to ours.
+
+    ``colour.phenomena.thin_film_tmm`` returns (W, A, T, 2) for [R_s, R_p]; we
+    average the polarisations and return (A, T, W) -- the layout our functions
+    give for ``thickness[None, :]`` and ``theta[:, None]``.
+    """
+    import colour
+
+    R, _ = colour.phenomena.thin_film_tmm(n_stack, np.atleast_1d(thickness),
+                                          np.atleast_1d(wavelengths), np.atleast_1d(theta))
+    return np.transpose(R.mean(axis=-1), (1, 2, 0))
+
+
+def colour_multilayer_R(n_stack, thicknesses, wavelengths, theta):
+    """colour-science's ``multilayer_tmm``, unpolarised, shape (A, W)."""
+    import colour
+
+    R, _ = colour.phenomena.multilayer_tmm(n_stack, thicknesses, np.atleast_1d(wavelengths),
+                                           np.atleast_1d(theta))
+    return np.transpose(R.mean(axis=-1)[:, :, 0], (1, 0))
+
+
+def mp_airy_R(n0, n1, n2, d, wavelength, theta_deg, dps=40):
+    """Unpolarised reflectance of one film, written out from Born & Wolf with mpmath.
+
+    Snell's law in complex form, ``cos_j = sqrt(1 - (n0 sin(theta)/n_j)^2)`` on the
+    branch with ``Im(n_j cos_j) >= 0`` (the wave decays into the medium: evanescent
+    under total internal reflection, absorbing for Im(n) > 0), Fresnel amplitudes
+    for s and p, and the Airy sum ``r = (r01 + r12 e^{2i beta}) / (1 + r01 r12 e^{2i
+    beta})`` with ``beta = 2 pi n1 d cos_1 / lambda``. Evaluated at ``dps`` digits.
+    """
+    import mpmath as mp
+
+    with mp.workdps(dps):
+        n0, n1, n2 = mp.mpc(n0), mp.mpc(n1), mp.mpc(n2)
+        theta = mp.radians(mp.mpf(theta_deg))
+        s0 = n0 * mp.sin(theta)
+
+        def cosine(n):
+            c = mp.sqrt(1 - (s0 / n) ** 2)
+            nc = n * c
+            if mp.im(nc) < 0 or (mp.im(nc) == 0 and mp.re(nc) < 0):
+                c = -c
+            return c
+
+        c0, c1, c2 = mp.cos(theta), cosine(n1), cosine(n2)
+
+        def fresnel(na, ca, nb, cb):
+            den_s = na * ca + nb * cb
+            den_p = nb * ca + na * cb
+            rs = (na * ca - nb * cb) / den_s if den_s != 0 else mp.mpc(0)
+            rp = (nb * ca - na * cb) / den_p if den_p != 0 else mp.mpc(0)
+            return rs, rp
+
+        beta = 2 * mp.pi * n1 * mp.mpf(d) * c1 / mp.mpf(wavelength)
+        z = mp.exp(2j * beta)
+        total = mp.mpf(0)
+        for a, b in zip(fresnel(n0, c0, n1, c1), fresnel(n1, c1, n2, c2)):
+            total += abs((a + b * z) / (1 + a * b * z)) ** 2
+        return float(total / 2)
