@@ -131,12 +131,13 @@ def _grey(Y):
 class SpectrumScene(Scene):
     name = "spectrum"
     figure = "Figure 4"
-    title = ("The visible spectrum (left strip of each panel, 380 nm at the top to 700 nm) "
-             "and Newton's interference colours of a film with a phase change (right strip, "
-             "t' = 0 to 1 um), through the Constant-Lightness Clip, Channel Clamp and "
-             "ACES Gamut Compression views side by side")
+    title = ("The visible spectrum (380 nm at the top to 700 nm) and two rows of "
+             "interference colours -- Newton's colours of a soap film (t' = 0 to 1 um) and "
+             "the near-spectral Morpho multilayer (0 to 60 degrees) -- through the "
+             "Constant-Lightness Clip, Channel Clamp and ACES Gamut Compression views "
+             "side by side")
     animation = "none (every frame is the same)"
-    tables = (FILM_TABLE,)
+    tables = (FILM_TABLE, MORPHO_TABLE)
 
     #: The views compared, left to right.
     VIEWS = ("Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression")
@@ -144,20 +145,22 @@ class SpectrumScene(Scene):
     SPECTRUM_PEAK_Y = 0.6
     WAVELENGTHS = (380.0, 700.0)
     THICKNESS = (0.0, 1.0)
+    ANGLES = (0.0, 60.0)
+    STRIPS = ("spectrum", "film", "morpho")
 
     def render(self, width, height, *, lookup, seed=0, frame=1):
         import colour
 
         header = max(2, int(round(height * 0.11)))
-        gap = max(1, width // 48)
+        gap = max(1, width // 64)
         panel = (width - 4 * gap) // 3
-        strip = (panel - gap) // 2
+        strip = (panel - 2 * gap) // 3
         rows = np.arange(header, height - gap)
         frac = (rows - header + 0.5) / max(1, len(rows))
 
         xyz = np.zeros((height, width, 3), np.float32)
-        wavelength = np.zeros((height, width), np.float32)
-        thickness = np.zeros((height, width), np.float32)
+        aovs = {k: np.zeros((height, width), np.float32)
+                for k in ("wavelength", "thickness", "angle")}
 
         # Spectrum: the CIE 1931 matching functions (equal-energy light), every 1 nm
         # interpolated to the rows.
@@ -168,37 +171,45 @@ class SpectrumScene(Scene):
         spec = np.stack([np.interp(wl, grid, cmfs[:, k]) for k in range(3)], axis=-1)
         spec *= self.SPECTRUM_PEAK_Y / cmfs[:, 1].max()
 
-        # Newton's colours through the film table (one column, then broadcast).
+        # Newton's colours through the film table, the Morpho's through its angle
+        # table (one column each, then broadcast).
         t0, t1 = self.THICKNESS
         t_opt = (t0 + (t1 - t0) * frac).astype(np.float32)
         film = lookup(FILM_TABLE, t_opt[:, None])[:, 0, :]
+        a0, a1 = self.ANGLES
+        theta = (a0 + (a1 - a0) * frac).astype(np.float32)
+        cos_t = np.cos(np.radians(theta)).astype(np.float32)
+        morpho = MorphoScene.EXPOSURE * lookup(MORPHO_TABLE, cos_t[:, None])[:, 0, :]
 
+        columns = [(spec, "wavelength", wl), (film, "thickness", t_opt),
+                   (morpho, "angle", theta)]
         regions, labels = [], []
         font = int(min(header * 0.42, panel / (0.5 * max(map(len, self.VIEWS)))))
         small = int(font * 0.75)
+        body = slice(header, height - gap)
         for i, view in enumerate(self.VIEWS):
             x0 = gap + i * (panel + gap)
-            a, b = slice(x0, x0 + strip), slice(x0 + strip + gap, x0 + panel)
-            xyz[header:height - gap, a] = spec[:, None, :]
-            wavelength[header:height - gap, a] = wl[:, None]
-            xyz[header:height - gap, b] = film[:, None, :]
-            thickness[header:height - gap, b] = t_opt[:, None]
+            for j, (values, aov, coordinate) in enumerate(columns):
+                xs = slice(x0 + j * (strip + gap), x0 + j * (strip + gap) + strip)
+                xyz[body, xs] = values[:, None, :]
+                aovs[aov][body, xs] = coordinate[:, None]
+                labels.append((x0 + j * (strip + gap) + strip // 2, int(header * 0.9),
+                               self.STRIPS[j], small))
             left = 0 if i == 0 else x0 - gap // 2
             right = width if i == 2 else x0 + panel + gap // 2
             regions.append((left, right, view))
             labels.append((x0 + panel // 2, int(header * 0.45), view, font))
-            labels.append((x0 + strip // 2, int(header * 0.9), "spectrum", small))
-            labels.append((x0 + strip + gap + strip // 2, int(header * 0.9), "film", small))
-        if small < 7:  # too small to read: no captions on thumbnails
+        if small < 6:  # too small to read: no captions on thumbnails
             labels = []
         return Picture(
-            xyz=xyz,
-            aovs={"wavelength": wavelength, "thickness": thickness},
+            xyz=xyz, aovs=aovs,
             aov_docs={"wavelength": "wavelength of the spectrum strips in nm (0 elsewhere)",
                       "thickness": "optical thickness t' = n t cos(theta_t) of the film "
-                                   "strips in micrometres (0 elsewhere)"},
+                                   "strips in micrometres (0 elsewhere)",
+                      "angle": "view angle of the Morpho strips in degrees (0 elsewhere)"},
             regions=regions, labels=labels,
-            attributes={"spectrum_peak_Y": self.SPECTRUM_PEAK_Y})
+            attributes={"spectrum_peak_Y": self.SPECTRUM_PEAK_Y,
+                        "morpho_exposure": MorphoScene.EXPOSURE})
 
 
 # --------------------------------------------------------------------------- #
