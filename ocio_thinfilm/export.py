@@ -1,0 +1,433 @@
+"""``ocio-thinfilm bake`` and ``ocio-thinfilm export``: the config folder and standalone LUTs.
+
+Stage 6 of the pipeline. Every file is written by OpenColorIO's own writers
+(``GroupTransform.write`` for CLF, ``Baker`` for .cube / .spi1d / .spi3d / .csp),
+atomically (:mod:`.io`), and without timestamps, so equal inputs give equal bytes.
+
+Standalone LUTs (``export``)
+----------------------------
+- ``film`` / ``morpho``: a 1D table sampled uniformly over ``--range`` (thickness in
+  micrometres, or cos(theta) for Morpho). CLF files take the thickness itself as
+  input (a range matrix in front of the LUT1D); the other formats take the
+  normalised position p = (x - min) / (max - min) in [0, 1]. Output: CIE-XYZ-D65, or
+  with ``--display`` the display-linear RGB after the constant-lightness clip.
+  ``--index n`` makes the input the physical thickness t (t' = n t, normal
+  incidence).
+- ``clip``: the constant-lightness clip of one display as a 3D LUT over
+  display-linear RGB in ``--range`` (default -0.5..1.5; 0 and 1 fall on grid
+  nodes, so in-gamut colours are reproduced exactly); CLF input is the RGB itself,
+  the other formats take p = (rgb - min) / (max - min). Output: clipped
+  display-linear RGB. (The config's own clip LUT works in CIE xyY with
+  ``FixedFunction`` ops, which these formats cannot hold.)
+
+Functions: :func:`export_lut`, :func:`export_set`, :func:`bake`, :func:`register`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from . import clip, colorimetry, tables
+from .io import UsageError, atomic_directory, atomic_file, check_writable
+
+__all__ = ["FORMATS", "TABLES", "DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "export_lut",
+           "export_set", "bake", "register"]
+
+#: Format name -> (OCIO writer format, file extension, LUT dimensions it can hold).
+FORMATS = {
+    "clf": ("Academy/ASC Common LUT Format", "clf", (1, 3)),
+    "cube": ("resolve_cube", "cube", (1, 3)),
+    "spi1d": ("spi1d", "spi1d", (1,)),
+    "spi3d": ("spi3d", "spi3d", (3,)),
+    "csp": ("cinespace", "csp", (3,)),
+}
+TABLES = ("film", "morpho", "clip")
+DEFAULT_CONFIG_DIR = "configs/thinfilm"
+DEFAULT_LUTS_DIR = "luts"
+DEFAULT_SIZE = {"film": 4096, "morpho": 1024, "clip": 33}
+MAX_SIZE = {"film": 1 << 20, "morpho": 1 << 20, "clip": 129}
+DEFAULT_RANGE = {"film": (0.0, 1.5), "morpho": (0.0, 1.0), "clip": (-0.5, 1.5)}
+
+
+# --------------------------------------------------------------------------- #
+# Validation
+# --------------------------------------------------------------------------- #
+def _validate(table, kind, display, index, value_range, size, fmt):
+    if table not in TABLES:
+        raise UsageError(f"unknown table {table!r}; choose from {', '.join(TABLES)}")
+    if fmt not in FORMATS:
+        raise UsageError(f"unknown format {fmt!r}; choose from {', '.join(FORMATS)}")
+    dims = 3 if table == "clip" else 1
+    if dims not in FORMATS[fmt][2]:
+        allowed = [f for f, spec in FORMATS.items() if dims in spec[2]]
+        raise UsageError(f"format {fmt} cannot hold a {dims}D LUT; for {table} use "
+                         f"{', '.join(allowed)}")
+    if display is not None and display not in clip.DISPLAYS:
+        raise UsageError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
+    if table == "clip" and display is None:
+        raise UsageError("export clip needs --display")
+    if kind not in colorimetry.FILM_KINDS:
+        raise UsageError(f"unknown film kind {kind!r}; choose from "
+                         f"{', '.join(colorimetry.FILM_KINDS)}")
+    if index is not None:
+        if table != "film":
+            raise UsageError("--index applies to film tables only")
+        if not (math.isfinite(index) and 1.0 <= index <= 10.0):
+            raise UsageError(f"--index must be a refractive index in [1, 10], got {index:g}")
+    size = DEFAULT_SIZE[table] if size is None else size
+    if not 2 <= size <= MAX_SIZE[table]:
+        raise UsageError(f"--size must be in [2, {MAX_SIZE[table]}] for {table}, got {size}")
+    lo, hi = DEFAULT_RANGE[table] if value_range is None else value_range
+    if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
+        raise UsageError(f"--range must be two finite numbers MIN < MAX, got {lo:g} {hi:g}")
+    if table == "film" and lo < 0:
+        raise UsageError(f"--range: thickness must not be negative, got {lo:g}")
+    if table == "morpho" and (lo < 0 or hi > 1):
+        raise UsageError(f"--range: cos(theta) must lie in [0, 1], got {lo:g} {hi:g}")
+    if table == "clip" and (lo > 0 or hi < 1):
+        raise UsageError(f"--range must contain [0, 1] for clip, got {lo:g} {hi:g}")
+    if table == "film" and hi > 1000:
+        raise UsageError(f"--range: thickness above 1000 um is the incoherent grey; got {hi:g}")
+    return size, (float(lo), float(hi))
+
+
+# --------------------------------------------------------------------------- #
+# LUT contents
+# --------------------------------------------------------------------------- #
+def _lut1d(values):
+    import PyOpenColorIO as ocio
+
+    t = ocio.Lut1DTransform()
+    t.setLength(len(values))
+    t.setData(np.ascontiguousarray(values, dtype=np.float32).ravel())
+    return t
+
+
+def _lut3d(values):
+    import PyOpenColorIO as ocio
+
+    t = ocio.Lut3DTransform()
+    t.setGridSize(values.shape[0])
+    t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
+    t.setData(np.ascontiguousarray(values, dtype=np.float32).ravel())
+    return t
+
+
+def _stem(table, kind, display, index):
+    if table == "film":
+        stem = "ThinFilm_" + ("PhaseChange" if kind == "phase-change" else "NoPhaseChange")
+        if index is not None:
+            stem += f"_n{index:g}"
+    elif table == "morpho":
+        stem = "ThinFilm_Morpho"
+    else:
+        stem = "ConstantLightnessClip"
+    if display is not None:
+        stem += "_" + display.replace(".", "").replace(" ", "")
+    return stem
+
+
+def lut_contents(table, *, kind="phase-change", display=None, index=None, value_range=None,
+                 size=None, progress=None):
+    """(values array, LUT transform, metadata dict) for one standalone LUT.
+
+    ``values``: (size, 3) or (size, size, size, 3), on the uniform grid over the
+    normalised input p in [0, 1].
+    """
+    size, (lo, hi) = _validate(table, kind, display, index, value_range, size, "clf")
+    x = np.linspace(lo, hi, size)
+    if table == "film":
+        n = 1.0 if index is None else index
+        chunks = np.array_split(x, max(1, size // 8192))
+        parts = []
+        for chunk in chunks:
+            parts.append(colorimetry.film_XYZ(chunk * n * 1000.0, kind,
+                                              step=tables.SPECTRAL_STEP))
+            if progress:
+                progress(len(chunk) / size)
+        values = np.concatenate(parts)
+        what = ("physical thickness t in um (t' = %g t)" % n if index is not None
+                else "optical thickness t' = n t cos(theta_t) in um")
+        description = (f"Smits & Meyer 1990 {kind} thin film, {size} entries uniform over "
+                       f"{lo:g}-{hi:g} um")
+    elif table == "morpho":
+        values = colorimetry.morpho_XYZ(np.degrees(np.arccos(np.clip(x, 0.0, 1.0))),
+                                        step=tables.SPECTRAL_STEP)
+        if progress:
+            progress(1.0)
+        what = "cos(theta), the facing ratio N.V"
+        description = (f"Smits & Meyer 1990 Morpho multilayer (Eq. 9 + 14), {size} entries "
+                       f"uniform over cos(theta) {lo:g}-{hi:g}")
+    else:
+        g = np.stack(np.meshgrid(x, x, x, indexing="ij"), axis=-1)
+        values = clip.clip_RGB(g, display)
+        if progress:
+            progress(1.0)
+        what = f"{display} display-linear RGB"
+        description = (f"Smits & Meyer 1990 constant-lightness clip into {display} "
+                       f"(Section 3.2), {size}^3 tetrahedral LUT3D over display-linear RGB "
+                       f"{lo:g}..{hi:g} per channel")
+    if table != "clip":
+        if display is None:
+            output = "CIE-XYZ-D65 (perfect reflector Y = 1), unclipped"
+        else:
+            values = clip.clip_RGB(colorimetry.XYZ_to_RGB(values, display), display)
+            output = f"{display} display-linear RGB, constant-lightness clipped"
+            description += f", clipped into {display}"
+        lut = _lut1d(values)
+    else:
+        output = f"{display} display-linear RGB, constant-lightness clipped"
+        lut = _lut3d(values)
+    meta = dict(name=_stem(table, kind, display, index), input=what, output=output,
+                description=description, range=(lo, hi), size=size,
+                id=tables.transform_id("Export", _stem(table, kind, display, index)))
+    return values, lut, meta
+
+
+def _baker_config(lut):
+    """A minimal in-memory config: 'reference' and 'lut' (LUT to reference)."""
+    import PyOpenColorIO as ocio
+
+    config = ocio.Config.CreateRaw()
+    config.setVersion(2, 1)
+    ref = ocio.ColorSpace()
+    ref.setName("reference")
+    config.addColorSpace(ref)
+    cs = ocio.ColorSpace()
+    cs.setName("lut")
+    cs.setTransform(lut, ocio.COLORSPACE_DIR_TO_REFERENCE)
+    config.addColorSpace(cs)
+    return config
+
+
+def write_lut(path, fmt, values, lut, meta):
+    """Write one LUT file with OCIO's writer for ``fmt`` (atomically)."""
+    import PyOpenColorIO as ocio
+
+    writer, ext, _ = FORMATS[fmt]
+    path = Path(path)
+    with atomic_file(path) as tmp:
+        if fmt == "clf":
+            lo, hi = meta["range"]
+            span = hi - lo
+            ops = []
+            if (lo, hi) != (0.0, 1.0):
+                ops.append(tables._matrix(np.eye(3) / span, [-lo / span] * 3))
+            ops.append(lut)
+            g = tables.group(ops, name=meta["name"], id=meta["id"],
+                             description=meta["description"],
+                             input_descriptor=meta["input"], output_descriptor=meta["output"])
+            g.write(writer, str(tmp), ocio.Config.CreateRaw())
+        else:
+            baker = ocio.Baker()
+            baker.setConfig(_baker_config(lut))
+            baker.setFormat(writer)
+            baker.setInputSpace("lut")
+            baker.setTargetSpace("reference")
+            size = meta["size"]
+            baker.setCubeSize(size)
+            if values.ndim == 2:
+                baker.setShaperSize(size)
+            text = baker.bake()
+            Path(tmp).write_text(text if text.endswith("\n") else text + "\n")
+        os.chmod(tmp, 0o644)
+    return path
+
+
+def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, index=None,
+               value_range=None, size=None, show_progress=False) -> Path:
+    """Compute and write one standalone LUT; returns the path written."""
+    if fmt is None:
+        fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
+        if fmt not in FORMATS:
+            raise UsageError(f"cannot tell the format from {out!r}; pass --format")
+    _validate(table, kind, display, index, value_range, size, fmt)
+    if out is None:
+        out = Path(_stem(table, kind, display, index) + "." + FORMATS[fmt][1])
+    out = Path(out)
+    if out.exists() and out.is_dir():
+        raise UsageError(f"--out {out} is a directory")
+    check_writable(out.parent if str(out.parent) else Path("."))
+    bar = _progress(show_progress, total=1.0, desc=f"export {out.name}")
+    try:
+        values, lut, meta = lut_contents(table, kind=kind, display=display, index=index,
+                                         value_range=value_range, size=size,
+                                         progress=bar.update if bar else None)
+        write_lut(out, fmt, values, lut, meta)
+    finally:
+        if bar:
+            bar.close()
+    return out
+
+
+def export_set(directory, *, show_progress=False) -> list[Path]:
+    """The standalone set shipped in ``luts/``: every table and every default display
+    in every format that can hold it (into ``directory``, which must exist)."""
+    jobs = []
+    for fmt in FORMATS:
+        for kind in colorimetry.FILM_KINDS:
+            if 1 in FORMATS[fmt][2]:
+                jobs.append(("film", dict(kind=kind), fmt))
+        if 1 in FORMATS[fmt][2]:
+            jobs.append(("morpho", {}, fmt))
+        if 3 in FORMATS[fmt][2]:
+            for display in clip.DISPLAYS:
+                jobs.append(("clip", dict(display=display, size=EXPORT_SET_CLIP_SIZE), fmt))
+    written = []
+    bar = _progress(show_progress, total=len(jobs), desc="export luts")
+    cache = {}
+    for table, kw, fmt in jobs:
+        key = (table, tuple(sorted(kw.items())))
+        if key not in cache:
+            cache[key] = lut_contents(table, **kw)
+        values, lut, meta = cache[key]
+        path = Path(directory) / f"{meta['name']}.{FORMATS[fmt][1]}"
+        write_lut(path, fmt, values, lut, meta)
+        written.append(path)
+        if bar:
+            bar.update(1)
+    if bar:
+        bar.close()
+    return written
+
+
+#: Edge length of the clip LUTs in the shipped ``luts/`` set (keeps files small).
+EXPORT_SET_CLIP_SIZE = 17
+
+
+def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=False) -> Path:
+    """Write the config folder (config.ocio + luts/*.clf) atomically to ``out``."""
+    from . import config
+
+    if isinstance(clip_size, bool) or not 5 <= int(clip_size) <= 129:
+        raise UsageError(f"--clip-size must be in [5, 129], got {clip_size}")
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"--out {out}: not a directory")
+    check_writable(out.parent if str(out.parent) else Path("."))
+    n_files = len(config.THIN_FILM_SPACES) + len(clip.DISPLAYS) + 1
+    bar = _progress(show_progress, total=n_files, desc=f"bake {out}")
+    try:
+        with atomic_directory(out) as tmp:
+            config.write_config(tmp, clip_size=int(clip_size),
+                                progress=(lambda name: bar.update(1)) if bar else None)
+            _publish_permissions(tmp)
+    finally:
+        if bar:
+            bar.close()
+    return out / "config.ocio"
+
+
+def _publish_permissions(directory):
+    """mkdtemp/mkstemp make private entries; published folders are world-readable."""
+    directory = Path(directory)
+    os.chmod(directory, 0o755)
+    for path in directory.rglob("*"):
+        os.chmod(path, 0o755 if path.is_dir() else 0o644)
+
+
+def _progress(show, total, desc):
+    if not show:
+        return None
+    from tqdm import tqdm
+
+    return tqdm(total=total, desc=desc, unit="" if isinstance(total, int) else "",
+                leave=False, file=sys.stderr, mininterval=0.2,
+                bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}")
+
+
+# --------------------------------------------------------------------------- #
+# CLI
+# --------------------------------------------------------------------------- #
+def _int(option, text):
+    if text is None:
+        return None
+    try:
+        return int(text)
+    except ValueError:
+        raise UsageError(f"{option} must be an integer, got {text!r}") from None
+
+
+def _float(option, text):
+    if text is None:
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        raise UsageError(f"{option} must be a number, got {text!r}") from None
+
+
+def _run_bake(args) -> int:
+    path = bake(args.out, clip_size=_int("--clip-size", args.clip_size),
+                show_progress=not args.quiet)
+    if args.luts:
+        luts = Path(args.luts)
+        check_writable(luts.parent if str(luts.parent) else Path("."))
+        with atomic_directory(luts) as tmp:
+            export_set(tmp, show_progress=not args.quiet)
+            _publish_permissions(tmp)
+    print(f"wrote {path}")
+    return 0
+
+
+def _run_export(args) -> int:
+    value_range = (None if args.range is None
+                   else tuple(_float("--range", v) for v in args.range))
+    path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
+                      display=args.display, index=_float("--index", args.index),
+                      value_range=value_range, size=_int("--size", args.size),
+                      show_progress=not args.quiet)
+    print(f"wrote {path}")
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("bake", help="write the OpenColorIO config folder "
+                                    "(config.ocio + luts/*.clf)",
+                       description="Write the drop-in OCIO config and its CLF LUTs, atomically.")
+    p.add_argument("--out", default=DEFAULT_CONFIG_DIR,
+                   help=f"config directory to (re)write (default {DEFAULT_CONFIG_DIR})")
+    p.add_argument("--clip-size", default=tables.CLIP_SIZE,
+                   help=f"edge of the 3D clip LUTs (default {tables.CLIP_SIZE})")
+    p.add_argument("--luts", default=None, metavar="DIR",
+                   help="also write the standalone LUT set (every table, display and "
+                        "format) into DIR, e.g. luts")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=_run_bake)
+
+    e = sub.add_parser("export", help="write one table or clip LUT as a standalone file "
+                                      "(CLF, .cube, .spi1d/.spi3d, .csp)",
+                       description="Write one LUT with OpenColorIO's writers. Film/Morpho "
+                                   "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
+                                   "cube, spi3d, csp). Non-CLF files take the input "
+                                   "normalised to [0, 1] over --range.")
+    e.add_argument("table", metavar="TABLE",
+                   help="film (thickness table), morpho (angle table) or clip (the "
+                        "constant-lightness clip)")
+    e.add_argument("--kind", default="phase-change",
+                   help="film kind: phase-change (soap film) or no-phase-change")
+    e.add_argument("--display", default=None,
+                   help=f"display gamut ({', '.join(clip.DISPLAYS)}): clip into it "
+                        "(required for clip; for tables gives clipped display-linear RGB "
+                        "instead of XYZ)")
+    e.add_argument("--index", default=None,
+                   help="film refractive index n: input becomes physical thickness t "
+                        "(t' = n t, normal incidence)")
+    e.add_argument("--range", nargs=2, metavar=("MIN", "MAX"), default=None,
+                   help="input range: thickness in um (film, default 0 1.5), cos(theta) "
+                        "(morpho, default 0 1), display-linear RGB per channel (clip, "
+                        "default -0.5 1.5)")
+    e.add_argument("--size", default=None,
+                   help="entries (1D) or grid edge (3D); defaults 4096 / 1024 / 33")
+    e.add_argument("--format", default=None,
+                   help=f"{', '.join(FORMATS)} (default: from --out's extension, else clf)")
+    e.add_argument("--out", "-o", default=None, help="file to write (default: a name "
+                                                     "from the options, in the current "
+                                                     "directory)")
+    e.add_argument("--quiet", action="store_true", help="no progress bar")
+    e.set_defaults(func=_run_export)
