@@ -226,7 +226,7 @@ class OilScene(Scene):
     T_CENTRE = 0.75        # physical thickness at the centre of the slick, um
     K1 = 1.6               # Eq. 12: t = T exp(-k1 r^2), r in slick units (SLICK_SCALE)
     K2 = 0.9               # Eq. 13: irregularity of the spreading
-    SLICK_SCALE = 0.3      # metres per slick unit
+    SLICK_SCALE = 0.38     # metres per slick unit
     SPREAD = 0.04          # per frame
     CAMERA_HEIGHT = 1.5    # metres above the road
     PITCH = 52.0           # degrees below the horizon, looking at the slick centre
@@ -395,7 +395,8 @@ class MorphoScene(Scene):
     figure = "Figure 7"
     title = ("A wavy iridescent surface coloured by the Morpho multilayer table "
              "(Eq. 9 + 14, d1 = 150 nm, d2 = 50 nm, n = 1.53, 12 layers)")
-    animation = "the wing tilts: the view direction swings by 2 degrees per frame"
+    animation = ("the wing tilts back and forth: view tilt 6 + 18 sin(2 pi (frame - 1) / 48) "
+                 "degrees, a 48-frame loop")
     tables = (MORPHO_TABLE,)
 
     #: Eq. 9 is peak-normalised and narrow: Y ~ 0.03 at normal incidence. The scene is
@@ -403,7 +404,8 @@ class MorphoScene(Scene):
     EXPOSURE = 5.0
     PIGMENT_Y = 0.006      # the dark melanin under the scales
     TILT = 6.0             # degrees, the still's view tilt
-    TILT_RATE = 2.0        # degrees per frame
+    TILT_SWING = 18.0      # degrees either side, over a loop of
+    TILT_PERIOD = 48       # frames
     WAVES = 3.2            # waves across the image
 
     def render(self, width, height, *, lookup, seed=0, frame=1):
@@ -426,7 +428,8 @@ class MorphoScene(Scene):
         hu = hu + 0.05 * fine
         n = np.stack([-hu, hv, np.ones_like(hu)], axis=-1)   # image v runs down
         n /= np.linalg.norm(n, axis=-1, keepdims=True)
-        tilt = np.radians(self.TILT + self.TILT_RATE * (frame - 1))
+        tilt = np.radians(self.TILT + self.TILT_SWING
+                          * np.sin(2 * np.pi * (frame - 1) / self.TILT_PERIOD))
         view = np.array([np.sin(tilt) * 0.6, np.sin(tilt) * 0.8, np.cos(tilt)], np.float32)
         view /= np.linalg.norm(view)
         cos_view = np.clip(n @ view, 0.0, 1.0).astype(np.float32)
