@@ -1,0 +1,233 @@
+"""Tables and the 3D clip LUT (ocio_thinfilm.tables): accuracy budgets, edge inputs,
+the view transforms and the interface contract the renderer and the report use."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm import clip, colorimetry, tables
+
+DISPLAYS = clip.DISPLAYS
+
+
+@pytest.fixture(scope="module")
+def objects():
+    return tables.object_colours()
+
+
+def grey_input(x):
+    x = np.asarray(x, dtype=np.float32)
+    return np.repeat(x[:, None], 3, axis=1)
+
+
+# --------------------------------------------------------------------------- #
+# Contract
+# --------------------------------------------------------------------------- #
+def test_contract_names():
+    for name in ("BUILT", "film_table", "morpho_table", "Table1D", "clip_transform",
+                 "view_transform", "apply", "VIEWS"):
+        assert hasattr(tables, name)
+    assert tables.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
+                            "ACES Gamut Compression", "Raw")
+    table = tables.film_table("phase-change")
+    assert table.kind == "phase-change"
+    assert table.values.shape == (tables.FILM_SIZE, 3)
+    assert tables.morpho_table().kind == "morpho"
+
+
+def test_built_records_each_table_once():
+    before = list(tables.BUILT)
+    tables.film_table("no-phase-change", 1000)
+    tables.film_table("no-phase-change", 1000)
+    tables.morpho_table(300)
+    tables.clip_lut("Rec.2020", 9)
+    tables.clip_lut("Rec.2020", 9)
+    new = tables.BUILT[len(before):]
+    assert new == ["film:no-phase-change:1000", "morpho:300", "clip3d:Rec.2020:9"]
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: tables.film_table("soap"), "film kind"),
+    (lambda: tables.film_table("phase-change", 1), "size"),
+    (lambda: tables.film_table("phase-change", max_thickness_um=-1), "max thickness"),
+    (lambda: tables.morpho_table(0), "size"),
+    (lambda: tables.clip_transform("CRT"), "display"),
+    (lambda: tables.clip_transform("sRGB", 1000), "size"),
+    (lambda: tables.view_transform("sRGB", "Filmic"), "view"),
+    (lambda: tables.apply(tables.group([]), np.zeros((4, 2))), "last axis"),
+])
+def test_bad_arguments_raise_value_error(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_apply_returns_new_float32_array_of_same_shape():
+    px = np.linspace(0, 1, 24, dtype=np.float64).reshape(2, 4, 3)
+    keep = px.copy()
+    out = tables.apply(tables.view_transform("sRGB", "Channel Clamp"), px)
+    assert out.shape == px.shape and out.dtype == np.float32
+    np.testing.assert_array_equal(px, keep)
+    assert tables.apply(tables.group([]), np.zeros((0, 3))).shape == (0, 3)
+
+
+# --------------------------------------------------------------------------- #
+# 1D tables: error budget (max dE2000 <= 0.05 over the whole range)
+# --------------------------------------------------------------------------- #
+@pytest.mark.parametrize("kind", colorimetry.FILM_KINDS)
+def test_film_table_error_budget_over_whole_range(kind):
+    table = tables.film_table(kind)
+    # Midpoints between nodes (worst case for linear interpolation) and a dense grid.
+    u = (np.arange(table.size - 1) + 0.5) / (table.size - 1)
+    t_mid = table.t0 * np.expm1(u * np.log1p(table.domain_max / table.t0))
+    t = np.concatenate([t_mid, np.linspace(0.0, 100.0, 20001)])
+    direct = colorimetry.film_XYZ(t * 1000.0, kind, step=tables.SPECTRAL_STEP)
+    assert colorimetry.delta_E2000(table.lookup(t), direct).max() <= 0.05
+    via_ocio = tables.apply(table.transform(), grey_input(t)).astype(np.float64)
+    assert colorimetry.delta_E2000(via_ocio, direct).max() <= 0.05
+
+
+def test_morpho_table_error_budget():
+    table = tables.morpho_table()
+    c = np.concatenate([(np.arange(table.size - 1) + 0.5) / (table.size - 1),
+                        np.linspace(0, 1, 5001)])
+    direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(c)), step=tables.SPECTRAL_STEP)
+    assert colorimetry.delta_E2000(table.lookup(c), direct).max() <= 0.05
+    via_ocio = tables.apply(table.transform(), grey_input(c)).astype(np.float64)
+    assert colorimetry.delta_E2000(via_ocio, direct).max() <= 0.05
+
+
+def test_lookup_matches_ocio():
+    table = tables.film_table("phase-change")
+    t = np.linspace(-1.0, 150.0, 50001)
+    np.testing.assert_allclose(tables.apply(table.transform(), grey_input(t)),
+                               table.lookup(t), atol=5e-4)
+
+
+def test_film_table_beyond_range_is_incoherent_grey_no_nan_no_wrap():
+    table = tables.film_table("phase-change")
+    edge = np.array([100.0, 150.0, 1e4, 1e30, np.inf, -0.5, -1e30, -np.inf, np.nan, 0.0])
+    out = tables.apply(table.transform(), grey_input(edge))
+    assert np.all(np.isfinite(out))
+    grey = 0.5 * colorimetry.white_XYZ("sRGB")  # D65 white: the perfect reflector
+    for row in out[:5]:  # thick films: half the illuminant, the incoherent limit
+        np.testing.assert_allclose(row, grey, atol=2e-3)
+    np.testing.assert_allclose(out[5:], 0.0, atol=1e-5)  # negative, NaN, 0: black
+    np.testing.assert_allclose(table.lookup(edge[:5]), np.repeat(grey[None], 5, 0), atol=2e-3)
+
+
+def test_morpho_out_of_range_clamps():
+    table = tables.morpho_table()
+    out = tables.apply(table.transform(), grey_input([-0.5, 0.0, 1.0, 2.0, np.nan]))
+    assert np.all(np.isfinite(out))
+    np.testing.assert_allclose(out[0], out[1], atol=1e-7)
+    np.testing.assert_allclose(out[2], out[3], atol=1e-7)
+
+
+def test_per_display_rgb_variant_is_clipped():
+    table = tables.film_table("phase-change", 2048)
+    for display in DISPLAYS:
+        rgb = table.rgb(display)
+        assert clip.in_gamut(rgb, 1e-12).all()
+        np.testing.assert_allclose(colorimetry.RGB_to_XYZ(rgb, display)[:, 1],
+                                   np.minimum(table.values[:, 1], 1.0), atol=1e-9)
+
+
+# --------------------------------------------------------------------------- #
+# 3D clip LUT
+# --------------------------------------------------------------------------- #
+#: Measured at the default size (33^3, "xy" domain) on tables.object_colours():
+#: sRGB p99 1.39 / max 4.5, Display P3 1.64 / 4.6, Rec.2020 1.53 / 5.0 (dE2000 vs the
+#: analytic clip). Regression thresholds with a small margin.
+OBJECT_P99 = 1.8
+OBJECT_MAX = 5.5
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_clip_lut_against_analytic_clip_on_object_colours(display, objects):
+    truth = clip.clip_XYZ(objects, display)
+    out = tables.apply(tables.clip_transform(display), objects)
+    de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(out.astype(np.float64), display))
+    assert np.percentile(de, 99) <= OBJECT_P99
+    assert de.max() <= OBJECT_MAX
+    assert de.mean() <= 0.15
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_clip_lut_reproduces_interior_colours(display):
+    rgb = np.random.default_rng(3).uniform(0.2, 0.8, (5000, 3))
+    out = tables.apply(tables.clip_transform(display), colorimetry.RGB_to_XYZ(rgb, display))
+    np.testing.assert_allclose(out, rgb, atol=2e-3)
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_clip_lut_keeps_Y_of_spectral_colours_and_lands_in_gamut(display):
+    # Measured: |dY| <= 1.9e-3, relative <= 7.2e-3 (sRGB); the LUT's Y axis is exact,
+    # what is left comes from the final channel clamp of slightly outside chromaticities.
+    locus = tables.spectral_colours(0.6)
+    out = tables.apply(tables.clip_transform(display), locus).astype(np.float64)
+    assert clip.in_gamut(out).all()
+    Y = colorimetry.RGB_to_XYZ(out, display)[:, 1]
+    assert np.abs(Y - locus[:, 1]).max() <= 3e-3
+    assert np.abs(Y / locus[:, 1] - 1).max() <= 1.2e-2
+
+
+def test_clip_lut_edge_inputs_never_nan():
+    W = colorimetry.white_XYZ("sRGB")
+    edge = np.array([[0, 0, 0], [-1, -1, -1], [-1, 0.5, 0.5], [0.5, 0.5, -3], 2 * W,
+                     [0.95, 1.5, 1.09], [1e30, 1e30, 1e30], [1e30, 0.5, 0.5],
+                     [-1e30, 0.5, 0.5], [np.inf, np.inf, np.inf], [-np.inf, 0.5, 0.5],
+                     [np.nan, 0.5, 0.5], [np.nan] * 3, [0.1, 1e-12, 0.1]], dtype=np.float32)
+    for display in DISPLAYS:
+        out = tables.apply(tables.clip_transform(display), edge)
+        assert np.all(np.isfinite(out)), display
+        assert clip.in_gamut(out).all()
+        np.testing.assert_allclose(out[0], 0.0, atol=1e-6)
+        np.testing.assert_allclose(out[4], 1.0, atol=1e-5)  # above white -> white
+        np.testing.assert_allclose(out[5], 1.0, atol=1e-5)
+
+
+def test_clip_lut_domains_and_sizes_are_options():
+    for domain in tables.CLIP_DOMAINS:
+        lut = tables.clip_lut("sRGB", 17, domain=domain)
+        assert lut.values.shape == (17, 17, 17, 3)
+        out = tables.apply(tables.clip_transform("sRGB", 17, domain=domain),
+                           colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"))
+        np.testing.assert_allclose(out, [[0.5, 0.4, 0.3]], atol=2e-3)
+
+
+# --------------------------------------------------------------------------- #
+# Views
+# --------------------------------------------------------------------------- #
+def _encode(rgb, display):
+    import colour
+
+    rgb = np.clip(rgb, 0, 1)
+    if display == "Rec.2020":
+        return rgb ** (1 / 2.4)
+    return colour.cctf_encoding(rgb, function="sRGB")
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_views_match_the_analytic_paths(display, objects):
+    X = objects[::7]
+    rgb = colorimetry.XYZ_to_RGB(X, display)
+    clamp = tables.apply(tables.view_transform(display, "Channel Clamp"), X)
+    np.testing.assert_allclose(clamp, _encode(clip.clamp_RGB(rgb), display), atol=2e-4)
+    gc = tables.apply(tables.view_transform(display, "ACES Gamut Compression"), X)
+    np.testing.assert_allclose(gc, _encode(clip.aces_gamut_compress_RGB(rgb), display),
+                               atol=2e-4)
+    raw = tables.apply(tables.view_transform(display, "Raw"), X)
+    np.testing.assert_allclose(raw, X.astype(np.float32))
+    cl = tables.apply(tables.view_transform(display, "Constant-Lightness Clip"), X)
+    lin = tables.apply(tables.clip_transform(display), X)
+    np.testing.assert_allclose(cl, _encode(lin, display), atol=2e-4)
+    assert np.all((cl >= 0) & (cl <= 1 + 1e-4))  # float pow of the encoding at 1.0
+
+
+def test_scene_linear_one_is_display_white():
+    for display in DISPLAYS:
+        W = colorimetry.white_XYZ(display)
+        for view in tables.VIEWS[:3]:
+            out = tables.apply(tables.view_transform(display, view), W[None])
+            np.testing.assert_allclose(out, 1.0, atol=1e-4)
