@@ -554,7 +554,9 @@ def _section_gamut(ctx):
         "the gamut; ΔL* and Δh_ab in CIELAB (D65), Δh only where C*ab > 5. The ACES 1.3 "
         "compression (OCIO `ACES_GamutComp13`, applied to display-linear RGB) is followed by a "
         "clamp; the OKLCh method is the CSS Color 4 binary search (JND 0.02, ε 1e-4) implemented "
-        "in `report.py` with colour-science's Oklab.",
+        "in `report.py` with colour-science's Oklab. Per that spec, colours whose Oklab L is ≥ 1 map "
+        "to white: at Y = 0.2 the deep-blue spectral colours have L > 1 (their S-cone response is "
+        "huge), which is what drives its hue and lightness figures on the spectral locus.",
         "",
         _table(["colours", "outside", "method", "ΔL* mean", "ΔL* max", "Δh mean (°)", "Δh max (°)",
                 "ΔE2000 mean", "ΔE2000 max"], rows),
@@ -1558,12 +1560,103 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
         "between runs; the ratios within one run are the figures to read.",
         "",
     ]
+    head += ["## Headline", ""] + _headline(ctx.results) + [""]
     text = "\n".join(head) + "\n" + "\n\n".join(parts) + "\n"
     with atomic_file(out / "report.md") as tmp:
         tmp.write_text(text, encoding="utf-8")
     with atomic_file(out / "report.json") as tmp:
         tmp.write_text(json.dumps(ctx.results, indent=1, default=_json_default), encoding="utf-8")
     return out / "report.md"
+
+
+def _headline(r) -> list[str]:
+    """The headline numbers of this run (all read from the measurements in ``r``)."""
+    out = []
+    m = r.get("machine", {})
+    out.append(f"- Machine: {m.get('cpu')}, {m.get('usable_cpus', m.get('logical_cpus'))} usable "
+               f"cores, {m.get('memory_GiB', '?')} GiB; Python {m.get('python')}, OCIO "
+               f"{m.get('OpenColorIO')}, OIIO {m.get('OpenImageIO')}, colour {m.get('colour-science')}.")
+    ss = r.get("spectral_step")
+    if ss:
+        by = {(x["step"], x["band_limited"]): x for x in ss["rows"]}
+        d = r.get("default_spectral")
+        if d:
+            pt = by.get((d["step"], False))
+            out.append(f"- Spectral step: the default {d['step']:g} nm band-limited integration is within "
+                       f"ΔE2000 {_fmt(d['all']['max'])} (max) of a {ss['reference_step_nm']:g} nm "
+                       f"reference for soap films with t' 0–10 µm"
+                       + (f"; point sampling at the same step reaches {_fmt(pt['all']['max'])}" if pt else "")
+                       + (f", and {_fmt(by[(max(s for s, _ in by), False)]['all']['max'])} at "
+                          f"{max(s for s, _ in by):g} nm (aliasing)." if by else "."))
+    t1 = r.get("default_table1d")
+    if t1:
+        out.append(f"- 1D thickness table (default {t1['size']} entries, log spacing): ΔE2000 max "
+                   f"{_fmt(t1['thin']['max'])} over t' 0–1.5 µm, {_fmt(t1['all']['max'])} over its whole range.")
+    l3 = r.get("default_lut3d")
+    if l3:
+        a = l3["stats"]["interference colours"]
+        b = l3["stats"]["real colours (spectral mixtures)"]
+        best = None
+        for row in r.get("lut3d", {}).get("rows", []):
+            if row["interp"] == "tetrahedral" and row["domain"] == l3["domain"] and row["size"] > l3["size"]:
+                best = row
+        out.append(f"- 3D clip LUT (default {l3['size']}³, {l3['domain']}, tetrahedral) against the "
+                   f"analytic clip: interference colours ΔE2000 mean {_fmt(a['mean'])} / p99 "
+                   f"{_fmt(a['p99'])} / max {_fmt(a['max'])}; real colours p99 {_fmt(b['p99'])} / max "
+                   f"{_fmt(b['max'])}"
+                   + (f"; {best['size']}³ gives p99 {_fmt(best['stats']['interference colours']['p99'])} "
+                      f"/ max {_fmt(best['stats']['interference colours']['max'])} at "
+                      f"{_fmt(best['apply_Mpix_s'])} vs {_fmt(l3['apply_Mpix_s'])} Mpixel/s." if best else "."))
+    av = r.get("analytic_vs_lut")
+    if av:
+        out.append("- Thickness image → clipped RGB, one thread: " + "; ".join(
+            f"{x['path']}: {_fmt(x['Mpix_s'])} Mpixel/s, ΔE2000 max {_fmt(x['dE']['max'])}" for x in av) + ".")
+    g = r.get("gamut")
+    if g:
+        soap = next((v for k, v in g["metrics"].items() if k.startswith("soap")), None)
+        if soap:
+            out.append("- Gamut mapping of the soap-film colours outside sRGB (ΔL* max / Δh mean / "
+                       "ΔE2000 mean from the unclipped colour): " + "; ".join(
+                           f"{k}: {_fmt(v['dL_max'])} / {_fmt(v['dh_mean'])}° / {_fmt(v['dE']['mean'])}"
+                           for k, v in soap.items() if isinstance(v, dict)) + ".")
+        tp = g["throughput_Mpix_s"]
+        ref = tp.get("ACES 1.3 gamut compression (OCIO FixedFunction)")
+        lut = next((v for k, v in tp.items() if k.startswith("constant-lightness clip (OCIO")), None)
+        if ref and lut:
+            out.append(f"- Through OCIO the constant-lightness clip (shipped 3D LUT) runs at "
+                       f"{_fmt(lut / ref)}× the speed of ACES_GamutComp13 in the same run.")
+    gf = r.get("gaussian_fit")
+    if gf:
+        allb = gf["bands"][-1]
+        key = next(k for k in allb if k.startswith("ours"))
+        worst = max(gf["bands"][:-1], key=lambda b: b["belcour_barla"]["mean"])
+        out.append(f"- Belcour & Barla Gaussian-fit CMFs (MaterialX, glTF) vs exact integration, OPD "
+                   f"0–10 µm: ΔE2000 mean {_fmt(allb['belcour_barla']['mean'])}, max "
+                   f"{_fmt(allb['belcour_barla']['max'])} (worst band {worst['opd_um'][0]:g}–"
+                   f"{worst['opd_um'][1]:g} µm, mean {_fmt(worst['belcour_barla']['mean'])}); ours "
+                   f"(default step) max {_fmt(allb[key]['max'])}.")
+    tm = r.get("tmm")
+    if tm:
+        sp = tm["speed_single_film_sec"]
+        out.append(f"- Closed-form Airy film vs colour-science TMM: max |ΔR| "
+                   f"{_fmt(max(x['max_abs_dR'] for x in tm['single_film']))}, "
+                   f"{_fmt(sp['colour thin_film_tmm'] / sp['airy_reflectance'])}× faster; multilayer "
+                   f"max |ΔR| {_fmt(tm['multilayer']['max_abs_dR'])}.")
+    st = r.get("stability")
+    if st:
+        bad = [x["case"] for x in st if not x["ok"]]
+        out.append(f"- Stability: {len(st) - len(bad)} of {len(st)} extreme cases as expected"
+                   + (f"; not: {'; '.join(bad)}." if bad else "."))
+    th = r.get("throughput")
+    if th:
+        v = th["views"].get("Constant-Lightness Clip")
+        c1 = th["copy_Mpix_s"]["numpy 1 thread"]
+        if v:
+            out.append(f"- {th['image'][0]}×{th['image'][1]} image, Constant-Lightness Clip view: "
+                       f"{_fmt(v['ocio_1'])} Mpixel/s on one thread (OCIO), {_fmt(v['oiio_all'])} on "
+                       f"all {th['threads']} threads (OIIO), against a memory copy at {_fmt(c1)} "
+                       f"Mpixel/s: {_fmt(v['ocio_1'] / c1 * 100)} % of the bandwidth bound.")
+    return out
 
 
 def _json_default(o):

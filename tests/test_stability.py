@@ -100,8 +100,6 @@ def test_grazing_matches_colour_tmm():
     assert np.isfinite(t) and abs(t - 300.0 * np.sqrt(1.33 ** 2 - np.sin(np.radians(89.9)) ** 2)) < 1e-9
 
 
-@pytest.mark.xfail(strict=False, reason="core: the band-limited Airy series (64 harmonics) "
-                   "overshoots R = 1 near grazing incidence (Gibbs); reported to the lead")
 def test_grazing_band_limited_airy_within_0_1():
     # Bin averages of a reflectance in [0, 1] must lie in [0, 1].
     d = np.array([100.0, 300.0, 3000.0])
@@ -116,9 +114,6 @@ def test_grazing_limit_90():
     assert np.allclose(r, 1.0, atol=1e-12)
 
 
-@pytest.mark.xfail(strict=False, reason="core: transfer_matrix_reflectance returned NaN at exactly "
-                   "90 degrees (p admittance n/cos with cos = 0) at commit 11a6ce2; a spectra fix "
-                   "is in progress -- drop this marker once it lands")
 def test_transfer_matrix_at_90_degrees():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
