@@ -1,0 +1,211 @@
+"""The drop-in OCIO config (configs/thinfilm): names, roles, validation by OCIO and by
+``ociocheck`` (PyPI build and, when installed, Debian's OCIO 2.1 build), processors
+and agreement with the package's own transforms."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm import clip, colorimetry, config, tables
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
+OCIO21_CHECK = Path("/usr/bin/ociocheck")  # Debian opencolorio-tools (OCIO 2.1)
+
+ROLES = ("scene_linear", "data", "default", "color_picking", "texture_paint", "matte_paint",
+         "compositing_log", "color_timing", "aces_interchange", "cie_xyz_d65_interchange",
+         "default_byte", "default_float", "default_sequencer")
+SPACES = ("CIE-XYZ-D65", "ACES2065-1", "ACEScg", "Linear Rec.709 (sRGB)", "Linear P3-D65",
+          "Linear Rec.2020", "Raw", "Thin Film Phase-Change Thickness",
+          "Thin Film No-Phase-Change Thickness", "Thin Film Morpho Iridescence",
+          "sRGB - Display", "Display P3 - Display", "Rec.1886 Rec.2020 - Display")
+
+
+@pytest.fixture(scope="module")
+def ocio():
+    import PyOpenColorIO
+
+    return PyOpenColorIO
+
+
+@pytest.fixture(scope="module")
+def cfg(ocio):
+    return ocio.Config.CreateFromFile(str(CONFIG))
+
+
+def test_profile_version_and_validation(cfg):
+    assert CONFIG.read_text().startswith("ocio_profile_version: 2.1\n")
+    assert (cfg.getMajorVersion(), cfg.getMinorVersion()) == (2, 1)
+    cfg.validate()
+
+
+def test_generate_config_in_memory_validates():
+    import PyOpenColorIO as ocio
+
+    c = config.generate_config(config.config_data(inline=True))
+    c.validate()
+    c.getProcessor("CIE-XYZ-D65", "sRGB", "Constant-Lightness Clip",
+                   ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
+
+
+def test_roles(cfg):
+    roles = dict(cfg.getRoles())
+    for role in ROLES:
+        assert role in roles, role
+        assert cfg.getColorSpace(roles[role]) is not None
+    assert roles["cie_xyz_d65_interchange"] == "CIE-XYZ-D65"
+    assert roles["aces_interchange"] == "ACES2065-1"
+    assert roles["scene_linear"] == "Linear Rec.709 (sRGB)"
+    assert cfg.getColorSpace(roles["data"]).isData()
+
+
+def test_colour_spaces_displays_views(cfg):
+    names = list(cfg.getColorSpaceNames())
+    for name in SPACES:
+        assert name in names, name
+    assert list(cfg.getDisplays()) == ["sRGB", "Display P3", "Rec.2020"]
+    for display in cfg.getDisplays():
+        assert list(cfg.getViews(display)) == list(tables.VIEWS)
+
+
+def test_file_rules_present(cfg):
+    rules = cfg.getFileRules()
+    assert rules.getNumEntries() >= 2
+    def space(path):
+        return cfg.getColorSpace(cfg.getColorSpaceFromFilepath(path)[0]).getName()
+
+    assert space("render.exr") == "Linear Rec.709 (sRGB)"
+    assert space("texture.PNG") == "sRGB - Texture"
+    assert space("notes.txt") == "Linear Rec.709 (sRGB)"
+
+
+def test_every_processor_builds(cfg, ocio):
+    for display in cfg.getDisplays():
+        for view in cfg.getViews(display):
+            cfg.getProcessor("Thin Film Phase-Change Thickness", display, view,
+                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
+    for name in cfg.getColorSpaceNames():
+        cfg.getProcessor(name, "CIE-XYZ-D65").getDefaultCPUProcessor()
+
+
+def _run_check(tool):
+    result = subprocess.run([str(tool), "--iconfig", str(CONFIG)], capture_output=True,
+                            text=True, timeout=120)
+    text = result.stdout + result.stderr
+    return result.returncode, text
+
+
+def test_ociocheck_pypi():
+    tool = shutil.which("ociocheck")
+    if tool is None:
+        pytest.skip("ociocheck (PyPI opencolorio) not on PATH")
+    code, text = _run_check(tool)
+    assert code == 0, text
+    assert re.search(r"Validation:? passed", text), text
+    assert "ERROR" not in text.upper().replace("ERRORS: 0", ""), text
+
+
+@pytest.mark.skipif(not OCIO21_CHECK.exists(),
+                    reason="Debian opencolorio-tools (OCIO 2.1) not installed: "
+                           "apt-get install opencolorio-tools")
+def test_ociocheck_ocio21():
+    code, text = _run_check(OCIO21_CHECK)
+    assert code == 0, text
+    assert "passed" in text and "ERROR" not in text.upper(), text
+
+
+@pytest.mark.skipif(not Path("/usr/bin/ociochecklut").exists(),
+                    reason="Debian opencolorio-tools (OCIO 2.1) not installed")
+def test_ocio21_reads_every_config_lut():
+    for path in sorted((CONFIG.parent / "luts").glob("*.clf")):
+        result = subprocess.run(["/usr/bin/ociochecklut", str(path), "0.3", "0.3", "0.3"],
+                                capture_output=True, text=True, timeout=60)
+        assert result.returncode == 0, result.stdout + result.stderr
+        values = [float(v) for v in result.stdout.split()[-3:]]
+        assert np.all(np.isfinite(values))
+
+
+def test_clf_metadata(ocio):
+    for path in sorted((CONFIG.parent / "luts").glob("*.clf")):
+        text = path.read_text()
+        assert 'id="urn:aswf:ocio:transformId:1.0:OCIO-ThinFilm:' in text, path.name
+        for tag in ("Description", "InputDescriptor", "OutputDescriptor"):
+            assert f"<{tag}>" in text, (path.name, tag)
+        assert not re.search(r"20\d\d-\d\d-\d\d", text)  # no timestamps
+
+
+def test_thin_film_spaces_through_config(cfg):
+    t = np.linspace(0.0, 3.0, 3001)
+    px = np.repeat(t[:, None], 3, 1).astype(np.float32)
+    cpu = cfg.getProcessor("Thin Film Phase-Change Thickness",
+                           "CIE-XYZ-D65").getDefaultCPUProcessor()
+    out = px.copy()
+    cpu.applyRGB(out)
+    direct = colorimetry.film_XYZ(t * 1000.0, "phase-change")
+    assert colorimetry.delta_E2000(out.astype(np.float64), direct).max() <= 0.05
+    cos = np.linspace(0, 1, 501)
+    px = np.repeat(cos[:, None], 3, 1).astype(np.float32)
+    cfg.getProcessor("Thin Film Morpho Iridescence",
+                     "CIE-XYZ-D65").getDefaultCPUProcessor().applyRGB(px)
+    direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(cos)))
+    assert colorimetry.delta_E2000(px.astype(np.float64), direct).max() <= 0.05
+
+
+def test_config_views_equal_package_view_transforms(cfg, ocio):
+    X = tables.object_colours(n_random=500)[::3]
+    for display in clip.DISPLAYS:
+        for view in tables.VIEWS:
+            out = X.astype(np.float32).copy()
+            cfg.getProcessor("CIE-XYZ-D65", display, view,
+                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(out)
+            ref = tables.apply(tables.view_transform(display, view), X)
+            np.testing.assert_allclose(out, ref, atol=2e-4, err_msg=f"{display} / {view}")
+
+
+def test_scene_linear_white_is_display_white(cfg, ocio):
+    for display in cfg.getDisplays():
+        for view in tables.VIEWS[:3]:
+            px = np.ones((1, 3), np.float32)
+            cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
+                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
+            np.testing.assert_allclose(px, 1.0, atol=1e-4)
+            px = np.full((1, 3), 4.0, np.float32)  # above white -> white
+            cfg.getProcessor("Linear Rec.709 (sRGB)", display, "Constant-Lightness Clip",
+                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
+            np.testing.assert_allclose(px, 1.0, atol=1e-4)
+
+
+def test_acescct_round_trip(cfg):
+    cpu = cfg.getProcessor("ACEScg", "ACEScct").getDefaultCPUProcessor()
+    px = np.array([[0.18, 0.18, 0.18], [0.0, 0.0, 0.0], [1.0, 1.0, 1.0]], np.float32)
+    cpu.applyRGB(px)
+    np.testing.assert_allclose(px[0], 0.4135884, atol=1e-5)  # ACEScct of 18 % grey
+    np.testing.assert_allclose(px[1], 0.0729055, atol=1e-5)
+    np.testing.assert_allclose(px[2], 0.5547945, atol=1e-5)
+
+
+BLENDER = shutil.which("blender")
+
+
+@pytest.mark.skipif(BLENDER is None, reason="Debian blender (OCIO 2.1) not installed")
+def test_blender_loads_config_without_colour_management_errors(tmp_path):
+    script = tmp_path / "probe.py"
+    script.write_text(
+        "import bpy\n"
+        "s = bpy.context.scene\n"
+        "s.display_settings.display_device = 'sRGB'\n"
+        "s.view_settings.view_transform = 'Constant-Lightness Clip'\n"
+        "print('VIEW', s.view_settings.view_transform)\n"
+        "print('VIEWS', [v.identifier for v in type(s.view_settings).bl_rna.properties['view_transform'].enum_items])\n")
+    env = {"OCIO": str(CONFIG), "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)}
+    result = subprocess.run([BLENDER, "-b", "--factory-startup", "--python", str(script)],
+                            capture_output=True, text=True, timeout=300, env=env)
+    text = result.stdout + result.stderr
+    assert "Color management: Error" not in text, text
+    assert "VIEW Constant-Lightness Clip" in text, text
