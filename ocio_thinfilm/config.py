@@ -222,7 +222,16 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
                            tables.display_matrix_transform(display),
                            tables.display_encoding_transform(display)])))
 
-    view_transforms, displays = [], {}
+    # The default view transform links the two reference spaces when a conversion
+    # crosses them without a view (e.g. display space -> scene space): an identity,
+    # as "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless).
+    view_transforms = [dict(name="Un-tone-mapped", family="Utility",
+                            description="Identity between the scene and display reference "
+                                        "spaces (both CIE-XYZ-D65): no tone mapping, no "
+                                        "gamut mapping. Used for conversions between scene "
+                                        "and display colour spaces.",
+                            from_reference=tables.group([tables._matrix()]))]
+    displays = {}
     descriptions = {
         "Constant-Lightness Clip": "Smits & Meyer 1990 Section 3.2: display-linear RGB "
                                    "clipped at constant luminance Y towards the display's "
