@@ -1,0 +1,214 @@
+"""``ocio-thinfilm bake`` / ``export``: reproducibility, atomic writes, bad arguments,
+every LUT through ``ociochecklut``, and colour-science's independent readers."""
+
+from __future__ import annotations
+
+import filecmp
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm import cli, colorimetry, config, export, tables
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG_DIR = ROOT / "configs" / "thinfilm"
+LUTS_DIR = ROOT / "luts"
+
+
+def _tree(directory):
+    return sorted(p.relative_to(directory).as_posix() for p in Path(directory).rglob("*")
+                  if p.is_file())
+
+
+def _assert_identical_trees(a, b):
+    assert _tree(a) == _tree(b)
+    for rel in _tree(a):
+        assert filecmp.cmp(Path(a) / rel, Path(b) / rel, shallow=False), rel
+
+
+# --------------------------------------------------------------------------- #
+# Reproducibility: the repository ships what the code makes
+# --------------------------------------------------------------------------- #
+def test_bake_is_byte_identical_to_committed_config(tmp_path):
+    out = tmp_path / "thinfilm"
+    assert cli.main(["bake", "--out", str(out), "--quiet"]) == 0
+    _assert_identical_trees(out, CONFIG_DIR)
+
+
+def test_export_set_is_byte_identical_to_committed_luts(tmp_path):
+    export.export_set(tmp_path)
+    _assert_identical_trees(tmp_path, LUTS_DIR)
+
+
+def test_luts_cover_every_table_display_and_format():
+    names = _tree(LUTS_DIR)
+    for fmt in ("clf", "cube", "spi1d"):
+        for stem in ("ThinFilm_PhaseChange", "ThinFilm_NoPhaseChange", "ThinFilm_Morpho"):
+            assert f"{stem}.{fmt}" in names
+    for fmt in ("clf", "cube", "spi3d", "csp"):
+        for display in ("sRGB", "DisplayP3", "Rec2020"):
+            assert f"ConstantLightnessClip_{display}.{fmt}" in names
+    total = sum((LUTS_DIR / n).stat().st_size for n in names)
+    total += sum(p.stat().st_size for p in CONFIG_DIR.rglob("*") if p.is_file())
+    assert total < 10_000_000  # committed LUTs stay small
+
+
+# --------------------------------------------------------------------------- #
+# Every LUT passes ociochecklut (PyPI and, if installed, OCIO 2.1)
+# --------------------------------------------------------------------------- #
+CHECKERS = [c for c in (shutil.which("ociochecklut"), "/usr/bin/ociochecklut")
+            if c and Path(c).exists()]
+
+
+@pytest.mark.skipif(not CHECKERS, reason="ociochecklut not installed")
+@pytest.mark.parametrize("path", sorted(LUTS_DIR.glob("*")) +
+                         sorted((CONFIG_DIR / "luts").glob("*.clf")), ids=lambda p: p.name)
+def test_ociochecklut(path):
+    for checker in dict.fromkeys(CHECKERS):
+        result = subprocess.run([checker, str(path), "0.25", "0.5", "0.75"],
+                                capture_output=True, text=True, timeout=60)
+        assert result.returncode == 0, (checker, result.stdout + result.stderr)
+        values = [float(v) for v in result.stdout.split()[-3:]]
+        assert np.all(np.isfinite(values)), (checker, result.stdout)
+
+
+# --------------------------------------------------------------------------- #
+# Independent reader: colour-science reads the files back to the same values
+# --------------------------------------------------------------------------- #
+@pytest.mark.parametrize("name", [
+    "ThinFilm_PhaseChange.cube", "ThinFilm_PhaseChange.spi1d", "ThinFilm_NoPhaseChange.cube",
+    "ThinFilm_Morpho.spi1d", "ConstantLightnessClip_sRGB.cube",
+    "ConstantLightnessClip_DisplayP3.spi3d", "ConstantLightnessClip_Rec2020.csp"])
+def test_colour_read_LUT_gives_the_same_values(name):
+    import colour
+
+    lut = colour.read_LUT(str(LUTS_DIR / name))
+    if name.startswith("ConstantLightnessClip"):
+        display = {"sRGB": "sRGB", "DisplayP3": "Display P3",
+                   "Rec2020": "Rec.2020"}[name.split("_")[1].split(".")[0]]
+        values, _, _ = export.lut_contents("clip", display=display,
+                                           size=export.EXPORT_SET_CLIP_SIZE)
+        # colour-science indexes LUT3D tables [R][G][B] like ours.
+        table = np.asarray(lut.table)
+    else:
+        kind = {"ThinFilm_PhaseChange": "phase-change",
+                "ThinFilm_NoPhaseChange": "no-phase-change"}.get(name.split(".")[0])
+        values, _, _ = (export.lut_contents("film", kind=kind) if kind
+                        else export.lut_contents("morpho"))
+        table = np.asarray(lut.table)
+    assert table.shape == values.shape
+    np.testing.assert_allclose(table, values, atol=1e-6 + 1e-6 * np.abs(values).max())
+    # and the domain is [0, 1] (the normalised input of the non-CLF formats)
+    np.testing.assert_allclose(np.asarray(lut.domain).min(), 0.0)
+    np.testing.assert_allclose(np.asarray(lut.domain).max(), 1.0)
+
+
+def test_clf_export_takes_thickness_in_micrometres(tmp_path):
+    import PyOpenColorIO as ocio
+
+    path = export.export_lut("film", tmp_path / "t.clf", kind="phase-change", index=1.33,
+                             value_range=(0.1, 0.9), size=2001)
+    t = np.linspace(0.1, 0.9, 2001)
+    px = np.repeat(t[:, None], 3, 1).astype(np.float32)
+    ocio.Config.CreateRaw().getProcessor(ocio.FileTransform(str(path))) \
+        .getDefaultCPUProcessor().applyRGB(px)
+    direct = colorimetry.film_XYZ(1.33 * t * 1000.0, "phase-change")
+    assert colorimetry.delta_E2000(px.astype(np.float64), direct).max() < 0.01
+    text = path.read_text()
+    assert "<InputDescriptor>physical thickness" in text
+
+
+def test_clip_export_reproduces_in_gamut_exactly_and_clips(tmp_path):
+    import PyOpenColorIO as ocio
+    from ocio_thinfilm import clip
+
+    path = export.export_lut("clip", tmp_path / "c.clf", display="sRGB", size=17)
+    rgb = np.random.default_rng(0).uniform(-0.5, 1.5, (4000, 3))
+    out = rgb.astype(np.float32).copy()
+    ocio.Config.CreateRaw().getProcessor(ocio.FileTransform(str(path))) \
+        .getDefaultCPUProcessor().applyRGB(out)
+    inside = clip.in_gamut(rgb)
+    np.testing.assert_allclose(out[inside], rgb[inside], atol=1e-5)
+    assert clip.in_gamut(out, 1e-6).all()
+
+
+# --------------------------------------------------------------------------- #
+# CLI: bad arguments -> one line, exit 2, nothing written
+# --------------------------------------------------------------------------- #
+BAD = [
+    ["export", "clip", "--display", "CRT"],
+    ["export", "clip"],
+    ["export", "film", "--format", "tiff"],
+    ["export", "film", "--format", "spi3d"],
+    ["export", "clip", "--display", "sRGB", "--format", "spi1d"],
+    ["export", "film", "--size", "1"],
+    ["export", "film", "--size", "999999999"],
+    ["export", "clip", "--display", "sRGB", "--size", "500"],
+    ["export", "film", "--size", "many"],
+    ["export", "film", "--range", "-1", "2"],
+    ["export", "film", "--range", "2", "1"],
+    ["export", "film", "--kind", "soap"],
+    ["export", "film", "--index", "0.5"],
+    ["export", "morpho", "--index", "1.3"],
+    ["export", "nothing"],
+    ["bake", "--clip-size", "1"],
+]
+
+
+@pytest.mark.parametrize("argv", BAD, ids=lambda a: " ".join(a))
+def test_bad_arguments_one_line_exit_2_nothing_written(argv, tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    out = tmp_path / "out"
+    extra = ["--out", str(out / ("x" if argv[0] == "bake" else "x.clf"))]
+    if "--format" in argv:
+        extra = ["--out", str(out / "x")]
+    code = cli.main(argv + extra + ["--quiet"])
+    err = capsys.readouterr().err.strip()
+    assert code == 2
+    assert len(err.splitlines()) == 1 and "error" in err, err
+    assert list(tmp_path.rglob("*")) == []
+
+
+def test_unwritable_output_directory(tmp_path, capsys):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a directory")
+    for argv in (["bake", "--out", str(blocker / "cfg")],
+                 ["export", "film", "--out", str(blocker / "t.clf")]):
+        assert cli.main(argv + ["--quiet"]) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1, err
+    assert blocker.read_text() == "not a directory"
+
+
+def test_interrupted_bake_leaves_previous_config_intact(tmp_path, monkeypatch):
+    out = tmp_path / "thinfilm"
+    shutil.copytree(CONFIG_DIR, out)
+
+    def broken(directory, **kwargs):
+        (Path(directory) / "luts").mkdir()
+        (Path(directory) / "luts" / "half.clf").write_text("<ProcessList")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(config, "write_config", broken)
+    assert cli.main(["bake", "--out", str(out), "--quiet"]) == 130
+    _assert_identical_trees(out, CONFIG_DIR)
+    assert [p.name for p in tmp_path.iterdir()] == ["thinfilm"]  # no temporary left
+
+
+def test_export_cli_writes_named_file(tmp_path, capsys):
+    out = tmp_path / "m.cube"
+    assert cli.main(["export", "morpho", "--size", "64", "--out", str(out), "--quiet"]) == 0
+    assert out.exists() and "wrote" in capsys.readouterr().out
+    assert "LUT_1D_SIZE 64" in out.read_text()
+
+
+def test_progress_bar_on_stderr(tmp_path):
+    result = subprocess.run([sys.executable, "-m", "ocio_thinfilm", "export", "film",
+                             "--size", "9000", "--out", str(tmp_path / "f.spi1d")],
+                            capture_output=True, text=True, timeout=120, cwd=ROOT)
+    assert result.returncode == 0, result.stderr
+    assert "100%" in result.stderr
