@@ -1582,12 +1582,16 @@ def _headline(r) -> list[str]:
         d = r.get("default_spectral")
         if d:
             pt = by.get((d["step"], False))
-            out.append(f"- Spectral step: the default {d['step']:g} nm band-limited integration is within "
-                       f"ΔE2000 {_fmt(d['all']['max'])} (max) of a {ss['reference_step_nm']:g} nm "
-                       f"reference for soap films with t' 0–10 µm"
-                       + (f"; point sampling at the same step reaches {_fmt(pt['all']['max'])}" if pt else "")
-                       + (f", and {_fmt(by[(max(s for s, _ in by), False)]['all']['max'])} at "
-                          f"{max(s for s, _ in by):g} nm (aliasing)." if by else "."))
+            coarse = max(st for st, _ in by)
+            text = (f"- Spectral step, soap film against a {ss['reference_step_nm']:g} nm reference "
+                    f"(ΔE2000 max over t' 0–1.5 µm / 0–10 µm): default {d['step']:g} nm band-limited "
+                    f"{_fmt(d['thin']['max'])} / {_fmt(d['all']['max'])}")
+            if pt:
+                text += f"; point-sampled at {d['step']:g} nm {_fmt(pt['thin']['max'])} / {_fmt(pt['all']['max'])}"
+            if (coarse, False) in by and (coarse, True) in by:
+                text += (f"; at {coarse:g} nm point sampling aliases to {_fmt(by[(coarse, False)]['all']['max'])}"
+                         f" where band-limiting gives {_fmt(by[(coarse, True)]['all']['max'])}")
+            out.append(text + ".")
     t1 = r.get("default_table1d")
     if t1:
         out.append(f"- 1D thickness table (default {t1['size']} entries, log spacing): ΔE2000 max "
