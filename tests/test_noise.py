@@ -50,6 +50,15 @@ def test_chunked_threads_match_a_single_chunk(monkeypatch):
     assert threaded.tobytes() == noise.noise(x, y, seed=2).tobytes()
 
 
+def test_2d_fast_path_equals_the_general_hash():
+    rng = np.random.default_rng(9)
+    x = rng.uniform(-600, 600, 5000).astype(np.float32)
+    y = rng.uniform(-600, 600, 5000).astype(np.float32)
+    perm, gperm = noise._tables(4, 2)
+    general = noise._noise_chunk([x, y], perm, gperm)
+    assert np.array_equal(noise.noise(x, y, seed=4), general)
+
+
 def test_turbulence_is_the_octave_sum():
     x, y = _grid(128, 1 / 13)
     expected = sum(np.abs(noise.noise(x * 2**i + np.float32(17.31 * i),
