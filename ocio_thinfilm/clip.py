@@ -64,37 +64,65 @@ def _display_matrix(display: str) -> np.ndarray:
     return colorimetry.matrix_XYZ_to_RGB(display)
 
 
-def _prepare(values, name):
-    """Float64 (N, 3) working copy, its original shape/dtype, and the NaN rows."""
+#: Pixels per block: the working set stays in cache, and results do not depend on
+#: how an image is batched.
+_CHUNK = 1 << 15
+
+
+def _apply(values, name, kernel):
+    """Run ``kernel`` on float64 (N, 3) blocks of ``values``; same shape and dtype out.
+
+    Per block: NaN rows are noted and zeroed, components limited to +-LIMIT (so
+    +-Inf is finite), the kernel runs, NaN rows are put back as NaN.
+    """
     a = np.asarray(values)
     if a.ndim == 0 or a.shape[-1] != 3:
         raise ValueError(f"{name} must have a last axis of length 3, got shape {a.shape}")
     dtype = a.dtype if a.dtype in (np.float32, np.float64) else np.float64
-    work = a.reshape(-1, 3).astype(np.float64)
-    nan_rows = np.isnan(work).any(axis=1)
-    work = np.clip(np.nan_to_num(work, nan=0.0), -LIMIT, LIMIT)
-    return work, a.shape, dtype, nan_rows
+    flat = a.reshape(-1, 3)
+    out = np.empty(flat.shape, dtype)
+    for start in range(0, flat.shape[0], _CHUNK):
+        work = np.array(flat[start:start + _CHUNK], dtype=np.float64)
+        nan_rows = np.isnan(work[:, 0]) | np.isnan(work[:, 1]) | np.isnan(work[:, 2])
+        np.nan_to_num(work, copy=False, nan=0.0)
+        np.clip(work, -LIMIT, LIMIT, out=work)
+        result = kernel(work)
+        result[nan_rows] = np.nan
+        out[start:start + _CHUNK] = result
+    return out.reshape(a.shape)
 
 
-def _finish(out, shape, dtype, nan_rows):
-    out[nan_rows] = np.nan
-    return out.reshape(shape).astype(dtype, copy=False)
+def _dot3(a, v):
+    """``a @ v`` for (N, 3) ``a`` and a 3-vector ``v``, column by column (a BLAS call
+    on such skinny arrays is several times slower)."""
+    return a[:, 0] * v[0] + a[:, 1] * v[1] + a[:, 2] * v[2]
 
 
-def _fraction_to_boundary(value, grey, lower, upper):
+def _matrix3(a, M):
+    """``a @ M.T`` for (N, 3) ``a``, column by column."""
+    return a[:, 0:1] * M[:, 0] + a[:, 1:2] * M[:, 1] + a[:, 2:3] * M[:, 2]
+
+
+def _fraction_to_boundary(value, grey):
     """Per channel, the fraction ``t`` of the way from the grey to ``value`` at which
-    the ray leaves the slab ``lower <= . <= upper`` (1 when it never does).
+    the ray leaves the slab ``0 <= . <= 1`` (1 when it never does), and the rows
+    outside the slab in any channel.
 
-    ``value``/``lower``/``upper``: (N, 3); ``grey``: (N, 3), strictly inside the slab.
-    This is the paper's plane intersection ``s`` written as ``t = 1 - s`` so that
-    huge inputs do not cancel: ``t = (grey - bound) / (grey - value)``.
+    ``value``: (N, 3) signed positions against the three plane pairs; ``grey``:
+    (N, 1), the grey's position, the same in every channel (the grey is on the
+    neutral diagonal, R = G = B) and inside [0, 1]. This is the paper's plane
+    intersection ``s`` written as ``t = 1 - s`` so that huge inputs do not cancel:
+    ``t = (grey - bound) / (grey - value)``. The division is only used where
+    ``value`` is outside the slab and the grey inside, so ``|grey - value| > 0``.
     """
-    t = np.ones_like(value)
-    below = value < lower
-    above = value > upper
-    np.divide(grey - lower, grey - value, out=t, where=below)
-    np.divide(grey - upper, grey - value, out=t, where=above)
-    return t, below | above
+    below = value < 0.0
+    above = value > 1.0
+    outside = below | above
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (grey - above) / (grey - value)
+    t = np.where(outside, t, 1.0)
+    t_min = np.minimum(np.minimum(t[:, 0], t[:, 1]), t[:, 2])[:, None]
+    return t_min, (outside[:, 0] | outside[:, 1] | outside[:, 2])[:, None]
 
 
 def clip_RGB(RGB, display: str = "sRGB"):
@@ -105,16 +133,19 @@ def clip_RGB(RGB, display: str = "sRGB"):
     """
     M = _display_matrix(display)
     luminance = np.linalg.inv(M)[1]  # Y = luminance . RGB
-    rgb, shape, dtype, nan_rows = _prepare(RGB, "RGB")
-    Y = rgb @ luminance
-    grey = np.clip(Y / luminance.sum(), 0.0, 1.0)[:, None] * np.ones(3)
-    t, outside = _fraction_to_boundary(rgb, grey, 0.0, 1.0)
-    t = t.min(axis=1, keepdims=True)
-    clipped = np.clip(grey + t * (rgb - grey), 0.0, 1.0)
-    out = np.where(outside.any(axis=1, keepdims=True), clipped, rgb)
-    out[Y <= 0.0] = 0.0
-    out[Y >= luminance.sum()] = 1.0
-    return _finish(out, shape, dtype, nan_rows)
+    Y_white = luminance.sum()
+
+    def kernel(rgb):
+        Y = _dot3(rgb, luminance)
+        grey = np.clip(Y / Y_white, 0.0, 1.0)[:, None]
+        t, outside = _fraction_to_boundary(rgb, grey)
+        clipped = np.clip(grey + t * (rgb - grey), 0.0, 1.0)
+        out = np.where(outside, clipped, rgb)
+        out[Y <= 0.0] = 0.0
+        out[Y >= Y_white] = 1.0
+        return out
+
+    return _apply(RGB, "RGB", kernel)
 
 
 def clip_XYZ(XYZ, display: str = "sRGB"):
@@ -124,23 +155,25 @@ def clip_XYZ(XYZ, display: str = "sRGB"):
     1. Outcodes: for each plane pair ``n_j . X = 0`` and ``n_j . X = 1`` (``n_j`` the
        rows of the XYZ -> RGB matrix) the colour is below, between or above.
     2. Grey point on the neutral diagonal at the colour's Y: ``G = W Y / Y_W``,
-       ``W`` the display white (RGB = 1), not x = y = z.
+       ``W`` the display white (RGB = 1), not x = y = z. Its position against
+       every plane pair is ``Y / Y_W``.
     3. The ray from X towards G meets each plane the colour is outside of; the
        intersection furthest from X (smallest remaining fraction t) is the result.
     """
     M = _display_matrix(display)
     white = np.linalg.inv(M) @ np.ones(3)
-    xyz, shape, dtype, nan_rows = _prepare(XYZ, "XYZ")
-    Y = xyz[:, 1]
-    grey = np.clip(Y / white[1], 0.0, 1.0)[:, None] * white
-    plane_value = xyz @ M.T  # signed position against the three plane pairs
-    grey_value = grey @ M.T
-    t, outside = _fraction_to_boundary(plane_value, grey_value, 0.0, 1.0)
-    t = t.min(axis=1, keepdims=True)
-    out = np.where(outside.any(axis=1, keepdims=True), grey + t * (xyz - grey), xyz)
-    out[Y <= 0.0] = 0.0
-    out[Y >= white[1]] = white
-    return _finish(out, shape, dtype, nan_rows)
+
+    def kernel(xyz):
+        Y = xyz[:, 1].copy()
+        s = np.clip(Y / white[1], 0.0, 1.0)[:, None]
+        grey = s * white
+        t, outside = _fraction_to_boundary(_matrix3(xyz, M), s)
+        out = np.where(outside, grey + t * (xyz - grey), xyz)
+        out[Y <= 0.0] = 0.0
+        out[Y >= white[1]] = white
+        return out
+
+    return _apply(XYZ, "XYZ", kernel)
 
 
 def in_gamut(RGB, tolerance: float = 0.0):
