@@ -52,6 +52,12 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
            "perfect white under the scene's unit illuminant)")
 
 
+#: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
+#: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4) and the Raw view no tag --
+#: never a wrong sRGB one.
+PNG_COLORSPACE = {"sRGB": "srgb_rec709_display", "Display P3": "srgb_p3d65_display",
+                  "Rec.2020": "g24_rec2020_display"}
+
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
 FIXED_DATETIME = "1990:06:11 00:00:00"
@@ -229,8 +235,11 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     with ThreadPoolExecutor(max_workers=2) as pool:
         exr_job = pool.submit(write_image, out_dir / f"{stem}.exr", data,
                               channel_names=channels, dtype="half", attributes=attrs)
+        raw = all((region[2] or view) == "Raw" for region in picture.regions)
+        png_tag = "data" if raw else PNG_COLORSPACE[display]
         png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
-                              attributes={"png:compressionLevel": 3})
+                              attributes={"png:compressionLevel": 3,
+                                          "oiio:ColorSpace": png_tag})
         return [exr_job.result(), png_job.result()]
 
 

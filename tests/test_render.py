@@ -171,6 +171,16 @@ def test_png_is_the_exr_through_the_chosen_view(stills):
     assert np.abs(expected - png).max() < 3 / 255
 
 
+@pytest.mark.parametrize("display, tag", [("sRGB", "rec709"), ("Display P3", "p3d65")])
+def test_png_is_tagged_with_its_display(tmp_path, display, tag):
+    import OpenImageIO as oiio
+
+    assert cli.main(["render", "morpho", "--size", "16", "--display", display, "--out",
+                     str(tmp_path), "--quiet"]) == 0
+    spec = oiio.ImageInput.open(str(tmp_path / "morpho.png")).spec()
+    assert tag in spec.getattribute("oiio:ColorSpace")
+
+
 def test_spectrum_film_strip_is_the_exact_film_colour(stills):
     """The film strips come through the film table's OCIO transform: compare the EXR
     with direct spectral integration at the thickness AOV."""
