@@ -120,6 +120,13 @@ def _smoothstep(e0, e1, x):
     return t * t * (3.0 - 2.0 * t)
 
 
+def _optical_thickness_um(t_um, n, theta_deg):
+    """The table index: t' = t n cos(theta_t) (paper Eq. 10 form, through the
+    refraction angle; :func:`.spectra.optical_thickness` works in nm) in micrometres."""
+    t_nm = np.asarray(t_um, np.float64) * 1000.0
+    return (spectra.optical_thickness(t_nm, n, theta_deg) / 1000.0).astype(np.float32)
+
+
 def _grey(Y):
     """Neutral (D65) XYZ of luminance ``Y`` (H, W) -> (H, W, 3)."""
     return np.asarray(Y, np.float32)[..., None] * D65_WHITE
@@ -271,7 +278,7 @@ class OilScene(Scene):
         t_phys = t_centre * np.exp(-k1 * (sx * sx + sy * sy + self.K2 * (turb - 0.45)))
         t_phys = np.minimum(t_phys, np.float32(t_centre)).astype(np.float32)
         # Optical thickness through the refraction angle (paper Eq. 10 form).
-        t_opt = (spectra.optical_thickness(t_phys, self.N_OIL, theta) ).astype(np.float32)
+        t_opt = _optical_thickness_um(t_phys, self.N_OIL, theta)
         film = lookup(FILM_TABLE, t_opt)
 
         asphalt = self.asphalt(gx, gy, footprint, seed)
@@ -355,8 +362,8 @@ class SoapScene(Scene):
         level = h + self.TURB * (turb - 0.45)
         level = np.clip((level - drain) / (1.0 - drain), 0.0, None)
         t_phys = (self.T_BOTTOM * level).astype(np.float32)
-        t_opt = spectra.optical_thickness(np.where(inside, t_phys, 0.0), self.N_SOAP,
-                                          np.where(inside, theta, 0.0)).astype(np.float32)
+        t_opt = _optical_thickness_um(np.where(inside, t_phys, 0.0), self.N_SOAP,
+                                      np.where(inside, theta, 0.0))
         film = lookup(FILM_TABLE, t_opt)
 
         # Studio environment seen in the mirror direction: a soft bright window at the
