@@ -66,14 +66,16 @@ def _display_matrix(display: str) -> np.ndarray:
 
 #: Pixels per block: the working set stays in cache, and results do not depend on
 #: how an image is batched.
-_CHUNK = 1 << 15
+_CHUNK = 1 << 14
 
 
 def _apply(values, name, kernel):
-    """Run ``kernel`` on float64 (N, 3) blocks of ``values``; same shape and dtype out.
+    """Run ``kernel`` on planar float64 (3, N) blocks of ``values``; same shape and
+    dtype out.
 
     Per block: NaN rows are noted and zeroed, components limited to +-LIMIT (so
-    +-Inf is finite), the kernel runs, NaN rows are put back as NaN.
+    +-Inf is finite), the kernel runs on the three contiguous channel rows, NaN rows
+    are put back as NaN.
     """
     a = np.asarray(values)
     if a.ndim == 0 or a.shape[-1] != 3:
@@ -82,47 +84,38 @@ def _apply(values, name, kernel):
     flat = a.reshape(-1, 3)
     out = np.empty(flat.shape, dtype)
     for start in range(0, flat.shape[0], _CHUNK):
-        work = np.array(flat[start:start + _CHUNK], dtype=np.float64)
-        nan_rows = np.isnan(work[:, 0]) | np.isnan(work[:, 1]) | np.isnan(work[:, 2])
+        work = np.ascontiguousarray(flat[start:start + _CHUNK].T, dtype=np.float64)
+        nan_rows = np.isnan(work[0]) | np.isnan(work[1]) | np.isnan(work[2])
         np.nan_to_num(work, copy=False, nan=0.0)
         np.clip(work, -LIMIT, LIMIT, out=work)
         result = kernel(work)
-        result[nan_rows] = np.nan
-        out[start:start + _CHUNK] = result
+        result[:, nan_rows] = np.nan
+        out[start:start + _CHUNK] = result.T
     return out.reshape(a.shape)
 
 
-def _dot3(a, v):
-    """``a @ v`` for (N, 3) ``a`` and a 3-vector ``v``, column by column (a BLAS call
-    on such skinny arrays is several times slower)."""
-    return a[:, 0] * v[0] + a[:, 1] * v[1] + a[:, 2] * v[2]
+def _fraction_to_boundary(values, grey):
+    """The fraction ``t`` of the way from the grey to the colour at which the ray
+    first leaves the cube (1 when it never does), and whether it is outside at all.
 
-
-def _matrix3(a, M):
-    """``a @ M.T`` for (N, 3) ``a``, column by column."""
-    return a[:, 0:1] * M[:, 0] + a[:, 1:2] * M[:, 1] + a[:, 2:3] * M[:, 2]
-
-
-def _fraction_to_boundary(value, grey):
-    """Per channel, the fraction ``t`` of the way from the grey to ``value`` at which
-    the ray leaves the slab ``0 <= . <= 1`` (1 when it never does), and the rows
-    outside the slab in any channel.
-
-    ``value``: (N, 3) signed positions against the three plane pairs; ``grey``:
-    (N, 1), the grey's position, the same in every channel (the grey is on the
-    neutral diagonal, R = G = B) and inside [0, 1]. This is the paper's plane
-    intersection ``s`` written as ``t = 1 - s`` so that huge inputs do not cancel:
-    ``t = (grey - bound) / (grey - value)``. The division is only used where
-    ``value`` is outside the slab and the grey inside, so ``|grey - value| > 0``.
+    ``values``: the three (N,) signed positions against the plane pairs (RGB);
+    ``grey``: (N,), the grey's position, the same in every channel (the grey is on
+    the neutral diagonal, R = G = B) and inside [0, 1]. Per plane pair this is the
+    paper's intersection ``s`` written as ``t = 1 - s`` so that huge inputs do not
+    cancel: ``t = (grey - bound) / (grey - value)``, only used where ``value`` is
+    outside the slab and the grey inside, so ``|grey - value| > 0``; the smallest t
+    is the intersection furthest from the colour.
     """
-    below = value < 0.0
-    above = value > 1.0
-    outside = below | above
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = (grey - above) / (grey - value)
-    t = np.where(outside, t, 1.0)
-    t_min = np.minimum(np.minimum(t[:, 0], t[:, 1]), t[:, 2])[:, None]
-    return t_min, (outside[:, 0] | outside[:, 1] | outside[:, 2])[:, None]
+    t = np.ones_like(grey)
+    outside = np.zeros(grey.shape, bool)
+    for value in values:
+        above = value > 1.0
+        out_j = (value < 0.0) | above
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t_j = (grey - above) / (grey - value)
+        np.minimum(t, t_j, out=t, where=out_j)
+        outside |= out_j
+    return t, outside
 
 
 def clip_RGB(RGB, display: str = "sRGB"):
@@ -136,13 +129,13 @@ def clip_RGB(RGB, display: str = "sRGB"):
     Y_white = luminance.sum()
 
     def kernel(rgb):
-        Y = _dot3(rgb, luminance)
-        grey = np.clip(Y / Y_white, 0.0, 1.0)[:, None]
+        Y = luminance[0] * rgb[0] + luminance[1] * rgb[1] + luminance[2] * rgb[2]
+        grey = np.clip(Y / Y_white, 0.0, 1.0)
         t, outside = _fraction_to_boundary(rgb, grey)
         clipped = np.clip(grey + t * (rgb - grey), 0.0, 1.0)
         out = np.where(outside, clipped, rgb)
-        out[Y <= 0.0] = 0.0
-        out[Y >= Y_white] = 1.0
+        out[:, Y <= 0.0] = 0.0
+        out[:, Y >= Y_white] = 1.0
         return out
 
     return _apply(RGB, "RGB", kernel)
@@ -164,13 +157,14 @@ def clip_XYZ(XYZ, display: str = "sRGB"):
     white = np.linalg.inv(M) @ np.ones(3)
 
     def kernel(xyz):
-        Y = xyz[:, 1].copy()
-        s = np.clip(Y / white[1], 0.0, 1.0)[:, None]
-        grey = s * white
-        t, outside = _fraction_to_boundary(_matrix3(xyz, M), s)
+        Y = xyz[1].copy()
+        s = np.clip(Y / white[1], 0.0, 1.0)
+        planes = [n[0] * xyz[0] + n[1] * xyz[1] + n[2] * xyz[2] for n in M]
+        t, outside = _fraction_to_boundary(planes, s)
+        grey = s * white[:, None]
         out = np.where(outside, grey + t * (xyz - grey), xyz)
-        out[Y <= 0.0] = 0.0
-        out[Y >= white[1]] = white
+        out[:, Y <= 0.0] = 0.0
+        out[:, Y >= white[1]] = white[:, None]
         return out
 
     return _apply(XYZ, "XYZ", kernel)
