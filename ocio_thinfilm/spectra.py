@@ -15,7 +15,7 @@ Public functions
 - :func:`morpho_layer_thickness` -- Eq. 14
 - :func:`multilayer_reflectance` -- Eq. 9 (Anderson & Richards), peak-normalised
 - :func:`airy_reflectance` -- exact single film: Airy sum with s/p Fresnel amplitudes
-- :func:`transfer_matrix_reflectance` -- exact multilayer (characteristic matrices)
+- :func:`transfer_matrix_reflectance` -- exact multilayer (transfer matrices, as a recursion)
 
 Band-limited integration
 ------------------------
