@@ -125,7 +125,7 @@ def uvY_uniform(display, size):
     fwd = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return tables.group([tables._range(-tables.LIMIT, tables.LIMIT), fwd,
+    return tables.group([tables.xyz_limit_transform(), fwd,
                          tables._matrix(np.diag(1 / hi)), _lut3d(uvY / hi),
                          tables._matrix(np.diag(hi)), inv,
                          tables.display_matrix_transform(display), tables._range(0, 1)])

@@ -156,7 +156,7 @@ def _view_parts(display, view, inline, luts):
     if view == "Constant-Lightness Clip":
         core = (luts[named_lut(_clip_stem(display))] if inline
                 else _file_transform(named_lut(_clip_stem(display))))
-        linear = [tables._range(-tables.LIMIT, tables.LIMIT), tables.xyY_forward_transform(),
+        linear = [tables.xyz_limit_transform(), tables.xyY_forward_transform(),
                   core, tables.xyY_inverse_transform(),
                   tables.display_matrix_transform(display), tables._range(0.0, 1.0)]
     else:

@@ -104,7 +104,7 @@ def _lut1d(values):
 
     t = ocio.Lut1DTransform()
     t.setLength(len(values))
-    t.setData(np.ascontiguousarray(values, dtype=np.float32).ravel())
+    t.setData(np.ascontiguousarray(tables.quantize(values), dtype=np.float32).ravel())
     return t
 
 
@@ -114,7 +114,7 @@ def _lut3d(values):
     t = ocio.Lut3DTransform()
     t.setGridSize(values.shape[0])
     t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    t.setData(np.ascontiguousarray(values, dtype=np.float32).ravel())
+    t.setData(np.ascontiguousarray(tables.quantize(values), dtype=np.float32).ravel())
     return t
 
 

@@ -73,9 +73,11 @@ __all__ = [
     "display_encoding_transform",
     "apply",
     "group",
+    "xyz_limit_transform",
     "xyY_forward_transform",
     "xyY_inverse_transform",
     "transform_id",
+    "quantize",
     "object_colours",
     "spectral_colours",
 ]
@@ -141,13 +143,20 @@ def group(transforms, *, name: str | None = None, description: str | None = None
     return g
 
 
+def quantize(values, decimals: int = 7) -> np.ndarray:
+    """Round to ``decimals`` decimal places (and turn -0 into 0) before data go into a
+    file: float64 results can differ in the last bits between runs (BLAS reduction
+    order, memory alignment); rounded, the written files are byte-reproducible."""
+    return np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0
+
+
 def _matrix(m3=None, offset=(0.0, 0.0, 0.0)):
     ocio = _ocio()
     m = np.eye(4)
     if m3 is not None:
         m[:3, :3] = m3
-    return ocio.MatrixTransform([float(v) for v in m.ravel()],
-                                [float(v) for v in offset] + [0.0])
+    return ocio.MatrixTransform([float(v) for v in quantize(m, 12).ravel()],
+                                [float(v) for v in quantize(offset, 12)] + [0.0])
 
 
 def _range(lo, hi):
@@ -160,8 +169,20 @@ def _range(lo, hi):
     return r
 
 
-#: Components are limited to +-LIMIT before XYZ -> xyY (+-Inf and NaN become finite).
+#: Components are limited to [0, LIMIT] before XYZ -> xyY (see :func:`xyz_limit_transform`).
 LIMIT = 1e6
+
+
+def xyz_limit_transform():
+    """Clamp XYZ to [0, LIMIT] per component before ``XYZ_TO_xyY``.
+
+    No physical colour has a negative X, Y or Z (the CIE 1931 matching functions are
+    non-negative), so this changes only non-physical inputs, and it keeps
+    X + Y + Z >= 0: without it a huge negative component (X + Y + Z < 0 with Y > 0)
+    flips the chromaticity to the opposite side (dE2000 ~60 for X = -1e30). +-Inf and
+    NaN become finite; Y <= 0 gives black, as in the analytic clip.
+    """
+    return _range(0.0, LIMIT)
 
 
 def xyY_forward_transform():
@@ -259,7 +280,7 @@ class Table1D:
         ocio = _ocio()
         t = ocio.Lut1DTransform()
         t.setLength(self.size)
-        t.setData(np.ascontiguousarray(self.values, dtype=np.float32).ravel())
+        t.setData(np.ascontiguousarray(quantize(self.values), dtype=np.float32).ravel())
         t.setInterpolation(ocio.INTERP_LINEAR)
         return t
 
@@ -510,7 +531,7 @@ class ClipLUT:
         t = ocio.Lut3DTransform()
         t.setGridSize(self.size)
         t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-        t.setData(np.ascontiguousarray(self.values, dtype=np.float32).ravel())
+        t.setData(np.ascontiguousarray(quantize(self.values), dtype=np.float32).ravel())
         return t
 
     def shaper(self):
@@ -591,11 +612,12 @@ def display_matrix_transform(display: str, inverse: bool = False):
 def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE, **kwargs):
     """OCIO transform CIE-XYZ-D65 -> display-linear RGB, constant-lightness clipped.
 
-    Range limit (+-1e6, NaN -> finite), ``XYZ_TO_xyY``, the clip LUT (shaper, Lut3D,
-    inverse shaper), ``xyY -> XYZ``, the display matrix, a clamp to [0, 1].
+    Range limit (XYZ clamped to [0, 1e6]: NaN/Inf finite, no chromaticity flip),
+    ``XYZ_TO_xyY``, the clip LUT (shaper, Lut3D, inverse shaper), ``xyY -> XYZ``, the
+    display matrix, a clamp to [0, 1].
     """
     lut = clip_lut(display, size, **kwargs)
-    return group([_range(-LIMIT, LIMIT), xyY_forward_transform(), lut.core_transform(),
+    return group([xyz_limit_transform(), xyY_forward_transform(), lut.core_transform(),
                   xyY_inverse_transform(), display_matrix_transform(display), _range(0.0, 1.0)],
                  name=lut.name, id=transform_id("Gamut_Map", lut.name))
 
