@@ -199,13 +199,22 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
     script.write_text(
         "import bpy\n"
         "s = bpy.context.scene\n"
-        "s.display_settings.display_device = 'sRGB'\n"
-        "s.view_settings.view_transform = 'Constant-Lightness Clip'\n"
-        "print('VIEW', s.view_settings.view_transform)\n"
-        "print('VIEWS', [v.identifier for v in type(s.view_settings).bl_rna.properties['view_transform'].enum_items])\n")
+        "for d in ('sRGB', 'Display P3', 'Rec.2020'):\n"
+        "    s.display_settings.display_device = d\n"
+        "    for v in ('Constant-Lightness Clip', 'Channel Clamp', 'ACES Gamut Compression',"
+        " 'Raw'):\n"
+        "        s.view_settings.view_transform = v\n"
+        "        print('SET', s.display_settings.display_device, '/', "
+        "s.view_settings.view_transform)\n"
+        "img = bpy.data.images.new('t', 4, 1, float_buffer=True)\n"
+        "img.colorspace_settings.name = 'Thin Film Phase-Change Thickness'\n"
+        "print('IMAGE', img.colorspace_settings.name)\n")
     env = {"OCIO": str(CONFIG), "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)}
     result = subprocess.run([BLENDER, "-b", "--factory-startup", "--python", str(script)],
                             capture_output=True, text=True, timeout=300, env=env)
     text = result.stdout + result.stderr
     assert "Color management: Error" not in text, text
-    assert "VIEW Constant-Lightness Clip" in text, text
+    for display in clip.DISPLAYS:
+        for view in tables.VIEWS:
+            assert f"SET {display} / {view}" in text, text
+    assert "IMAGE Thin Film Phase-Change Thickness" in text, text
