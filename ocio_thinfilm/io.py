@@ -35,7 +35,8 @@ def check_writable(directory) -> Path:
 
 @contextlib.contextmanager
 def atomic_file(path, suffix=None):
-    """Yield a temporary path next to ``path``; on success rename it onto ``path``."""
+    """Yield a temporary path next to ``path``; on success rename it onto ``path``
+    with the permissions a plain ``open()`` would have given (0666 less the umask)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=suffix or path.suffix,
@@ -43,10 +44,17 @@ def atomic_file(path, suffix=None):
     os.close(fd)
     try:
         yield Path(tmp)
+        os.chmod(tmp, 0o666 & ~_umask())
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 @contextlib.contextmanager
@@ -59,6 +67,7 @@ def atomic_directory(path):
     old = path.parent / f".{path.name}.old"
     try:
         yield tmp
+        os.chmod(tmp, 0o777 & ~_umask())
         if old.exists():
             shutil.rmtree(old)
         if path.exists():
@@ -75,7 +84,9 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
 
     ``dtype`` defaults to uint8 for .png and half for .exr. Float data written to an
     8-bit file is taken as 0..1 and rounded (OpenImageIO's own conversion).
-    Metadata is kept minimal and deterministic, so equal pixels give equal bytes.
+    ``attributes`` values may be int, float, str or a tuple of floats (e.g. the EXR
+    ``chromaticities``). OpenImageIO stamps EXRs with the current ``DateTime``
+    unless an attribute sets it: pass a fixed one for byte-reproducible files.
     """
     import OpenImageIO as oiio
 
@@ -92,7 +103,10 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
     if path.suffix.lower() == ".exr":
         spec.attribute("compression", "zip")
     for key, value in (attributes or {}).items():
-        spec.attribute(key, value)
+        if isinstance(value, (tuple, list)):
+            spec.attribute(key, oiio.TypeDesc(f"float[{len(value)}]"), tuple(map(float, value)))
+        else:
+            spec.attribute(key, value)
     with atomic_file(path) as tmp:
         out = oiio.ImageOutput.create(str(path))
         if out is None or not out.open(str(tmp), spec):

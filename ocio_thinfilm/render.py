@@ -230,6 +230,8 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     # OpenImageIO stamps EXRs with the current time unless told otherwise: a fixed
     # stamp (the paper's conference date) keeps the bytes a function of the arguments.
     attrs["DateTime"] = FIXED_DATETIME
+    # R, G, B hold CIE XYZ: the EXR chromaticities of XYZ (white = equal energy E).
+    attrs["chromaticities"] = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0 / 3.0, 1.0 / 3.0)
     from concurrent.futures import ThreadPoolExecutor
 
     with ThreadPoolExecutor(max_workers=2) as pool:
