@@ -33,14 +33,27 @@ Design (measured; see ``benchmarks/bench_luts.py``)
     is uniform in cos(theta) over [0, 1] (the clamp gives grazing / normal incidence
     outside).
 3D clip LUT
-    Built in CIE xyY (OCIO ``FixedFunction XYZ_TO_xyY``): the LUT's axes are the
+    Built in CIE xyY (OCIO ``FixedFunction XYZ_TO_xyY``, after a clamp of XYZ to
+    [0, 1e6] that only touches non-physical inputs): the LUT's axes are the
     chromaticity (x, y), shaped towards the display white, and the luminance Y,
     shaped towards Y = 1; it outputs the same shaped (x, y, Y) coordinates and the
     inverse shapers and ``xyY -> XYZ`` follow. The clip keeps Y, and tetrahedral
     interpolation reproduces any affine function of the grid coordinates exactly, so
-    Y passes through unchanged and in-gamut colours are reproduced exactly (up to
-    float32); only cells that cross the gamut boundary carry interpolation error.
-    A final clamp to [0, 1] guarantees the result is in gamut.
+    Y passes through unchanged and colours in cells wholly inside the gamut are
+    reproduced exactly (up to float32); only cells that cross the gamut boundary
+    carry interpolation error. A final clamp to [0, 1] guarantees the result is in
+    gamut (it moves Y by at most ~2e-3 on spectral colours).
+    Measured at 33^3 on :func:`object_colours` against the analytic clip (sRGB):
+    dE2000 mean 0.10, p99 1.39, max 4.5; 65^3: p99 0.53, max 2.5 (see
+    ``benchmarks/bench_luts.py`` for the other domains: naive XYZ/white, u'v'Y,
+    unshaped xyY, primaries-aligned xyY).
+
+Added names (beyond the contract): :func:`clip_lut` / :class:`ClipLUT` (the LUT data,
+``domain="xy" | "aligned"``), :func:`view_linear_transform`,
+:func:`display_matrix_transform`, :func:`display_encoding_transform`,
+:func:`xyz_limit_transform`, :func:`group`, :func:`quantize`, :func:`transform_id`,
+:func:`object_colours`, :func:`spectral_colours`, ``Table1D.rgb(display)`` (per-display
+clipped variant), ``Table1D.shaper(x)``.
 """
 
 from __future__ import annotations
