@@ -18,12 +18,22 @@ Public functions
 - :func:`film_XYZ` -- XYZ of the paper's single-film models (band-limited by default)
 - :func:`morpho_XYZ` -- XYZ of the Morpho multilayer (Eq. 9 + 14) against angle
 - :func:`matrix_XYZ_to_RGB`, :func:`XYZ_to_RGB`, :func:`RGB_to_XYZ`
-- :func:`white_XYZ`, :func:`delta_E2000`, :func:`spectral_locus_XYZ`
+- :func:`white_XYZ`, :func:`delta_E2000`, :func:`spectral_locus_XYZ`, :func:`cmfs_at`
+
+Importing colour-science takes about 3 s, longer than rendering a scene. The few
+arrays taken from its datasets (weights, matrices, CMF samples) are therefore
+memoised on disk (:func:`_persistent`), keyed by the arguments, the code that makes
+them and colour-science's version: only the first process imports colour.
 """
 
 from __future__ import annotations
 
-from functools import lru_cache
+import hashlib
+import inspect
+import os
+from functools import lru_cache, wraps
+from importlib import metadata
+from pathlib import Path
 
 import numpy as np
 
@@ -43,6 +53,7 @@ __all__ = [
     "white_XYZ",
     "delta_E2000",
     "spectral_locus_XYZ",
+    "cmfs_at",
 ]
 
 DEFAULT_OBSERVER = "CIE 1931 2 Degree Standard Observer"
@@ -61,7 +72,52 @@ RGB_SPACES = {
 FILM_KINDS = ("phase-change", "no-phase-change")
 
 
-@lru_cache(maxsize=32)
+def _cache_dir() -> Path | None:
+    """``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables), else the user cache dir."""
+    setting = os.environ.get("OCIO_THINFILM_CACHE")
+    if setting is not None:
+        return None if setting in ("", "0") else Path(setting)
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "ocio-thinfilm"
+
+
+def _persistent(function):
+    """Memoise a pure function of colour-science's datasets in memory and on disk.
+
+    The key covers the arguments, the function's source and colour-science's
+    version, so a changed function or library never returns a stale array. A cache
+    that cannot be read or written is ignored.
+    """
+    source = inspect.getsource(function)
+
+    @lru_cache(maxsize=64)
+    @wraps(function)
+    def wrapper(*args):
+        directory = _cache_dir()
+        path = None
+        if directory is not None:
+            key = repr((args, source, metadata.version("colour-science")))
+            digest = hashlib.sha256(key.encode()).hexdigest()[:32]
+            path = directory / f"{function.__name__}-{digest}.npy"
+            try:
+                return np.load(path)
+            except (OSError, ValueError):
+                pass
+        value = np.asarray(function(*args))
+        if path is not None:
+            from .io import atomic_file
+
+            try:
+                with atomic_file(path) as tmp:
+                    np.save(tmp, value)
+            except OSError:
+                pass
+        return value
+
+    return wrapper
+
+
+@_persistent
 def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray:
     import colour
 
@@ -150,7 +206,7 @@ def morpho_XYZ(theta_degrees, *, layers: int = spectra.MORPHO["layers"], d1=spec
     return _chunked_XYZ(model, theta_degrees, wl, observer, illuminant)
 
 
-@lru_cache(maxsize=16)
+@_persistent
 def _matrix_cached(space: str) -> np.ndarray:
     import colour
 
@@ -199,11 +255,26 @@ def delta_E2000(XYZ_a, XYZ_b) -> np.ndarray:
     return colour.delta_E(lab_a, lab_b, method="CIE 2000")
 
 
+@_persistent
+def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
+    import colour
+
+    try:
+        cmfs = colour.MSDS_CMFS[observer]
+    except KeyError:
+        raise ValueError(f"observer must be one of colour.MSDS_CMFS, got {observer!r}") from None
+    return np.asarray(cmfs[np.asarray(wl_key)])
+
+
+def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
+    """Colour matching functions (x-bar, y-bar, z-bar) at ``wavelengths`` (nm),
+    interpolated by colour-science; shape (len(wavelengths), 3)."""
+    wl = spectra.check_wavelengths(wavelengths)
+    return _cmfs_cached(tuple(wl.tolist()), observer).copy()
+
+
 def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
     """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs
     (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm."""
-    import colour
-
-    wl = np.arange(380.0, 701.0) if wavelengths is None else spectra.check_wavelengths(wavelengths)
-    xyz = np.asarray(colour.MSDS_CMFS[DEFAULT_OBSERVER][wl])
+    xyz = cmfs_at(np.arange(380.0, 701.0) if wavelengths is None else wavelengths)
     return xyz * (Y / xyz[:, 1:2])

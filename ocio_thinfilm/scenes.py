@@ -156,8 +156,6 @@ class SpectrumScene(Scene):
     STRIPS = ("spectrum", "film", "morpho")
 
     def render(self, width, height, *, lookup, seed=0, frame=1):
-        import colour
-
         header = max(2, int(round(height * 0.11)))
         gap = max(1, width // 64)
         panel = (width - 4 * gap) // 3
@@ -174,7 +172,7 @@ class SpectrumScene(Scene):
         lo, hi = self.WAVELENGTHS
         wl = lo + (hi - lo) * frac
         grid = np.arange(360.0, 831.0)
-        cmfs = np.asarray(colour.MSDS_CMFS[colorimetry.DEFAULT_OBSERVER][grid])
+        cmfs = colorimetry.cmfs_at(grid)
         spec = np.stack([np.interp(wl, grid, cmfs[:, k]) for k in range(3)], axis=-1)
         spec *= self.SPECTRUM_PEAK_Y / cmfs[:, 1].max()
 
