@@ -564,9 +564,9 @@ class ClipLUT:
 
 
 def _clip_vertices(display, size, domain, gamma, offset):
-    """Vertex values of the clip LUT (float64), in the LUT's output coordinates."""
-    import colour
+    """Vertex values of the clip LUT (float64), in the LUT's output coordinates.
 
+    xyY <-> XYZ goes through OCIO's own XYZ_TO_xyY, the op the config applies."""
     g = np.linspace(0.0, 1.0, size)
     U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
     shaper = _shaper_parts(display, size, domain, gamma, offset)
@@ -577,10 +577,10 @@ def _clip_vertices(display, size, domain, gamma, offset):
     # their chromaticity; y <= 0 is outside every gamut, any tiny value works.
     xyY[..., 2] = np.maximum(xyY[..., 2], 1e-9)
     xyY[..., 1] = np.maximum(xyY[..., 1], 1e-9)
-    XYZ = colour.xyY_to_XYZ(xyY)
+    XYZ = apply(xyY_inverse_transform(), xyY).astype(np.float64)
     clipped = clip.clip_XYZ(XYZ, display)
     inside = np.all(clipped == XYZ, axis=-1)  # the clip returns in-gamut colours unchanged
-    out = apply(group(shaper), colour.XYZ_to_xyY(clipped)).astype(np.float64)
+    out = apply(group([xyY_forward_transform()] + shaper), clipped).astype(np.float64)
     out[inside] = U[inside]  # identity exactly (affine in the grid coordinates)
     out[..., 2] = U[..., 2]  # the clip keeps Y: exact by construction
     return out
