@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from . import clip, colorimetry, spectra
-from .io import write_image
+from .io import check_writable, write_image
 
 SOAP_INDEX = 1.33
 
@@ -42,6 +42,8 @@ def soap_strip(width: int = 1024, height: int = 96, max_thickness_nm: float = 20
 
 
 def run(args) -> int:
+    out = Path(args.out)
+    check_writable(out.parent)
     result = soap_film_colour(args.thickness)
     print(f"Soap film, n = {SOAP_INDEX}, t = {args.thickness:g} nm, normal incidence "
           f"(t' = {result['optical_thickness_nm']:g} nm)")
@@ -50,7 +52,6 @@ def run(args) -> int:
     print(f"  constant-lightness clip     {np.array2string(result['clipped_rgb'], precision=4)}")
     code = "#" + "".join(f"{int(round(v * 255)):02X}" for v in result["encoded"])
     print(f"  sRGB-encoded                {code}")
-    out = Path(args.out)
     write_image(out, soap_strip())
     print(f"wrote {out}: soap-film colours for 0-2 um (top: constant-lightness clip, "
           "bottom: channel clamp)")

@@ -29,7 +29,12 @@ def check_writable(directory) -> Path:
     while not probe.exists():
         probe = probe.parent
     if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
-        raise UsageError(f"--out {d}: directory is not writable")
+        raise UsageError(f"{d}: directory is not writable")
+    try:  # access() says yes to root everywhere (even /proc): try a real file, kept nowhere
+        with tempfile.TemporaryFile(dir=probe):
+            pass
+    except OSError:
+        raise UsageError(f"{d}: directory is not writable") from None
     return d
 
 
@@ -91,6 +96,7 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
     import OpenImageIO as oiio
 
     path = Path(path)
+    check_writable(path.parent)
     pixels = np.ascontiguousarray(pixels)
     if pixels.ndim == 2:
         pixels = pixels[:, :, None]

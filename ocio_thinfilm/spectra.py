@@ -466,6 +466,8 @@ def transfer_matrix_reflectance(n_layers, thicknesses, wavelengths, theta=0.0, *
     theta = np.deg2rad(_angle(theta))[..., None]
     n_list = [_complex_index("n_layers", n) for n in np.atleast_1d(n_layers)]
     d_list = np.atleast_1d(_array("thicknesses", thicknesses, minimum=0.0, unit=" nm"))
+    if not n_list:
+        raise ValueError("n_layers must list at least 1 layer (an empty stack is no film)")
     if len(n_list) != d_list.size or d_list.ndim != 1:
         raise ValueError("n_layers and thicknesses must be 1-D and of equal length")
     n0 = _complex_index("n_incident", n_incident)
