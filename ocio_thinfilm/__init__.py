@@ -13,10 +13,4 @@ Pipeline stages, one module each:
 - :mod:`.cli`          the ``ocio-thinfilm`` command
 """
 
-import warnings
-
 __version__ = "0.1.0"
-
-# colour-science announces at import that its SciPy-backed features are unavailable
-# when SciPy is absent; nothing in this package uses them, so the notice is noise.
-warnings.filterwarnings("ignore", message='"SciPy" related API features are not available')
