@@ -471,6 +471,7 @@ def _lab(xyz):
 
 
 def _section_gamut(ctx):
+    import colour
     import matplotlib.pyplot as plt
 
     display = "sRGB"
@@ -531,7 +532,7 @@ def _section_gamut(ctx):
     fig, axes = plt.subplots(len(methods) + 1, 1, figsize=(8, 5.5), sharex=True,
                              gridspec_kw={"height_ratios": [1] * len(methods) + [3]})
     for ax, (m_name, out) in zip(axes, mapped_locus.items()):
-        enc = _srgb_encode(np.clip(out, 0, 1))
+        enc = colour.cctf_encoding(np.clip(out, 0, 1), function="sRGB")
         ax.imshow(enc[None, :, :], aspect="auto", extent=(wl[0], wl[-1], 0, 1))
         ax.set_yticks([])
         ax.set_ylabel(m_name, rotation=0, ha="right", va="center", fontsize=7)
@@ -571,11 +572,6 @@ def _section_gamut(ctx):
         img_md,
     ]
     return "\n".join(text)
-
-
-def _srgb_encode(rgb):
-    rgb = np.clip(rgb, 0.0, 1.0)
-    return np.where(rgb <= 0.0031308, 12.92 * rgb, 1.055 * np.power(rgb, 1 / 2.4) - 0.055)
 
 
 def _ocio_cpu(transform):
@@ -1228,7 +1224,6 @@ def _lut_test_sets(q):
 def _naive_lut_transform(display, size, interp):
     """Baseline: a Lut3D over XYZ / white in [0, 1]^3, no shaper (clamps outside)."""
     import PyOpenColorIO as ocio
-    import colour  # noqa: F401
 
     W = colorimetry.white_XYZ(display)
     g = np.linspace(0.0, 1.0, size)
