@@ -138,11 +138,15 @@ def lut_files(clip_size: int = tables.CLIP_SIZE, film_size: int = tables.FILM_SI
     for display in clip.DISPLAYS:
         lut = tables.clip_lut(display, clip_size)
         files[named_lut(_clip_stem(display))] = lut.core_transform()
+        if lut.white_values is not None:
+            files[named_lut(_clip_stem(display, True))] = lut.core_transform(white=True)
     return files
 
 
-def _clip_stem(display):
-    return "ConstantLightnessClip_" + display.replace(".", "").replace(" ", "")
+def _clip_stem(display, white=False):
+    """Clip LUT file stem; ``white``: the pass against the faces through white."""
+    stem = "ConstantLightnessClip_" + display.replace(".", "").replace(" ", "")
+    return stem + "_WhiteFaces" if white else stem
 
 
 def _matrix_to_reference(space):
@@ -151,14 +155,14 @@ def _matrix_to_reference(space):
     return tables._matrix(np.linalg.inv(M))
 
 
-def _view_parts(display, view, inline, luts):
+def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):
     """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view."""
     if view == "Constant-Lightness Clip":
-        core = (luts[named_lut(_clip_stem(display))] if inline
-                else _file_transform(named_lut(_clip_stem(display))))
-        linear = [tables.xyz_limit_transform(), tables.xyY_forward_transform(),
-                  core, tables.xyY_inverse_transform(),
-                  tables.display_matrix_transform(display), tables._range(0.0, 1.0)]
+        lut = tables.clip_lut(display, clip_size)
+        cores = [named_lut(_clip_stem(display, white))
+                 for white in ((False, True) if lut.white_values is not None else (False,))]
+        cores = [luts[name] if inline else _file_transform(name) for name in cores]
+        linear = lut.transforms(*cores)
     else:
         linear = [tables.view_linear_transform(display, view)]
     return tables.group(linear + [tables.display_matrix_transform(display, inverse=True)])
@@ -235,7 +239,8 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
     descriptions = {
         "Constant-Lightness Clip": "Smits & Meyer 1990 Section 3.2: display-linear RGB "
                                    "clipped at constant luminance Y towards the display's "
-                                   "neutral axis (3D LUT over CIE xyY); scene-linear 1.0 is "
+                                   "neutral axis (two 3D LUTs, faces through black then "
+                                   "through white); scene-linear 1.0 is "
                                    "display white, above white gives white, no tone mapping.",
         "Channel Clamp": "Baseline: display-linear RGB clamped per channel to [0, 1].",
         "ACES Gamut Compression": "Baseline: OCIO's ACES 1.3 reference gamut compression "
@@ -251,7 +256,8 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
             vt = f"{view} - {display}"
             view_transforms.append(dict(name=vt, family="Thin Film",
                                         description=f"{descriptions[view]} Display: {display}.",
-                                        from_reference=_view_parts(display, view, inline, luts)))
+                                        from_reference=_view_parts(display, view, inline, luts,
+                                                                    clip_size)))
             views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
         displays[display] = views
 

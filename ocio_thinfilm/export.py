@@ -17,8 +17,9 @@ Standalone LUTs (``export``)
   display-linear RGB in ``--range`` (default -0.5..1.5; 0 and 1 fall on grid
   nodes, so in-gamut colours are reproduced exactly); CLF input is the RGB itself,
   the other formats take p = (rgb - min) / (max - min). Output: clipped
-  display-linear RGB. (The config's own clip LUT works in CIE xyY with
-  ``FixedFunction`` ops, which these formats cannot hold.)
+  display-linear RGB. (The config's own clip LUTs work in projective
+  chromaticity charts through ``FixedFunction XYZ_TO_xyY`` ops, which these formats
+  cannot hold.)
 
 Functions: :func:`export_lut`, :func:`export_set`, :func:`bake`, :func:`register`.
 """
@@ -310,7 +311,7 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
     if out.exists() and not out.is_dir():
         raise UsageError(f"--out {out}: not a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
-    n_files = len(config.THIN_FILM_SPACES) + len(clip.DISPLAYS) + 1
+    n_files = len(config.THIN_FILM_SPACES) + 2 * len(clip.DISPLAYS) + 1  # 2 clip LUTs each
     bar = _progress(show_progress, total=n_files, desc=f"bake {out}")
     try:
         with atomic_directory(out) as tmp:

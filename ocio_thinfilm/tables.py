@@ -15,7 +15,7 @@ these names; the implementation is filled in by the LUT/config work):
   from the pixel encoding, all three channels equal, to CIE-XYZ-D65), ``.lookup(x)``
   (numpy evaluation of the same interpolation).
 - ``clip_transform(display, size=...)``: OCIO transform CIE-XYZ-D65 -> display-linear
-  RGB, constant-lightness clipped (the 3D LUT with its shaper).
+  RGB, constant-lightness clipped (the 3D LUTs with their charts).
 - ``view_transform(display, view)``: OCIO transform CIE-XYZ-D65 -> display-encoded RGB
   for ``view`` in ``VIEWS``.
 - ``apply(transform, pixels)``: apply an OCIO transform to a float32 (..., 3) array
@@ -32,21 +32,35 @@ Design (measured; see ``benchmarks/bench_luts.py``)
     NaN, no wrap-around; negative thicknesses give black (t' = 0). The Morpho table
     is uniform in cos(theta) over [0, 1] (the clamp gives grazing / normal incidence
     outside).
-3D clip LUT
+3D clip LUT ("factored" domain, the default)
+    The clip moves a colour along its constant-Y ray towards the grey until it is
+    inside all six faces (t = min over the faces), so it factors exactly as
+    ``clip = U o L``: L clips only against the faces through black (R, G, B >= 0), U
+    only against those through white, both along the same ray. The parallelepiped is
+    centrally symmetric, so ``U = C o L o C`` with ``C(X) = W - X`` (a matrix with
+    offset). L is homogeneous of degree 1: in a projective chart of the
+    chromaticities (``XYZ_TO_xyY`` of a matrix of XYZ) it is a central projection
+    towards the white onto the primaries' triangle and Y is unchanged, so each pass is
+    one Lut3D over (chart, Y) with an exactly linear Y axis and the triangle's edges on
+    grid / tetrahedral split planes (in-gamut colours exact). Pass 1 uses the chart
+    normalised by 0.7 X + Y + Z (positive for XYZ >= 0), its grid covering the
+    spectral locus; pass 2 takes W - X, whose X + Y + Z can be <= 0 for saturated
+    colours, in a chart normalised by 0.02 X + Y + 0.005 Z, its grid covering the
+    complements of the object colours. Both LUTs are stored as 16-bit integers.
+    Measured at 38^3 on :func:`object_colours` against the analytic clip (dE2000
+    mean / p99 / max): sRGB 0.029 / 0.42 / 1.61, Display P3 0.018 / 0.25 / 1.53,
+    Rec.2020 0.008 / 0.10 / 0.64; spectral colours (Y <= 0.6) in gamut with
+    |dY| <= 3.1e-5 but coarse chromaticity (p99 9-27).
+3D clip LUT ("xy" / "aligned" domains, the previous design)
     Built in CIE xyY (OCIO ``FixedFunction XYZ_TO_xyY``, after a clamp of XYZ to
     [0, 1e6] that only touches non-physical inputs): the LUT's axes are the
     chromaticity (x, y), shaped towards the display white, and the luminance Y,
     shaped towards Y = 1; it outputs the same shaped (x, y, Y) coordinates and the
-    inverse shapers and ``xyY -> XYZ`` follow. The clip keeps Y, and tetrahedral
-    interpolation reproduces any affine function of the grid coordinates exactly, so
-    Y passes through unchanged and colours in cells wholly inside the gamut are
-    reproduced exactly (up to float32); only cells that cross the gamut boundary
-    carry interpolation error. A final clamp to [0, 1] guarantees the result is in
-    gamut (it moves Y by at most ~2e-3 on spectral colours).
-    Measured at 33^3 on :func:`object_colours` against the analytic clip (sRGB):
+    inverse shapers and ``xyY -> XYZ`` follow. Only cells that cross the gamut
+    boundary carry interpolation error; a final clamp to [0, 1] keeps the result in
+    gamut (it moves Y by at most ~2e-3 on spectral colours). "xy" at 33^3 (sRGB):
     dE2000 mean 0.10, p99 1.39, max 4.5; 65^3: p99 0.53, max 2.5 (see
-    ``benchmarks/bench_luts.py`` for the other domains: naive XYZ/white, u'v'Y,
-    unshaped xyY, primaries-aligned xyY).
+    ``benchmarks/bench_luts.py`` for the other domains).
 
 Added names (beyond the contract): :func:`clip_lut` / :class:`ClipLUT` (the LUT data,
 ``domain="xy" | "aligned"``), :func:`view_linear_transform`,
@@ -108,8 +122,8 @@ FILM_T0_UM = 1.0
 FILM_TMAX_UM = 100.0
 #: Default entries of the Morpho angle table (uniform in cos(theta)).
 MORPHO_SIZE = 1024
-#: Default edge length of the 3D clip LUT.
-CLIP_SIZE = 33
+#: Default edge length of the 3D clip LUTs (two per display in the "factored" domain).
+CLIP_SIZE = 38
 #: Wavelength step (nm) of the spectra behind the tables (band-limited integration).
 SPECTRAL_STEP = 5.0
 
@@ -409,12 +423,26 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 #: Chromaticity domain of the LUT (covers the spectral locus, x <= 0.735, y <= 0.834).
 XY_DOMAIN_MAX = (0.75, 0.85)
 #: Clip LUT domains (see :func:`_shaper_parts`) and the default.
-CLIP_DOMAINS = ("xy", "aligned")
-CLIP_DOMAIN = "xy"
+CLIP_DOMAINS = ("factored", "xy", "aligned")
+CLIP_DOMAIN = "factored"
 #: Default shaper exponents / offsets (mirrored moncurve) for the (x, y, 1 - Y) axes.
-#: In the "aligned" domain the chromaticity axes stay affine (exponent 1).
-SHAPER_GAMMA = {"aligned": (1.0, 1.0, 2.0), "xy": (2.0, 2.0, 2.0)}
-SHAPER_OFFSET = {"aligned": (0.0, 0.0, 0.01), "xy": (0.01, 0.01, 0.01)}
+#: In the "aligned" domain the chromaticity axes stay affine (exponent 1); the
+#: "factored" domain has no curve (every axis affine), the values are unused.
+SHAPER_GAMMA = {"aligned": (1.0, 1.0, 2.0), "xy": (2.0, 2.0, 2.0), "factored": (1.0, 1.0, 1.0)}
+SHAPER_OFFSET = {"aligned": (0.0, 0.0, 0.01), "xy": (0.01, 0.01, 0.01),
+                 "factored": (0.0, 0.0, 0.0)}
+#: Projective charts of the "factored" domain: the normaliser n . XYZ that
+#: ``XYZ_TO_xyY`` divides by (after a matrix), for the pass against the faces through
+#: black (inputs XYZ >= 0) and the pass against the faces through white (inputs
+#: W - X, which can have X + Y + Z <= 0: the normaliser is mostly Y).
+CHART_BLACK = (0.7, 1.0, 1.0)
+CHART_WHITE = (0.02, 1.0, 0.005)
+#: The factored LUTs are stored as 16-bit integers in the CLF files (half the size of
+#: float text); values are rounded to that grid (error <= 7.6e-6 of the LUT range).
+LUT_CODE_MAX = 65535
+#: The factored clip maps display RGB [SNAP, 1 - SNAP] to [0, 1] before its final clamp:
+#: black and white stay exact despite float32 round-off in the second pass's chart.
+SNAP = 3e-5
 
 
 def _white_xy(display):
@@ -524,9 +552,148 @@ def _inverse(transforms):
     return g
 
 
+# ---- the "factored" domain ------------------------------------------------- #
+# The clip moves a colour along its constant-Y ray towards the grey g W until it is
+# inside all six faces: t = min(t_black, t_white), so it factors exactly as
+# clip = U o L, L clipping only against R, G, B >= 0 and U only against R, G, B <= 1
+# (both along the same ray, towards the same grey). The parallelepiped is centrally
+# symmetric: with C(X) = W - X (an exact matrix with offset), U = C o L o C. L is
+# homogeneous of degree 1, so in any projective chart of the chromaticities it is a
+# 2D map (central projection towards the white onto the primaries' triangle) and Y
+# passes through unchanged: each pass is one Lut3D over (chart, Y) whose Y axis is
+# exactly linear, with the triangle's edges on grid / tetrahedral split planes.
+def _chart_matrix(upper):
+    """XYZ -> V with V1 = Y and V0 + V1 + V2 = n . XYZ, n = CHART_WHITE (``upper``,
+    applied to W - X) or CHART_BLACK. ``XYZ_TO_xyY`` of V gives the chart (V0/n.X,
+    Y/n.X) and Y."""
+    n = np.asarray(CHART_WHITE if upper else CHART_BLACK, dtype=np.float64)
+    first = np.array([1.0, 0.0, -1.0]) if upper else np.array([1.0, 0.0, 0.0])
+    return np.array([first, [0.0, 1.0, 0.0], n - first - np.array([0.0, 1.0, 0.0])])
+
+
+def _chart(P, XYZ):
+    V = np.asarray(XYZ, dtype=np.float64) @ P.T
+    return V[..., :2] / V.sum(axis=-1, keepdims=True)
+
+
+def _clip_black_faces(XYZ, display):
+    """L: the clip against the faces R, G, B >= 0 only (float64, Y > 0)."""
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    rgb = XYZ @ M.T
+    grey = XYZ[:, 1:2] / np.linalg.inv(M)[1].sum()
+    neg = rgb < 0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(neg, grey / np.where(neg, grey - rgb, 1.0), 1.0).min(axis=1, keepdims=True)
+    return (grey + t * (rgb - grey)) @ np.linalg.inv(M).T
+
+
+@lru_cache(maxsize=8)
+def _white_pass_cover(display):
+    """Inputs W - L(X) of the second pass that lie outside the gamut, for the object
+    colours of :func:`object_colours` (some are brighter than the reflector in one
+    component, e.g. Munsell renotation colours, so W - L(X) leaves the locus)."""
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    X = object_colours()
+    X = X[X[:, 1] > 1e-6]
+    comp = colorimetry.white_XYZ(display) - _clip_black_faces(X, display)
+    rgb = comp @ M.T
+    return comp[(comp[:, 1] > 1e-6) & (rgb < 0).any(axis=1)]
+
+
+@lru_cache(maxsize=32)
+def _factored_plan(display, size, upper):
+    """Chart and grid of one pass of the "factored" domain.
+
+    The chart (``_chart_matrix``) then an affine map send the display's primaries to
+    the canonical triangle (0, 0), (0, 1), (1, 1) (edges a = 0, b = 1, a = b: grid and
+    tetrahedral split planes, nodes every 1/k); the grid covers the spectral locus
+    (first pass) or the second pass's inputs (:func:`_white_pass_cover`).
+    Returns (P, A, o, k, m_a, m_b, white): u = (A chart + o + m / k) k / (size - 1);
+    ``white`` is the display white in canonical coordinates.
+    """
+    import itertools
+
+    P = _chart_matrix(upper)
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    prim = _chart(P, np.linalg.inv(M).T)
+    if upper:
+        cover = _chart(P, _white_pass_cover(display))
+    else:
+        cover = _chart(P, colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0)))
+    cells = size - 1
+    best = None
+    for perm in itertools.permutations(range(3)):
+        sol = np.linalg.solve(np.c_[prim[list(perm)], np.ones(3)], _CANONICAL)
+        A, o = sol[:2].T, sol[2]
+        ab = np.vstack([cover, prim]) @ A.T + o
+        lo, hi = ab.min(axis=0), ab.max(axis=0)
+        k = int(np.floor(cells / float((hi - lo).max())))
+        while k > 0:
+            ma, mb = int(np.ceil(-lo[0] * k - 1e-9)), int(np.ceil(-lo[1] * k - 1e-9))
+            if (cells - ma) / k >= hi[0] and (cells - mb) / k >= hi[1] and ma >= 0 and mb >= 0:
+                break
+            k -= 1
+        if k > 0 and (best is None or k > best[2]):
+            best = (A, o, k, ma, mb)
+    if best is None:
+        raise ValueError(f"clip LUT size {size} is too small for the factored domain")
+    A, o, k, ma, mb = best
+    white = _chart(P, colorimetry.white_XYZ(display)[None])[0] @ A.T + o
+    return P, A, o, k, ma, mb, white
+
+
+def _factored_shaper(display, size, upper):
+    P, A, o, k, ma, mb, _ = _factored_plan(display, size, upper)
+    s = k / (size - 1)
+    S = np.eye(3)
+    S[:2, :2] = A * s
+    return [_matrix(S, [(o[0] + ma / k) * s, (o[1] + mb / k) * s, 0.0])]
+
+
+def _factored_vertices(display, size, upper):
+    """LUT values of one pass: central projection towards the white onto the
+    canonical triangle, computed in the canonical plane itself (so nodes whose chart
+    point has Y <= 0 get the continuation, not a guess); identity inside; Y axis
+    identity; rounded to the 16-bit grid of the CLF file."""
+    P, A, o, k, ma, mb, white = _factored_plan(display, size, upper)
+    s = k / (size - 1)
+    g = np.linspace(0.0, 1.0, size)
+    U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
+    m = np.array([ma, mb]) / k
+    ab = U[..., :2] / s - m
+
+    def inside_measure(p):  # >= 0 inside, one per edge: a = 0, b = 1, a = b
+        return np.stack([p[..., 0], 1.0 - p[..., 1], p[..., 1] - p[..., 0]], axis=-1)
+
+    fp, fw = inside_measure(ab), inside_measure(white)
+    neg = fp < 0
+    t = np.where(neg, fw / np.where(neg, fw - fp, 1.0), 1.0).min(axis=-1, keepdims=True)
+    out = U.copy()
+    out[..., :2] = (white + t * (ab - white) + m) * s
+    inside = ~neg.any(axis=-1)
+    out[inside] = U[inside]
+    out[..., 2] = U[..., 2]
+    # Stored as codes c = out * q (size - 1) / LUT_CODE_MAX on the 16-bit grid, with q
+    # the largest integer with q (size - 1) <= LUT_CODE_MAX: the identity nodes
+    # i / (size - 1) become the exact codes i q, so in-gamut colours (and the white,
+    # and black) stay exact; :func:`_factored_code_scale` undoes the scale.
+    q = LUT_CODE_MAX // (size - 1)
+    return np.round(out * (q * (size - 1))) / LUT_CODE_MAX
+
+
+def _factored_code_scale(size):
+    """Matrix after a factored Lut3D: LUT codes -> LUT coordinates (all three axes)."""
+    q = LUT_CODE_MAX // (size - 1)
+    return _matrix(np.eye(3) * (LUT_CODE_MAX / (q * (size - 1))))
+
+
 @dataclass(frozen=True, eq=False)
 class ClipLUT:
-    """The baked constant-lightness clip for one display (see :func:`clip_lut`)."""
+    """The baked constant-lightness clip for one display (see :func:`clip_lut`).
+
+    In the "factored" domain ``values`` is the pass against the faces through black
+    and ``white_values`` the pass against the faces through white (applied to W - X).
+    """
 
     display: str
     size: int
@@ -534,33 +701,92 @@ class ClipLUT:
     domain: str
     gamma: tuple
     offset: tuple
+    white_values: np.ndarray | None = None
 
     @property
     def name(self) -> str:
         return f"Constant-Lightness Clip {self.display}"
 
-    def lut_transform(self):
+    def lut_transform(self, white: bool = False):
         ocio = _ocio()
         t = ocio.Lut3DTransform()
         t.setGridSize(self.size)
         t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-        t.setData(np.ascontiguousarray(quantize(self.values), dtype=np.float32).ravel())
+        values = self.white_values if white else self.values
+        if self.domain != "factored":  # factored values are already on the 16-bit grid
+            values = quantize(values)
+        t.setData(np.ascontiguousarray(values, dtype=np.float32).ravel())
+        if self.domain == "factored":
+            t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
         return t
 
-    def shaper(self):
+    def shaper(self, white: bool = False):
+        if self.domain == "factored":
+            return _factored_shaper(self.display, self.size, white)
         return _shaper_parts(self.display, self.size, self.domain, self.gamma, self.offset)
 
-    def core_transform(self):
-        """CLF-writable part, CIE xyY in -> xyY out: shaper, Lut3D, inverse shaper."""
-        return group(self.shaper() + [self.lut_transform(), _inverse(self.shaper())],
-                     name=self.name, id=transform_id("Gamut_Map", self.name),
-                     description=(f"Smits & Meyer 1990 constant-lightness clip into {self.display} "
-                                  f"(Section 3.2), baked as a {self.size}^3 tetrahedral Lut3D over "
-                                  f"CIE xyY ({self.domain} domain, see ocio_thinfilm.tables; Y shaped "
-                                  "towards 1, exact by construction). "
-                                  "Apply after XYZ_TO_xyY and follow with its inverse."),
-                     input_descriptor="CIE xyY (D65, Y = 1 at display white)",
-                     output_descriptor=f"CIE xyY clipped into the {self.display} gamut")
+    def core_transform(self, white: bool = False):
+        """CLF-writable part, chart in -> chart out: shaper, Lut3D, inverse shaper.
+
+        "xy" / "aligned": CIE xyY in and out. "factored": the chart of one pass
+        (``white`` selects the pass against the faces through white)."""
+        if self.domain != "factored":
+            return group(self.shaper() + [self.lut_transform(), _inverse(self.shaper())],
+                         name=self.name, id=transform_id("Gamut_Map", self.name),
+                         description=(f"Smits & Meyer 1990 constant-lightness clip into "
+                                      f"{self.display} (Section 3.2), baked as a "
+                                      f"{self.size}^3 tetrahedral Lut3D over CIE xyY "
+                                      f"({self.domain} domain, see ocio_thinfilm.tables; Y "
+                                      "shaped towards 1, exact by construction). "
+                                      "Apply after XYZ_TO_xyY and follow with its inverse."),
+                         input_descriptor="CIE xyY (D65, Y = 1 at display white)",
+                         output_descriptor=f"CIE xyY clipped into the {self.display} gamut")
+        faces = "white (R, G, B <= 1)" if white else "black (R, G, B >= 0)"
+        n = CHART_WHITE if white else CHART_BLACK
+        name = f"{self.name} {'White' if white else 'Black'} Faces"
+        chart = (f"XYZ_TO_xyY of a matrix of {'W - XYZ' if white else 'XYZ'} whose "
+                 f"components sum to {n[0]:g} X + {n[1]:g} Y + {n[2]:g} Z "
+                 "(middle component Y)")
+        return group(self.shaper(white) + [self.lut_transform(white),
+                                           _factored_code_scale(self.size),
+                                           _inverse(self.shaper(white))],
+                     name=name, id=transform_id("Gamut_Map", name),
+                     description=(f"Smits & Meyer 1990 constant-lightness clip into "
+                                  f"{self.display} (Section 3.2), the part against the "
+                                  f"gamut faces through {faces}: central projection "
+                                  "towards the white onto the primaries' triangle, "
+                                  f"baked as a {self.size}^3 tetrahedral Lut3D (triangle "
+                                  "edges on grid planes, Y axis exact). The clip is "
+                                  "C(U(C(L(X)))) with C(X) = W - X, L the black-faces "
+                                  "and U the white-faces part; see "
+                                  "ocio_thinfilm.tables.clip_transform."),
+                     input_descriptor=f"chart ({chart}) and Y",
+                     output_descriptor=f"the same chart, clipped against the faces "
+                                       f"through {faces} of the {self.display} gamut")
+
+    def transforms(self, black=None, white=None):
+        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display-linear
+        RGB in [0, 1]; ``black`` / ``white`` replace the CLF-writable cores (e.g. by
+        FileTransforms in the config)."""
+        black = self.core_transform() if black is None else black
+        if self.domain != "factored":
+            return [xyz_limit_transform(), xyY_forward_transform(), black,
+                    xyY_inverse_transform(), display_matrix_transform(self.display),
+                    _range(0.0, 1.0)]
+        white = self.core_transform(True) if white is None else white
+        P1 = _factored_plan(self.display, self.size, False)[0]
+        P2 = _factored_plan(self.display, self.size, True)[0]
+        W = colorimetry.white_XYZ(self.display)
+        M = colorimetry.matrix_XYZ_to_RGB(self.display)
+        return [xyz_limit_transform(), _matrix(P1), xyY_forward_transform(), black,
+                xyY_inverse_transform(),
+                _matrix(-P2 @ np.linalg.inv(P1), P2 @ W),  # chart 1 -> W - X -> chart 2
+                xyY_forward_transform(), white, xyY_inverse_transform(),
+                # chart 2 -> W - X -> display RGB, and [e, 1 - e] -> [0, 1] so that float32
+                # round-off through the second chart (~1e-5) does not leave black or
+                # white off by that much (moves any channel by at most e)
+                _matrix(-M @ np.linalg.inv(P2) / (1 - 2 * SNAP), (M @ W - SNAP) / (1 - 2 * SNAP)),
+                _range(0.0, 1.0)]
 
 
 def _clip_vertices(display, size, domain, gamma, offset):
@@ -588,11 +814,17 @@ def _clip_vertices(display, size, domain, gamma, offset):
 
 @lru_cache(maxsize=16)
 def _clip_lut(display, size, domain, gamma, offset):
-    values = _clip_vertices(display, size, domain, gamma, offset)
+    white_values = None
+    if domain == "factored":
+        values = _factored_vertices(display, size, False)
+        white_values = _factored_vertices(display, size, True)
+        white_values.setflags(write=False)
+    else:
+        values = _clip_vertices(display, size, domain, gamma, offset)
     values.setflags(write=False)
     BUILT.append(f"clip3d:{display}:{size}")
     return ClipLUT(display=display, size=size, values=values, domain=domain, gamma=gamma,
-                   offset=offset)
+                   offset=offset, white_values=white_values)
 
 
 def _check_display(display):
@@ -625,14 +857,15 @@ def display_matrix_transform(display: str, inverse: bool = False):
 def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE, **kwargs):
     """OCIO transform CIE-XYZ-D65 -> display-linear RGB, constant-lightness clipped.
 
-    Range limit (XYZ clamped to [0, 1e6]: NaN/Inf finite, no chromaticity flip),
-    ``XYZ_TO_xyY``, the clip LUT (shaper, Lut3D, inverse shaper), ``xyY -> XYZ``, the
-    display matrix, a clamp to [0, 1].
+    Range limit (XYZ clamped to [0, 1e6]: NaN/Inf finite, no chromaticity flip), then
+    ("factored") chart matrix, ``XYZ_TO_xyY``, the black-faces LUT (shaper, Lut3D,
+    inverse shaper), ``xyY -> XYZ``, the complement W - X into the second chart,
+    ``XYZ_TO_xyY``, the white-faces LUT, back, the complement and the display matrix
+    in one matrix, a clamp to [0, 1]. ("xy" / "aligned": ``XYZ_TO_xyY``, one LUT,
+    ``xyY -> XYZ``, the display matrix, the clamp.)
     """
     lut = clip_lut(display, size, **kwargs)
-    return group([xyz_limit_transform(), xyY_forward_transform(), lut.core_transform(),
-                  xyY_inverse_transform(), display_matrix_transform(display), _range(0.0, 1.0)],
-                 name=lut.name, id=transform_id("Gamut_Map", lut.name))
+    return group(lut.transforms(), name=lut.name, id=transform_id("Gamut_Map", lut.name))
 
 
 #: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.

@@ -136,11 +136,11 @@ def test_per_display_rgb_variant_is_clipped():
 # --------------------------------------------------------------------------- #
 # 3D clip LUT
 # --------------------------------------------------------------------------- #
-#: Measured at the default size (33^3, "xy" domain) on tables.object_colours():
-#: sRGB p99 1.39 / max 4.5, Display P3 1.64 / 4.6, Rec.2020 1.53 / 5.0 (dE2000 vs the
-#: analytic clip). Regression thresholds with a small margin.
-OBJECT_P99 = 1.8
-OBJECT_MAX = 5.5
+#: Issue 3's target at the default size (38^3, "factored" domain): p99 <= 0.5, max <= 2.0
+#: dE2000 vs the analytic clip on tables.object_colours(). Measured: sRGB p99 0.42 / max 1.61, Display P3 0.25 / 1.53,
+#: Rec.2020 0.10 / 0.64.
+OBJECT_P99 = 0.5
+OBJECT_MAX = 2.0
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
@@ -162,13 +162,15 @@ def test_clip_lut_reproduces_interior_colours(display):
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_clip_lut_keeps_Y_of_spectral_colours_and_lands_in_gamut(display):
-    # Measured: |dY| <= 1.9e-3, relative <= 7.2e-3 (sRGB); the LUT's Y axis is exact,
-    # what is left comes from the final channel clamp of slightly outside chromaticities.
+    # Measured: |dY| <= 3.1e-5 (all displays; the LUTs' Y axes are exact up to the final
+    # [3e-5, 1 - 3e-5] -> [0, 1] stretch, and both passes' outputs lie in the gamut, so the final clamp does not
+    # move Y). Their chromaticity error is large (dE2000 p99 9-27), as the LUT domains
+    # are fitted to object colours.
     locus = tables.spectral_colours(0.6)
     out = tables.apply(tables.clip_transform(display), locus).astype(np.float64)
     assert clip.in_gamut(out).all()
     Y = colorimetry.RGB_to_XYZ(out, display)[:, 1]
-    assert np.abs(Y - locus[:, 1]).max() <= 3e-3
+    assert np.abs(Y - locus[:, 1]).max() <= 2e-4
     assert np.abs(Y / locus[:, 1] - 1).max() <= 1.2e-2
 
 
