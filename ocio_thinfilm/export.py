@@ -27,7 +27,6 @@ Functions: :func:`export_lut`, :func:`export_set`, :func:`bake`, :func:`register
 from __future__ import annotations
 
 import math
-import os
 import sys
 from pathlib import Path
 
@@ -100,25 +99,6 @@ def _validate(table, kind, display, index, value_range, size, fmt):
 # --------------------------------------------------------------------------- #
 # LUT contents
 # --------------------------------------------------------------------------- #
-def _lut1d(values):
-    import PyOpenColorIO as ocio
-
-    t = ocio.Lut1DTransform()
-    t.setLength(len(values))
-    t.setData(np.ascontiguousarray(tables.quantize(values), dtype=np.float32).ravel())
-    return t
-
-
-def _lut3d(values):
-    import PyOpenColorIO as ocio
-
-    t = ocio.Lut3DTransform()
-    t.setGridSize(values.shape[0])
-    t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    t.setData(np.ascontiguousarray(tables.quantize(values), dtype=np.float32).ravel())
-    return t
-
-
 def _stem(table, kind, display, index):
     if table == "film":
         stem = "ThinFilm_" + ("PhaseChange" if kind == "phase-change" else "NoPhaseChange")
@@ -180,10 +160,10 @@ def lut_contents(table, *, kind="phase-change", display=None, index=None, value_
             values = clip.clip_RGB(colorimetry.XYZ_to_RGB(values, display), display)
             output = f"{display} display-linear RGB, constant-lightness clipped"
             description += f", clipped into {display}"
-        lut = _lut1d(values)
+        lut = tables.lut1d_transform(values)
     else:
         output = f"{display} display-linear RGB, constant-lightness clipped"
-        lut = _lut3d(values)
+        lut = tables.lut3d_transform(values)
     meta = dict(name=_stem(table, kind, display, index), input=what, output=output,
                 description=description, range=(lo, hi), size=size,
                 id=tables.transform_id("Export", _stem(table, kind, display, index)))
@@ -236,7 +216,6 @@ def write_lut(path, fmt, values, lut, meta):
                 baker.setShaperSize(size)
             text = baker.bake()
             Path(tmp).write_text(text if text.endswith("\n") else text + "\n")
-        os.chmod(tmp, 0o644)
     return path
 
 
@@ -317,19 +296,10 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
         with atomic_directory(out) as tmp:
             config.write_config(tmp, clip_size=int(clip_size),
                                 progress=(lambda name: bar.update(1)) if bar else None)
-            _publish_permissions(tmp)
     finally:
         if bar:
             bar.close()
     return out / "config.ocio"
-
-
-def _publish_permissions(directory):
-    """mkdtemp/mkstemp make private entries; published folders are world-readable."""
-    directory = Path(directory)
-    os.chmod(directory, 0o755)
-    for path in directory.rglob("*"):
-        os.chmod(path, 0o755 if path.is_dir() else 0o644)
 
 
 def _progress(show, total, desc):
@@ -371,7 +341,6 @@ def _run_bake(args) -> int:
         check_writable(luts.parent if str(luts.parent) else Path("."))
         with atomic_directory(luts) as tmp:
             export_set(tmp, show_progress=not args.quiet)
-            _publish_permissions(tmp)
     print(f"wrote {path}")
     return 0
 

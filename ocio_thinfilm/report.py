@@ -1205,8 +1205,9 @@ def _with_interp(transform, interp):
 
 
 def _lut_test_sets(q):
-    """XYZ test colours: interference colours, and real colours (mixtures of spectral
-    colours, the spectral locus itself) at many luminances."""
+    """XYZ test colours: interference colours, and spectral mixtures (up to three
+    spectral lines, mostly near-monochromatic, at luminances 0.01-0.99: extreme
+    inputs, mostly outside the object-colour solid)."""
     rng = np.random.default_rng(7)
     t = rng.uniform(0.0, 1500.0, 3000 if q else 20000)
     interference = np.concatenate([
@@ -1218,7 +1219,7 @@ def _lut_test_sets(q):
     picks = rng.integers(0, locus.shape[0], (n, 3))
     mix = np.einsum("nk,nkc->nc", w, locus[picks])
     mix = mix / mix[:, 1:2] * rng.uniform(0.01, 0.99, (n, 1))
-    return {"interference colours": interference, "real colours (spectral mixtures)": mix}
+    return {"interference colours": interference, "spectral mixtures (Y 0.01-0.99)": mix}
 
 
 def _naive_lut_transform(display, size, interp):
@@ -1306,7 +1307,7 @@ def _section_lut3d(ctx):
                     out = tables.apply(tf, xyz).astype(np.float64) @ Minv.T
                     stats[s_name] = _stats(colorimetry.delta_E2000(out, refs[s_name]))
                 mpix = _ocio_apply_speed(_ocio_cpu(tf), img)
-                a, b = stats["interference colours"], stats["real colours (spectral mixtures)"]
+                a, b = stats["interference colours"], stats["spectral mixtures (Y 0.01-0.99)"]
                 rows.append([d_name, i_name, size, a["mean"], a["p99"], a["max"], b["mean"],
                              b["p99"], b["max"], bake, mpix])
                 series[key].append((1.0 / mpix, a["p99"], a["max"], size))
@@ -1320,23 +1321,23 @@ def _section_lut3d(ctx):
                           series, xlabel="apply cost through OCIO (s / Mpixel, one thread)",
                           default=default_pt)
     n_int = sets["interference colours"].shape[0]
-    n_real = sets["real colours (spectral mixtures)"].shape[0]
+    n_real = sets["spectral mixtures (Y 0.01-0.99)"].shape[0]
     return "\n".join([
         "### 1c. 3D LUT size, domain/shaper and interpolation",
         "",
         "The constant-lightness clip into sRGB baked into a Lut3D, applied through OCIO "
         "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
-        f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} real "
-        "colours (random mixtures of up to three spectral colours at Y 0.01–0.99, so many lie "
-        "far outside sRGB). Domains: the shipped `tables.clip_transform` (CIE xyY with shapers) for "
+        f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} spectral "
+        "mixtures (random mixtures of up to three spectral colours at Y 0.01–0.99: extreme "
+        "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `tables.clip_transform` (CIE xyY with shapers) for "
         "each of its domain options; "
         "display-linear RGB over the box that holds the interference colours, with an affine "
-        "shaper (real colours beyond it are clamped by the LUT); "
+        "shaper (spectral mixtures beyond it are clamped by the LUT); "
         "and the naive XYZ/white cube without shaper. Bake = building the transform "
         "(the shipped LUT's vertex computation is cached per size, so only its first "
         f"interpolation row pays it); apply = OCIO CPU, one thread, {w}×{h} pixels.",
         "",
-        _table(["domain", "interp", "size", "interf. mean", "p99", "max", "real mean", "p99", "max",
+        _table(["domain", "interp", "size", "interf. mean", "p99", "max", "mixtures mean", "p99", "max",
                 "bake (s)", "Mpixel/s"], rows),
         "",
         f"Default (from the signatures of `clip_transform` / `clip_lut`): {d_size}³, xyY "
@@ -1612,14 +1613,14 @@ def _headline(r) -> list[str]:
     l3 = r.get("default_lut3d")
     if l3:
         a = l3["stats"]["interference colours"]
-        b = l3["stats"]["real colours (spectral mixtures)"]
+        b = l3["stats"]["spectral mixtures (Y 0.01-0.99)"]
         best = None
         for row in r.get("lut3d", {}).get("rows", []):
             if row["interp"] == "tetrahedral" and row["domain"] == l3["domain"] and row["size"] > l3["size"]:
                 best = row
         out.append(f"- 3D clip LUT (default {l3['size']}³, {l3['domain']}, tetrahedral) against the "
                    f"analytic clip: interference colours ΔE2000 mean {_fmt(a['mean'])} / p99 "
-                   f"{_fmt(a['p99'])} / max {_fmt(a['max'])}; real colours p99 {_fmt(b['p99'])} / max "
+                   f"{_fmt(a['p99'])} / max {_fmt(a['max'])}; spectral mixtures p99 {_fmt(b['p99'])} / max "
                    f"{_fmt(b['max'])}"
                    + (f"; {best['size']}³ gives p99 {_fmt(best['stats']['interference colours']['p99'])} "
                       f"/ max {_fmt(best['stats']['interference colours']['max'])} at "

@@ -244,6 +244,32 @@ def apply(transform, pixels) -> np.ndarray:
 # --------------------------------------------------------------------------- #
 # 1D tables
 # --------------------------------------------------------------------------- #
+def lut1d_transform(values):
+    """An OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3),
+    quantised for byte-reproducible files (:func:`quantize`)."""
+    ocio = _ocio()
+    t = ocio.Lut1DTransform()
+    t.setLength(len(values))
+    t.setData(np.ascontiguousarray(quantize(values), dtype=np.float32).ravel())
+    t.setInterpolation(ocio.INTERP_LINEAR)
+    return t
+
+
+def lut3d_transform(values, *, uint16: bool = False):
+    """An OCIO Lut3DTransform (tetrahedral) holding ``values`` (N, N, N, 3), index
+    [r][g][b]. ``uint16``: the values already lie on the 16-bit grid and are written
+    as 16-bit integers; otherwise they are quantised (:func:`quantize`)."""
+    ocio = _ocio()
+    t = ocio.Lut3DTransform()
+    t.setGridSize(values.shape[0])
+    t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
+    t.setData(np.ascontiguousarray(values if uint16 else quantize(values),
+                                   dtype=np.float32).ravel())
+    if uint16:
+        t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
+    return t
+
+
 @dataclass(frozen=True, eq=False)
 class Table1D:
     """A 1D table: pixel value (all three channels equal) -> exact XYZ.
@@ -304,12 +330,7 @@ class Table1D:
         return _matrix(np.eye(3) / span, [-self.domain_min / span] * 3)
 
     def lut_transform(self):
-        ocio = _ocio()
-        t = ocio.Lut1DTransform()
-        t.setLength(self.size)
-        t.setData(np.ascontiguousarray(quantize(self.values), dtype=np.float32).ravel())
-        t.setInterpolation(ocio.INTERP_LINEAR)
-        return t
+        return lut1d_transform(self.values)
 
     def transform(self):
         """OCIO transform from the pixel encoding to CIE-XYZ-D65 (a GroupTransform
@@ -708,17 +729,9 @@ class ClipLUT:
         return f"Constant-Lightness Clip {self.display}"
 
     def lut_transform(self, white: bool = False):
-        ocio = _ocio()
-        t = ocio.Lut3DTransform()
-        t.setGridSize(self.size)
-        t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-        values = self.white_values if white else self.values
-        if self.domain != "factored":  # factored values are already on the 16-bit grid
-            values = quantize(values)
-        t.setData(np.ascontiguousarray(values, dtype=np.float32).ravel())
-        if self.domain == "factored":
-            t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-        return t
+        # factored values are already on the 16-bit grid
+        return lut3d_transform(self.white_values if white else self.values,
+                               uint16=self.domain == "factored")
 
     def shaper(self, white: bool = False):
         if self.domain == "factored":
