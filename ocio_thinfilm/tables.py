@@ -486,6 +486,31 @@ def _locus_xy():
     return L[:, :2] / L.sum(axis=1, keepdims=True)
 
 
+def _canonical_grid(primaries, points, cells):
+    """The affine map of a 2D chart that sends ``primaries`` (3, 2) to the canonical
+    triangle with ``points`` (N, 2) inside a grid of ``cells`` cells per axis, nodes
+    every 1/k on both axes (k as large as possible, over the six assignments of
+    primaries to corners). Returns (A (2x2), o (2,), k, m_a, m_b) -- the canonical
+    coordinate a sits at node m_a + a k -- or None if no k >= 1 fits."""
+    import itertools
+
+    best = None
+    for perm in itertools.permutations(range(3)):
+        sol = np.linalg.solve(np.c_[primaries[list(perm)], np.ones(3)], _CANONICAL)
+        A, o = sol[:2].T, sol[2]
+        ab = points @ A.T + o
+        lo, hi = ab.min(axis=0), ab.max(axis=0)
+        k = int(np.floor(cells / float((hi - lo).max())))
+        while k > 0:
+            ma, mb = int(np.ceil(-lo[0] * k - 1e-9)), int(np.ceil(-lo[1] * k - 1e-9))
+            if (cells - ma) / k >= hi[0] and (cells - mb) / k >= hi[1] and ma >= 0 and mb >= 0:
+                break
+            k -= 1
+        if k > 0 and (best is None or k > best[2]):
+            best = (A, o, k, ma, mb)
+    return best
+
+
 @lru_cache(maxsize=32)
 def _aligned_plan(display, size):
     """Affine chromaticity map of the "aligned" domain for ``display`` and ``size``.
@@ -499,26 +524,7 @@ def _aligned_plan(display, size):
     nodes per unit (k) while covering the spectral locus is kept.
     Returns (A (2x2), o (2,), k, m_a, m_b): u_a = (a + m_a / k) k / (size - 1).
     """
-    import itertools
-
-    cells = size - 1
-    P = _primaries_xy(display)
-    xy = np.vstack([_locus_xy(), [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]])
-    best = None
-    for perm in itertools.permutations(range(3)):
-        sol = np.linalg.solve(np.c_[P[list(perm)], np.ones(3)], _CANONICAL)
-        A, o = sol[:2].T, sol[2]
-        ab = _locus_xy() @ A.T + o
-        lo, hi = ab.min(axis=0), ab.max(axis=0)
-        k = int(np.floor(cells / float((hi - lo).max())))
-        while k > 0:
-            ma, mb = int(np.ceil(-lo[0] * k - 1e-9)), int(np.ceil(-lo[1] * k - 1e-9))
-            if (cells - ma) / k >= hi[0] and (cells - mb) / k >= hi[1] and ma >= 0 and mb >= 0:
-                break
-            k -= 1
-        if k > 0 and (best is None or k > best[2]):
-            best = (A, o, k, ma, mb)
-    del xy
+    best = _canonical_grid(_primaries_xy(display), _locus_xy(), size - 1)
     if best is None:
         raise ValueError(f"clip LUT size {size} is too small for the aligned domain")
     return best
@@ -632,8 +638,6 @@ def _factored_plan(display, size, upper):
     Returns (P, A, o, k, m_a, m_b, white): u = (A chart + o + m / k) k / (size - 1);
     ``white`` is the display white in canonical coordinates.
     """
-    import itertools
-
     P = _chart_matrix(upper)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     prim = _chart(P, np.linalg.inv(M).T)
@@ -641,21 +645,7 @@ def _factored_plan(display, size, upper):
         cover = _chart(P, _white_pass_cover(display))
     else:
         cover = _chart(P, colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0)))
-    cells = size - 1
-    best = None
-    for perm in itertools.permutations(range(3)):
-        sol = np.linalg.solve(np.c_[prim[list(perm)], np.ones(3)], _CANONICAL)
-        A, o = sol[:2].T, sol[2]
-        ab = np.vstack([cover, prim]) @ A.T + o
-        lo, hi = ab.min(axis=0), ab.max(axis=0)
-        k = int(np.floor(cells / float((hi - lo).max())))
-        while k > 0:
-            ma, mb = int(np.ceil(-lo[0] * k - 1e-9)), int(np.ceil(-lo[1] * k - 1e-9))
-            if (cells - ma) / k >= hi[0] and (cells - mb) / k >= hi[1] and ma >= 0 and mb >= 0:
-                break
-            k -= 1
-        if k > 0 and (best is None or k > best[2]):
-            best = (A, o, k, ma, mb)
+    best = _canonical_grid(prim, np.vstack([cover, prim]), size - 1)
     if best is None:
         raise ValueError(f"clip LUT size {size} is too small for the factored domain")
     A, o, k, ma, mb = best
