@@ -22,7 +22,7 @@ Public functions
 
 Importing colour-science takes about 3 s, longer than rendering a scene. The few
 arrays taken from its datasets (weights, matrices, CMF samples) are therefore
-memoised on disk (:func:`_persistent`), keyed by the arguments, the code that makes
+memoised on disk (:func:`persistent`), keyed by the arguments, the code that makes
 them and colour-science's version: only the first process imports colour.
 """
 
@@ -81,13 +81,17 @@ def _cache_dir() -> Path | None:
     return Path(base) / "ocio-thinfilm"
 
 
-def _persistent(function):
+def persistent(function=None, *, modules=()):
     """Memoise a pure function of colour-science's datasets in memory and on disk.
 
-    The key covers the arguments, the function's source and colour-science's
-    version, so a changed function or library never returns a stale array. A cache
-    that cannot be read or written is ignored.
+    The key covers the arguments, the function's source, the full source of any
+    ``modules`` it depends on (names, read at the first call) and colour-science's
+    version, so changed code or a changed library never returns a stale array. A
+    cache that cannot be read or written is ignored. Use as ``@persistent`` or
+    ``@persistent(modules=("ocio_thinfilm.tables",))``.
     """
+    if function is None:
+        return lambda f: persistent(f, modules=modules)
     source = inspect.getsource(function)
 
     @lru_cache(maxsize=64)
@@ -96,7 +100,10 @@ def _persistent(function):
         directory = _cache_dir()
         path = None
         if directory is not None:
-            key = repr((args, source, metadata.version("colour-science")))
+            import importlib
+
+            code = [source] + [inspect.getsource(importlib.import_module(m)) for m in modules]
+            key = repr((args, code, metadata.version("colour-science")))
             digest = hashlib.sha256(key.encode()).hexdigest()[:32]
             path = directory / f"{function.__name__}-{digest}.npy"
             try:
@@ -117,7 +124,7 @@ def _persistent(function):
     return wrapper
 
 
-@_persistent
+@persistent
 def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray:
     import colour
 
@@ -206,7 +213,7 @@ def morpho_XYZ(theta_degrees, *, layers: int = spectra.MORPHO["layers"], d1=spec
     return _chunked_XYZ(model, theta_degrees, wl, observer, illuminant)
 
 
-@_persistent
+@persistent
 def _matrix_cached(space: str) -> np.ndarray:
     import colour
 
@@ -255,7 +262,7 @@ def delta_E2000(XYZ_a, XYZ_b) -> np.ndarray:
     return colour.delta_E(lab_a, lab_b, method="CIE 2000")
 
 
-@_persistent
+@persistent
 def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
     import colour
 

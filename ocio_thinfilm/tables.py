@@ -614,11 +614,15 @@ def _clip_black_faces(XYZ, display):
     return (grey + t * (rgb - grey)) @ np.linalg.inv(M).T
 
 
-@lru_cache(maxsize=8)
+@colorimetry.persistent(modules=("ocio_thinfilm.tables", "ocio_thinfilm.spectra",
+                                 "ocio_thinfilm.colorimetry", "ocio_thinfilm.clip"))
 def _white_pass_cover(display):
     """Inputs W - L(X) of the second pass that lie outside the gamut, for the object
     colours of :func:`object_colours` (some are brighter than the reflector in one
-    component, e.g. Munsell renotation colours, so W - L(X) leaves the locus)."""
+    component, e.g. Munsell renotation colours, so W - L(X) leaves the locus).
+
+    Memoised on disk: it needs the whole test set (and colour-science's import), but
+    only to size the second pass's grid, so a render should not pay for it."""
     M = colorimetry.matrix_XYZ_to_RGB(display)
     X = object_colours()
     X = X[X[:, 1] > 1e-6]
