@@ -137,16 +137,15 @@ def lut_files(clip_size: int = tables.CLIP_SIZE, film_size: int = tables.FILM_SI
         files[named_lut(stem)] = table.transform()
     for display in clip.DISPLAYS:
         lut = tables.clip_lut(display, clip_size)
-        files[named_lut(_clip_stem(display))] = lut.core_transform()
-        if lut.white_values is not None:
-            files[named_lut(_clip_stem(display, True))] = lut.core_transform(white=True)
+        files[named_lut(_clip_stem(display))] = lut.black_core()
+        files[named_lut(_clip_stem(display, True))] = lut.white_core()
     return files
 
 
 def _clip_stem(display, white=False):
-    """Clip LUT file stem; ``white``: the pass against the faces through white."""
+    """Clip LUT file stem: the pass against the faces through black or white."""
     stem = "ConstantLightnessClip_" + display.replace(".", "").replace(" ", "")
-    return stem + "_WhiteFaces" if white else stem
+    return stem + ("_WhiteFaces" if white else "_BlackFaces")
 
 
 def _matrix_to_reference(space):
@@ -159,10 +158,11 @@ def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):
     """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view."""
     if view == "Constant-Lightness Clip":
         lut = tables.clip_lut(display, clip_size)
-        cores = [named_lut(_clip_stem(display, white))
-                 for white in ((False, True) if lut.white_values is not None else (False,))]
+        cores = [named_lut(_clip_stem(display, white)) for white in (False, True)]
         cores = [luts[name] if inline else _file_transform(name) for name in cores]
-        linear = lut.transforms(*cores)
+        # the second LUT ends in display code values: back to display-linear here, the
+        # display colour space encodes again (OCIO's optimiser removes the pair)
+        linear = lut.transforms(*cores) + [_invert(tables.display_encoding_transform(display))]
     else:
         linear = [tables.view_linear_transform(display, view)]
     return tables.group(linear + [tables.display_matrix_transform(display, inverse=True)])

@@ -32,38 +32,20 @@ Design (measured; see ``benchmarks/bench_luts.py``)
     NaN, no wrap-around; negative thicknesses give black (t' = 0). The Morpho table
     is uniform in cos(theta) over [0, 1] (the clamp gives grazing / normal incidence
     outside).
-3D clip LUT ("factored" domain, the default)
-    The clip moves a colour along its constant-Y ray towards the grey until it is
-    inside all six faces (t = min over the faces), so it factors exactly as
-    ``clip = U o L``: L clips only against the faces through black (R, G, B >= 0), U
-    only against those through white, both along the same ray. The parallelepiped is
-    centrally symmetric, so ``U = C o L o C`` with ``C(X) = W - X`` (a matrix with
-    offset). L is homogeneous of degree 1: in a projective chart of the
-    chromaticities (``XYZ_TO_xyY`` of a matrix of XYZ) it is a central projection
-    towards the white onto the primaries' triangle and Y is unchanged, so each pass is
-    one Lut3D over (chart, Y) with an exactly linear Y axis and the triangle's edges on
-    grid / tetrahedral split planes (in-gamut colours exact). Pass 1 uses the chart
-    normalised by 0.7 X + Y + Z (positive for XYZ >= 0), its grid covering the
-    spectral locus; pass 2 takes W - X, whose X + Y + Z can be <= 0 for saturated
-    colours, in a chart normalised by 0.02 X + Y + 0.005 Z, its grid covering the
-    complements of the object colours. Both LUTs are stored as 16-bit integers.
-    Measured at 38^3 on :func:`object_colours` against the analytic clip (dE2000
-    mean / p99 / max): sRGB 0.029 / 0.42 / 1.61, Display P3 0.018 / 0.25 / 1.53,
-    Rec.2020 0.008 / 0.10 / 0.64; spectral colours (Y <= 0.6) in gamut with
-    |dY| <= 3.1e-5 but coarse chromaticity (p99 9-27).
-3D clip LUT ("xy" / "aligned" domains, the previous design)
-    Built in CIE xyY (OCIO ``FixedFunction XYZ_TO_xyY``, after a clamp of XYZ to
-    [0, 1e6] that only touches non-physical inputs): the LUT's axes are the
-    chromaticity (x, y), shaped towards the display white, and the luminance Y,
-    shaped towards Y = 1; it outputs the same shaped (x, y, Y) coordinates and the
-    inverse shapers and ``xyY -> XYZ`` follow. Only cells that cross the gamut
-    boundary carry interpolation error; a final clamp to [0, 1] keeps the result in
-    gamut (it moves Y by at most ~2e-3 on spectral colours). "xy" at 33^3 (sRGB):
-    dE2000 mean 0.10, p99 1.39, max 4.5; 65^3: p99 0.53, max 2.5 (see
-    ``benchmarks/bench_luts.py`` for the other domains).
+3D clip LUT (two passes; see the section "3D clip LUT" below)
+    The clip factors exactly as U o L (faces through black, then through white,
+    along the same constant-Y ray). L is one Lut3D over a projective chart of the
+    chromaticity (XYZ_TO_xyY of 0.1 X, Y, 0.1 Z, the primaries' triangle on grid and
+    tetrahedral split planes) and Y, exactly linear along Y; it outputs display RGB.
+    U is one Lut3D over that RGB, nodes below 1 at display-encoded values, storing
+    display code values: in-gamut colours are reproduced exactly and nothing after
+    the LUT amplifies its rounding (half-float GPU textures included). Chain:
+    Range, matrix, XYZ_TO_xyY, matrix, Lut1D + Lut3D, Lut1D + Lut3D -- fewer and
+    cheaper ops than the ACES gamut compression view. Accuracy, speed and the
+    rejected designs: ``benchmarks/bench_luts.py`` and reports/report.md.
 
-Added names (beyond the contract): :func:`clip_lut` / :class:`ClipLUT` (the LUT data,
-``domain="xy" | "aligned"``), :func:`view_linear_transform`,
+Added names (beyond the contract): :func:`clip_lut` / :class:`ClipLUT` (the LUT data),
+:func:`clip_black_faces_RGB`, :func:`clip_white_faces_RGB`, :func:`view_linear_transform`,
 :func:`display_matrix_transform`, :func:`display_encoding_transform`,
 :func:`xyz_limit_transform`, :func:`group`, :func:`quantize`, :func:`transform_id`,
 :func:`object_colours`, :func:`spectral_colours`, ``Table1D.rgb(display)`` (per-display
@@ -102,7 +84,8 @@ __all__ = [
     "group",
     "xyz_limit_transform",
     "xyY_forward_transform",
-    "xyY_inverse_transform",
+    "clip_black_faces_RGB",
+    "clip_white_faces_RGB",
     "transform_id",
     "quantize",
     "object_colours",
@@ -122,8 +105,6 @@ FILM_T0_UM = 1.0
 FILM_TMAX_UM = 100.0
 #: Default entries of the Morpho angle table (uniform in cos(theta)).
 MORPHO_SIZE = 1024
-#: Default edge length of the 3D clip LUTs (two per display in the "factored" domain).
-CLIP_SIZE = 38
 #: Wavelength step (nm) of the spectra behind the tables (band-limited integration).
 SPECTRAL_STEP = 5.0
 
@@ -196,32 +177,12 @@ def _range(lo, hi):
     return r
 
 
-#: Components are limited to [0, LIMIT] before XYZ -> xyY (see :func:`xyz_limit_transform`).
-LIMIT = 1e6
-
-
-def xyz_limit_transform():
-    """Clamp XYZ to [0, LIMIT] per component before ``XYZ_TO_xyY``.
-
-    No physical colour has a negative X, Y or Z (the CIE 1931 matching functions are
-    non-negative), so this changes only non-physical inputs, and it keeps
-    X + Y + Z >= 0: without it a huge negative component (X + Y + Z < 0 with Y > 0)
-    flips the chromaticity to the opposite side (dE2000 ~60 for X = -1e30). +-Inf and
-    NaN become finite; Y <= 0 gives black, as in the analytic clip.
-    """
-    return _range(0.0, LIMIT)
-
-
-def xyY_forward_transform():
+def _inverse(transforms):
+    """A GroupTransform of ``transforms`` applied in the inverse direction."""
     ocio = _ocio()
-    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
-
-
-def xyY_inverse_transform():
-    ocio = _ocio()
-    t = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
-    t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return t
+    g = group(transforms)
+    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return g
 
 
 def apply(transform, pixels) -> np.ndarray:
@@ -244,29 +205,38 @@ def apply(transform, pixels) -> np.ndarray:
 # --------------------------------------------------------------------------- #
 # 1D tables
 # --------------------------------------------------------------------------- #
-def lut1d_transform(values):
-    """An OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3),
-    quantised for byte-reproducible files (:func:`quantize`)."""
+def lut1d_transform(values, *, bitdepth: str | None = None):
+    """An OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3).
+
+    ``bitdepth="uint16"``: the values already lie on the 16-bit grid (in [0, 1]) and
+    are written as 16-bit integers; otherwise they are quantised
+    (:func:`quantize`) and written as floats."""
     ocio = _ocio()
     t = ocio.Lut1DTransform()
     t.setLength(len(values))
-    t.setData(np.ascontiguousarray(quantize(values), dtype=np.float32).ravel())
+    data = values if bitdepth else quantize(values)
+    t.setData(np.ascontiguousarray(data, dtype=np.float32).ravel())
     t.setInterpolation(ocio.INTERP_LINEAR)
+    if bitdepth == "uint16":
+        t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
     return t
 
 
-def lut3d_transform(values, *, uint16: bool = False):
+def lut3d_transform(values, *, bitdepth: str | None = None):
     """An OCIO Lut3DTransform (tetrahedral) holding ``values`` (N, N, N, 3), index
-    [r][g][b]. ``uint16``: the values already lie on the 16-bit grid and are written
-    as 16-bit integers; otherwise they are quantised (:func:`quantize`)."""
+    [r][g][b]. ``bitdepth``: ``"uint16"`` (values on the 16-bit grid in [0, 1]) or
+    ``"half"`` (values already rounded to half floats) are written as such in a CLF
+    file; otherwise values are quantised (:func:`quantize`) and written as floats."""
     ocio = _ocio()
     t = ocio.Lut3DTransform()
     t.setGridSize(values.shape[0])
     t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    t.setData(np.ascontiguousarray(values if uint16 else quantize(values),
+    t.setData(np.ascontiguousarray(values if bitdepth else quantize(values),
                                    dtype=np.float32).ravel())
-    if uint16:
+    if bitdepth == "uint16":
         t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
+    elif bitdepth == "half":
+        t.setFileOutputBitDepth(ocio.BIT_DEPTH_F16)
     return t
 
 
@@ -439,399 +409,343 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 
 
 # --------------------------------------------------------------------------- #
-# 3D clip LUT
+# 3D clip LUT: the faces through black, then the faces through white
 # --------------------------------------------------------------------------- #
-#: Chromaticity domain of the LUT (covers the spectral locus, x <= 0.735, y <= 0.834).
-XY_DOMAIN_MAX = (0.75, 0.85)
-#: Clip LUT domains (see :func:`_shaper_parts`) and the default.
-CLIP_DOMAINS = ("factored", "xy", "aligned")
-CLIP_DOMAIN = "factored"
-#: Default shaper exponents / offsets (mirrored moncurve) for the (x, y, 1 - Y) axes.
-#: In the "aligned" domain the chromaticity axes stay affine (exponent 1); the
-#: "factored" domain has no curve (every axis affine), the values are unused.
-SHAPER_GAMMA = {"aligned": (1.0, 1.0, 2.0), "xy": (2.0, 2.0, 2.0), "factored": (1.0, 1.0, 1.0)}
-SHAPER_OFFSET = {"aligned": (0.0, 0.0, 0.01), "xy": (0.01, 0.01, 0.01),
-                 "factored": (0.0, 0.0, 0.0)}
-#: Projective charts of the "factored" domain: the normaliser n . XYZ that
-#: ``XYZ_TO_xyY`` divides by (after a matrix), for the pass against the faces through
-#: black (inputs XYZ >= 0) and the pass against the faces through white (inputs
-#: W - X, which can have X + Y + Z <= 0: the normaliser is mostly Y).
-CHART_BLACK = (0.7, 1.0, 1.0)
-CHART_WHITE = (0.02, 1.0, 0.005)
-#: The factored LUTs are stored as 16-bit integers in the CLF files (half the size of
-#: float text); values are rounded to that grid (error <= 7.6e-6 of the LUT range).
-LUT_CODE_MAX = 65535
-#: The factored clip maps display RGB [SNAP, 1 - SNAP] to [0, 1] before its final clamp:
-#: black and white stay exact despite float32 round-off in the second pass's chart.
-SNAP = 3e-5
-
-
-def _white_xy(display):
-    W = colorimetry.white_XYZ(display)
-    return W[:2] / W.sum()
-
-
-def _primaries_xy(display):
-    P = colorimetry.RGB_to_XYZ(np.eye(3), display)
-    return P[:, :2] / P.sum(axis=1, keepdims=True)
-
-
-#: The canonical triangle the display primaries are sent to in the "aligned" domain:
-#: its edges a = 0, b = 1 and a = b are grid planes and tetrahedral split planes.
+# The clip moves a colour along its constant-Y ray towards the grey Y W until it is
+# inside all six faces: t = min(t_black, t_white). It therefore factors exactly as
+# clip = U o L, L clipping only against R, G, B >= 0 and U only against R, G, B <= 1,
+# both along the same ray (paper, Section 3.2; :mod:`ocio_thinfilm.clip`).
+#
+# Pass 1, L, is homogeneous of degree 1: over a projective chart of the
+# chromaticities and Y it is exactly linear along Y, so dark colours keep their
+# chromaticity however dark they are, and far-out saturated colours (Y a small
+# difference of large RGB values) keep an exact Y axis. The primaries' triangle sits
+# on grid and tetrahedral split planes. It outputs display-linear RGB of L(X), which
+# has no negative channel any more.
+#
+# Pass 2, U, works on that RGB directly: every face, the white point and the planes
+# R = G, G = B, R = B where the binding face changes are grid or split planes; below
+# 1 the grid nodes sit at display-encoded values and the LUT stores display code
+# values, so the identity (every in-gamut colour) is reproduced exactly and the
+# display encoding costs nothing. Nothing follows the second LUT, so the LUTs'
+# rounding (16-bit files, half-float GPU textures) is never amplified.
+#: Default edge length of both clip LUTs.
+CLIP_SIZE = 65
+#: Chart of the black pass: ``XYZ_TO_xyY`` of (eps X, Y, eps Z), normalised by
+#: Y + eps (X + Z) (positive for every physical colour, and close to Y, so the chart
+#: is close to affine in the display's RGB / Y).
+CHART_EPS = 0.1
+#: Share of each chromaticity axis of the black pass spent inside the primaries'
+#: triangle (cells per unit of the canonical chart), the rest growing geometrically
+#: to the chart of every XYZ >= 0.
+BLACK_INSIDE = 40 / 64
+#: The black pass's Y nodes are (k / (size - 2)) ** Y_POWER, then Y_WHITE (white).
+Y_POWER = 3.0
+Y_WHITE = 1.0 + 1e-4
+#: Share of each axis of the white pass spent on [0, 1] (grid nodes at encoded
+#: values 1 - (1 - k/n)^WHITE_POWER: denser towards white), the rest growing
+#: geometrically from WHITE_FIRST_STEP above 1 up to the brightest black-clipped
+#: channel, 1 / min(luminance weight).
+WHITE_INSIDE = 32 / 64
+WHITE_POWER = 2.0
+WHITE_FIRST_STEP = 0.002
+#: Entries of the Lut1D shapers in front of each Lut3D.
+SHAPER_LENGTH = 32768
+#: The white pass works in the sRGB piecewise encoding (its linear toe keeps the grid
+#: and the shaper accurate near black). Displays with another encoding (Rec.2020:
+#: BT.1886, a pure power with infinite slope at black) get a final Lut1D from sRGB
+#: code values to theirs: affine above the toe, so exact there; OUTPUT_LENGTH
+#: entries keep the toe within 0.25 code values of 255.
+WORKING_ENCODING = "sRGB"
+OUTPUT_LENGTH = 65536
+#: Components are limited to [0, LIMIT] before the chart (see :func:`xyz_limit_transform`).
+LIMIT = 1e6
+#: The canonical triangle the primaries are sent to: its edges a = 0, b = 1 and
+#: a = b are grid planes and tetrahedral split planes.
 _CANONICAL = np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 1.0]])
 
 
-def _locus_xy():
-    L = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
-    return L[:, :2] / L.sum(axis=1, keepdims=True)
+def xyz_limit_transform():
+    """Clamp XYZ to [0, LIMIT] per component before the chart.
+
+    No physical colour has a negative X, Y or Z (the CIE 1931 matching functions are
+    non-negative), so this changes only non-physical inputs; it keeps the chart's
+    normaliser positive and makes +-Inf finite (Y <= 0 gives black, as in the
+    analytic clip).
+    """
+    return _range(0.0, LIMIT)
 
 
-def _canonical_grid(primaries, points, cells):
-    """The affine map of a 2D chart that sends ``primaries`` (3, 2) to the canonical
-    triangle with ``points`` (N, 2) inside a grid of ``cells`` cells per axis, nodes
-    every 1/k on both axes (k as large as possible, over the six assignments of
-    primaries to corners). Returns (A (2x2), o (2,), k, m_a, m_b) -- the canonical
-    coordinate a sits at node m_a + a k -- or None if no k >= 1 fits."""
+def xyY_forward_transform():
+    ocio = _ocio()
+    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
+
+
+def _luminance(display):
+    """Row w with Y = w . RGB (display-linear, RGB = 1 is Y = 1)."""
+    return np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display))[1]
+
+
+def clip_black_faces_RGB(RGB, display):
+    """L: the clip against the faces R, G, B >= 0 only (float64, (N, 3) display RGB).
+
+    ``Y <= 0`` gives black; otherwise the colour moves towards the grey of its Y until
+    its smallest channel is 0 (unchanged when no channel is negative).
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    Y = rgb @ _luminance(display)
+    lo = rgb.min(axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(lo < 0.0, Y / (Y - lo), 1.0)
+    out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
+    out[Y <= 0.0] = 0.0
+    return out
+
+
+def clip_white_faces_RGB(RGB, display):
+    """U = C o L o C with C(c) = 1 - c: the clip against R, G, B <= 1 only."""
+    return 1.0 - clip_black_faces_RGB(1.0 - np.asarray(RGB, dtype=np.float64), display)
+
+
+def _grow(first, length, cells):
+    """``cells`` steps growing geometrically from ``first`` and summing to ``length``."""
+    if cells <= 0:
+        return np.zeros(0)
+    if first * cells >= length:
+        return np.full(cells, length / cells)
+    lo, hi = 1.0, 64.0
+    for _ in range(200):
+        q = 0.5 * (lo + hi)
+        total = first * (q ** cells - 1.0) / (q - 1.0)
+        lo, hi = (q, hi) if total < length else (lo, q)
+    steps = first * q ** np.arange(cells)
+    return steps * (length / steps.sum())
+
+
+def _black_axis(size, lo, hi, include=()):
+    """Nodes of a chromaticity axis of the black pass: uniform on [0, 1] (the
+    triangle), growing geometrically to [lo, hi] (the chart of all XYZ >= 0); the
+    interior node nearest each value of ``include`` is moved onto it."""
+    cells = size - 1
+    inside = max(2, int(round(cells * BLACK_INSIDE)))
+    rest = cells - inside
+    below, above = max(-lo, 0.0), max(hi - 1.0, 0.0)
+    # cells in proportion to how many geometric steps each side needs
+    weight_lo, weight_hi = np.log1p(below * inside), np.log1p(above * inside)
+    n_lo = int(round(rest * weight_lo / (weight_lo + weight_hi))) if below + above > 0 else 0
+    n_lo = min(max(n_lo, 1 if below > 0 else 0), rest - (1 if above > 0 else 0))
+    n_hi = rest - n_lo
+    h = 1.0 / inside
+    middle = np.linspace(0.0, 1.0, inside + 1)
+    for value in include:
+        k = int(np.clip(np.rint(value * inside), 1, inside - 1))
+        middle[k] = value
+    middle.sort()
+    return np.concatenate([-np.cumsum(_grow(h, below, n_lo))[::-1], middle,
+                           1.0 + np.cumsum(_grow(h, above, n_hi))])
+
+
+def _chart_points(XYZ):
+    """Chromaticity (eps X, Y) / (eps X + Y + eps Z) of the black pass (float64)."""
+    V = np.asarray(XYZ, dtype=np.float64) * np.array([CHART_EPS, 1.0, CHART_EPS])
+    return V[..., :2] / V.sum(axis=-1, keepdims=True)
+
+
+@lru_cache(maxsize=16)
+def _black_plan(display, size):
+    """The black pass's chart: affine map A, o of the chromaticity sending the
+    primaries to the canonical triangle (of the six assignments, the one whose image
+    of the whole chart -- the chromaticities of X, Y, Z -- is smallest), and the node
+    positions of the three axes (a, b, Y)."""
     import itertools
 
+    primaries = _chart_points(colorimetry.RGB_to_XYZ(np.eye(3), display))
+    corners = _chart_points(np.eye(3))
     best = None
     for perm in itertools.permutations(range(3)):
         sol = np.linalg.solve(np.c_[primaries[list(perm)], np.ones(3)], _CANONICAL)
         A, o = sol[:2].T, sol[2]
-        ab = points @ A.T + o
-        lo, hi = ab.min(axis=0), ab.max(axis=0)
-        k = int(np.floor(cells / float((hi - lo).max())))
-        while k > 0:
-            ma, mb = int(np.ceil(-lo[0] * k - 1e-9)), int(np.ceil(-lo[1] * k - 1e-9))
-            if (cells - ma) / k >= hi[0] and (cells - mb) / k >= hi[1] and ma >= 0 and mb >= 0:
-                break
-            k -= 1
-        if k > 0 and (best is None or k > best[2]):
-            best = (A, o, k, ma, mb)
-    return best
+        ab = corners @ A.T + o
+        extent = float((ab.max(axis=0) - ab.min(axis=0)).max())
+        if best is None or extent < best[0]:
+            best = (extent, A, o, ab.min(axis=0), ab.max(axis=0))
+    _, A, o, lo, hi = best
+    # the display white on a node of both axes (so it is a grid point: white exact);
+    # both axes hold the same interior nodes, keeping the edge a = b on split planes
+    white = _chart_points(colorimetry.white_XYZ(display)) @ A.T + o
+    a = _black_axis(size, lo[0], hi[0], include=white)
+    b = _black_axis(size, lo[1], hi[1], include=white)
+    # Y_POWER = 3: uniform in Y^(1/3) ~ L*; a last node just above 1 holds the white,
+    # so that everything brighter than the display white is white exactly
+    y = np.append(np.linspace(0.0, 1.0, size - 1) ** Y_POWER, Y_WHITE)
+    return A, o, a, b, y
 
 
-@lru_cache(maxsize=32)
-def _aligned_plan(display, size):
-    """Affine chromaticity map of the "aligned" domain for ``display`` and ``size``.
-
-    An affine map of the (x, y) plane sends the display's primaries to the canonical
-    triangle (0, 0), (0, 1), (1, 1); the gamut faces R = 0, G = 0, B = 0 (lines
-    through pairs of primaries in every constant-Y plane) become the planes a = 0,
-    b = 1 and a = b. With nodes at multiples of 1/k on both axes those planes are
-    made of grid faces and of the tetrahedral split planes, so no LUT cell straddles
-    them. Of the six assignments of primaries to corners, the one giving the most
-    nodes per unit (k) while covering the spectral locus is kept.
-    Returns (A (2x2), o (2,), k, m_a, m_b): u_a = (a + m_a / k) k / (size - 1).
-    """
-    best = _canonical_grid(_primaries_xy(display), _locus_xy(), size - 1)
-    if best is None:
-        raise ValueError(f"clip LUT size {size} is too small for the aligned domain")
-    return best
+def _shaper_values(nodes, lo, hi, along=None):
+    """Lut1D entries over [lo, hi] (SHAPER_LENGTH samples): the grid coordinate
+    k / (size - 1) of the value, piecewise linear between the ``nodes`` (in the
+    variable ``along(value)`` when given: e.g. the display encoding)."""
+    x = np.linspace(lo, hi, SHAPER_LENGTH)
+    grid = np.linspace(0.0, 1.0, len(nodes))
+    if along is not None:
+        x, nodes = along(x), along(nodes)
+    return np.interp(x, nodes, grid)
 
 
-def _moncurve(gamma, offset, inverse):
-    ocio = _ocio()
-    curve = ocio.ExponentWithLinearTransform([*map(float, gamma), 1.0],
-                                             [*map(float, offset), 0.0])
-    curve.setNegativeStyle(ocio.NEGATIVE_MIRROR)
-    if inverse:
-        curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return curve
+def _encode(values, display):
+    """Display encoding (the OCIO op the config uses), float64 out."""
+    a = np.asarray(values, dtype=np.float64)
+    flat = np.repeat(a.reshape(-1, 1), 3, axis=1)
+    return apply(display_encoding_transform(display), flat)[:, 0].astype(np.float64).reshape(a.shape)
 
 
-def _shaper_parts(display, size, domain="aligned", gamma=None, offset=None):
-    """Per-axis shaper xyY -> LUT coordinates u in [0, 1]^3 (a list of OCIO
-    transforms, CLF-writable: matrices and a mirrored moncurve).
-
-    "aligned": the affine map of :func:`_aligned_plan` on (x, y); Y through
-    ``1 - moncurve^-1(1 - Y)`` (grid points towards Y = 1).
-    "xy": distance from the display white over [0, 0.75] x [0, 0.85], normalised to
-    [-1, 1], through the inverse moncurve (grid points near the white), to [0, 1].
-    """
-    gamma = SHAPER_GAMMA[domain] if gamma is None else tuple(gamma)
-    offset = SHAPER_OFFSET[domain] if offset is None else tuple(offset)
-    if domain == "aligned":
-        A, o, k, ma, mb = _aligned_plan(display, size)
-        s = k / (size - 1)
-        M = np.eye(3)
-        M[:2, :2] = A * s
-        M[2, 2] = -1.0
-        ops = [_matrix(M, [(o[0] + ma / k) * s, (o[1] + mb / k) * s, 1.0])]
-        ops.append(_moncurve(gamma, offset, True))
-        ops.append(_matrix(np.diag([1.0, 1.0, -1.0]), [0.0, 0.0, 1.0]))
-        return ops
-    if domain != "xy":
-        raise ValueError(f"clip LUT domain must be one of {CLIP_DOMAINS}, got {domain!r}")
-    xw, yw = _white_xy(display)
-    dx = max(xw, XY_DOMAIN_MAX[0] - xw)
-    dy = max(yw, XY_DOMAIN_MAX[1] - yw)
-    ops = [_matrix(np.diag([1 / dx, 1 / dy, -1.0]), [-xw / dx, -yw / dy, 1.0]),
-           _moncurve(gamma, offset, True),
-           _matrix(np.diag([0.5, 0.5, -1.0]), [0.5, 0.5, 1.0])]
-    return ops
-
-
-def _inverse(transforms):
-    ocio = _ocio()
-    g = group(transforms)
-    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return g
-
-
-# ---- the "factored" domain ------------------------------------------------- #
-# The clip moves a colour along its constant-Y ray towards the grey g W until it is
-# inside all six faces: t = min(t_black, t_white), so it factors exactly as
-# clip = U o L, L clipping only against R, G, B >= 0 and U only against R, G, B <= 1
-# (both along the same ray, towards the same grey). The parallelepiped is centrally
-# symmetric: with C(X) = W - X (an exact matrix with offset), U = C o L o C. L is
-# homogeneous of degree 1, so in any projective chart of the chromaticities it is a
-# 2D map (central projection towards the white onto the primaries' triangle) and Y
-# passes through unchanged: each pass is one Lut3D over (chart, Y) whose Y axis is
-# exactly linear, with the triangle's edges on grid / tetrahedral split planes.
-def _chart_matrix(upper):
-    """XYZ -> V with V1 = Y and V0 + V1 + V2 = n . XYZ, n = CHART_WHITE (``upper``,
-    applied to W - X) or CHART_BLACK. ``XYZ_TO_xyY`` of V gives the chart (V0/n.X,
-    Y/n.X) and Y."""
-    n = np.asarray(CHART_WHITE if upper else CHART_BLACK, dtype=np.float64)
-    first = np.array([1.0, 0.0, -1.0]) if upper else np.array([1.0, 0.0, 0.0])
-    return np.array([first, [0.0, 1.0, 0.0], n - first - np.array([0.0, 1.0, 0.0])])
-
-
-def _chart(P, XYZ):
-    V = np.asarray(XYZ, dtype=np.float64) @ P.T
-    return V[..., :2] / V.sum(axis=-1, keepdims=True)
-
-
-def _clip_black_faces(XYZ, display):
-    """L: the clip against the faces R, G, B >= 0 only (float64, Y > 0)."""
-    M = colorimetry.matrix_XYZ_to_RGB(display)
-    rgb = XYZ @ M.T
-    grey = XYZ[:, 1:2] / np.linalg.inv(M)[1].sum()
-    neg = rgb < 0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.where(neg, grey / np.where(neg, grey - rgb, 1.0), 1.0).min(axis=1, keepdims=True)
-    return (grey + t * (rgb - grey)) @ np.linalg.inv(M).T
-
-
-@colorimetry.persistent(modules=("ocio_thinfilm.tables", "ocio_thinfilm.spectra",
-                                 "ocio_thinfilm.colorimetry", "ocio_thinfilm.clip"))
-def _white_pass_cover(display):
-    """Inputs W - L(X) of the second pass that lie outside the gamut, for the object
-    colours of :func:`object_colours` (some are brighter than the reflector in one
-    component, e.g. Munsell renotation colours, so W - L(X) leaves the locus).
-
-    Memoised on disk: it needs the whole test set (and colour-science's import), but
-    only to size the second pass's grid, so a render should not pay for it."""
-    M = colorimetry.matrix_XYZ_to_RGB(display)
-    X = object_colours()
-    X = X[X[:, 1] > 1e-6]
-    comp = colorimetry.white_XYZ(display) - _clip_black_faces(X, display)
-    rgb = comp @ M.T
-    return comp[(comp[:, 1] > 1e-6) & (rgb < 0).any(axis=1)]
-
-
-@lru_cache(maxsize=32)
-def _factored_plan(display, size, upper):
-    """Chart and grid of one pass of the "factored" domain.
-
-    The chart (``_chart_matrix``) then an affine map send the display's primaries to
-    the canonical triangle (0, 0), (0, 1), (1, 1) (edges a = 0, b = 1, a = b: grid and
-    tetrahedral split planes, nodes every 1/k); the grid covers the spectral locus
-    (first pass) or the second pass's inputs (:func:`_white_pass_cover`).
-    Returns (P, A, o, k, m_a, m_b, white): u = (A chart + o + m / k) k / (size - 1);
-    ``white`` is the display white in canonical coordinates.
-    """
-    P = _chart_matrix(upper)
-    M = colorimetry.matrix_XYZ_to_RGB(display)
-    prim = _chart(P, np.linalg.inv(M).T)
-    if upper:
-        cover = _chart(P, _white_pass_cover(display))
-    else:
-        cover = _chart(P, colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0)))
-    best = _canonical_grid(prim, np.vstack([cover, prim]), size - 1)
-    if best is None:
-        raise ValueError(f"clip LUT size {size} is too small for the factored domain")
-    A, o, k, ma, mb = best
-    white = _chart(P, colorimetry.white_XYZ(display)[None])[0] @ A.T + o
-    return P, A, o, k, ma, mb, white
-
-
-def _factored_shaper(display, size, upper):
-    P, A, o, k, ma, mb, _ = _factored_plan(display, size, upper)
-    s = k / (size - 1)
-    S = np.eye(3)
-    S[:2, :2] = A * s
-    return [_matrix(S, [(o[0] + ma / k) * s, (o[1] + mb / k) * s, 0.0])]
-
-
-def _factored_vertices(display, size, upper):
-    """LUT values of one pass: central projection towards the white onto the
-    canonical triangle, computed in the canonical plane itself (so nodes whose chart
-    point has Y <= 0 get the continuation, not a guess); identity inside; Y axis
-    identity; rounded to the 16-bit grid of the CLF file."""
-    P, A, o, k, ma, mb, white = _factored_plan(display, size, upper)
-    s = k / (size - 1)
-    g = np.linspace(0.0, 1.0, size)
-    U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
-    m = np.array([ma, mb]) / k
-    ab = U[..., :2] / s - m
-
-    def inside_measure(p):  # >= 0 inside, one per edge: a = 0, b = 1, a = b
-        return np.stack([p[..., 0], 1.0 - p[..., 1], p[..., 1] - p[..., 0]], axis=-1)
-
-    fp, fw = inside_measure(ab), inside_measure(white)
-    neg = fp < 0
-    t = np.where(neg, fw / np.where(neg, fw - fp, 1.0), 1.0).min(axis=-1, keepdims=True)
-    out = U.copy()
-    out[..., :2] = (white + t * (ab - white) + m) * s
-    inside = ~neg.any(axis=-1)
-    out[inside] = U[inside]
-    out[..., 2] = U[..., 2]
-    # Stored as codes c = out * q (size - 1) / LUT_CODE_MAX on the 16-bit grid, with q
-    # the largest integer with q (size - 1) <= LUT_CODE_MAX: the identity nodes
-    # i / (size - 1) become the exact codes i q, so in-gamut colours (and the white,
-    # and black) stay exact; :func:`_factored_code_scale` undoes the scale.
-    q = LUT_CODE_MAX // (size - 1)
-    return np.round(out * (q * (size - 1))) / LUT_CODE_MAX
-
-
-def _factored_code_scale(size):
-    """Matrix after a factored Lut3D: LUT codes -> LUT coordinates (all three axes)."""
-    q = LUT_CODE_MAX // (size - 1)
-    return _matrix(np.eye(3) * (LUT_CODE_MAX / (q * (size - 1))))
+def _white_nodes(size, display):
+    """Node values of every axis of the white pass (display-linear; grid nodes below 1
+    at working-encoding code values 1 - (1 - k/n)^WHITE_POWER)."""
+    cells = size - 1
+    inside = max(2, int(round(cells * WHITE_INSIDE)))
+    # the brightest black-clipped channel is 1 / (smallest luminance weight); a power
+    # of two above it, so that white (1 / top) is exact in half floats
+    top = 2.0 ** np.ceil(np.log2(1.0 / _luminance(display).min()))
+    code = 1.0 - (1.0 - np.linspace(0.0, 1.0, inside + 1)) ** WHITE_POWER
+    below = apply(_inverse([display_encoding_transform(WORKING_ENCODING)]),
+                  np.repeat(code[:, None], 3, axis=1))[:, 0].astype(np.float64)
+    below[0], below[-1] = 0.0, 1.0
+    above = 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0, cells - inside))
+    return np.concatenate([below, above]), top
 
 
 @dataclass(frozen=True, eq=False)
 class ClipLUT:
     """The baked constant-lightness clip for one display (see :func:`clip_lut`).
 
-    In the "factored" domain ``values`` is the pass against the faces through black
-    and ``white_values`` the pass against the faces through white (applied to W - X).
+    ``black``: (size, size, size, 3) display-linear RGB of L(X) / ``top``, over the
+    chart (a, b, Y) of :func:`_black_plan`, rounded to half floats. ``white``: the
+    same shape, display code values of U(c) over display RGB (:func:`_white_nodes`),
+    rounded to 16 bits. ``black_shaper`` / ``white_shaper``: (SHAPER_LENGTH, 3)
+    Lut1D entries (grid coordinates).
     """
 
     display: str
     size: int
-    values: np.ndarray  # (size, size, size, 3) LUT coordinates out, index [u0][u1][uY]
-    domain: str
-    gamma: tuple
-    offset: tuple
-    white_values: np.ndarray | None = None
+    black: np.ndarray
+    white: np.ndarray
+    black_shaper: np.ndarray
+    white_shaper: np.ndarray
+    chart_matrix: np.ndarray  # 3x3 and offset: (x, y, Y) -> the black shaper's [0, 1] input
+    chart_offset: np.ndarray
+    top: float
+    output_shaper: np.ndarray | None = None  # (OUTPUT_LENGTH, 3): working -> display code
 
     @property
     def name(self) -> str:
         return f"Constant-Lightness Clip {self.display}"
 
-    def lut_transform(self, white: bool = False):
-        # factored values are already on the 16-bit grid
-        return lut3d_transform(self.white_values if white else self.values,
-                               uint16=self.domain == "factored")
-
-    def shaper(self, white: bool = False):
-        if self.domain == "factored":
-            return _factored_shaper(self.display, self.size, white)
-        return _shaper_parts(self.display, self.size, self.domain, self.gamma, self.offset)
-
-    def core_transform(self, white: bool = False):
-        """CLF-writable part, chart in -> chart out: shaper, Lut3D, inverse shaper.
-
-        "xy" / "aligned": CIE xyY in and out. "factored": the chart of one pass
-        (``white`` selects the pass against the faces through white)."""
-        if self.domain != "factored":
-            return group(self.shaper() + [self.lut_transform(), _inverse(self.shaper())],
-                         name=self.name, id=transform_id("Gamut_Map", self.name),
-                         description=(f"Smits & Meyer 1990 constant-lightness clip into "
-                                      f"{self.display} (Section 3.2), baked as a "
-                                      f"{self.size}^3 tetrahedral Lut3D over CIE xyY "
-                                      f"({self.domain} domain, see ocio_thinfilm.tables; Y "
-                                      "shaped towards 1, exact by construction). "
-                                      "Apply after XYZ_TO_xyY and follow with its inverse."),
-                         input_descriptor="CIE xyY (D65, Y = 1 at display white)",
-                         output_descriptor=f"CIE xyY clipped into the {self.display} gamut")
-        faces = "white (R, G, B <= 1)" if white else "black (R, G, B >= 0)"
-        n = CHART_WHITE if white else CHART_BLACK
-        name = f"{self.name} {'White' if white else 'Black'} Faces"
-        chart = (f"XYZ_TO_xyY of a matrix of {'W - XYZ' if white else 'XYZ'} whose "
-                 f"components sum to {n[0]:g} X + {n[1]:g} Y + {n[2]:g} Z "
-                 "(middle component Y)")
-        return group(self.shaper(white) + [self.lut_transform(white),
-                                           _factored_code_scale(self.size),
-                                           _inverse(self.shaper(white))],
+    def black_core(self):
+        """CLF-writable black pass: chart shaper (Lut1D) and Lut3D; chart in,
+        display-linear RGB / top out."""
+        name = f"{self.name} Black Faces"
+        return group([lut1d_transform(self.black_shaper, bitdepth="uint16"),
+                      lut3d_transform(self.black, bitdepth="half")],
                      name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into "
                                   f"{self.display} (Section 3.2), the part against the "
-                                  f"gamut faces through {faces}: central projection "
-                                  "towards the white onto the primaries' triangle, "
-                                  f"baked as a {self.size}^3 tetrahedral Lut3D (triangle "
-                                  "edges on grid planes, Y axis exact). The clip is "
-                                  "C(U(C(L(X)))) with C(X) = W - X, L the black-faces "
-                                  "and U the white-faces part; see "
-                                  "ocio_thinfilm.tables.clip_transform."),
-                     input_descriptor=f"chart ({chart}) and Y",
-                     output_descriptor=f"the same chart, clipped against the faces "
-                                       f"through {faces} of the {self.display} gamut")
+                                  "gamut faces through black (R, G, B >= 0): a "
+                                  f"{self.size}^3 tetrahedral Lut3D over a projective "
+                                  "chart of the chromaticity and Y (exactly linear "
+                                  "along Y; the primaries' triangle on grid planes). "
+                                  "See ocio_thinfilm.tables.ClipLUT."),
+                     input_descriptor=("chart of XYZ_TO_xyY(0.1 X, Y, 0.1 Z): canonical "
+                                       "chromaticity and Y, normalised for the shaper"),
+                     output_descriptor=(f"{self.display} display-linear RGB of the "
+                                        f"black-faces clip, divided by {self.top:.6g}"))
+
+    def white_core(self):
+        """CLF-writable white pass: per-channel shaper and Lut3D; display-linear RGB /
+        top in (no negative channel), display code values out."""
+        name = f"{self.name} White Faces"
+        ops = [lut1d_transform(self.white_shaper, bitdepth="uint16"),
+               lut3d_transform(self.white, bitdepth="uint16")]
+        if self.output_shaper is not None:
+            ops.append(lut1d_transform(self.output_shaper, bitdepth="uint16"))
+        return group(ops,
+                     name=name, id=transform_id("Gamut_Map", name),
+                     description=(f"Smits & Meyer 1990 constant-lightness clip into "
+                                  f"{self.display} (Section 3.2), the part against the "
+                                  "gamut faces through white (R, G, B <= 1), followed "
+                                  f"by the display encoding: a {self.size}^3 tetrahedral "
+                                  "Lut3D over display RGB whose nodes below 1 sit at "
+                                  "sRGB-encoded values, so in-gamut colours are "
+                                  "reproduced exactly (then, for displays with another "
+                                  "encoding, a Lut1D from sRGB to display code values). "
+                                  "See ocio_thinfilm.tables.ClipLUT."),
+                     input_descriptor=f"{self.display} display-linear RGB divided by "
+                                      f"{self.top:.6g}, no negative channel",
+                     output_descriptor=f"{self.display} display code values, clipped")
 
     def transforms(self, black=None, white=None):
-        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display-linear
-        RGB in [0, 1]; ``black`` / ``white`` replace the CLF-writable cores (e.g. by
+        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display code
+        values in [0, 1]; ``black`` / ``white`` replace the CLF-writable cores (e.g. by
         FileTransforms in the config)."""
-        black = self.core_transform() if black is None else black
-        if self.domain != "factored":
-            return [xyz_limit_transform(), xyY_forward_transform(), black,
-                    xyY_inverse_transform(), display_matrix_transform(self.display),
-                    _range(0.0, 1.0)]
-        white = self.core_transform(True) if white is None else white
-        P1 = _factored_plan(self.display, self.size, False)[0]
-        P2 = _factored_plan(self.display, self.size, True)[0]
-        W = colorimetry.white_XYZ(self.display)
-        M = colorimetry.matrix_XYZ_to_RGB(self.display)
-        return [xyz_limit_transform(), _matrix(P1), xyY_forward_transform(), black,
-                xyY_inverse_transform(),
-                _matrix(-P2 @ np.linalg.inv(P1), P2 @ W),  # chart 1 -> W - X -> chart 2
-                xyY_forward_transform(), white, xyY_inverse_transform(),
-                # chart 2 -> W - X -> display RGB, and [e, 1 - e] -> [0, 1] so that float32
-                # round-off through the second chart (~1e-5) does not leave black or
-                # white off by that much (moves any channel by at most e)
-                _matrix(-M @ np.linalg.inv(P2) / (1 - 2 * SNAP), (M @ W - SNAP) / (1 - 2 * SNAP)),
-                _range(0.0, 1.0)]
-
-
-def _clip_vertices(display, size, domain, gamma, offset):
-    """Vertex values of the clip LUT (float64), in the LUT's output coordinates.
-
-    xyY <-> XYZ goes through OCIO's own XYZ_TO_xyY, the op the config applies."""
-    g = np.linspace(0.0, 1.0, size)
-    U = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1)
-    shaper = _shaper_parts(display, size, domain, gamma, offset)
-    c = apply(_inverse(shaper), U).astype(np.float64)  # xyY at the vertices (OCIO's own)
-    c[..., 2] = np.where(U[..., 2] == 0.0, 0.0, np.where(U[..., 2] == 1.0, 1.0, c[..., 2]))
-    xyY = c.copy()
-    # Y = 0: the limit of the clip as Y -> 0+ (homogeneous), so dark colours keep
-    # their chromaticity; y <= 0 is outside every gamut, any tiny value works.
-    xyY[..., 2] = np.maximum(xyY[..., 2], 1e-9)
-    xyY[..., 1] = np.maximum(xyY[..., 1], 1e-9)
-    XYZ = apply(xyY_inverse_transform(), xyY).astype(np.float64)
-    clipped = clip.clip_XYZ(XYZ, display)
-    inside = np.all(clipped == XYZ, axis=-1)  # the clip returns in-gamut colours unchanged
-    out = apply(group([xyY_forward_transform()] + shaper), clipped).astype(np.float64)
-    out[inside] = U[inside]  # identity exactly (affine in the grid coordinates)
-    out[..., 2] = U[..., 2]  # the clip keeps Y: exact by construction
-    return out
+        return [xyz_limit_transform(),
+                _matrix(np.diag([CHART_EPS, 1.0, CHART_EPS])),
+                xyY_forward_transform(),
+                _matrix(self.chart_matrix, self.chart_offset),
+                self.black_core() if black is None else black,
+                self.white_core() if white is None else white]
 
 
 @lru_cache(maxsize=16)
-def _clip_lut(display, size, domain, gamma, offset):
-    white_values = None
-    if domain == "factored":
-        values = _factored_vertices(display, size, False)
-        white_values = _factored_vertices(display, size, True)
-        white_values.setflags(write=False)
-    else:
-        values = _clip_vertices(display, size, domain, gamma, offset)
-    values.setflags(write=False)
+def _clip_lut(display, size):
+    A, o, a, b, y = _black_plan(display, size)
+    top_nodes, top = _white_nodes(size, display)
+    # black pass: the chart's nodes -> XYZ -> L(X) in display RGB, / top, half floats
+    U = np.stack(np.meshgrid(a, b, y, indexing="ij"), axis=-1).reshape(-1, 3)
+    psi = (U[:, :2] - o) @ np.linalg.inv(A).T
+    # nodes below the chart of physical colours (y <= 0) take the limit y -> 0+
+    psi[:, 1] = np.maximum(psi[:, 1], 1e-9)
+    S = U[:, 2] / psi[:, 1]
+    V = S[:, None] * np.c_[psi, 1.0 - psi.sum(axis=1)]
+    XYZ = V / np.array([CHART_EPS, 1.0, CHART_EPS])
+    rgb = clip.clip_RGB(XYZ @ colorimetry.matrix_XYZ_to_RGB(display).T, display)  # finite
+    black = clip_black_faces_RGB(np.where(np.isfinite(XYZ), XYZ, 0.0)
+                                 @ colorimetry.matrix_XYZ_to_RGB(display).T, display)
+    black = np.where(np.isfinite(black), black, rgb)
+    black[U[:, 2] >= Y_WHITE] = 1.0  # brighter than the display white: white
+    black = (np.clip(black, 0.0, top) / top).astype(np.float16).astype(np.float64)
+    # white pass: RGB nodes -> U(c), clipped, encoded, 16-bit
+    Uw = np.stack(np.meshgrid(top_nodes, top_nodes, top_nodes, indexing="ij"),
+                  axis=-1).reshape(-1, 3)
+    white = np.clip(clip_white_faces_RGB(Uw, display), 0.0, 1.0)
+    white = np.round(_encode(white, WORKING_ENCODING).clip(0.0, 1.0) * 65535.0) / 65535.0
+    # shapers
+    span_a, span_b = a[-1] - a[0], b[-1] - b[0]
+    Mc = np.array([[A[0, 0] / span_a, A[0, 1] / span_a, 0.0],
+                   [A[1, 0] / span_b, A[1, 1] / span_b, 0.0],
+                   [0.0, 0.0, 1.0 / Y_WHITE]])
+    oc = np.array([(o[0] - a[0]) / span_a, (o[1] - b[0]) / span_b, 0.0])
+    black_shaper = np.stack([_shaper_values(a, a[0], a[-1]), _shaper_values(b, b[0], b[-1]),
+                             _shaper_values(y, 0.0, Y_WHITE)], axis=1)
+    w = _shaper_values(top_nodes, 0.0, top, along=lambda v: _encode(v, WORKING_ENCODING))
+    white_shaper = np.repeat(w[:, None], 3, axis=1)
+    q16 = lambda v: np.round(np.clip(v, 0.0, 1.0) * 65535.0) / 65535.0  # noqa: E731
+    output_shaper = None
+    if DISPLAY_ENCODINGS[display] != DISPLAY_ENCODINGS[WORKING_ENCODING]:
+        code = np.linspace(0.0, 1.0, OUTPUT_LENGTH)
+        linear = apply(_inverse([display_encoding_transform(WORKING_ENCODING)]),
+                       np.repeat(code[:, None], 3, axis=1))
+        output_shaper = q16(apply(display_encoding_transform(display), linear))
+    lut = ClipLUT(display=display, size=size,
+                  black=black.reshape(size, size, size, 3),
+                  white=white.reshape(size, size, size, 3),
+                  black_shaper=q16(black_shaper), white_shaper=q16(white_shaper),
+                  chart_matrix=Mc, chart_offset=oc, top=float(top),
+                  output_shaper=output_shaper)
+    for array in (lut.black, lut.white, lut.black_shaper, lut.white_shaper, output_shaper):
+        if array is not None:
+            array.setflags(write=False)
     BUILT.append(f"clip3d:{display}:{size}")
-    return ClipLUT(display=display, size=size, values=values, domain=domain, gamma=gamma,
-                   offset=offset, white_values=white_values)
+    return lut
 
 
 def _check_display(display):
@@ -840,18 +754,14 @@ def _check_display(display):
     return display
 
 
-def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE, *, domain: str = CLIP_DOMAIN,
-             gamma=None, offset=None) -> ClipLUT:
-    """The baked clip LUT for ``display`` (cached): vertex values from
-    :func:`ocio_thinfilm.clip.clip_XYZ` on a ``size``^3 grid over shaped CIE xyY."""
+def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
+    """The baked clip LUTs for ``display`` (cached): both passes, from
+    :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
+    is :func:`ocio_thinfilm.clip.clip_RGB` exactly."""
     _check_display(display)
-    size = _check_size(size, 5, 129, "clip LUT size")
-    if domain not in CLIP_DOMAINS:
-        raise ValueError(f"clip LUT domain must be one of {CLIP_DOMAINS}, got {domain!r}")
-    gamma = tuple(map(float, SHAPER_GAMMA[domain] if gamma is None else gamma))
-    offset = tuple(map(float, SHAPER_OFFSET[domain] if offset is None else offset))
+    size = _check_size(size, 9, 129, "clip LUT size")
     with _LOCK:
-        return _clip_lut(display, size, domain, gamma, offset)
+        return _clip_lut(display, size)
 
 
 def display_matrix_transform(display: str, inverse: bool = False):
@@ -861,18 +771,16 @@ def display_matrix_transform(display: str, inverse: bool = False):
     return _matrix(np.linalg.inv(M) if inverse else M)
 
 
-def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE, **kwargs):
-    """OCIO transform CIE-XYZ-D65 -> display-linear RGB, constant-lightness clipped.
-
-    Range limit (XYZ clamped to [0, 1e6]: NaN/Inf finite, no chromaticity flip), then
-    ("factored") chart matrix, ``XYZ_TO_xyY``, the black-faces LUT (shaper, Lut3D,
-    inverse shaper), ``xyY -> XYZ``, the complement W - X into the second chart,
-    ``XYZ_TO_xyY``, the white-faces LUT, back, the complement and the display matrix
-    in one matrix, a clamp to [0, 1]. ("xy" / "aligned": ``XYZ_TO_xyY``, one LUT,
-    ``xyY -> XYZ``, the display matrix, the clamp.)
-    """
-    lut = clip_lut(display, size, **kwargs)
-    return group(lut.transforms(), name=lut.name, id=transform_id("Gamut_Map", lut.name))
+def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
+    """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
+    clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
+    white-faces pass, which ends in display code values), then the display's EOTF."""
+    lut = clip_lut(display, size)
+    # the clamp only removes float32 round-off of the EOTF (1.0 -> 1.00002 through
+    # OCIO's fast pow): the code values are in [0, 1] already
+    return group(lut.transforms() + [_inverse([display_encoding_transform(display)]),
+                                     _range(0.0, 1.0)],
+                 name=lut.name, id=transform_id("Gamut_Map", lut.name))
 
 
 #: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.
@@ -918,13 +826,17 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
 def view_transform(display: str, view: str, size: int = CLIP_SIZE):
     """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
 
-    ``Raw`` passes values through unchanged (an empty group).
+    ``Raw`` passes values through unchanged (an empty group). The constant-lightness
+    clip ends in display code values itself (its second LUT holds them).
     """
     _check_display(display)
     if view not in VIEWS:
         raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
     if view == "Raw":
         return group([])
+    if view == "Constant-Lightness Clip":
+        lut = clip_lut(display, size)
+        return group(lut.transforms(), name=lut.name, id=transform_id("Gamut_Map", lut.name))
     return group([view_linear_transform(display, view, size),
                   display_encoding_transform(display)])
 
