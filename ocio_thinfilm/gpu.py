@@ -81,7 +81,12 @@ def _languages():
     return {
         ocio.GPU_LANGUAGE_GLSL_1_3: ("#version 130", ""),
         ocio.GPU_LANGUAGE_GLSL_4_0: ("#version 400 core", ""),
-        ocio.GPU_LANGUAGE_GLSL_ES_3_0: ("#version 300 es", "precision highp float;\nprecision highp sampler3D;"),
+        # ES defaults samplers to lowp: Mesa then samples at reduced precision.
+        ocio.GPU_LANGUAGE_GLSL_ES_3_0: (
+            "#version 300 es",
+            "precision highp float;\nprecision highp int;\n"
+            "precision highp sampler2D;\nprecision highp sampler3D;",
+        ),
     }
 
 
