@@ -291,7 +291,11 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
 
 def export_set(directory, *, show_progress=False) -> list[Path]:
     """The standalone set shipped in ``luts/``: every table and every default display
-    in every format that can hold it (into ``directory``, which must exist)."""
+    in every format that can hold it with its domain, plus the common display LUTs
+    (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
+    a 65^3 .cube and as CLF), into ``directory``, which must exist."""
+    from . import export_view
+
     jobs = []
     for fmt in FORMATS:
         for kind in colorimetry.FILM_KINDS:
@@ -299,11 +303,13 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
                 jobs.append(("film", dict(kind=kind), fmt))
         if 1 in FORMATS[fmt][2]:
             jobs.append(("morpho", {}, fmt))
-        if 3 in FORMATS[fmt][2]:
+        if 3 in FORMATS[fmt][2] and fmt not in NO_DOMAIN:
             for display in clip.DISPLAYS:
                 jobs.append(("clip", dict(display=display, size=EXPORT_SET_CLIP_SIZE), fmt))
+    views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
+             for display in clip.DISPLAYS for fmt in fmts]
     written = []
-    bar = _progress(show_progress, total=len(jobs), desc="export luts")
+    bar = _progress(show_progress, total=len(jobs) + len(views), desc="export luts")
     cache = {}
     for table, kw, fmt in jobs:
         key = (table, tuple(sorted(kw.items())))
@@ -315,9 +321,19 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
         written.append(path)
         if bar:
             bar.update(1)
+    for source, display, view, fmt in views:
+        name = export_view.set_name(source, display, view) + "." + fmt
+        written += export_view.export_view(source, display, view, Path(directory) / name,
+                                           size=export_view.DEFAULT_VIEW_SIZE)
+        if bar:
+            bar.update(1)
     if bar:
         bar.close()
     return written
+
+
+#: Display LUTs in the shipped set: (input space, view, formats), for every display.
+EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube", "clf")),)
 
 
 #: Edge length of the clip LUTs in the shipped ``luts/`` set (keeps files small).
@@ -390,6 +406,10 @@ def _run_bake(args) -> int:
 
 
 def _run_export(args) -> int:
+    if args.table == "view":
+        from . import export_view
+
+        return export_view.run(args)
     value_range = (None if args.range is None
                    else tuple(_float("--range", v) for v in args.range))
     path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
@@ -418,11 +438,13 @@ def register(sub) -> None:
                                       "(CLF, .cube, .spi1d/.spi3d, .csp)",
                        description="Write one LUT with OpenColorIO's writers. Film/Morpho "
                                    "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
-                                   "cube, spi3d, csp). Non-CLF files take the input "
-                                   "normalised to [0, 1] over --range.")
+                                   "cube, csp; spi3d only over --range 0 1). Every file "
+                                   "takes the value itself: its domain is in the file.")
     e.add_argument("table", metavar="TABLE",
-                   help="film (thickness table), morpho (angle table) or clip (the "
-                        "constant-lightness clip)")
+                   help="film (thickness table), morpho (angle table), clip (the "
+                        "constant-lightness clip) or view (a display/view of the config "
+                        "from --from SPACE: display code values; cube, csp, clf, ctf, "
+                        "spi3d, or spi1d for thin-film inputs)")
     e.add_argument("--kind", default="phase-change",
                    help="film kind: phase-change (soap film) or no-phase-change")
     e.add_argument("--display", default=None,
@@ -443,5 +465,10 @@ def register(sub) -> None:
     e.add_argument("--out", "-o", default=None, help="file to write (default: a name "
                                                      "from the options, in the current "
                                                      "directory)")
+    e.add_argument("--from", dest="source", default=None, metavar="SPACE",
+                   help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
+                        "'Linear Rec.709 (sRGB)', a thin-film space)")
+    e.add_argument("--view", default=None,
+                   help="view: the display's view (e.g. 'Constant-Lightness Clip')")
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)
