@@ -98,21 +98,33 @@ THIN_FILM_INPUTS = {
     "Thin Film Morpho Iridescence": ("cos(theta), the facing ratio N.V", (0.0, 1.0), 1024),
 }
 SHAPER_SPACE = "ocio-thinfilm export shaper"
+#: Linear spaces whose shaper starts at 0: AP1 is the ACES working gamut (ACEScg,
+#: ACEScct), and a mirrored square root spends a fifth of the grid on the few object
+#: colours outside it (down to -0.09) -- measured ACEScct -> sRGB 65^3: max ΔE2000
+#: 4.4 with them, 2.2 without. Values below 0 are clamped (to the AP1 boundary).
+NO_NEGATIVE_SHAPER = ("ACEScg",)
 
 
 # --------------------------------------------------------------------------- #
 # The shaper
 # --------------------------------------------------------------------------- #
-def shaper_domain(linear_space: str):
-    """(lo, hi) per channel of ``linear_space`` (a key of :data:`LINEAR_SIBLING`'s
-    values): the channel extremes of all object colours under D65 (optimal
-    colours: a reflectance of 1 where the channel's spectral weight is positive,
-    0 elsewhere, and the reverse), widened by 10 %; lo <= 0, hi >= 1.5."""
+def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE):
+    """(lo, hi) of the shaper over ``linear_space`` (one of :data:`LINEAR_SIBLING`'s
+    values), the same for the three channels so that every grid node on the diagonal
+    is a neutral (greys stay grey under tetrahedral interpolation): it covers the
+    channel extremes of all object colours under D65 (optimal colours: reflectance
+    1 where a channel's spectral weight is positive, 0 elsewhere, and the reverse),
+    widened by 10 %, and at least [0, 1.5] (AP1 spaces: from 0, see
+    :data:`NO_NEGATIVE_SHAPER`). (Nudging it so that black and white fall on grid
+    nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
+    2.2; ``size`` is kept for that reason in the signature.)"""
     wl = np.arange(360.0, 781.0, 1.0)
     W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
     w = W @ colorimetry.matrix_XYZ_to_RGB(_COLORIMETRY[linear_space]).T
-    lo = np.minimum(0.0, 1.1 * np.minimum(w, 0.0).sum(axis=0))
-    hi = np.maximum(SHAPER_MIN_HI, 1.1 * np.maximum(w, 0.0).sum(axis=0))
+    lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
+    if linear_space in NO_NEGATIVE_SHAPER:
+        lo = 0.0
+    hi = max(SHAPER_MIN_HI, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
     return tables.quantize(lo, 6), tables.quantize(hi, 6)
 
 
@@ -127,12 +139,13 @@ def _shaper_to_linear(lo, hi):
     e_lo, e_hi = _mirror_root(lo), _mirror_root(hi)
     power = ocio.ExponentTransform([SHAPER_GAMMA] * 3 + [1.0])
     power.setNegativeStyle(ocio.NEGATIVE_MIRROR)
-    return tables.group([tables._matrix(np.diag(e_hi - e_lo), e_lo), power])
+    return tables.group([tables._matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
 
 
-def view_config(source: str):
+def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
     """The config in memory (LUTs inline, no files), plus the shaper colour space for
-    ``source`` when it needs one. Returns (config, shaper space name or None)."""
+    ``source`` (for a ``size`` grid) when it needs one. Returns (config, shaper space
+    name or None)."""
     import PyOpenColorIO as ocio
 
     from . import config as config_module
@@ -141,14 +154,14 @@ def view_config(source: str):
     if source not in LINEAR_SIBLING:
         return cfg, None
     sibling = LINEAR_SIBLING[source]
-    lo, hi = shaper_domain(sibling)
+    lo, hi = shaper_domain(sibling, size)
     to_ref = cfg.getColorSpace(sibling).getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
     parts = [_shaper_to_linear(lo, hi)] + ([to_ref] if to_ref is not None else [])
     cs = ocio.ColorSpace()
     cs.setName(SHAPER_SPACE)
     cs.setFamily("Utility")
     cs.setDescription(f"Shaper for {source}: per channel of {sibling}, "
-                      f"sign(x)|x|^(1/2) from {lo.tolist()}..{hi.tolist()} onto 0..1")
+                      f"sign(x)|x|^(1/2) from {lo:.6g}..{hi:.6g} onto 0..1")
     cs.setTransform(tables.group(parts), ocio.COLORSPACE_DIR_TO_REFERENCE)
     cfg.addColorSpace(cs)
     return cfg, SHAPER_SPACE
@@ -221,10 +234,9 @@ def _description(source, display, view, size, shaper, baked):
     text = (f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
             f"pixel values of {source}; output: {display} display code values.")
     if shaper:
-        lo, hi = shaper_domain(LINEAR_SIBLING[source])
+        lo, hi = shaper_domain(LINEAR_SIBLING[source], size)
         text += (f" Shaper: sign(x)|x|^(1/2) per channel of linear "
-                 f"{LINEAR_SIBLING[source]}, domain {lo.tolist()}..{hi.tolist()} "
-                 f"(clamped beyond).")
+                 f"{LINEAR_SIBLING[source]} over {lo:.6g}..{hi:.6g} (clamped beyond).")
     if baked:
         text += f" 3D LUT {size}^3, tetrahedral."
     return text
@@ -339,7 +351,7 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
         raise UsageError(f"--out {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
 
-    cfg, shaper = view_config(source)
+    cfg, shaper = view_config(source, size)
     meta = _metadata(source, display, view)
     if source in THIN_FILM_INPUTS:
         description = _description(source, display, view, size, None, False)
