@@ -6,20 +6,26 @@ atomically (:mod:`.io`), and without timestamps, so equal inputs give equal byte
 
 Standalone LUTs (``export``)
 ----------------------------
+Every file takes the value itself as input -- no hand scaling: a host applies it to
+the pixel as it is.
+
 - ``film`` / ``morpho``: a 1D table sampled uniformly over ``--range`` (thickness in
-  micrometres, or cos(theta) for Morpho). CLF files take the thickness itself as
-  input (a range matrix in front of the LUT1D); the other formats take the
-  normalised position p = (x - min) / (max - min) in [0, 1]. Output: CIE-XYZ-D65, or
-  with ``--display`` the display-linear RGB after the constant-lightness clip.
-  ``--index n`` makes the input the physical thickness t (t' = n t, normal
-  incidence).
+  micrometres, or cos(theta) for Morpho). CLF carries the range as a matrix in front
+  of the LUT1D, ``.cube`` as ``LUT_1D_INPUT_RANGE``, ``.spi1d`` as ``From MIN MAX``.
+  Output: CIE-XYZ-D65, or with ``--display`` the display-linear RGB after the
+  constant-lightness clip. ``--index n`` makes the input the physical thickness t
+  (t' = n t, normal incidence).
 - ``clip``: the constant-lightness clip of one display as a 3D LUT over
   display-linear RGB in ``--range`` (default -0.5..1.5; 0 and 1 fall on grid
-  nodes, so in-gamut colours are reproduced exactly); CLF input is the RGB itself,
-  the other formats take p = (rgb - min) / (max - min). Output: clipped
-  display-linear RGB. (The config's own clip LUTs work in projective
-  chromaticity charts through ``FixedFunction XYZ_TO_xyY`` ops, which these formats
-  cannot hold.)
+  nodes, so in-gamut colours are reproduced exactly). CLF carries the range as a
+  matrix, ``.cube`` as an exact affine 1D shaper (``LUT_1D_INPUT_RANGE``) in front of
+  the 3D LUT, ``.csp`` as its prelut. ``.spi3d`` has no input domain (it always takes
+  0..1), so it is refused unless ``--range 0 1``. Output: clipped display-linear
+  RGB. (The config's own clip LUTs work in projective chromaticity charts through
+  ``FixedFunction XYZ_TO_xyY`` ops, which these formats cannot hold.)
+- ``view`` (:mod:`.export_view`): a whole display/view of the config from any of its
+  colour spaces, input the raw pixel values of that space, output display code
+  values.
 
 Functions: :func:`export_lut`, :func:`export_set`, :func:`bake`, :func:`register`.
 """
@@ -47,6 +53,8 @@ FORMATS = {
     "csp": ("cinespace", "csp", (3,)),
 }
 TABLES = ("film", "morpho", "clip")
+#: Formats with no way to state their input domain: only usable over exactly [0, 1].
+NO_DOMAIN = ("spi3d",)
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
 DEFAULT_LUTS_DIR = "luts"
 DEFAULT_SIZE = {"film": 4096, "morpho": 1024, "clip": 33}
@@ -59,7 +67,7 @@ DEFAULT_RANGE = {"film": (0.0, 1.5), "morpho": (0.0, 1.0), "clip": (-0.5, 1.5)}
 # --------------------------------------------------------------------------- #
 def _validate(table, kind, display, index, value_range, size, fmt):
     if table not in TABLES:
-        raise UsageError(f"unknown table {table!r}; choose from {', '.join(TABLES)}")
+        raise UsageError(f"unknown table {table!r}; choose from {', '.join(TABLES)}, view")
     if fmt not in FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose from {', '.join(FORMATS)}")
     dims = 3 if table == "clip" else 1
@@ -93,6 +101,10 @@ def _validate(table, kind, display, index, value_range, size, fmt):
         raise UsageError(f"--range must contain [0, 1] for clip, got {lo:g} {hi:g}")
     if table == "film" and hi > 1000:
         raise UsageError(f"--range: thickness above 1000 um is the incoherent grey; got {hi:g}")
+    if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
+        raise UsageError(f"format {fmt} has no input domain (it always takes 0..1), so it "
+                         f"cannot take {table} input over {lo:g}..{hi:g}; use "
+                         f"{', '.join(f for f in FORMATS if f not in NO_DOMAIN and dims in FORMATS[f][2])}")
     return size, (float(lo), float(hi))
 
 
@@ -170,31 +182,59 @@ def lut_contents(table, *, kind="phase-change", display=None, index=None, value_
     return values, lut, meta
 
 
-def _baker_config(lut):
-    """A minimal in-memory config: 'reference' and 'lut' (LUT to reference)."""
+def _baker_config(lut, lo, hi):
+    """A minimal in-memory config for baking ``lut`` over the input domain [lo, hi]:
+
+    - ``input`` (the reference): the raw value -- thickness, cos(theta) or RGB;
+    - ``output``: from the reference, the range matrix (x - lo) / (hi - lo) then ``lut``;
+    - ``domain``: an affine shaper space, [0, 1] <-> [lo, hi]. Given as the Baker's
+      shaper space it makes the writers state the domain in the file: ``.cube``
+      ``LUT_1D_INPUT_RANGE lo hi`` (1D) or an exact affine 1D shaper before the 3D LUT,
+      ``.spi1d`` ``From lo hi``, ``.csp`` a prelut.
+    """
     import PyOpenColorIO as ocio
 
+    span = hi - lo
     config = ocio.Config.CreateRaw()
     config.setVersion(2, 1)
+    for name in list(config.getColorSpaceNames()):
+        config.removeColorSpace(name)
     ref = ocio.ColorSpace()
-    ref.setName("reference")
+    ref.setName("input")
     config.addColorSpace(ref)
-    cs = ocio.ColorSpace()
-    cs.setName("lut")
-    cs.setTransform(lut, ocio.COLORSPACE_DIR_TO_REFERENCE)
-    config.addColorSpace(cs)
+    out = ocio.ColorSpace()
+    out.setName("output")
+    out.setTransform(tables.group([tables._matrix(np.eye(3) / span, [-lo / span] * 3), lut]),
+                     ocio.COLORSPACE_DIR_FROM_REFERENCE)
+    config.addColorSpace(out)
+    domain = ocio.ColorSpace()
+    domain.setName("domain")
+    domain.setTransform(tables._matrix(np.eye(3) * span, [lo] * 3),
+                        ocio.COLORSPACE_DIR_TO_REFERENCE)
+    config.addColorSpace(domain)
+    config.setRole("scene_linear", "input")
     return config
 
 
+#: Entries of the affine shaper / prelut that carries a 3D LUT's domain (.cube, .csp).
+#: The shaper is a straight line, so any size is exact; 1024 keeps ffmpeg's .csp
+#: prelut resampling (it interpolates between knots without dividing by their spacing)
+#: within 1/1023 of the grid coordinate.
+DOMAIN_SHAPER_SIZE = 1024
+
+
 def write_lut(path, fmt, values, lut, meta):
-    """Write one LUT file with OCIO's writer for ``fmt`` (atomically)."""
+    """Write one LUT file with OCIO's writer for ``fmt`` (atomically). Every format
+    takes the value itself: the domain ``meta["range"]`` is carried by the file."""
     import PyOpenColorIO as ocio
 
     writer, ext, _ = FORMATS[fmt]
     path = Path(path)
+    lo, hi = meta["range"]
+    if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
+        raise UsageError(f"format {fmt} has no input domain; cannot hold {lo:g}..{hi:g}")
     with atomic_file(path) as tmp:
         if fmt == "clf":
-            lo, hi = meta["range"]
             span = hi - lo
             ops = []
             if (lo, hi) != (0.0, 1.0):
@@ -206,14 +246,18 @@ def write_lut(path, fmt, values, lut, meta):
             g.write(writer, str(tmp), ocio.Config.CreateRaw())
         else:
             baker = ocio.Baker()
-            baker.setConfig(_baker_config(lut))
+            baker.setConfig(_baker_config(lut, lo, hi))
             baker.setFormat(writer)
-            baker.setInputSpace("lut")
-            baker.setTargetSpace("reference")
+            baker.getFormatMetadata().addChildElement(
+                "Description", f"{meta['name']}: input {meta['input']}, {lo:g}..{hi:g} "
+                               f"(the value itself); output {meta['output']}")
+            baker.setInputSpace("input")
+            baker.setTargetSpace("output")
             size = meta["size"]
-            baker.setCubeSize(size)
-            if values.ndim == 2:
-                baker.setShaperSize(size)
+            baker.setCubeSize(size)  # the 1D writers take their length from the cube size
+            if fmt not in NO_DOMAIN:
+                baker.setShaperSpace("domain")
+                baker.setShaperSize(size if values.ndim == 2 else DOMAIN_SHAPER_SIZE)
             text = baker.bake()
             Path(tmp).write_text(text if text.endswith("\n") else text + "\n")
     return path
@@ -247,7 +291,11 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
 
 def export_set(directory, *, show_progress=False) -> list[Path]:
     """The standalone set shipped in ``luts/``: every table and every default display
-    in every format that can hold it (into ``directory``, which must exist)."""
+    in every format that can hold it with its domain, plus the common display LUTs
+    (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
+    a 65^3 .cube and as CLF), into ``directory``, which must exist."""
+    from . import export_view
+
     jobs = []
     for fmt in FORMATS:
         for kind in colorimetry.FILM_KINDS:
@@ -255,11 +303,13 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
                 jobs.append(("film", dict(kind=kind), fmt))
         if 1 in FORMATS[fmt][2]:
             jobs.append(("morpho", {}, fmt))
-        if 3 in FORMATS[fmt][2]:
+        if 3 in FORMATS[fmt][2] and fmt not in NO_DOMAIN:
             for display in clip.DISPLAYS:
                 jobs.append(("clip", dict(display=display, size=EXPORT_SET_CLIP_SIZE), fmt))
+    views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
+             for display in clip.DISPLAYS for fmt in fmts]
     written = []
-    bar = _progress(show_progress, total=len(jobs), desc="export luts")
+    bar = _progress(show_progress, total=len(jobs) + len(views), desc="export luts")
     cache = {}
     for table, kw, fmt in jobs:
         key = (table, tuple(sorted(kw.items())))
@@ -271,9 +321,19 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
         written.append(path)
         if bar:
             bar.update(1)
+    for source, display, view, fmt in views:
+        name = export_view.set_name(source, display, view) + "." + fmt
+        written += export_view.export_view(source, display, view, Path(directory) / name,
+                                           size=export_view.DEFAULT_VIEW_SIZE)
+        if bar:
+            bar.update(1)
     if bar:
         bar.close()
     return written
+
+
+#: Display LUTs in the shipped set: (input space, view, formats), for every display.
+EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube", "clf")),)
 
 
 #: Edge length of the clip LUTs in the shipped ``luts/`` set (keeps files small).
@@ -346,6 +406,10 @@ def _run_bake(args) -> int:
 
 
 def _run_export(args) -> int:
+    if args.table == "view":
+        from . import export_view
+
+        return export_view.run(args)
     value_range = (None if args.range is None
                    else tuple(_float("--range", v) for v in args.range))
     path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
@@ -374,11 +438,13 @@ def register(sub) -> None:
                                       "(CLF, .cube, .spi1d/.spi3d, .csp)",
                        description="Write one LUT with OpenColorIO's writers. Film/Morpho "
                                    "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
-                                   "cube, spi3d, csp). Non-CLF files take the input "
-                                   "normalised to [0, 1] over --range.")
+                                   "cube, csp; spi3d only over --range 0 1). Every file "
+                                   "takes the value itself: its domain is in the file.")
     e.add_argument("table", metavar="TABLE",
-                   help="film (thickness table), morpho (angle table) or clip (the "
-                        "constant-lightness clip)")
+                   help="film (thickness table), morpho (angle table), clip (the "
+                        "constant-lightness clip) or view (a display/view of the config "
+                        "from --from SPACE: display code values; cube, csp, clf, ctf, "
+                        "spi3d, or spi1d for thin-film inputs)")
     e.add_argument("--kind", default="phase-change",
                    help="film kind: phase-change (soap film) or no-phase-change")
     e.add_argument("--display", default=None,
@@ -399,5 +465,10 @@ def register(sub) -> None:
     e.add_argument("--out", "-o", default=None, help="file to write (default: a name "
                                                      "from the options, in the current "
                                                      "directory)")
+    e.add_argument("--from", dest="source", default=None, metavar="SPACE",
+                   help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
+                        "'Linear Rec.709 (sRGB)', a thin-film space)")
+    e.add_argument("--view", default=None,
+                   help="view: the display's view (e.g. 'Constant-Lightness Clip')")
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)

@@ -1,0 +1,394 @@
+"""``ocio-thinfilm export view``: a whole display/view of the config as one standalone LUT.
+
+Input: the raw pixel values of any colour space of the config (``ACEScct``,
+``ACEScg``, ``Linear Rec.709 (sRGB)``, ``CIE-XYZ-D65``, the thin-film spaces, ...).
+Output: display code values of ``--display`` / ``--view``. The file takes the pixel
+as it is: nothing has to be scaled by hand first.
+
+How each format carries the input
+---------------------------------
+A 3D LUT samples [0, 1]^3, so inputs that are not already in [0, 1] (scene-linear
+RGB, XYZ, and ACEScct too, see below) go through a *shaper* first, a per-channel
+curve onto [0, 1] that is part of the file:
+
+- ``.cube`` (OCIO's ``resolve_cube`` writer): a 1D shaper (``LUT_1D_SIZE``,
+  ``LUT_1D_INPUT_RANGE``) and the 3D LUT in one file (DaVinci Resolve's form; read by
+  Resolve, OCIO, colour-science, Nuke's OCIOFileTransform). ffmpeg's ``lut3d`` reads
+  only the 3D part of a .cube and takes the shaper's lines for LUT entries: use
+  ``.csp`` with ffmpeg.
+- ``.csp`` (``cinespace``): the shaper as a prelut (knots placed uniformly in the
+  shaper, so dense where the curve is steep), then the 3D LUT. ffmpeg reads it.
+- ``.spi3d``: no domain and no shaper. For inputs that need one, a companion
+  ``<name>.shaper.spi1d`` (``From lo hi``) is written next to it: apply it first.
+- ``.clf``: the exact chain (``Processor.createGroupTransform``) when every op can
+  be written as CLF; the constant-lightness clip and ACES gamut compression use
+  ``FixedFunction`` ops that CLF cannot hold, so those views are written as the
+  exact shaper ops followed by the baked 3D LUT (the same table as the .cube),
+  in one CLF. ``.ctf`` (OCIO's superset of CLF) always holds the exact chain.
+- Thin-film inputs (thickness in um, cos(theta)): all channels equal, so the file is
+  a 1D LUT over ``--range`` (``.cube`` with ``LUT_1D_INPUT_RANGE``, ``.spi1d`` with
+  ``From``, ``.clf`` with a range matrix); ``.csp`` / ``.spi3d`` are refused.
+
+The shaper
+----------
+Per channel of the input's *linear* RGB (ACEScct: ACEScg), a mirrored square root
+``e = sign(x) |x|^(1/2)`` mapped affinely from [e(lo), e(hi)] onto [0, 1]. Its domain
+[lo, hi] covers every object colour under D65 (the optimal colours: per channel the
+sum of the positive, and of the negative, spectral weights), with hi at least 1.5
+so that scene values somewhat above white, which every view maps to white, stay
+inside; values beyond are clamped. A square root spends the grid on the upper half
+of the range, where this config's views bend hardest (every colour converges to the
+display white as Y approaches 1); a log or ACEScct allocation spends it on the
+shadows and leaves cells near white about 0.27 stops wide. Measured for ACEScct ->
+sRGB, Constant-Lightness Clip, 65^3, on object colours inside AP1 (ΔE2000
+p99 / max, tetrahedral): plain ACEScct grid 4.1 / 8.8; an affine sub-range of ACEScct
+2.1 / 5.2; the square-root shaper 0.6 / 2.0 (see ``tests/test_export_view.py``).
+
+Public functions: :func:`export_view`, :func:`view_config`, :func:`shaper_domain`,
+:data:`VIEW_FORMATS`.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from . import clip, colorimetry, tables
+from .io import UsageError, atomic_file, check_writable
+
+__all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
+           "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view", "run"]
+
+#: Format -> OCIO writer name. ``.spi1d`` only for the 1D (thin-film) inputs.
+VIEW_FORMATS = {
+    "clf": "Academy/ASC Common LUT Format",
+    "ctf": "Color Transform Format",
+    "cube": "resolve_cube",
+    "csp": "cinespace",
+    "spi3d": "spi3d",
+    "spi1d": "spi1d",
+}
+DEFAULT_VIEW_SIZE = 65
+MAX_VIEW_SIZE = 129
+#: Entries of the shaper (.cube 1D part, .csp prelut knots, companion .spi1d).
+SHAPER_SIZE = 4096
+SHAPER_GAMMA = 2.0
+#: Lower bound of the shaper's upper end (scene-linear; 1.0 is the display white).
+SHAPER_MIN_HI = 1.5
+#: Input space -> the config space holding its linear RGB (the shaper works there).
+LINEAR_SIBLING = {
+    "CIE-XYZ-D65": "CIE-XYZ-D65",
+    "ACES2065-1": "ACES2065-1",
+    "ACEScg": "ACEScg",
+    "ACEScct": "ACEScg",
+    "Linear Rec.709 (sRGB)": "Linear Rec.709 (sRGB)",
+    "Linear P3-D65": "Linear P3-D65",
+    "Linear Rec.2020": "Linear Rec.2020",
+}
+#: colorimetry name of each linear sibling.
+_COLORIMETRY = {"CIE-XYZ-D65": "CIE-XYZ-D65", "ACES2065-1": "ACES2065-1", "ACEScg": "ACEScg",
+                "Linear Rec.709 (sRGB)": "Rec.709", "Linear P3-D65": "Display P3",
+                "Linear Rec.2020": "Rec.2020"}
+#: Thin-film input spaces -> (what the pixel is, default range, default size).
+THIN_FILM_INPUTS = {
+    "Thin Film Phase-Change Thickness": ("optical thickness t' in um", (0.0, 1.5), 4096),
+    "Thin Film No-Phase-Change Thickness": ("optical thickness t' in um", (0.0, 1.5), 4096),
+    "Thin Film Morpho Iridescence": ("cos(theta), the facing ratio N.V", (0.0, 1.0), 1024),
+}
+SHAPER_SPACE = "ocio-thinfilm export shaper"
+#: Linear spaces whose shaper starts at 0: AP1 is the ACES working gamut (ACEScg,
+#: ACEScct), and a mirrored square root spends a fifth of the grid on the few object
+#: colours outside it (down to -0.09) -- measured ACEScct -> sRGB 65^3: max ΔE2000
+#: 4.4 with them, 2.2 without. Values below 0 are clamped (to the AP1 boundary).
+NO_NEGATIVE_SHAPER = ("ACEScg",)
+
+
+# --------------------------------------------------------------------------- #
+# The shaper
+# --------------------------------------------------------------------------- #
+def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE):
+    """(lo, hi) of the shaper over ``linear_space`` (one of :data:`LINEAR_SIBLING`'s
+    values), the same for the three channels so that every grid node on the diagonal
+    is a neutral (greys stay grey under tetrahedral interpolation): it covers the
+    channel extremes of all object colours under D65 (optimal colours: reflectance
+    1 where a channel's spectral weight is positive, 0 elsewhere, and the reverse),
+    widened by 10 %, and at least [0, 1.5] (AP1 spaces: from 0, see
+    :data:`NO_NEGATIVE_SHAPER`). (Nudging it so that black and white fall on grid
+    nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
+    2.2; ``size`` is kept for that reason in the signature.)"""
+    wl = np.arange(360.0, 781.0, 1.0)
+    W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
+    w = W @ colorimetry.matrix_XYZ_to_RGB(_COLORIMETRY[linear_space]).T
+    lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
+    if linear_space in NO_NEGATIVE_SHAPER:
+        lo = 0.0
+    hi = max(SHAPER_MIN_HI, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
+    return tables.quantize(lo, 6), tables.quantize(hi, 6)
+
+
+def _mirror_root(x):
+    return np.sign(x) * np.abs(x) ** (1.0 / SHAPER_GAMMA)
+
+
+def _shaper_to_linear(lo, hi):
+    """OCIO transform: shaper value u in [0, 1] -> linear RGB in [lo, hi]."""
+    import PyOpenColorIO as ocio
+
+    e_lo, e_hi = _mirror_root(lo), _mirror_root(hi)
+    power = ocio.ExponentTransform([SHAPER_GAMMA] * 3 + [1.0])
+    power.setNegativeStyle(ocio.NEGATIVE_MIRROR)
+    return tables.group([tables._matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
+
+
+def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
+    """The config in memory (LUTs inline, no files), plus the shaper colour space for
+    ``source`` (for a ``size`` grid) when it needs one. Returns (config, shaper space
+    name or None)."""
+    import PyOpenColorIO as ocio
+
+    from . import config as config_module
+
+    cfg = config_module.generate_config(config_module.config_data(inline=True), validate=False)
+    if source not in LINEAR_SIBLING:
+        return cfg, None
+    sibling = LINEAR_SIBLING[source]
+    lo, hi = shaper_domain(sibling, size)
+    to_ref = cfg.getColorSpace(sibling).getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
+    parts = [_shaper_to_linear(lo, hi)] + ([to_ref] if to_ref is not None else [])
+    cs = ocio.ColorSpace()
+    cs.setName(SHAPER_SPACE)
+    cs.setFamily("Utility")
+    cs.setDescription(f"Shaper for {source}: per channel of {sibling}, "
+                      f"sign(x)|x|^(1/2) from {lo:.6g}..{hi:.6g} onto 0..1")
+    cs.setTransform(tables.group(parts), ocio.COLORSPACE_DIR_TO_REFERENCE)
+    cfg.addColorSpace(cs)
+    return cfg, SHAPER_SPACE
+
+
+# --------------------------------------------------------------------------- #
+# Validation
+# --------------------------------------------------------------------------- #
+def _validate(source, display, view, size, fmt, value_range):
+    from . import config as config_module
+
+    spaces = [cs["name"] for cs in config_module.config_data(inline=True).colorspaces]
+    if source is None:
+        raise UsageError("export view needs --from SPACE (a colour space of the config)")
+    if source not in spaces:
+        raise UsageError(f"unknown colour space {source!r}; choose from {', '.join(spaces)}")
+    if display is None:
+        raise UsageError("export view needs --display")
+    if display not in clip.DISPLAYS:
+        raise UsageError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
+    if view is None:
+        raise UsageError("export view needs --view")
+    if view not in tables.VIEWS:
+        raise UsageError(f"unknown view {view!r}; choose from {', '.join(tables.VIEWS)}")
+    if fmt not in VIEW_FORMATS:
+        raise UsageError(f"unknown format {fmt!r}; choose from {', '.join(VIEW_FORMATS)}")
+    one_d = source in THIN_FILM_INPUTS
+    if one_d:
+        what, default_range, default_size = THIN_FILM_INPUTS[source]
+        if fmt in ("csp", "spi3d"):
+            raise UsageError(f"{source} takes one value per pixel, a 1D LUT: use cube, "
+                             f"spi1d or clf (format {fmt} holds only 3D LUTs)")
+        lo, hi = default_range if value_range is None else value_range
+        if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
+            raise UsageError(f"--range must be two finite numbers MIN < MAX, got {lo:g} {hi:g}")
+        if lo < 0 or (source == "Thin Film Morpho Iridescence" and hi > 1) or hi > 100:
+            raise UsageError(f"--range for {source} ({what}) must lie in "
+                             f"{'0..1' if 'Morpho' in source else '0..100'}, "
+                             f"got {lo:g} {hi:g}")
+        size = default_size if size is None else size
+        if not 2 <= size <= 1 << 20:
+            raise UsageError(f"--size must be in [2, {1 << 20}] for a 1D LUT, got {size}")
+        return size, (float(lo), float(hi))
+    if value_range is not None:
+        raise UsageError("--range applies to the thin-film inputs only (3D LUTs carry "
+                         "their own domain)")
+    if fmt == "spi1d":
+        raise UsageError(f"{source} needs a 3D LUT: use cube, csp, clf, ctf or spi3d")
+    size = DEFAULT_VIEW_SIZE if size is None else size
+    if not 2 <= size <= MAX_VIEW_SIZE:
+        raise UsageError(f"--size must be in [2, {MAX_VIEW_SIZE}] for a 3D LUT, got {size}")
+    return size, None
+
+
+def _stem(source, display, view):
+    return set_name(source, display, view)
+
+
+def set_name(source, display, view):
+    """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``, ``ACEScct_to_Rec2020_ChannelClamp``."""
+    def clean(text):
+        return "".join(c for c in text if c.isalnum())
+    return f"{clean(source)}_to_{clean(display)}_{clean(view)}"
+
+
+# --------------------------------------------------------------------------- #
+# Writing
+# --------------------------------------------------------------------------- #
+def _description(source, display, view, size, shaper, baked):
+    text = (f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
+            f"pixel values of {source}; output: {display} display code values.")
+    if shaper:
+        lo, hi = shaper_domain(LINEAR_SIBLING[source], size)
+        text += (f" Shaper: sign(x)|x|^(1/2) per channel of linear "
+                 f"{LINEAR_SIBLING[source]} over {lo:.6g}..{hi:.6g} (clamped beyond).")
+    if baked:
+        text += f" 3D LUT {size}^3, tetrahedral."
+    return text
+
+
+def _metadata(source, display, view):
+    stem = _stem(source, display, view)
+    return dict(name=stem, id=tables.transform_id("Display_View", stem),
+                input=f"{source}: raw pixel values",
+                output=f"{display} display code values ({view})")
+
+
+def _bake_text(cfg, fmt, source, shaper, display, view, size, description,
+               target=None):
+    import PyOpenColorIO as ocio
+
+    baker = ocio.Baker()
+    baker.setConfig(cfg)
+    baker.setFormat(VIEW_FORMATS[fmt])
+    baker.getFormatMetadata().addChildElement("Description", description)
+    baker.setInputSpace(source)
+    if target is not None:
+        baker.setTargetSpace(target)
+    else:
+        baker.setDisplayView(display, view)
+    if shaper:
+        baker.setShaperSpace(shaper)
+        baker.setShaperSize(SHAPER_SIZE)
+    baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
+    text = baker.bake()
+    return text if text.endswith("\n") else text + "\n"
+
+
+def _write_text(path, text):
+    with atomic_file(path) as tmp:
+        Path(tmp).write_text(text)
+    return Path(path)
+
+
+def _write_group(path, fmt, transforms, meta, description):
+    import PyOpenColorIO as ocio
+
+    g = tables.group(transforms, name=meta["name"], id=meta["id"], description=description,
+                     input_descriptor=meta["input"], output_descriptor=meta["output"])
+    with atomic_file(path) as tmp:
+        g.write(VIEW_FORMATS[fmt], str(tmp), ocio.Config.CreateRaw())
+    return Path(path)
+
+
+def _baked_3d_transforms(cfg, source, shaper, display, view, size):
+    """[input -> shaper ops (exact), Lut3D over the shaper (tetrahedral)]: the
+    content of the .cube as OCIO transforms, for CLF."""
+    import PyOpenColorIO as ocio
+
+    u = np.linspace(0.0, 1.0, size)
+    grid = np.stack(np.meshgrid(u, u, u, indexing="ij"), axis=-1).reshape(-1, 3)
+    nodes = np.ascontiguousarray(grid, dtype=np.float32)
+    start = shaper or source
+    proc = cfg.getProcessor(start, display, view, ocio.TRANSFORM_DIR_FORWARD)
+    proc.getDefaultCPUProcessor().applyRGB(nodes)
+    ops = []
+    if shaper:
+        ops += list(cfg.getProcessor(source, shaper).createGroupTransform())
+    values = nodes.reshape(size, size, size, 3).astype(np.float64)
+    if values.min() >= -1e-4 and values.max() <= 1.0 + 1e-4:
+        # Display code values: 16-bit integers (half the text of floats; the step,
+        # 1.5e-5, is far below the interpolation error).
+        values = np.round(np.clip(values, 0.0, 1.0) * tables.LUT_CODE_MAX) / tables.LUT_CODE_MAX
+        ops.append(tables.lut3d_transform(values, uint16=True))
+        ops.append(tables._matrix())  # the CLF writer keeps 16i only before another op
+    else:
+        ops.append(tables.lut3d_transform(values))
+    return ops
+
+
+def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, description):
+    """Thin-film inputs: a 1D LUT over ``value_range``, by the export module's writer
+    (which states the domain in every format)."""
+    import PyOpenColorIO as ocio
+
+    from . import export
+
+    lo, hi = value_range
+    x = np.linspace(lo, hi, size)
+    px = np.ascontiguousarray(np.repeat(x[:, None], 3, axis=1), dtype=np.float32)
+    cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD) \
+        .getDefaultCPUProcessor().applyRGB(px)
+    values = px.astype(np.float64)
+    what = THIN_FILM_INPUTS[source][0]
+    lut_meta = dict(meta, input=f"{source}: {what}", range=(lo, hi), size=size,
+                    description=description + f" 1D LUT, {size} entries uniform over "
+                                              f"{lo:g}..{hi:g}.")
+    return export.write_lut(path, fmt, values, tables.lut1d_transform(values), lut_meta)
+
+
+def export_view(source, display, view, out=None, *, fmt=None, size=None,
+                value_range=None) -> list[Path]:
+    """Write the display LUT ``source`` -> ``display`` / ``view``; returns the paths
+    written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``)."""
+    import PyOpenColorIO as ocio
+
+    if fmt is None:
+        fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
+        if fmt not in VIEW_FORMATS:
+            raise UsageError(f"cannot tell the format from {out!r}; pass --format "
+                             f"({', '.join(VIEW_FORMATS)})")
+    size, value_range = _validate(source, display, view, size, fmt, value_range)
+    if out is None:
+        out = Path(_stem(source, display, view) + "." + fmt)
+    out = Path(out)
+    if out.exists() and out.is_dir():
+        raise UsageError(f"--out {out} is a directory")
+    check_writable(out.parent if str(out.parent) else Path("."))
+
+    cfg, shaper = view_config(source, size)
+    meta = _metadata(source, display, view)
+    if source in THIN_FILM_INPUTS:
+        description = _description(source, display, view, size, None, False)
+        return [_write_1d(out, fmt, cfg, source, display, view, size, value_range, meta,
+                          description)]
+    if fmt in ("clf", "ctf"):
+        proc = cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD)
+        exact = list(proc.createGroupTransform())
+        description = _description(source, display, view, size, None, False)
+        try:
+            return [_write_group(out, fmt, exact, meta, description + " Exact chain.")]
+        except ocio.Exception:
+            if fmt != "clf":
+                raise
+        # CLF cannot hold FixedFunction ops: the exact shaper ops, then the baked 3D LUT.
+        return [_write_group(out, fmt, _baked_3d_transforms(cfg, source, shaper, display,
+                                                            view, size),
+                             meta, _description(source, display, view, size, shaper, True))]
+    description = _description(source, display, view, size, shaper, True)
+    if fmt == "spi3d" and shaper:
+        companion = out.with_name(out.stem + ".shaper.spi1d")
+        text3d = _bake_text(cfg, "spi3d", shaper, None, display, view, size, description)
+        text1d = _bake_text(cfg, "spi1d", source, shaper, display, view, size, description,
+                            target=shaper)
+        return [_write_text(out, text3d), _write_text(companion, text1d)]
+    return [_write_text(out, _bake_text(cfg, fmt, source, shaper, display, view, size,
+                                        description))]
+
+
+def run(args) -> int:
+    """``ocio-thinfilm export view`` (called from :func:`.export._run_export`)."""
+    from .export import _float, _int
+
+    value_range = (None if args.range is None
+                   else tuple(_float("--range", v) for v in args.range))
+    paths = export_view(args.source, args.display, args.view, args.out, fmt=args.format,
+                        size=_int("--size", args.size), value_range=value_range)
+    for path in paths:
+        print(f"wrote {path}")
+    return 0

@@ -1,0 +1,313 @@
+"""``ocio-thinfilm export view``: display LUTs applied by independent consumers.
+
+Each file is written to a temporary directory and applied to the *raw* pixel values
+of its input space by a consumer that is not our code: colour-science's
+``read_LUT(...).apply`` (trilinear 3D interpolation, its own .cube / .csp / .spi
+parsers), OpenColorIO's ``FileTransform`` on a raw config, and ffmpeg's ``lut3d``
+filter where ffmpeg is installed. The expected colour is computed independently:
+the input values from colour-science (``XYZ_to_RGB`` with a Bradford adaptation,
+``log_encoding_ACEScct``), the expected output from the analytic clip
+(``clip.clip_RGB`` of the XYZ -> display-linear RGB), and the file's display code
+values are decoded with colour-science's sRGB EOTF (BT.1886 gamma 2.4 for Rec.2020)
+before ΔE2000 in XYZ (D65).
+
+Thresholds. The issue's target for ACEScct -> sRGB / Constant-Lightness Clip at 65^3:
+ΔE2000 p99 1.0, max 3.0 on object colours inside AP1, in-gamut colours p99 0.5
+(measured: p99 0.61-0.68, max 2.0-2.2, in-gamut p99 0.25-0.36; the in-gamut max,
+≈ 2, is colours within one grid cell of the gamut boundary near white, where every
+view bends towards white). The other displays, consumers and input spaces are
+held to their measured values with a margin of about 1.5x (they are printed by
+``benchmarks/bench_export_view.py``), so a regression of the shaper or the
+writers fails.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm import cli, clip, colorimetry, export_view, tables
+
+CLC = "Constant-Lightness Clip"
+FFMPEG = shutil.which("ffmpeg")
+
+
+# --------------------------------------------------------------------------- #
+# Independent helpers
+# --------------------------------------------------------------------------- #
+def _colour_rgb(XYZ, name):
+    """XYZ (D65) -> linear RGB of a colour-science colourspace, Bradford adapted."""
+    import colour
+
+    d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+    return colour.XYZ_to_RGB(XYZ, colour.RGB_COLOURSPACES[name], d65,
+                             chromatic_adaptation_transform="Bradford")
+
+
+def _decode(code, display):
+    import colour
+
+    code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
+    if display == "Rec.2020":
+        return code ** 2.4  # BT.1886 with a zero black level
+    return colour.cctf_decoding(code, "sRGB")
+
+
+def _expected_XYZ(XYZ, display, view=CLC):
+    rgb = colorimetry.XYZ_to_RGB(XYZ, display)
+    if view == CLC:
+        out = clip.clip_RGB(rgb, display)
+    elif view == "Channel Clamp":
+        out = np.clip(rgb, 0.0, 1.0)
+    else:
+        raise ValueError(view)
+    return colorimetry.RGB_to_XYZ(out, display)
+
+
+def _dE(code, XYZ, display, view=CLC):
+    got = colorimetry.RGB_to_XYZ(_decode(code, display), display)
+    return colorimetry.delta_E2000(got, _expected_XYZ(XYZ, display, view))
+
+
+def _stats(dE):
+    return dE.mean(), np.percentile(dE, 99), dE.max()
+
+
+def _ocio_apply(paths, values):
+    import PyOpenColorIO as ocio
+
+    group = ocio.GroupTransform()
+    for path in paths:
+        t = ocio.FileTransform(str(path))
+        t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
+        group.appendTransform(t)
+    px = np.ascontiguousarray(np.asarray(values, dtype=np.float32).reshape(-1, 3)).copy()
+    ocio.Config.CreateRaw().getProcessor(group).getDefaultCPUProcessor().applyRGB(px)
+    return px.astype(np.float64)
+
+
+def _colour_apply(paths, values):
+    import colour
+
+    out = np.asarray(values, dtype=np.float64)
+    for path in paths:
+        out = colour.read_LUT(str(path)).apply(out)
+    return out
+
+
+def ffmpeg_apply(path, values):
+    """Apply ``path`` with ffmpeg's lut3d filter to float RGB (planar float32)."""
+    rgb = np.asarray(values, dtype=np.float32).reshape(-1, 3)
+    n, w = len(rgb), 256
+    h = -(-n // w)
+    img = np.zeros((w * h, 3), np.float32)
+    img[:n] = rgb
+    img = img.reshape(h, w, 3)
+    planes = np.stack([img[..., 1], img[..., 2], img[..., 0]])  # gbrp plane order
+    result = subprocess.run(
+        [FFMPEG, "-v", "error", "-f", "rawvideo", "-pix_fmt", "gbrpf32le", "-s", f"{w}x{h}",
+         "-i", "-", "-vf", f"lut3d=file={path}", "-f", "rawvideo", "-pix_fmt", "gbrpf32le",
+         "-"], input=planes.astype("<f4").tobytes(), capture_output=True, timeout=120)
+    assert result.returncode == 0, result.stderr.decode()
+    out = np.frombuffer(result.stdout, "<f4").reshape(3, h, w)
+    return np.stack([out[2], out[0], out[1]], axis=-1).reshape(-1, 3)[:n].astype(np.float64)
+
+
+# --------------------------------------------------------------------------- #
+# Fixtures
+# --------------------------------------------------------------------------- #
+@pytest.fixture(scope="module")
+def object_XYZ():
+    return tables.object_colours()
+
+
+@pytest.fixture(scope="module")
+def inside_AP1(object_XYZ):
+    """(XYZ, ACEScct values) of the object colours whose ACEScg values are >= 0."""
+    import colour
+
+    acescg = _colour_rgb(object_XYZ, "ACEScg")
+    keep = (acescg >= 0).all(axis=1)
+    return object_XYZ[keep], colour.models.log_encoding_ACEScct(acescg[keep])
+
+
+@pytest.fixture(scope="module")
+def acescct_luts(tmp_path_factory):
+    """ACEScct -> each display's Constant-Lightness Clip at 65^3 in every format."""
+    d = tmp_path_factory.mktemp("view")
+    files = {}
+    for display in clip.DISPLAYS:
+        for fmt in ("cube", "csp", "clf", "spi3d"):
+            files[display, fmt] = export_view.export_view(
+                "ACEScct", display, CLC, d / f"{display.replace(' ', '')}.{fmt}")
+    return files
+
+
+# --------------------------------------------------------------------------- #
+# The issue's target: ACEScct -> sRGB / Constant-Lightness Clip, 65^3 .cube
+# --------------------------------------------------------------------------- #
+def test_acescct_srgb_cube_meets_target_in_colour_science(acescct_luts, inside_AP1):
+    XYZ, cct = inside_AP1
+    assert len(XYZ) > 10000
+    (path,) = acescct_luts["sRGB", "cube"]
+    text = path.read_text()
+    assert "LUT_3D_SIZE 65" in text and "LUT_1D_INPUT_RANGE" in text
+    code = _colour_apply([path], cct)
+    dE = _dE(code, XYZ, "sRGB")
+    mean, p99, worst = _stats(dE)
+    inside = clip.in_gamut(colorimetry.XYZ_to_RGB(XYZ, "sRGB"))
+    print(f"ACEScct->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} "
+          f"max {worst:.3f}; in gamut p99 {np.percentile(dE[inside], 99):.3f} "
+          f"max {dE[inside].max():.3f}")
+    assert p99 <= 1.0 and worst <= 3.0
+    assert np.percentile(dE[inside], 99) <= 0.5
+    # grey ramp: neutral in, neutral out (the old files took 0.18 to black)
+    g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 0.9, 1.0])
+    grey = _colour_apply([path], np.repeat(colour_acescct(g)[:, None], 3, axis=1))
+    white = colorimetry.RGB_to_XYZ(np.ones(3), "sRGB")
+    dE_grey = _dE(grey, g[:, None] * white, "sRGB")
+    print("grey ramp dE2000", np.round(dE_grey, 3))
+    assert dE_grey.max() <= 0.5
+
+
+def colour_acescct(linear):
+    import colour
+
+    return colour.models.log_encoding_ACEScct(linear)
+
+
+#: (display, format, consumer) -> (p99, max) limits: the issue's target (p99 1.0,
+#: max 3.0) for every display and consumer; measured p99 0.13-0.68, max 1.7-2.4.
+LIMITS = {
+    ("sRGB", "cube", "ocio"): (1.0, 3.0),
+    ("sRGB", "csp", "colour"): (1.0, 3.0),
+    ("sRGB", "csp", "ocio"): (1.0, 3.0),
+    ("sRGB", "clf", "ocio"): (1.0, 3.0),
+    ("sRGB", "spi3d", "colour"): (1.0, 3.0),
+    ("sRGB", "spi3d", "ocio"): (1.0, 3.0),
+    ("Display P3", "cube", "colour"): (1.0, 3.0),
+    ("Display P3", "csp", "ocio"): (1.0, 3.0),
+    ("Display P3", "clf", "ocio"): (1.0, 3.0),
+    ("Rec.2020", "cube", "colour"): (1.0, 3.0),
+    ("Rec.2020", "csp", "ocio"): (1.0, 3.0),
+    ("Rec.2020", "clf", "ocio"): (1.0, 3.0),
+}
+
+
+@pytest.mark.parametrize("display,fmt,consumer", list(LIMITS), ids=lambda v: str(v))
+def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, display, fmt,
+                                                     consumer):
+    XYZ, cct = inside_AP1
+    paths = acescct_luts[display, fmt]
+    if fmt == "spi3d":  # the companion shaper goes first
+        assert [p.suffix for p in paths] == [".spi3d", ".spi1d"]
+        paths = paths[::-1]
+    code = (_colour_apply if consumer == "colour" else _ocio_apply)(paths, cct)
+    mean, p99, worst = _stats(_dE(code, XYZ, display))
+    print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
+          f"max {worst:.3f}")
+    limit_p99, limit_max = LIMITS[display, fmt, consumer]
+    assert p99 <= limit_p99 and worst <= limit_max
+
+
+@pytest.mark.skipif(FFMPEG is None, reason="ffmpeg not installed (Debian package ffmpeg)")
+@pytest.mark.parametrize("display", clip.DISPLAYS)
+def test_acescct_csp_in_ffmpeg(acescct_luts, inside_AP1, display):
+    """ffmpeg reads .csp preluts (not the 1D part of a Resolve .cube)."""
+    XYZ, cct = inside_AP1
+    (path,) = acescct_luts[display, "csp"]
+    mean, p99, worst = _stats(_dE(ffmpeg_apply(path, cct), XYZ, display))
+    print(f"ACEScct->{display} .csp (ffmpeg): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
+    assert p99 <= 1.0 and worst <= 3.0
+
+
+# --------------------------------------------------------------------------- #
+# Other inputs
+# --------------------------------------------------------------------------- #
+@pytest.mark.parametrize("source,name,limits", [
+    ("ACEScg", "ACEScg", (1.0, 3.0)),  # measured 0.68 / 2.2
+    ("Linear Rec.709 (sRGB)", "ITU-R BT.709", (1.8, 7.0)),  # measured 1.19 / 4.7
+    ("CIE-XYZ-D65", None, (2.8, 9.0)),  # measured 1.85 / 6.5
+])
+def test_linear_inputs_cube(tmp_path, object_XYZ, source, name, limits):
+    (path,) = export_view.export_view(source, "sRGB", CLC, tmp_path / "v.cube", size=65)
+    XYZ = object_XYZ
+    values = XYZ if name is None else _colour_rgb(XYZ, name)
+    if source == "ACEScg":
+        keep = (values >= 0).all(axis=1)
+        XYZ, values = XYZ[keep], values[keep]
+    mean, p99, worst = _stats(_dE(_colour_apply([path], values), XYZ, "sRGB"))
+    print(f"{source}->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} "
+          f"max {worst:.3f}")
+    assert p99 <= limits[0] and worst <= limits[1]
+
+
+def test_thin_film_input_is_a_1d_lut_over_thickness(tmp_path):
+    """Thickness in um in, sRGB code values out: against the analytic film colour
+    clipped analytically."""
+    (path,) = export_view.export_view("Thin Film Phase-Change Thickness", "sRGB", CLC,
+                                      tmp_path / "f.cube")
+    assert "LUT_1D_INPUT_RANGE 0.000000 1.500000" in path.read_text()
+    t = np.linspace(0.0, 1.5, 1501)
+    XYZ = colorimetry.film_XYZ(t * 1000.0, "phase-change")
+    for apply in (_colour_apply, _ocio_apply):
+        code = apply([path], np.repeat(t[:, None], 3, axis=1))
+        mean, p99, worst = _stats(_dE(code, XYZ, "sRGB"))
+        print(f"thin film ->sRGB 1D .cube: mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
+        assert worst <= 0.8  # measured 0.52: the config's film table and clip LUT
+
+
+def test_channel_clamp_clf_is_the_exact_chain(tmp_path, object_XYZ):
+    (path,) = export_view.export_view("Linear Rec.709 (sRGB)", "Display P3", "Channel Clamp",
+                                      tmp_path / "c.clf")
+    text = path.read_text()
+    assert "<LUT3D" not in text and "<InputDescriptor>" in text
+    code = _ocio_apply([path], _colour_rgb(object_XYZ, "ITU-R BT.709"))
+    assert _dE(code, object_XYZ, "Display P3", "Channel Clamp").max() < 0.01
+
+
+def test_ctf_holds_the_exact_constant_lightness_chain(tmp_path, inside_AP1):
+    XYZ, cct = inside_AP1
+    (path,) = export_view.export_view("ACEScct", "sRGB", CLC, tmp_path / "v.ctf")
+    assert "FixedFunction" in path.read_text()
+    dE = _dE(_ocio_apply([path], cct), XYZ, "sRGB")
+    assert np.percentile(dE, 99) <= 0.6 and dE.max() <= 2.0  # the config's own clip LUTs
+
+
+# --------------------------------------------------------------------------- #
+# Errors
+# --------------------------------------------------------------------------- #
+BAD_VIEW = [
+    ["export", "view", "--display", "sRGB", "--view", CLC],
+    ["export", "view", "--from", "Nope", "--display", "sRGB", "--view", CLC],
+    ["export", "view", "--from", "ACEScct", "--view", CLC],
+    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", "Nope"],
+    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
+     "--format", "spi1d"],
+    ["export", "view", "--from", "Thin Film Morpho Iridescence", "--display", "sRGB",
+     "--view", CLC, "--format", "csp"],
+    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
+     "--size", "1000"],
+    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
+     "--range", "0", "2"],
+]
+
+
+@pytest.mark.parametrize("argv", BAD_VIEW, ids=lambda a: " ".join(a[2:]))
+def test_bad_view_arguments(argv, tmp_path, capsys):
+    out = tmp_path / "out" / ("x" if "--format" in argv else "x.cube")
+    assert cli.main(argv + ["--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "error" in err, err
+    assert list(tmp_path.rglob("*")) == []
+
+
+def test_cli_export_view_writes_file(tmp_path, capsys):
+    out = tmp_path / "v.csp"
+    assert cli.main(["export", "view", "--from", "ACEScg", "--display", "Rec.2020", "--view",
+                     CLC, "--size", "9", "--out", str(out), "--quiet"]) == 0
+    assert "wrote" in capsys.readouterr().out
+    assert out.read_text().startswith("CSPLUTV100")
