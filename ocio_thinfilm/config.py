@@ -160,9 +160,10 @@ def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):
         lut = tables.clip_lut(display, clip_size)
         cores = [named_lut(_clip_stem(display, white)) for white in (False, True)]
         cores = [luts[name] if inline else _file_transform(name) for name in cores]
-        # the second LUT ends in display code values: back to display-linear here, the
-        # display colour space encodes again (OCIO's optimiser removes the pair)
-        linear = lut.transforms(*cores) + [_invert(tables.display_encoding_transform(display))]
+        # the second LUT ends in sRGB code values: back to display-linear here, the
+        # display colour space encodes again (OCIO's optimiser removes the pair for
+        # the sRGB-encoded displays)
+        linear = lut.transforms(*cores) + [tables.working_decoding_transform()]
     else:
         linear = [tables.view_linear_transform(display, view)]
     return tables.group(linear + [tables.display_matrix_transform(display, inverse=True)])

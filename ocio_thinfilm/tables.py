@@ -431,17 +431,14 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 # rounding (16-bit files, half-float GPU textures) is never amplified.
 #: Default edge length of both clip LUTs.
 CLIP_SIZE = 65
-#: Chart of the black pass: ``XYZ_TO_xyY`` of (eps X, Y, eps Z), normalised by
-#: Y + eps (X + Z) (positive for every physical colour, and close to Y, so the chart
-#: is close to affine in the display's RGB / Y).
-CHART_EPS = 0.1
-#: Share of each chromaticity axis of the black pass spent inside the primaries'
-#: triangle (cells per unit of the canonical chart), the rest growing geometrically
-#: to the chart of every XYZ >= 0.
-BLACK_INSIDE = 40 / 64
-#: The black pass's Y nodes are (k / (size - 2)) ** Y_POWER, then Y_WHITE (white).
+#: The black pass's chart covers these colours (with a uniform grid): the spectral
+#: locus 360-780 nm and the ACES AP0 gamut with Y >= 0 (every input of the test
+#: sets; anything else is clamped to the grid's edge and still lands in gamut).
+CHART_COVERS = "spectral locus 360-780 nm and ACES AP0 (Y >= 0)"
+#: Largest ratio of u_b = Y / S across the primaries' triangle (the chart's bend).
+CHART_BEND = 5.0
+#: The black pass's Y nodes are (k / (size - 1)) ** Y_POWER: uniform in Y^(1/3) ~ L*.
 Y_POWER = 3.0
-Y_WHITE = 1.0 + 1e-4
 #: Share of each axis of the white pass spent on [0, 1] (grid nodes at encoded
 #: values 1 - (1 - k/n)^WHITE_POWER: denser towards white), the rest growing
 #: geometrically from WHITE_FIRST_STEP above 1 up to the brightest black-clipped
@@ -451,13 +448,12 @@ WHITE_POWER = 2.0
 WHITE_FIRST_STEP = 0.002
 #: Entries of the Lut1D shapers in front of each Lut3D.
 SHAPER_LENGTH = 32768
-#: The white pass works in the sRGB piecewise encoding (its linear toe keeps the grid
-#: and the shaper accurate near black). Displays with another encoding (Rec.2020:
-#: BT.1886, a pure power with infinite slope at black) get a final Lut1D from sRGB
-#: code values to theirs: affine above the toe, so exact there; OUTPUT_LENGTH
-#: entries keep the toe within 0.25 code values of 255.
+#: The white pass works in (and its LUT outputs) the sRGB piecewise encoding: its
+#: linear toe keeps the grid and the shaper accurate near black. Displays with
+#: another encoding (Rec.2020: BT.1886, a pure power with infinite slope at black)
+#: decode it with OCIO's analytic op and encode their own (for sRGB and Display P3
+#: the pair cancels in OCIO's optimiser).
 WORKING_ENCODING = "sRGB"
-OUTPUT_LENGTH = 65536
 #: Components are limited to [0, LIMIT] before the chart (see :func:`xyz_limit_transform`).
 LIMIT = 1e6
 #: The canonical triangle the primaries are sent to: its edges a = 0, b = 1 and
@@ -522,63 +518,68 @@ def _grow(first, length, cells):
     return steps * (length / steps.sum())
 
 
-def _black_axis(size, lo, hi, include=()):
-    """Nodes of a chromaticity axis of the black pass: uniform on [0, 1] (the
-    triangle), growing geometrically to [lo, hi] (the chart of all XYZ >= 0); the
-    interior node nearest each value of ``include`` is moved onto it."""
-    cells = size - 1
-    inside = max(2, int(round(cells * BLACK_INSIDE)))
-    rest = cells - inside
-    below, above = max(-lo, 0.0), max(hi - 1.0, 0.0)
-    # cells in proportion to how many geometric steps each side needs
-    weight_lo, weight_hi = np.log1p(below * inside), np.log1p(above * inside)
-    n_lo = int(round(rest * weight_lo / (weight_lo + weight_hi))) if below + above > 0 else 0
-    n_lo = min(max(n_lo, 1 if below > 0 else 0), rest - (1 if above > 0 else 0))
-    n_hi = rest - n_lo
-    h = 1.0 / inside
-    middle = np.linspace(0.0, 1.0, inside + 1)
-    for value in include:
-        k = int(np.clip(np.rint(value * inside), 1, inside - 1))
-        middle[k] = value
-    middle.sort()
-    return np.concatenate([-np.cumsum(_grow(h, below, n_lo))[::-1], middle,
-                           1.0 + np.cumsum(_grow(h, above, n_hi))])
-
-
-def _chart_points(XYZ):
-    """Chromaticity (eps X, Y) / (eps X + Y + eps Z) of the black pass (float64)."""
-    V = np.asarray(XYZ, dtype=np.float64) * np.array([CHART_EPS, 1.0, CHART_EPS])
-    return V[..., :2] / V.sum(axis=-1, keepdims=True)
+def _chart_cover():
+    """XYZ (any scale) whose chart the black pass's grid must contain: the spectral
+    locus and the corners of ACES AP0 cut at Y = 0 (AP0's blue primary has Y < 0)."""
+    locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
+    ap0 = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T  # rows: primaries
+    cut = [ap0[a] + ap0[a, 1] / (ap0[a, 1] - ap0[2, 1]) * (ap0[2] - ap0[a]) for a in (0, 1)]
+    points = np.concatenate([locus, ap0[:2], np.array(cut)])
+    return points / np.abs(points).sum(axis=1, keepdims=True)
 
 
 @lru_cache(maxsize=16)
 def _black_plan(display, size):
-    """The black pass's chart: affine map A, o of the chromaticity sending the
-    primaries to the canonical triangle (of the six assignments, the one whose image
-    of the whole chart -- the chromaticities of X, Y, Z -- is smallest), and the node
-    positions of the three axes (a, b, Y)."""
-    import itertools
+    """The black pass's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives the
+    Lut3D's coordinates (u_a, u_b) directly, uniform in a chromaticity chart where
+    the display's triangle is canonical -- edges c_i = 0 on u_a = const, c_j = 0 on
+    u_b = const, c_k = 0 on a diagonal u_a - u_b = const, all through nodes -- and
+    Y unchanged (third output).
 
-    primaries = _chart_points(colorimetry.RGB_to_XYZ(np.eye(3), display))
-    corners = _chart_points(np.eye(3))
+    With S = lam Y + mu c_j (the normaliser) and u_b = Y / S, u_b is affine in c_j / S;
+    u_a = s lam w_i c_i / S + beta. Of the channel assignments and node positions
+    that keep S > 0 and the chart of :func:`_chart_cover` inside [0, 1]^2, the one
+    with the most cells across the triangle is taken. Returns (P, cells across).
+    """
+    cells = size - 1
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    w = _luminance(display)
+    cover = _chart_cover()
     best = None
-    for perm in itertools.permutations(range(3)):
-        sol = np.linalg.solve(np.c_[primaries[list(perm)], np.ones(3)], _CANONICAL)
-        A, o = sol[:2].T, sol[2]
-        ab = corners @ A.T + o
-        extent = float((ab.max(axis=0) - ab.min(axis=0)).max())
-        if best is None or extent < best[0]:
-            best = (extent, A, o, ab.min(axis=0), ab.max(axis=0))
-    _, A, o, lo, hi = best
-    # the display white on a node of both axes (so it is a grid point: white exact);
-    # both axes hold the same interior nodes, keeping the edge a = b on split planes
-    white = _chart_points(colorimetry.white_XYZ(display)) @ A.T + o
-    a = _black_axis(size, lo[0], hi[0], include=white)
-    b = _black_axis(size, lo[1], hi[1], include=white)
-    # Y_POWER = 3: uniform in Y^(1/3) ~ L*; a last node just above 1 holds the white,
-    # so that everything brighter than the display white is white exactly
-    y = np.append(np.linspace(0.0, 1.0, size - 1) ** Y_POWER, Y_WHITE)
-    return A, o, a, b, y
+    for j in range(3):
+        for i in range(3):
+            if i == j:
+                continue
+            for n1 in range(cells, 1, -1):
+                for n0 in range(1, n1):
+                    # u_b = Y / S runs from n0 to n1 across the triangle: the chart
+                    # inside the gamut bends like 1 / u_b, so keep n1 / n0 moderate
+                    if n1 > CHART_BEND * n0:
+                        continue
+                    if best is not None and n1 - n0 <= best[0]:
+                        continue
+                    lam = cells / n1  # u_b = 1/lam = n1/cells where c_j = 0's opposite edge
+                    mu = w[j] * cells / n0 - lam * w[j]  # u_b = n0/cells on c_j = 0
+                    S_row = lam * np.array([0.0, 1.0, 0.0]) + mu * M[j]
+                    S = cover @ S_row
+                    if np.any(S <= 1e-9):
+                        continue
+                    u_b = cover[:, 1] / S
+                    if u_b.max() > 1.0 or u_b.min() < 0.0:
+                        continue
+                    s = np.sign((lam * w[j] + mu) * lam / mu) * (n1 - n0) / cells
+                    u_a = s * lam * w[i] * (cover @ M[i]) / S
+                    beta = np.ceil(-u_a.min() * cells - 1e-9) / cells
+                    if u_a.max() + beta > 1.0 + 1e-12:
+                        continue
+                    P = np.array([s * lam * w[i] * M[i] + beta * S_row,
+                                  [0.0, 1.0, 0.0],
+                                  S_row])
+                    P[2] -= P[0] + P[1]
+                    best = (n1 - n0, P)
+    if best is None:
+        raise ValueError(f"clip LUT size {size} is too small to chart {CHART_COVERS}")
+    return best[1], best[0]
 
 
 def _shaper_values(nodes, lo, hi, along=None):
@@ -615,50 +616,57 @@ def _white_nodes(size, display):
     return np.concatenate([below, above]), top
 
 
+def y_shaper_transform():
+    """The black pass's third axis: Y^(1/3) (uniform in lightness), chromaticity axes
+    unchanged -- an analytic op, exact in float on every GPU (a Lut1D shaper here
+    would be stored in half floats by some hosts, placing colours only to 1/30 of a
+    cell)."""
+    ocio = _ocio()
+    t = ocio.ExponentTransform([1.0, 1.0, Y_POWER, 1.0])
+    t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
+    t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return t
+
+
 @dataclass(frozen=True, eq=False)
 class ClipLUT:
     """The baked constant-lightness clip for one display (see :func:`clip_lut`).
 
     ``black``: (size, size, size, 3) display-linear RGB of L(X) / ``top``, over the
-    chart (a, b, Y) of :func:`_black_plan`, rounded to half floats. ``white``: the
-    same shape, display code values of U(c) over display RGB (:func:`_white_nodes`),
-    rounded to 16 bits. ``black_shaper`` / ``white_shaper``: (SHAPER_LENGTH, 3)
-    Lut1D entries (grid coordinates).
+    chart (u_a, u_b, Y^(1/3)) of :func:`_black_plan` (``chart``: its 3x3 matrix),
+    rounded to half floats. ``white``: the same shape, display code values of U(c)
+    over display RGB (:func:`_white_nodes`), rounded to 16 bits; ``white_shaper``:
+    (SHAPER_LENGTH, 3) Lut1D entries (grid coordinates) in front of it;
     """
 
     display: str
     size: int
     black: np.ndarray
     white: np.ndarray
-    black_shaper: np.ndarray
     white_shaper: np.ndarray
-    chart_matrix: np.ndarray  # 3x3 and offset: (x, y, Y) -> the black shaper's [0, 1] input
-    chart_offset: np.ndarray
+    chart: np.ndarray
     top: float
-    output_shaper: np.ndarray | None = None  # (OUTPUT_LENGTH, 3): working -> display code
 
     @property
     def name(self) -> str:
         return f"Constant-Lightness Clip {self.display}"
 
     def black_core(self):
-        """CLF-writable black pass: chart shaper (Lut1D) and Lut3D; chart in,
-        display-linear RGB / top out."""
+        """CLF-writable black pass: the Lut3D; chart in, display-linear RGB / top out."""
         name = f"{self.name} Black Faces"
-        return group([lut1d_transform(self.black_shaper, bitdepth="uint16"),
-                      lut3d_transform(self.black, bitdepth="half")],
+        return group([lut3d_transform(self.black, bitdepth="half")],
                      name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into "
                                   f"{self.display} (Section 3.2), the part against the "
                                   "gamut faces through black (R, G, B >= 0): a "
                                   f"{self.size}^3 tetrahedral Lut3D over a projective "
-                                  "chart of the chromaticity and Y (exactly linear "
-                                  "along Y; the primaries' triangle on grid planes). "
-                                  "See ocio_thinfilm.tables.ClipLUT."),
-                     input_descriptor=("chart of XYZ_TO_xyY(0.1 X, Y, 0.1 Z): canonical "
-                                       "chromaticity and Y, normalised for the shaper"),
+                                  "chart of the chromaticity (the primaries' triangle on "
+                                  "grid and split planes) and Y^(1/3), exactly linear "
+                                  "along Y. See ocio_thinfilm.tables.ClipLUT."),
+                     input_descriptor=("(u_a, u_b, Y^(1/3)): XYZ_TO_xyY of a matrix of "
+                                       "CIE-XYZ-D65, then the cube root of Y"),
                      output_descriptor=(f"{self.display} display-linear RGB of the "
-                                        f"black-faces clip, divided by {self.top:.6g}"))
+                                        f"black-faces clip, divided by {self.top:g}"))
 
     def white_core(self):
         """CLF-writable white pass: per-channel shaper and Lut3D; display-linear RGB /
@@ -666,84 +674,59 @@ class ClipLUT:
         name = f"{self.name} White Faces"
         ops = [lut1d_transform(self.white_shaper, bitdepth="uint16"),
                lut3d_transform(self.white, bitdepth="uint16")]
-        if self.output_shaper is not None:
-            ops.append(lut1d_transform(self.output_shaper, bitdepth="uint16"))
-        return group(ops,
-                     name=name, id=transform_id("Gamut_Map", name),
+        return group(ops, name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into "
                                   f"{self.display} (Section 3.2), the part against the "
                                   "gamut faces through white (R, G, B <= 1), followed "
-                                  f"by the display encoding: a {self.size}^3 tetrahedral "
+                                  f"by the sRGB encoding: a {self.size}^3 tetrahedral "
                                   "Lut3D over display RGB whose nodes below 1 sit at "
                                   "sRGB-encoded values, so in-gamut colours are "
-                                  "reproduced exactly (then, for displays with another "
-                                  "encoding, a Lut1D from sRGB to display code values). "
-                                  "See ocio_thinfilm.tables.ClipLUT."),
+                                  "reproduced exactly. See ocio_thinfilm.tables.ClipLUT."),
                      input_descriptor=f"{self.display} display-linear RGB divided by "
-                                      f"{self.top:.6g}, no negative channel",
-                     output_descriptor=f"{self.display} display code values, clipped")
+                                      f"{self.top:g}, no negative channel",
+                     output_descriptor=f"{self.display} display RGB, clipped, sRGB-encoded "
+                                       "(IEC 61966-2-1 piecewise curve)")
 
     def transforms(self, black=None, white=None):
-        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display code
-        values in [0, 1]; ``black`` / ``white`` replace the CLF-writable cores (e.g. by
-        FileTransforms in the config)."""
-        return [xyz_limit_transform(),
-                _matrix(np.diag([CHART_EPS, 1.0, CHART_EPS])),
-                xyY_forward_transform(),
-                _matrix(self.chart_matrix, self.chart_offset),
+        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
+        [0, 1], sRGB-encoded (:data:`WORKING_ENCODING`); ``black`` / ``white`` replace
+        the CLF-writable cores (e.g. by FileTransforms in the config)."""
+        return [xyz_limit_transform(), _matrix(self.chart), xyY_forward_transform(),
+                y_shaper_transform(),
                 self.black_core() if black is None else black,
                 self.white_core() if white is None else white]
 
 
 @lru_cache(maxsize=16)
 def _clip_lut(display, size):
-    A, o, a, b, y = _black_plan(display, size)
+    P, _ = _black_plan(display, size)
     top_nodes, top = _white_nodes(size, display)
+    M = colorimetry.matrix_XYZ_to_RGB(display)
     # black pass: the chart's nodes -> XYZ -> L(X) in display RGB, / top, half floats
-    U = np.stack(np.meshgrid(a, b, y, indexing="ij"), axis=-1).reshape(-1, 3)
-    psi = (U[:, :2] - o) @ np.linalg.inv(A).T
-    # nodes below the chart of physical colours (y <= 0) take the limit y -> 0+
-    psi[:, 1] = np.maximum(psi[:, 1], 1e-9)
-    S = U[:, 2] / psi[:, 1]
-    V = S[:, None] * np.c_[psi, 1.0 - psi.sum(axis=1)]
-    XYZ = V / np.array([CHART_EPS, 1.0, CHART_EPS])
-    rgb = clip.clip_RGB(XYZ @ colorimetry.matrix_XYZ_to_RGB(display).T, display)  # finite
-    black = clip_black_faces_RGB(np.where(np.isfinite(XYZ), XYZ, 0.0)
-                                 @ colorimetry.matrix_XYZ_to_RGB(display).T, display)
-    black = np.where(np.isfinite(black), black, rgb)
-    black[U[:, 2] >= Y_WHITE] = 1.0  # brighter than the display white: white
+    g = np.linspace(0.0, 1.0, size)
+    U = np.stack(np.meshgrid(g, g, g ** Y_POWER, indexing="ij"), axis=-1).reshape(-1, 3)
+    u_b = np.maximum(U[:, 1], 1e-9)  # u_b = Y / S -> 0: the limit of ever larger chroma
+    S = U[:, 2] / u_b
+    p = np.c_[U[:, 0] * S, U[:, 2], S - U[:, 0] * S - U[:, 2]]
+    XYZ = p @ np.linalg.inv(P).T
+    with np.errstate(all="ignore"):
+        black = clip_black_faces_RGB(XYZ @ M.T, display)
+    black = np.where(np.isfinite(black), black, 0.0)
     black = (np.clip(black, 0.0, top) / top).astype(np.float16).astype(np.float64)
-    # white pass: RGB nodes -> U(c), clipped, encoded, 16-bit
+    # white pass: RGB nodes -> U(c), clipped, sRGB-encoded, 16-bit
     Uw = np.stack(np.meshgrid(top_nodes, top_nodes, top_nodes, indexing="ij"),
                   axis=-1).reshape(-1, 3)
     white = np.clip(clip_white_faces_RGB(Uw, display), 0.0, 1.0)
     white = np.round(_encode(white, WORKING_ENCODING).clip(0.0, 1.0) * 65535.0) / 65535.0
-    # shapers
-    span_a, span_b = a[-1] - a[0], b[-1] - b[0]
-    Mc = np.array([[A[0, 0] / span_a, A[0, 1] / span_a, 0.0],
-                   [A[1, 0] / span_b, A[1, 1] / span_b, 0.0],
-                   [0.0, 0.0, 1.0 / Y_WHITE]])
-    oc = np.array([(o[0] - a[0]) / span_a, (o[1] - b[0]) / span_b, 0.0])
-    black_shaper = np.stack([_shaper_values(a, a[0], a[-1]), _shaper_values(b, b[0], b[-1]),
-                             _shaper_values(y, 0.0, Y_WHITE)], axis=1)
     w = _shaper_values(top_nodes, 0.0, top, along=lambda v: _encode(v, WORKING_ENCODING))
-    white_shaper = np.repeat(w[:, None], 3, axis=1)
     q16 = lambda v: np.round(np.clip(v, 0.0, 1.0) * 65535.0) / 65535.0  # noqa: E731
-    output_shaper = None
-    if DISPLAY_ENCODINGS[display] != DISPLAY_ENCODINGS[WORKING_ENCODING]:
-        code = np.linspace(0.0, 1.0, OUTPUT_LENGTH)
-        linear = apply(_inverse([display_encoding_transform(WORKING_ENCODING)]),
-                       np.repeat(code[:, None], 3, axis=1))
-        output_shaper = q16(apply(display_encoding_transform(display), linear))
     lut = ClipLUT(display=display, size=size,
                   black=black.reshape(size, size, size, 3),
                   white=white.reshape(size, size, size, 3),
-                  black_shaper=q16(black_shaper), white_shaper=q16(white_shaper),
-                  chart_matrix=Mc, chart_offset=oc, top=float(top),
-                  output_shaper=output_shaper)
-    for array in (lut.black, lut.white, lut.black_shaper, lut.white_shaper, output_shaper):
-        if array is not None:
-            array.setflags(write=False)
+                  white_shaper=q16(np.repeat(w[:, None], 3, axis=1)),
+                  chart=P, top=float(top))
+    for array in (lut.black, lut.white, lut.white_shaper, lut.chart):
+        array.setflags(write=False)
     BUILT.append(f"clip3d:{display}:{size}")
     return lut
 
@@ -771,6 +754,11 @@ def display_matrix_transform(display: str, inverse: bool = False):
     return _matrix(np.linalg.inv(M) if inverse else M)
 
 
+def working_decoding_transform():
+    """sRGB code values (the white pass's output) -> display-linear RGB."""
+    return _inverse([display_encoding_transform(WORKING_ENCODING)])
+
+
 def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
     """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
     clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
@@ -778,8 +766,7 @@ def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
     lut = clip_lut(display, size)
     # the clamp only removes float32 round-off of the EOTF (1.0 -> 1.00002 through
     # OCIO's fast pow): the code values are in [0, 1] already
-    return group(lut.transforms() + [_inverse([display_encoding_transform(display)]),
-                                     _range(0.0, 1.0)],
+    return group(lut.transforms() + [working_decoding_transform(), _range(0.0, 1.0)],
                  name=lut.name, id=transform_id("Gamut_Map", lut.name))
 
 
@@ -827,7 +814,8 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
     """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
 
     ``Raw`` passes values through unchanged (an empty group). The constant-lightness
-    clip ends in display code values itself (its second LUT holds them).
+    clip's second LUT ends in sRGB code values: decoded, then the display's encoding
+    (OCIO's optimiser removes the pair for the sRGB-encoded displays).
     """
     _check_display(display)
     if view not in VIEWS:
@@ -836,7 +824,9 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
         return group([])
     if view == "Constant-Lightness Clip":
         lut = clip_lut(display, size)
-        return group(lut.transforms(), name=lut.name, id=transform_id("Gamut_Map", lut.name))
+        return group(lut.transforms() + [working_decoding_transform(),
+                                         display_encoding_transform(display)],
+                     name=lut.name, id=transform_id("Gamut_Map", lut.name))
     return group([view_linear_transform(display, view, size),
                   display_encoding_transform(display)])
 

@@ -44,11 +44,6 @@ DTYPES = ("f4", "f2")
 F32_MAX = float(np.finfo(np.float32).max)
 PRECISE = ocio.OptimizationFlags(int(ocio.OPTIMIZATION_DEFAULT) & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW))
 
-# The factored Constant-Lightness Clip multiplies the second LUT's output by gains of
-# ~110 (config MatrixTransform after the white-faces LUT), so half-float rounding of
-# that LUT (2^-11 relative) is amplified to ~15/255.  Known, being redesigned
-# (tables.py/config.py); not hidden by a looser tolerance: the check stays at 2/255.
-KNOWN_HALF_FLOAT_FAILURES = {"Constant-Lightness Clip"}
 
 
 @pytest.fixture(scope="module")
@@ -384,10 +379,6 @@ def test_gpu_finite(results, display, view, dtype):
 @pytest.mark.parametrize("display,view", VIEWS)
 def test_gpu_matches_cpu(results, display, view, dtype, request):
     """max |GPU - CPU| <= 2/255 on display code values for moderate inputs."""
-    if dtype == "f2" and view in KNOWN_HALF_FLOAT_FAILURES:
-        request.applymarker(pytest.mark.xfail(
-            reason="known: the Constant-Lightness Clip amplifies half-float LUT rounding "
-                   "(gains ~110 after the LUT); clip LUT redesign pending", strict=False))
     worst = {}
     for src in SOURCES:
         d_default, d = _diffs(results.get(display, view, src), dtype)
