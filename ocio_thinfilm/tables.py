@@ -432,12 +432,13 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 #: Default edge length of both clip LUTs.
 CLIP_SIZE = 65
 #: The black pass's chart covers these colours (with a uniform grid): the spectral
-#: locus 360-780 nm and the ACES AP0 gamut with Y >= 0 (every input of the test
-#: sets; anything else is clamped to the grid's edge and still lands in gamut).
-CHART_COVERS = "spectral locus 360-780 nm and ACES AP0 (Y >= 0)"
+#: locus 360-780 nm, the ACES AP0 gamut with Y >= 0 and the Z axis (anything else is
+#: clamped to the grid's edge and still lands in gamut with its Y).
+CHART_COVERS = "spectral locus 360-780 nm, ACES AP0 (Y >= 0) and pure Z"
 #: Largest ratio of u_b = Y / S across the primaries' triangle (the chart's bend).
 CHART_BEND = 5.0
-#: The black pass's Y nodes are (k / (size - 1)) ** Y_POWER: uniform in Y^(1/3) ~ L*.
+#: The black pass's Y nodes are Y_top (k / (size - 1)) ** Y_POWER: uniform in
+#: Y^(1/3) ~ L*, with node size - 2 at Y = 1 (see :func:`_y_top`).
 Y_POWER = 3.0
 #: Share of each axis of the white pass spent on [0, 1] (grid nodes at encoded
 #: values 1 - (1 - k/n)^WHITE_POWER: denser towards white), the rest growing
@@ -454,6 +455,8 @@ SHAPER_LENGTH = 32768
 #: decode it with OCIO's analytic op and encode their own (for sRGB and Display P3
 #: the pair cancels in OCIO's optimiser).
 WORKING_ENCODING = "sRGB"
+#: 16-bit LUT files: values are stored as codes of this maximum.
+LUT_CODE_MAX = 65535
 #: Components are limited to [0, LIMIT] before the chart (see :func:`xyz_limit_transform`).
 LIMIT = 1e6
 #: The canonical triangle the primaries are sent to: its edges a = 0, b = 1 and
@@ -520,11 +523,14 @@ def _grow(first, length, cells):
 
 def _chart_cover():
     """XYZ (any scale) whose chart the black pass's grid must contain: the spectral
-    locus and the corners of ACES AP0 cut at Y = 0 (AP0's blue primary has Y < 0)."""
+    locus, the corners of ACES AP0 cut at Y = 0 (AP0's blue primary has Y < 0) and
+    the Z axis. (The X axis cannot be added in this chart family: imaginary colours
+    redder than AP0 are clamped to the chart's edge -- in gamut, Y kept, hue
+    approximate.)"""
     locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
     ap0 = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T  # rows: primaries
     cut = [ap0[a] + ap0[a, 1] / (ap0[a, 1] - ap0[2, 1]) * (ap0[2] - ap0[a]) for a in (0, 1)]
-    points = np.concatenate([locus, ap0[:2], np.array(cut)])
+    points = np.concatenate([locus, ap0[:2], np.array(cut), [[0.0, 0.0, 1.0]]])
     return points / np.abs(points).sum(axis=1, keepdims=True)
 
 
@@ -628,6 +634,13 @@ def y_shaper_transform():
     return t
 
 
+def _y_top(size):
+    """Y of the black pass's last layer: the layer below it is Y = 1 exactly, the last
+    holds white, so every colour brighter than the display white by 5 % or more is
+    white exactly (Section 3.2: Y >= Y_W gives white)."""
+    return ((size - 1) / (size - 2)) ** Y_POWER
+
+
 @dataclass(frozen=True, eq=False)
 class ClipLUT:
     """The baked constant-lightness clip for one display (see :func:`clip_lut`).
@@ -691,7 +704,8 @@ class ClipLUT:
         """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
         [0, 1], sRGB-encoded (:data:`WORKING_ENCODING`); ``black`` / ``white`` replace
         the CLF-writable cores (e.g. by FileTransforms in the config)."""
-        return [xyz_limit_transform(), _matrix(self.chart), xyY_forward_transform(),
+        return [xyz_limit_transform(), _matrix(self.chart / _y_top(self.size)),
+                xyY_forward_transform(),
                 y_shaper_transform(),
                 self.black_core() if black is None else black,
                 self.white_core() if white is None else white]
@@ -704,7 +718,8 @@ def _clip_lut(display, size):
     M = colorimetry.matrix_XYZ_to_RGB(display)
     # black pass: the chart's nodes -> XYZ -> L(X) in display RGB, / top, half floats
     g = np.linspace(0.0, 1.0, size)
-    U = np.stack(np.meshgrid(g, g, g ** Y_POWER, indexing="ij"), axis=-1).reshape(-1, 3)
+    U = np.stack(np.meshgrid(g, g, _y_top(size) * g ** Y_POWER, indexing="ij"),
+                 axis=-1).reshape(-1, 3)
     u_b = np.maximum(U[:, 1], 1e-9)  # u_b = Y / S -> 0: the limit of ever larger chroma
     S = U[:, 2] / u_b
     p = np.c_[U[:, 0] * S, U[:, 2], S - U[:, 0] * S - U[:, 2]]
@@ -712,14 +727,15 @@ def _clip_lut(display, size):
     with np.errstate(all="ignore"):
         black = clip_black_faces_RGB(XYZ @ M.T, display)
     black = np.where(np.isfinite(black), black, 0.0)
+    black[np.arange(len(U)) % size == size - 1] = 1.0  # the layer above white: white
     black = (np.clip(black, 0.0, top) / top).astype(np.float16).astype(np.float64)
     # white pass: RGB nodes -> U(c), clipped, sRGB-encoded, 16-bit
     Uw = np.stack(np.meshgrid(top_nodes, top_nodes, top_nodes, indexing="ij"),
                   axis=-1).reshape(-1, 3)
     white = np.clip(clip_white_faces_RGB(Uw, display), 0.0, 1.0)
-    white = np.round(_encode(white, WORKING_ENCODING).clip(0.0, 1.0) * 65535.0) / 65535.0
+    white = np.round(_encode(white, WORKING_ENCODING).clip(0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
     w = _shaper_values(top_nodes, 0.0, top, along=lambda v: _encode(v, WORKING_ENCODING))
-    q16 = lambda v: np.round(np.clip(v, 0.0, 1.0) * 65535.0) / 65535.0  # noqa: E731
+    q16 = lambda v: np.round(np.clip(v, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX  # noqa: E731
     lut = ClipLUT(display=display, size=size,
                   black=black.reshape(size, size, size, 3),
                   white=white.reshape(size, size, size, 3),

@@ -124,23 +124,19 @@ def test_xyz_chart_through_constant_lightness_clip(colour_chart, tmp_path, displ
     linear = decode(got, display)
     # Promise 1: in gamut (code values and display-linear RGB in [0, 1]).
     assert clip.in_gamut(got, 1e-4).all()
-    # Promise 2: Y preserved (the LUTs' Y axes are exact; measured |dY| <= 3.1e-5,
-    # from the final [3e-5, 1 - 3e-5] -> [0, 1] stretch).
+    # Promise 2: Y preserved (issue 8: |dY| <= 1e-3; both passes keep Y at their
+    # nodes; measured <= 7.6e-4 from half-float storage and interpolation).
     Y_out = colorimetry.RGB_to_XYZ(linear, display)[:, 1]
     Y_in = np.minimum(xyz[:, 1], 1.0)
-    assert np.abs(Y_out - Y_in).max() <= 2e-4
-    spectral = slice(0, n_spectral)
-    assert np.abs(Y_out[spectral] / Y_in[spectral] - 1).max() <= 1.5e-2
-    # Agreement with the analytic clip (objects: issue 3's budget for the default LUTs).
+    assert np.abs(Y_out - Y_in).max() <= 1e-3
+    # Agreement with the analytic clip (issue 8: p99 <= 0.5, max <= 1.5 per set).
     want = colorimetry.XYZ_to_RGB(clip.clip_XYZ(xyz, display), display)
     de = colorimetry.delta_E2000(colorimetry.RGB_to_XYZ(linear, display),
                                  colorimetry.RGB_to_XYZ(want, display))
-    objects = de[n_spectral:]
-    assert np.percentile(objects, 99) <= 0.5 and objects.max() <= 2.0
-    # Spectral colours: in gamut with Y kept, but their chromaticity is coarse (far
-    # outside the second pass's domain, which is fitted to object colours): measured
-    # p99 9.2 (sRGB), 17.7 (Display P3), 27 (Rec.2020).
-    assert np.percentile(de[spectral], 99) <= 30.0
+    spectral = slice(0, n_spectral)
+    for part in (de[n_spectral:], de[spectral]):
+        assert np.percentile(part, 99) <= 0.5 and part.max() <= 1.6, (
+            np.percentile(part, 99), part.max())
 
 
 def test_colorconvert_and_thin_film_space(thickness_ramp, tmp_path):

@@ -136,11 +136,11 @@ def test_per_display_rgb_variant_is_clipped():
 # --------------------------------------------------------------------------- #
 # 3D clip LUT
 # --------------------------------------------------------------------------- #
-#: Issue 3's target at the default size (38^3, "factored" domain): p99 <= 0.5, max <= 2.0
-#: dE2000 vs the analytic clip on tables.object_colours(). Measured: sRGB p99 0.42 / max 1.61, Display P3 0.25 / 1.53,
-#: Rec.2020 0.10 / 0.64.
+#: Issue 8's targets for object colours (the view, every display): p99 <= 0.5, max <= 1.5
+#: dE2000 vs the analytic clip. Measured (65^3): sRGB p99 0.16 / max 1.03, Display P3
+#: 0.13 / 1.05, Rec.2020 0.13 / 0.21 (tests/test_gamut_map.py covers the other sets).
 OBJECT_P99 = 0.5
-OBJECT_MAX = 2.0
+OBJECT_MAX = 1.5
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
@@ -150,28 +150,28 @@ def test_clip_lut_against_analytic_clip_on_object_colours(display, objects):
     de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(out.astype(np.float64), display))
     assert np.percentile(de, 99) <= OBJECT_P99
     assert de.max() <= OBJECT_MAX
-    assert de.mean() <= 0.15
+    assert de.mean() <= 0.05
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_clip_lut_reproduces_interior_colours(display):
+    # In gamut the white-faces pass is the identity exactly (its nodes sit at encoded
+    # values); what remains is the black-faces pass interpolating Y g(chart) over a
+    # projective chart and its half-float storage. Measured: |d| <= 2.4e-3 here.
     rgb = np.random.default_rng(3).uniform(0.2, 0.8, (5000, 3))
     out = tables.apply(tables.clip_transform(display), colorimetry.RGB_to_XYZ(rgb, display))
-    np.testing.assert_allclose(out, rgb, atol=2e-3)
+    np.testing.assert_allclose(out, rgb, atol=3e-3)
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_clip_lut_keeps_Y_of_spectral_colours_and_lands_in_gamut(display):
-    # Measured: |dY| <= 3.1e-5 (all displays; the LUTs' Y axes are exact up to the final
-    # [3e-5, 1 - 3e-5] -> [0, 1] stretch, and both passes' outputs lie in the gamut, so the final clamp does not
-    # move Y). Their chromaticity error is large (dE2000 p99 9-27), as the LUT domains
-    # are fitted to object colours.
+    # Issue 8's target |dY| <= 1e-3; measured <= 7.6e-4 (both passes keep Y exactly at
+    # their nodes: the first is linear along Y, the second moves along constant Y).
     locus = tables.spectral_colours(0.6)
     out = tables.apply(tables.clip_transform(display), locus).astype(np.float64)
     assert clip.in_gamut(out).all()
     Y = colorimetry.RGB_to_XYZ(out, display)[:, 1]
-    assert np.abs(Y - locus[:, 1]).max() <= 2e-4
-    assert np.abs(Y / locus[:, 1] - 1).max() <= 1.2e-2
+    assert np.abs(Y - locus[:, 1]).max() <= 1e-3
 
 
 def test_clip_lut_edge_inputs_never_nan():
@@ -179,23 +179,35 @@ def test_clip_lut_edge_inputs_never_nan():
     edge = np.array([[0, 0, 0], [-1, -1, -1], [-1, 0.5, 0.5], [0.5, 0.5, -3], 2 * W,
                      [0.95, 1.5, 1.09], [1e30, 1e30, 1e30], [1e30, 0.5, 0.5],
                      [-1e30, 0.5, 0.5], [np.inf, np.inf, np.inf], [-np.inf, 0.5, 0.5],
-                     [np.nan, 0.5, 0.5], [np.nan] * 3, [0.1, 1e-12, 0.1]], dtype=np.float32)
+                     [np.nan, 0.5, 0.5], [np.nan] * 3, [0.1, 1e-12, 0.1],
+                     [0.5, 1.5, 0.5]], dtype=np.float32)
     for display in DISPLAYS:
         out = tables.apply(tables.clip_transform(display), edge)
         assert np.all(np.isfinite(out)), display
         assert clip.in_gamut(out).all()
         np.testing.assert_allclose(out[0], 0.0, atol=1e-6)
-        np.testing.assert_allclose(out[4], 1.0, atol=1e-5)  # above white -> white
-        np.testing.assert_allclose(out[5], 1.0, atol=1e-5)
+        # brighter than the display white (by the LUT's last layer, 5 %) -> white
+        np.testing.assert_allclose(out[[4, 5, 14]], 1.0, atol=1e-5)
 
 
-def test_clip_lut_domains_and_sizes_are_options():
-    for domain in tables.CLIP_DOMAINS:
-        lut = tables.clip_lut("sRGB", 17, domain=domain)
-        assert lut.values.shape == (17, 17, 17, 3)
-        out = tables.apply(tables.clip_transform("sRGB", 17, domain=domain),
-                           colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"))
-        np.testing.assert_allclose(out, [[0.5, 0.4, 0.3]], atol=2e-3)
+def test_clip_lut_size_is_an_option():
+    lut = tables.clip_lut("sRGB", 33)
+    assert lut.black.shape == lut.white.shape == (33, 33, 33, 3)
+    out = tables.apply(tables.clip_transform("sRGB", 33),
+                       colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"))
+    np.testing.assert_allclose(out, [[0.5, 0.4, 0.3]], atol=3e-3)
+
+
+def test_black_and_white_passes_compose_to_the_clip():
+    """U o L is the Section 3.2 clip (the factorisation the LUTs rely on), checked
+    against the paper's XYZ form on random colours far outside every gamut."""
+    rng = np.random.default_rng(5)
+    rgb = rng.normal(0.4, 1.5, (20000, 3))
+    for display in DISPLAYS:
+        both = tables.clip_white_faces_RGB(tables.clip_black_faces_RGB(rgb, display), display)
+        M = colorimetry.matrix_XYZ_to_RGB(display)
+        paper = colorimetry.XYZ_to_RGB(clip.clip_XYZ(rgb @ np.linalg.inv(M).T, display), display)
+        np.testing.assert_allclose(both, paper, atol=1e-9)
 
 
 # --------------------------------------------------------------------------- #
@@ -228,8 +240,10 @@ def test_views_match_the_analytic_paths(display, objects):
 
 
 def test_scene_linear_one_is_display_white():
+    # within a quarter of an 8-bit code (the clip's white is interpolated: the display
+    # white is not a node of the black pass's chart; measured 0.15 codes)
     for display in DISPLAYS:
         W = colorimetry.white_XYZ(display)
         for view in tables.VIEWS[:3]:
             out = tables.apply(tables.view_transform(display, view), W[None])
-            np.testing.assert_allclose(out, 1.0, atol=1e-4)
+            np.testing.assert_allclose(out, 1.0, atol=0.25 / 255)
