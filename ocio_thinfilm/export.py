@@ -290,10 +290,10 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
 
 
 def export_set(directory, *, show_progress=False) -> list[Path]:
-    """The standalone set shipped in ``luts/``: every table and every default display
-    in every format that can hold it with its domain, plus the common display LUTs
+    """The standalone set shipped in ``luts/``: every table in every format that can
+    hold it with its domain, plus the common display LUTs
     (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
-    a 65^3 .cube and as CLF), into ``directory``, which must exist."""
+    a 65^3 .cube), into ``directory``, which must exist."""
     from . import export_view
 
     jobs = []
@@ -303,9 +303,9 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
                 jobs.append(("film", dict(kind=kind), fmt))
         if 1 in FORMATS[fmt][2]:
             jobs.append(("morpho", {}, fmt))
-        if 3 in FORMATS[fmt][2] and fmt not in NO_DOMAIN:
-            for display in clip.DISPLAYS:
-                jobs.append(("clip", dict(display=display, size=EXPORT_SET_CLIP_SIZE), fmt))
+        # (the clip over display-linear RGB, `export clip`, is not shipped: a grid over
+        # linear RGB cannot resolve dark saturated colours; the display LUTs below are
+        # what to take)
     views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
              for display in clip.DISPLAYS for fmt in fmts]
     written = []
@@ -333,11 +333,8 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
 
 
 #: Display LUTs in the shipped set: (input space, view, formats), for every display.
-EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube", "clf")),)
+EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
 
-
-#: Edge length of the clip LUTs in the shipped ``luts/`` set (keeps files small).
-EXPORT_SET_CLIP_SIZE = 17
 
 
 def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=False) -> Path:

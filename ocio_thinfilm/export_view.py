@@ -305,7 +305,7 @@ def _baked_3d_transforms(cfg, source, shaper, display, view, size):
         # Display code values: 16-bit integers (half the text of floats; the step,
         # 1.5e-5, is far below the interpolation error).
         values = np.round(np.clip(values, 0.0, 1.0) * tables.LUT_CODE_MAX) / tables.LUT_CODE_MAX
-        ops.append(tables.lut3d_transform(values, uint16=True))
+        ops.append(tables.lut3d_transform(values, bitdepth="uint16"))
         ops.append(tables._matrix())  # the CLF writer keeps 16i only before another op
     else:
         ops.append(tables.lut3d_transform(values))

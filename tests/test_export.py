@@ -89,17 +89,15 @@ def test_export_set_covers_every_table_display_and_format(exported_set):
         for stem in ("ThinFilm_PhaseChange", "ThinFilm_NoPhaseChange", "ThinFilm_Morpho"):
             assert f"{stem}.{fmt}" in names
     for display in ("sRGB", "DisplayP3", "Rec2020"):
-        for fmt in ("clf", "cube", "csp"):
-            assert f"ConstantLightnessClip_{display}.{fmt}" in names
-        assert f"ConstantLightnessClip_{display}.spi3d" not in names  # no domain
-        for fmt in ("cube", "clf"):  # the common display LUTs
-            assert f"ACEScct_to_{display}_ConstantLightnessClip.{fmt}" in names
+        # the clip over display-linear RGB is not shipped (export clip still writes it)
+        assert not any(n.startswith(f"ConstantLightnessClip_{display}") for n in names)
+        assert f"ACEScct_to_{display}_ConstantLightnessClip.cube" in names  # display LUTs
     tables_size = sum((exported_set / n).stat().st_size for n in names
                       if not n.startswith("ACEScct_to_"))
-    assert tables_size < 5_000_000  # tables and standalone clips stay small
+    assert tables_size < 2_000_000  # the tables stay small
     views_size = sum((exported_set / n).stat().st_size for n in names
                      if n.startswith("ACEScct_to_"))
-    assert views_size < 40_000_000  # 65^3 .cube (7.5 MB) + 16-bit CLF (5 MB) per display
+    assert views_size < 25_000_000  # a 65^3 .cube is 7.5 MB per display
 
 
 # --------------------------------------------------------------------------- #
@@ -175,12 +173,24 @@ def test_morpho_files_take_cos_theta(exported_set, name, consumer):
     assert dE.max() < 0.2, dE.max()
 
 
+@pytest.fixture(scope="module")
+def clip_files(tmp_path_factory):
+    """`export clip` files (17^3, default range), written the way a user would."""
+    d = tmp_path_factory.mktemp("clip")
+    for name in ("ConstantLightnessClip_sRGB.cube", "ConstantLightnessClip_DisplayP3.csp",
+                 "ConstantLightnessClip_Rec2020.cube", "ConstantLightnessClip_sRGB.clf"):
+        display = {"sRGB": "sRGB", "DisplayP3": "Display P3",
+                   "Rec2020": "Rec.2020"}[name.split("_")[1].split(".")[0]]
+        export.export_lut("clip", d / name, display=display, size=17)
+    return d
+
+
 @pytest.mark.parametrize("consumer", APPLIERS)
 @pytest.mark.parametrize("name", ["ConstantLightnessClip_sRGB.cube",
                                   "ConstantLightnessClip_DisplayP3.csp",
                                   "ConstantLightnessClip_Rec2020.cube",
                                   "ConstantLightnessClip_sRGB.clf"])
-def test_clip_files_take_display_linear_rgb(exported_set, name, consumer):
+def test_clip_files_take_display_linear_rgb(clip_files, name, consumer):
     """Display-linear RGB itself, -0.5..1.5: in-gamut colours come back unchanged
     (0 and 1 are grid nodes and the clip is the identity there: tolerance 2e-6 for
     6-decimal text), clipped colours land in gamut, and grey 0.18 stays 0.18 (the
@@ -196,7 +206,7 @@ def test_clip_files_take_display_linear_rgb(exported_set, name, consumer):
     rgb = np.random.default_rng(1).uniform(-0.5, 1.5, (4000, 3))
     if consumer == "colour" and name.endswith(".clf"):
         pytest.skip("colour-science 0.4.7 reads no CLF")
-    out = APPLIERS[consumer](exported_set / name, rgb)
+    out = APPLIERS[consumer](clip_files / name, rgb)
     inside = clip.in_gamut(rgb)
     assert inside.sum() > 300
     np.testing.assert_allclose(out[inside], rgb[inside], atol=2e-6 + 1e-6)
@@ -205,7 +215,7 @@ def test_clip_files_take_display_linear_rgb(exported_set, name, consumer):
     Y_ref = colorimetry.RGB_to_XYZ(ref, display)[:, 1]
     assert np.abs(Y - Y_ref).max() < 0.03
     assert clip.in_gamut(out, 1e-5).all()
-    grey = APPLIERS[consumer](exported_set / name, np.full((1, 3), 0.18))
+    grey = APPLIERS[consumer](clip_files / name, np.full((1, 3), 0.18))
     np.testing.assert_allclose(grey, 0.18, atol=1e-5)
 
 
