@@ -149,9 +149,12 @@ def _clip_stem(display, white=False):
 
 
 def _matrix_to_reference(space):
-    """Linear RGB of ``space`` -> CIE-XYZ-D65."""
+    """Linear RGB of ``space`` -> CIE-XYZ-D65, after limiting the components to
+    +-tables.LIMIT: float32-max or infinite values (e.g. ACEScct codes above ~7.9)
+    would overflow the matrix to Inf - Inf = NaN, which no later op can repair at
+    OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6."""
     M = colorimetry.matrix_XYZ_to_RGB(space)
-    return tables._matrix(np.linalg.inv(M))
+    return tables.group([tables.finite_limit_transform(), tables._matrix(np.linalg.inv(M))])
 
 
 def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):

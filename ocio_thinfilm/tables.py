@@ -83,6 +83,7 @@ __all__ = [
     "apply",
     "group",
     "xyz_limit_transform",
+    "finite_limit_transform",
     "xyY_forward_transform",
     "clip_black_faces_RGB",
     "clip_white_faces_RGB",
@@ -475,6 +476,12 @@ def xyz_limit_transform():
     return _range(0.0, LIMIT)
 
 
+def finite_limit_transform():
+    """Clamp every component to [-LIMIT, LIMIT]: +-Inf become finite (and NaN, which
+    OCIO's CPU Range sends to the lower bound)."""
+    return _range(-LIMIT, LIMIT)
+
+
 def xyY_forward_transform():
     ocio = _ocio()
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
@@ -818,11 +825,16 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     _check_display(display)
     if view == "Constant-Lightness Clip":
         return clip_transform(display, size)
+    # the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range
+    # takes to the lower bound) stay finite through the matrices at every
+    # optimisation level (OPTIMIZATION_NONE does not compose them, so F32_MAX inputs
+    # overflowed to Inf - Inf = NaN)
     if view == "Channel Clamp":
-        return group([display_matrix_transform(display), _range(0.0, 1.0)])
-    if view == "ACES Gamut Compression":
-        return group([display_matrix_transform(display), aces_gamut_compression_transform(),
+        return group([finite_limit_transform(), display_matrix_transform(display),
                       _range(0.0, 1.0)])
+    if view == "ACES Gamut Compression":
+        return group([finite_limit_transform(), display_matrix_transform(display),
+                      aces_gamut_compression_transform(), _range(0.0, 1.0)])
     raise ValueError(f"view must be one of {VIEWS[:3]}, got {view!r}")
 
 

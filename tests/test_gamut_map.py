@@ -1,0 +1,177 @@
+"""Issue 8: the constant-lightness clip as a host applies it -- the baked config's
+``Constant-Lightness Clip`` views through OCIO's CPU processor, on every display --
+against the analytic clip (``clip.clip_XYZ``, the paper's Section 3.2 form).
+
+Sets: (a) object and interference colours (``tables.object_colours``: random smooth
+reflectances, ColorCheckers, Munsell, thin films, Morpho), (b) monochromatic stimuli
+380-700 nm at Y in {0.02, 0.1, 0.3, 0.6}, (c) random XYZ inside ACES AP0 with
+0 <= Y <= 1, (d) extremes. The issue's targets for (a)-(c): dE2000 p99 <= 0.5 and
+max <= 1.5, |dY| <= 1e-3, output in gamut, in-gamut colours unchanged (dE2000 <= 0.1).
+Where a target is not reached the test asserts what is reached and a strict xfail
+states the target, so it shows in every run (and turns into a failure once met).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm import clip, colorimetry, tables
+
+ocio = pytest.importorskip("PyOpenColorIO")
+
+CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
+DISPLAYS = clip.DISPLAYS
+VIEW = "Constant-Lightness Clip"
+
+
+@pytest.fixture(scope="module")
+def cfg():
+    return ocio.Config.CreateFromFile(str(CONFIG))
+
+
+def _decode(code, display):
+    """Display code values -> display-linear RGB (colour-science's EOTFs)."""
+    import colour
+
+    code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
+    if display == "Rec.2020":
+        return colour.models.eotf_BT1886(code)
+    return colour.cctf_decoding(code, function="sRGB")
+
+
+def _apply_view(cfg, display, XYZ, optimization=None):
+    proc = cfg.getProcessor("CIE-XYZ-D65", display, VIEW, ocio.TRANSFORM_DIR_FORWARD)
+    cpu = (proc.getDefaultCPUProcessor() if optimization is None else
+           proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
+                                         optimization))
+    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
+    cpu.applyRGB(px)
+    return px
+
+
+def _sets():
+    rng = np.random.default_rng(7)
+    ap0_to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1"))
+    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ ap0_to_xyz.T
+    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
+    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
+                            for Y in (0.02, 0.1, 0.3, 0.6)])
+    return {"object": tables.object_colours(), "monochromatic": locus, "ap0": ap0}
+
+
+@pytest.fixture(scope="module")
+def measured(cfg):
+    """{(display, set): dict of dE2000 / dY / in-gamut statistics}."""
+    out = {}
+    for display in DISPLAYS:
+        M = colorimetry.matrix_XYZ_to_RGB(display)
+        for name, XYZ in _sets().items():
+            code = _apply_view(cfg, display, XYZ)
+            rgb = _decode(code, display)
+            truth = clip.clip_XYZ(XYZ, display)
+            de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
+            inside = clip.in_gamut(XYZ @ M.T)
+            out[display, name] = dict(
+                p99=float(np.percentile(de, 99)), max=float(de.max()),
+                dY=float(np.abs(colorimetry.RGB_to_XYZ(rgb, display)[:, 1] - truth[:, 1]).max()),
+                inside_max=float(de[inside].max()) if inside.any() else 0.0,
+                in_gamut=bool(np.all((code >= 0.0) & (code <= 1.0 + TOL))))
+    return out
+
+
+#: Code values may exceed [0, 1] by float32 round-off of the display encodings (OCIO's
+#: fast pow at 1.0 gives 1.0000165 through BT.1886; every view, the baselines too).
+TOL = 1e-4
+
+#: What the design reaches, per set (dE2000 p99, max, |dY|, in-gamut colours' max),
+#: measured on these sets: all three displays are within these numbers.
+REACHED = {"object": (0.5, 1.5, 1e-3, 0.25),
+           "monochromatic": (0.5, 1.6, 1e-3, 0.1),
+           "ap0": (0.5, 3.0, 5e-3, 0.25)}
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+@pytest.mark.parametrize("name", list(REACHED))
+def test_view_against_the_analytic_clip(measured, display, name):
+    m = measured[display, name]
+    p99, worst, dY, inside = REACHED[name]
+    print(f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
+          f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}")
+    assert m["in_gamut"]
+    assert m["p99"] <= p99
+    assert m["max"] <= worst
+    assert m["dY"] <= dY
+    assert m["inside_max"] <= inside
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+@pytest.mark.xfail(strict=True, reason="issue 8 target not reached: max dE2000 1.8-2.5 on "
+                                       "AP0 colours at Y > 0.99 far outside the gamut (the "
+                                       "white-faces pass is steep there), |dY| up to 3.6e-3")
+def test_ap0_target(measured, display):
+    m = measured[display, "ap0"]
+    assert m["max"] <= 1.5 and m["dY"] <= 1e-3
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+@pytest.mark.xfail(strict=True, reason="issue 8 target not reached: in-gamut colours move "
+                                       "by dE2000 0.14-0.21 at most (p99 far lower): the "
+                                       "black-faces pass interpolates over a projective chart")
+def test_in_gamut_target(measured, display):
+    assert max(measured[display, name]["inside_max"] for name in REACHED) <= 0.1
+
+
+# --------------------------------------------------------------------------- #
+# (d) extremes, every optimisation level
+# --------------------------------------------------------------------------- #
+F32_MAX = float(np.finfo(np.float32).max)
+EXTREMES = np.array([
+    [0, 0, 0], [1e-40, 1e-40, 1e-40], [0, 0, 1e-40], [-1, -1, -1], [-1, 0.5, 0.5],
+    [0.5, -3, 0.5], [2, 2, 2], [0.95, 1.5, 1.09], [1e4, 1e4, 1e4], [1e30, 0.5, 0.5],
+    [-1e30, 0.5, 0.5], [0.5, 1e30, 0.5], [0.5, 0.5, 1e30], [F32_MAX] * 3, [-F32_MAX] * 3,
+    [F32_MAX, -F32_MAX, F32_MAX], [1e-30, 1.0, 1e30]], dtype=np.float32)
+LEVELS = {"NONE": "OPTIMIZATION_NONE", "DRAFT": "OPTIMIZATION_DRAFT",
+          "DEFAULT": "OPTIMIZATION_DEFAULT"}
+
+
+@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_extremes_finite_and_in_gamut(cfg, display, level):
+    out = _apply_view(cfg, display, EXTREMES, getattr(ocio, LEVELS[level]))
+    assert np.all(np.isfinite(out)) and out.min() >= -TOL and out.max() <= 1.0 + TOL
+    np.testing.assert_allclose(out[0], 0.0, atol=1e-6)  # black
+    np.testing.assert_allclose(out[[6, 7, 8]], 1.0, atol=1e-4)  # above white: white
+
+
+def _finite_probe():
+    """Finite values every input space can hold, huge and tiny included."""
+    v = np.array([0.0, 1e-40, 1e-30, 1e-6, 0.18, 0.5, 1.0, 4.0, 100.0, 1e4, 1e30,
+                  F32_MAX, -1e-6, -0.5, -1.0, -100.0, -1e30, -F32_MAX], dtype=np.float32)
+    grid = np.stack(np.meshgrid(v, v, v, indexing="ij"), axis=-1).reshape(-1, 3)
+    return np.ascontiguousarray(grid)
+
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
+    """Issue 9: finite, in-range output from finite input for every (input space,
+    display, view) of the config, at OCIO's NONE, DRAFT and DEFAULT optimisation."""
+    probe = _finite_probe()
+    spaces = [cs.getName() for cs in cfg.getColorSpaces()
+              if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_SCENE and not cs.isData()]
+    bad = []
+    for src in spaces:
+        for display in cfg.getDisplays():
+            for view in cfg.getViews(display):
+                if view == "Raw":
+                    continue
+                proc = cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)
+                cpu = proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
+                                                    getattr(ocio, LEVELS[level]))
+                px = probe.copy()
+                cpu.applyRGB(px)
+                if not (np.all(np.isfinite(px)) and px.min() >= -TOL and px.max() <= 1.0 + TOL):
+                    bad.append((src, display, view, float(np.nanmin(px)), float(np.nanmax(px))))
+    assert not bad, bad[:10]
