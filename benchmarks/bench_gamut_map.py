@@ -1,0 +1,114 @@
+"""Benchmark: throughput of the Constant-Lightness Clip view against the ACES gamut
+compression view and a single 65^3 Lut3D, side by side in one run (issue 8).
+
+Every processor is OCIO's CPU processor at OPTIMIZATION_DEFAULT, one thread,
+``applyRGB`` on a float32 RGB image; each is timed REPEATS times in interleaved
+rounds (so machine noise hits all of them alike) and the best round counts.
+
+Processors (CIE-XYZ-D65 -> sRGB display code values):
+
+- ``clip``: the baked config's ``sRGB / Constant-Lightness Clip`` view;
+- ``aces``: the baked config's ``sRGB / ACES Gamut Compression`` view (it limits
+  components to +-1e6 first, so that no input overflows to NaN);
+- ``aces bare``: the same view without that guard (matrix, ACES_GamutComp13, clamp,
+  sRGB encoding) -- the target is checked against the faster of the two;
+- ``lut65``: a single 65^3 tetrahedral Lut3D, nothing else (the practical ceiling).
+
+Data sets (1024 x 1024 pixels each): uniform XYZ in [0, 1]^3; the rendered oil scene
+(Fig. 5, scene-linear XYZ); object colours + monochromatic stimuli (the test sets,
+tiled). Prints a table and writes ``reports/bench_gamut_map.json``.
+
+Usage: python benchmarks/bench_gamut_map.py [--size 1024] [--repeats 7]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
+
+
+def datasets(n):
+    from ocio_thinfilm import render, tables
+
+    side = int(np.sqrt(n))
+    rng = np.random.default_rng(0)
+    uniform = rng.uniform(0.0, 1.0, (n, 3))
+    picture, _ = render.render_scene("oil", (side, side), view="Raw")
+    oil = picture.xyz.reshape(-1, 3)
+    colours = np.concatenate([tables.object_colours(), tables.spectral_colours(0.6)])
+    colours = np.resize(colours, (n, 3))
+    return {"uniform XYZ": uniform, "oil scene": oil, "object + spectral": colours}
+
+
+def processors():
+    import PyOpenColorIO as ocio
+
+    from ocio_thinfilm import clip, tables
+
+    cfg = ocio.Config.CreateFromFile(str(CONFIG))
+    view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
+                                      ocio.TRANSFORM_DIR_FORWARD)
+    bare = tables.group([tables.display_matrix_transform("sRGB"),
+                         tables.aces_gamut_compression_transform(), tables._range(0.0, 1.0),
+                         tables.display_encoding_transform("sRGB")])
+    g = np.linspace(0.0, 1.0, 65)
+    lut = tables.lut3d_transform(np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9)
+    raw = ocio.Config.CreateRaw()
+    procs = {"clip": view("Constant-Lightness Clip"), "aces": view("ACES Gamut Compression"),
+             "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut)}
+    del clip
+    return {k: p.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
+                                          ocio.OPTIMIZATION_DEFAULT) for k, p in procs.items()}
+
+
+def measure(size=1024, repeats=7):
+    data = {k: np.ascontiguousarray(v, dtype=np.float32)
+            for k, v in datasets(size * size).items()}
+    procs = processors()
+    best = {(d, p): np.inf for d in data for p in procs}
+    for _ in range(repeats):
+        for d, pixels in data.items():
+            for p, cpu in procs.items():
+                work = pixels.copy()
+                t0 = time.perf_counter()
+                cpu.applyRGB(work)
+                best[d, p] = min(best[d, p], time.perf_counter() - t0)
+    rows = []
+    for d, pixels in data.items():
+        mpx = {p: len(pixels) / best[d, p] / 1e6 for p in procs}
+        aces = max(mpx["aces"], mpx["aces bare"])
+        rows.append(dict(dataset=d, pixels=len(pixels), mpix_per_s=mpx,
+                         clip_over_aces=mpx["clip"] / mpx["aces"],
+                         clip_over_aces_bare=mpx["clip"] / mpx["aces bare"],
+                         clip_over_fastest_aces=mpx["clip"] / aces,
+                         clip_over_lut65=mpx["clip"] / mpx["lut65"]))
+    return rows
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--size", type=int, default=1024)
+    parser.add_argument("--repeats", type=int, default=7)
+    parser.add_argument("--json", default=str(ROOT / "reports" / "bench_gamut_map.json"))
+    args = parser.parse_args(argv)
+    rows = measure(args.size, args.repeats)
+    print(f"{'data set':20s} {'clip':>7s} {'aces':>7s} {'bare':>7s} {'lut65':>7s}   "
+          "clip/aces  clip/bare  clip/lut65   (Mpixel/s, one thread)")
+    for r in rows:
+        m = r["mpix_per_s"]
+        print(f"{r['dataset']:20s} {m['clip']:7.1f} {m['aces']:7.1f} {m['aces bare']:7.1f} "
+              f"{m['lut65']:7.1f}   {r['clip_over_aces']:9.2f}  {r['clip_over_aces_bare']:9.2f}"
+              f"  {r['clip_over_lut65']:10.2f}")
+    Path(args.json).write_text(json.dumps(rows, indent=2) + "\n")
+    print(f"wrote {args.json}")
+
+
+if __name__ == "__main__":
+    main()
