@@ -14,13 +14,8 @@ interference colours); on spectral colours at Y <= 0.6 the luminance error and
 whether the output is in gamut; bake time (vertex values + OCIO processor) and the
 size of the CLF the config would ship.
 
-Measured (``--quick``, 2 cores): the shipped "factored" clip (two 16-bit LUTs per
-display, faces through black then, via W - X, faces through white) at 38^3, object
-colours dE2000 mean / p99 / max: sRGB 0.029 / 0.42 / 1.61, Display P3 0.018 / 0.25 /
-1.53, Rec.2020 0.008 / 0.10 / 0.64; spectral colours in gamut, |dY| <= 3e-5, p99 dE
-9.1 / 17.4 / 27.1; 1.98 MB of CLF per display. At 33^3: sRGB p99 0.52, max 2.23.
-The previous default ("xy", one 33^3 float LUT, 1.30 MB): sRGB p99 1.39, max 4.5;
-spectral p99 1.1, |dY| <= 1.9e-3.
+The shipped design and the rejected ones: see :func:`options` and docs/gamut_map.md;
+this script prints its own measurements (no numbers are typed here).
 """
 
 from __future__ import annotations
@@ -140,22 +135,23 @@ def uvY_uniform(display, size):
 
 
 def options(quick):
-    opts = [("naive XYZ/white (baseline)", naive_xyz, (33, 65)),
+    """The shipped two-pass design at several sizes, and two single-LUT baselines.
+
+    Rejected designs measured while choosing it (sRGB, 65^3 unless noted; dE2000 p99 /
+    max on object colours, then on monochromatic stimuli; see docs/gamut_map.md):
+    one Lut3D over RGB_TO_HSV of display RGB 4.2 / 16.7, 39 / 42 (OCIO's extended HSV
+    is singular where max = -min); one Lut3D over an xy chart with Y 1.1 / 5.5, 0.7 /
+    2.4 (the faces through white cut the cells); one Lut3D over (R, B, Y) 7.3 / 15.7
+    (the G faces are oblique); the previous factored design (two 38^3 LUTs, chart
+    coordinates out, matrices after) 0.42 / 1.6, 9-27 / -, and 15/255 on half-float
+    GPU textures; a Lut1D shaper in front of the first pass 0.16 / 0.98 but 7.4/255 on
+    half-float textures (the shaper's outputs place colours only to 1/30 of a cell).
+    """
+    sizes = (33, 49, 65) if quick else (33, 41, 49, 57, 65)
+    return [("naive XYZ/white (baseline)", naive_xyz, (33, 65)),
             ("u'v'Y uniform", uvY_uniform, (33, 65)),
-            ("factored C.L.C.L, two 16-bit LUTs (shipped)",
-             lambda d, n: tables.clip_transform(d, n, domain="factored"),
-             (33, 38) if quick else (33, 38, 49, 65))]
-    for label, kw in (("xyY uniform (no shaper)", dict(domain="xy", gamma=(1, 1, 1),
-                                                       offset=(0, 0, 0))),
-                      ("xyY 'xy' shaped (previous default)", dict(domain="xy")),
-                      ("xyY 'xy' shaped g=(2,2,1.5) o=.05", dict(domain="xy",
-                                                                gamma=(2, 2, 1.5),
-                                                                offset=(.05, .05, .05))),
-                      ("xyY primaries-aligned", dict(domain="aligned"))):
-        sizes = (33, 65) if quick else (17, 33, 49, 65)
-        opts.append((label, (lambda kw: lambda d, n: tables.clip_transform(d, n, **kw))(kw),
-                     sizes))
-    return opts
+            ("two passes: black faces over a chart, white faces over encoded RGB (shipped)",
+             lambda d, n: tables.clip_transform(d, n), sizes)]
 
 
 def clf_size(transform):
@@ -191,7 +187,7 @@ def bench_3d(displays, quick):
         for label, build, sizes in options(quick):
             for size in sizes:
                 tables._clip_lut.cache_clear()
-                tables._factored_plan.cache_clear()
+                tables._black_plan.cache_clear()
                 t0 = time.perf_counter()
                 transform = build(display, size)
                 out = tables.apply(transform, objects[:1])  # processor built

@@ -603,15 +603,17 @@ def _ocio_gamut_speeds(img, display):
     speeds["ACES 1.3 gamut compression (OCIO FixedFunction)"] = _ocio_apply_speed(_ocio_cpu(aces), img)
     speeds["per-channel clamp (OCIO Range)"] = _ocio_apply_speed(_ocio_cpu(rng), img)
     tables = _tables()
-    if tables is not None and hasattr(tables, "clip_transform"):
-        try:
-            M = colorimetry.matrix_XYZ_to_RGB(display)
-            to_xyz = ocio.MatrixTransform(_m44(np.linalg.inv(M)))
-            group = ocio.GroupTransform([to_xyz, tables.clip_transform(display)])
-            speeds["constant-lightness clip (OCIO, shipped 3D LUT)"] = _ocio_apply_speed(
-                _ocio_cpu(group), img)
-        except Exception as error:  # noqa: BLE001 -- reported, not hidden
-            speeds[f"constant-lightness clip (OCIO): failed: {error}"] = float("nan")
+    if tables is not None and hasattr(tables, "view_transform"):
+        # like with like: whole views (display-linear RGB in -> sRGB code values out)
+        M = colorimetry.matrix_XYZ_to_RGB(display)
+        to_xyz = ocio.MatrixTransform(_m44(np.linalg.inv(M)))
+        for label, view in (("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
+                            ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip")):
+            try:
+                group = ocio.GroupTransform([to_xyz, tables.view_transform(display, view)])
+                speeds[label] = _ocio_apply_speed(_ocio_cpu(group), img)
+            except Exception as error:  # noqa: BLE001 -- reported, not hidden
+                speeds[f"{label}: failed: {error}"] = float("nan")
     return speeds
 
 
@@ -1277,13 +1279,8 @@ def _section_lut3d(ctx):
     h, w = (256, 256) if q else (512, 1024)
     img = np.resize(allx, (h * w, 3)).astype(np.float32)
     interps = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "linear": ocio.INTERP_LINEAR}
-    d_domain = _default(tables.clip_lut, "domain")
-    domains = {}
-    for dom in getattr(tables, "CLIP_DOMAINS", (None,)):
-        label = f"xyY, '{dom}' domain" + (" (shipped default)" if dom == d_domain else "")
-        kw = {} if dom is None else {"domain": dom}
-        domains[label] = (lambda kw: lambda size, it: _with_interp(
-            tables.clip_transform(display, size, **kw), it))(kw)
+    shipped = "two passes (shipped)"
+    domains = {shipped: lambda size, it: _with_interp(tables.clip_transform(display, size), it)}
     domains.update({
         f"display RGB [{lo:g}, {hi:g}]³, affine": lambda size, it: _rgb_domain_lut_transform(display, size, it, lo, hi),
         "XYZ/white [0, 1], no shaper": lambda size, it: _naive_lut_transform(display, size, it),
@@ -1313,8 +1310,8 @@ def _section_lut3d(ctx):
                 series[key].append((1.0 / mpix, a["p99"], a["max"], size))
                 raw.append({"domain": d_name, "interp": i_name, "size": size, "stats": stats,
                             "bake_s": bake, "apply_Mpix_s": mpix})
-                if d_name.endswith("(shipped default)") and i_name == "tetrahedral" and size == d_size:
-                    default_pt = (1.0 / mpix, a["p99"], f"{size}³ xyY '{d_domain}' tetrahedral")
+                if d_name == shipped and i_name == "tetrahedral" and size == d_size:
+                    default_pt = (1.0 / mpix, a["p99"], f"two {size}³ LUTs, tetrahedral")
                     ctx.results["default_lut3d"] = raw[-1]
     ctx.results["lut3d"] = {"rows": raw, "rgb_domain": [lo, hi]}
     img_md = _pareto_plot(ctx, "knob_lut3d.png", "3D clip LUT: error vs apply cost (interference colours)",
@@ -1329,8 +1326,9 @@ def _section_lut3d(ctx):
         "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
         f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} spectral "
         "mixtures (random mixtures of up to three spectral colours at Y 0.01–0.99: extreme "
-        "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `tables.clip_transform` (CIE xyY with shapers) for "
-        "each of its domain options; "
+        "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `tables.clip_transform` (the faces through black "
+        "over a projective chromaticity chart and Y, then the faces through white over "
+        "encoded display RGB; see `tables.ClipLUT`); "
         "display-linear RGB over the box that holds the interference colours, with an affine "
         "shaper (spectral mixtures beyond it are clamped by the LUT); "
         "and the naive XYZ/white cube without shaper. Bake = building the transform "
@@ -1340,8 +1338,7 @@ def _section_lut3d(ctx):
         _table(["domain", "interp", "size", "interf. mean", "p99", "max", "mixtures mean", "p99", "max",
                 "bake (s)", "Mpixel/s"], rows),
         "",
-        f"Default (from the signatures of `clip_transform` / `clip_lut`): {d_size}³, xyY "
-        f"'{d_domain}' domain, tetrahedral.",
+        f"Default (from the signature of `clip_transform`): two {d_size}³ LUTs, tetrahedral.",
         "",
         img_md,
     ])
@@ -1638,11 +1635,13 @@ def _headline(r) -> list[str]:
                            f"{k}: {_fmt(v['dL_max'])} / {_fmt(v['dh_mean'])}° / {_fmt(v['dE']['mean'])}"
                            for k, v in soap.items() if isinstance(v, dict)) + ".")
         tp = g["throughput_Mpix_s"]
-        ref = tp.get("ACES 1.3 gamut compression (OCIO FixedFunction)")
-        lut = next((v for k, v in tp.items() if k.startswith("constant-lightness clip (OCIO")), None)
+        ref = tp.get("ACES gamut compression view (OCIO)")
+        lut = tp.get("constant-lightness clip view (OCIO)")
         if ref and lut:
-            out.append(f"- Through OCIO the constant-lightness clip (shipped 3D LUT) runs at "
-                       f"{_fmt(lut / ref)}× the speed of ACES_GamutComp13 in the same run.")
+            out.append(f"- Through OCIO the Constant-Lightness Clip view runs at "
+                       f"{_fmt(lut / ref)}× the speed of the ACES Gamut Compression view in "
+                       "the same run (soap-film colours; three more data sets in "
+                       "benchmarks/bench_gamut_map.py).")
     gf = r.get("gaussian_fit")
     if gf:
         allb = gf["bands"][-1]
