@@ -18,7 +18,12 @@ Data sets (1024 x 1024 pixels each): uniform XYZ in [0, 1]^3; the rendered oil s
 (Fig. 5, scene-linear XYZ); object colours + monochromatic stimuli (the test sets,
 tiled). Prints a table and writes ``reports/bench_gamut_map.json``.
 
-Usage: python benchmarks/bench_gamut_map.py [--size 1024] [--repeats 7]
+Also measures the views' accuracy against the analytic clip (issue 8's sets: object
+and interference colours, monochromatic stimuli 380-700 nm at Y 0.02/0.1/0.3/0.6,
+random XYZ inside ACES AP0 with 0 <= Y <= 1; dE2000 p99 / max, |dY|, in-gamut
+colours' max) for every display, into the same JSON.
+
+Usage: python benchmarks/bench_gamut_map.py [--size 1024] [--repeats 7] [--no-speed]
 """
 
 from __future__ import annotations
@@ -92,12 +97,57 @@ def measure(size=1024, repeats=7):
     return rows
 
 
+def accuracy():
+    """{display: {set: statistics}} of the baked config's Constant-Lightness Clip views."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "tests"))
+    import PyOpenColorIO as ocio
+    from test_gamut_map import _apply_view, _decode, _sets
+
+    from ocio_thinfilm import clip, colorimetry
+
+    cfg = ocio.Config.CreateFromFile(str(CONFIG))
+    out = {}
+    for display in clip.DISPLAYS:
+        M = colorimetry.matrix_XYZ_to_RGB(display)
+        out[display] = {}
+        for name, XYZ in _sets().items():
+            rgb = _decode(_apply_view(cfg, display, XYZ), display)
+            truth = clip.clip_XYZ(XYZ, display)
+            got = colorimetry.RGB_to_XYZ(rgb, display)
+            de = colorimetry.delta_E2000(truth, got)
+            inside = clip.in_gamut(XYZ @ M.T)
+            out[display][name] = dict(
+                n=len(XYZ), mean=float(de.mean()), p99=float(np.percentile(de, 99)),
+                max=float(de.max()), dY_max=float(np.abs(got[:, 1] - truth[:, 1]).max()),
+                in_gamut_n=int(inside.sum()),
+                in_gamut_max=float(de[inside].max()) if inside.any() else 0.0,
+                in_gamut_p99=float(np.percentile(de[inside], 99)) if inside.any() else 0.0)
+    return out
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--size", type=int, default=1024)
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--json", default=str(ROOT / "reports" / "bench_gamut_map.json"))
+    parser.add_argument("--no-speed", action="store_true", help="accuracy only")
     args = parser.parse_args(argv)
+    acc = accuracy()
+    print(f"{'display':11s} {'set':14s} {'p99':>6s} {'max':>6s} {'|dY|':>8s} {'in-gamut max':>13s}")
+    for display, sets in acc.items():
+        for name, m in sets.items():
+            print(f"{display:11s} {name:14s} {m['p99']:6.3f} {m['max']:6.3f} {m['dY_max']:8.1e} "
+                  f"{m['in_gamut_max']:13.3f}")
+    result = {"accuracy": acc}
+    path = Path(args.json)
+    if args.no_speed and path.exists():  # keep the last speed run
+        result["speed"] = json.loads(path.read_text()).get("speed")
+    if args.no_speed:
+        path.write_text(json.dumps(result, indent=2) + "\n")
+        print(f"wrote {path}")
+        return
     rows = measure(args.size, args.repeats)
     print(f"{'data set':20s} {'clip':>7s} {'aces':>7s} {'bare':>7s} {'lut65':>7s}   "
           "clip/aces  clip/bare  clip/lut65   (Mpixel/s, one thread)")
@@ -106,8 +156,9 @@ def main(argv=None):
         print(f"{r['dataset']:20s} {m['clip']:7.1f} {m['aces']:7.1f} {m['aces bare']:7.1f} "
               f"{m['lut65']:7.1f}   {r['clip_over_aces']:9.2f}  {r['clip_over_aces_bare']:9.2f}"
               f"  {r['clip_over_lut65']:10.2f}")
-    Path(args.json).write_text(json.dumps(rows, indent=2) + "\n")
-    print(f"wrote {args.json}")
+    result["speed"] = rows
+    path.write_text(json.dumps(result, indent=2) + "\n")
+    print(f"wrote {path}")
 
 
 if __name__ == "__main__":

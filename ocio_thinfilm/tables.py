@@ -437,7 +437,7 @@ CLIP_SIZE = 65
 #: clamped to the grid's edge and still lands in gamut with its Y).
 CHART_COVERS = "spectral locus 360-780 nm, ACES AP0 (Y >= 0) and pure Z"
 #: Largest ratio of u_b = Y / S across the primaries' triangle (the chart's bend).
-CHART_BEND = 5.0
+CHART_BEND = 6.0
 #: The black pass's Y nodes are Y_top (k / (size - 1)) ** Y_POWER: uniform in
 #: Y^(1/3) ~ L*, with node size - 2 at Y = 1 (see :func:`_y_top`).
 Y_POWER = 3.0

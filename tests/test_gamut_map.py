@@ -89,7 +89,7 @@ TOL = 1e-4
 #: What the design reaches, per set (dE2000 p99, max, |dY|, in-gamut colours' max),
 #: measured on these sets: all three displays are within these numbers.
 REACHED = {"object": (0.5, 1.5, 1e-3, 0.25),
-           "monochromatic": (0.5, 1.6, 1e-3, 0.1),
+           "monochromatic": (0.5, 1.5, 1e-3, 0.1),
            "ap0": (0.5, 3.0, 5e-3, 0.25)}
 
 
@@ -108,9 +108,9 @@ def test_view_against_the_analytic_clip(measured, display, name):
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
-@pytest.mark.xfail(strict=True, reason="issue 8 target not reached: max dE2000 1.8-2.5 on "
+@pytest.mark.xfail(strict=True, reason="issue 8 target not reached: max dE2000 1.8-2.6 on "
                                        "AP0 colours at Y > 0.99 far outside the gamut (the "
-                                       "white-faces pass is steep there), |dY| up to 3.6e-3")
+                                       "white-faces pass is steep there), |dY| up to 3.7e-3")
 def test_ap0_target(measured, display):
     m = measured[display, "ap0"]
     assert m["max"] <= 1.5 and m["dY"] <= 1e-3
@@ -118,7 +118,7 @@ def test_ap0_target(measured, display):
 
 @pytest.mark.parametrize("display", DISPLAYS)
 @pytest.mark.xfail(strict=True, reason="issue 8 target not reached: in-gamut colours move "
-                                       "by dE2000 0.14-0.21 at most (p99 far lower): the "
+                                       "by dE2000 0.15-0.20 at most (p99 far lower): the "
                                        "black-faces pass interpolates over a projective chart")
 def test_in_gamut_target(measured, display):
     assert max(measured[display, name]["inside_max"] for name in REACHED) <= 0.1

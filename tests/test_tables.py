@@ -137,8 +137,8 @@ def test_per_display_rgb_variant_is_clipped():
 # 3D clip LUT
 # --------------------------------------------------------------------------- #
 #: Issue 8's targets for object colours (the view, every display): p99 <= 0.5, max <= 1.5
-#: dE2000 vs the analytic clip. Measured (65^3): sRGB p99 0.16 / max 1.03, Display P3
-#: 0.13 / 1.05, Rec.2020 0.13 / 0.21 (tests/test_gamut_map.py covers the other sets).
+#: dE2000 vs the analytic clip (measured: reports/bench_gamut_map.json;
+#: tests/test_gamut_map.py covers the other sets).
 OBJECT_P99 = 0.5
 OBJECT_MAX = 1.5
 
