@@ -694,12 +694,14 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
     if pixels.ndim == 2:
         pixels = pixels[:, :, None]
     h, w, c = pixels.shape
+    # A name without an extension (/dev/stdout, a FIFO) is written as PNG.
+    ext = path.suffix.lower() or ".png"
     if dtype is None:
-        dtype = "uint8" if path.suffix.lower() == ".png" else "half"
+        dtype = "uint8" if ext == ".png" else "half"
     spec = oiio.ImageSpec(w, h, c, dtype)
     if channel_names:
         spec.channelnames = tuple(channel_names)
-    if path.suffix.lower() == ".exr":
+    if ext == ".exr":
         spec.attribute("compression", "zip")
     for key, value in (attributes or {}).items():
         if isinstance(value, (tuple, list)):
@@ -707,7 +709,7 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
         else:
             spec.attribute(key, value)
     tmp = tx.file(path)
-    out = oiio.ImageOutput.create(str(path))
+    out = oiio.ImageOutput.create(str(path) if path.suffix else ext.lstrip("."))
     if out is None:
         raise OSError(f"cannot write {path}: {oiio.geterror() or 'unknown image format'}")
     if not out.open(str(tmp), spec):
