@@ -1548,7 +1548,6 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
     import matplotlib
 
     matplotlib.use("Agg")
-    from tqdm import tqdm
 
     out = check_writable(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -1557,6 +1556,8 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
 
 
 def _run_report(ctx, quick, progress) -> Path:
+    from tqdm import tqdm
+
     out = ctx.out
     start = time.perf_counter()
     parts, timings = [], {}
