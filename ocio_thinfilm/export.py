@@ -315,11 +315,11 @@ def _legacy_luts(directory):
     return owned
 
 
-def _check_staged_clfs(directory):
+def _check_staged_clfs(directory, final):
     from .io import _check_xml
 
     for path in sorted(Path(directory).rglob("*.clf")):
-        _check_xml(path)
+        _check_xml(path, Path(final) / path.relative_to(directory))
 
 
 def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=False,
@@ -352,8 +352,10 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
             try:
                 config.write_config(stage, clip_size=int(clip_size),
                                     progress=(lambda name: bar.update(1)) if bar else None)
+            except OSError as error:
+                raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None
             except Exception:
-                _check_staged_clfs(stage)  # a truncated LUT (disk full) says so
+                _check_staged_clfs(stage, claim.path)  # a truncated LUT (disk full) says so
                 raise
             if luts_claim is not None:
                 export_set(tx.directory(luts_claim), show_progress=show_progress)

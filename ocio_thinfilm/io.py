@@ -234,14 +234,25 @@ def deferred_signals():
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
-def _check_xml(path) -> None:
+def _check_xml(path, name=None) -> None:
     import xml.etree.ElementTree as ET
 
     try:
         for _ in ET.iterparse(path, events=("end",)):
             pass
     except ET.ParseError as error:
-        raise OSError(f"cannot write {path}: incomplete file ({error}); disk full?") from None
+        raise OSError(f"cannot write {name or path}: incomplete file ({error}); "
+                      "disk full?") from None
+
+
+def _cannot_write(dest, error: OSError) -> OSError:
+    """``error`` reworded to name the destination (not a temporary) on one line."""
+    text = str(error)
+    if text.startswith("cannot write"):
+        return error
+    reason = error.strerror or text
+    return OSError(error.errno, f"cannot write {dest}: {reason}") if error.errno \
+        else OSError(f"cannot write {dest}: {reason}")
 
 
 #: Checks run on a staged file before it is committed, by suffix.
@@ -381,7 +392,10 @@ class Transaction:
     def write(self, path, data) -> Path:
         """Stage ``path`` with ``data`` (bytes or str, UTF-8), written and fsynced now."""
         tmp = self.file(path)
-        write_bytes(tmp, data.encode("utf-8") if isinstance(data, str) else bytes(data))
+        try:
+            write_bytes(tmp, data.encode("utf-8") if isinstance(data, str) else bytes(data))
+        except OSError as error:
+            raise _cannot_write(path, error) from None
         return tmp
 
     def directory(self, claim: "Claim") -> Path:
@@ -404,21 +418,27 @@ class Transaction:
         for e in self._files:
             if not e.tmp.is_file():
                 raise OSError(f"cannot write {e.dest}: the writer produced no file")
-            for check in (_CHECKS.get(e.dest.suffix.lower()), e.check):
-                if check:
-                    check(e.tmp)
-            _fsync_file(e.tmp)
+            try:
+                if e.dest.suffix.lower() in _CHECKS:
+                    _CHECKS[e.dest.suffix.lower()](e.tmp, e.dest)
+                if e.check:
+                    e.check(e.tmp)
+                _fsync_file(e.tmp)
+            except OSError as error:
+                raise _cannot_write(e.dest, error) from None
         for claim, stage in self._dirs:
             files = sorted(p.relative_to(stage).as_posix() for p in stage.rglob("*")
                            if p.is_file() or p.is_symlink())
             for rel in files:
                 if not (stage / rel).is_file():
                     raise OSError(f"cannot write {claim.path / rel}: not a regular file")
-                for check in (_CHECKS.get(Path(rel).suffix.lower()),):
-                    if check:
-                        check(stage / rel)
-                _fsync_file(stage / rel)
                 target = claim.path / rel
+                try:
+                    if Path(rel).suffix.lower() in _CHECKS:
+                        _CHECKS[Path(rel).suffix.lower()](stage / rel, target)
+                    _fsync_file(stage / rel)
+                except OSError as error:
+                    raise _cannot_write(target, error) from None
                 if claim.exists and rel not in claim.owned and (
                         target.exists() or target.is_symlink()):
                     raise UsageError(f"{claim.option} {claim.path}: {rel} exists and was not "
@@ -431,6 +451,7 @@ class Transaction:
     def commit(self) -> None:
         if self.done:
             return
+        _fault("before-commit")
         plans = self._verify()
         umask = _umask()
         with deferred_signals():
@@ -475,7 +496,11 @@ def atomic_file(path, suffix=None):
     renamed onto ``path`` (permissions 0666 less the umask). Special files are
     written through; links to regular files are followed."""
     with transaction() as tx:
-        yield tx.file(path)
+        tmp = tx.file(path)
+        try:
+            yield tmp
+        except OSError as error:
+            raise _cannot_write(path, error) from None
 
 
 def _write_through(tmp: Path, dest: Path) -> None:
@@ -722,7 +747,35 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
     if not (ok and closed) or message:
         first = (message or "write failed").strip().splitlines()[0]
         raise OSError(f"cannot write {path}: {first}")
+    # It does not always say even that (a full disk can leave a 0-byte PNG and report
+    # success): decode what was written, in full, before it may replace anything.
+    _check_image_file(tmp, path, (h, w, c))
     return path
+
+
+def _check_image_file(tmp, path, shape) -> None:
+    import OpenImageIO as oiio
+
+    h, w, c = shape
+    inp = oiio.ImageInput.open(str(tmp))
+    if inp is None:
+        raise OSError(f"cannot write {path}: the written file does not read back "
+                      f"({(oiio.geterror() or 'unreadable').strip().splitlines()[0]}); "
+                      "disk full?")
+    try:
+        spec = inp.spec()
+        data = inp.read_image(0, 0, 0, c, "uint8") if (spec.width, spec.height,
+                                                          spec.nchannels) == (w, h, c) else None
+        problem = inp.geterror()
+    finally:
+        inp.close()
+    if data is None or problem or np_shape(data) != (h, w, c):
+        raise OSError(f"cannot write {path}: the written file is incomplete "
+                      f"({(problem or 'wrong size').strip().splitlines()[0]}); disk full?")
+
+
+def np_shape(a):
+    return tuple(getattr(a, "shape", ()))
 
 
 def read_image(path):
