@@ -342,8 +342,10 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
     luts_claim = None
     if luts is not None:
         luts_claim = claim_directory(luts, option="--luts", legacy=_legacy_luts)
-        if luts_claim.path.resolve() == claim.path.resolve():
-            raise UsageError(f"--luts {luts}: must not be the --out directory")
+        a, b = luts_claim.path.resolve(), claim.path.resolve()
+        if a == b or a in b.parents or b in a.parents:
+            raise UsageError(f"--luts {luts}: must not be, contain or lie inside the --out "
+                             f"directory {out}")
     n_files = len(config.THIN_FILM_SPACES) + 2 * len(clip.DISPLAYS) + 1  # 2 clip LUTs each
     bar = _progress(show_progress, total=n_files, desc=f"bake {claim.path}")
     try:
@@ -362,7 +364,32 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
     finally:
         if bar:
             bar.close()
+    _remove_old_leftovers(claim.path, _legacy_config)
+    if luts_claim is not None:
+        _remove_old_leftovers(luts_claim.path, _legacy_luts)
     return claim.path / "config.ocio"
+
+
+def _remove_old_leftovers(path, legacy):
+    """Earlier versions swapped whole directories through ``.NAME.XXXXXXXX`` and
+    ``.NAME.old`` siblings, which a kill could leave behind: remove those that hold
+    exactly what a bake writes (nothing else is touched)."""
+    import re
+    import shutil
+
+    pattern = re.compile(re.escape(f".{path.name}.") + r"(old|[A-Za-z0-9_]{8})")
+    try:
+        entries = list(path.parent.iterdir())
+    except OSError:
+        return
+    for entry in entries:
+        if pattern.fullmatch(entry.name) and entry.is_dir() and not entry.is_symlink():
+            try:
+                empty = not any(entry.iterdir())
+            except OSError:
+                continue
+            if empty or legacy(entry) is not None:
+                shutil.rmtree(entry, ignore_errors=True)
 
 
 def _progress(show, total, desc):

@@ -362,7 +362,19 @@ class Transaction:
         self._lock = threading.Lock()
         self._scratch: list[Path] = []
         self._cleaned: set[str] = set()
+        self._made: list[Path] = []  # directories created for this transaction
         self.done = False
+
+    def _mkdirs(self, directory: Path) -> None:
+        """Create ``directory`` and its missing parents, remembering them (an aborted
+        transaction removes them again if they are still empty)."""
+        missing = []
+        d = Path(directory)
+        while not d.exists() and not d.is_symlink() and d != d.parent:
+            missing.append(d)
+            d = d.parent
+        Path(directory).mkdir(parents=True, exist_ok=True)
+        self._made.extend(missing)  # deepest first
 
     # -- staging ------------------------------------------------------------ #
     def _clean(self, directory: Path) -> None:
@@ -379,7 +391,7 @@ class Transaction:
             if any(e.dest == dest for e in self._files):
                 raise UsageError(f"{dest} would be written twice")
             if mode == "replace":
-                dest.parent.mkdir(parents=True, exist_ok=True)
+                self._mkdirs(dest.parent)
                 self._clean(dest.parent)
                 tmp = dest.parent / _tmp_name(dest.name)
             else:
@@ -405,7 +417,7 @@ class Transaction:
                 self._clean(claim.path)
                 stage = claim.path / _tmp_name("stage")
             else:
-                claim.path.parent.mkdir(parents=True, exist_ok=True)
+                self._mkdirs(claim.path.parent)
                 self._clean(claim.path.parent)
                 stage = claim.path.parent / _tmp_name(claim.path.name)
             stage.mkdir()
@@ -475,6 +487,13 @@ class Transaction:
             _remove(stage)
         for scratch in self._scratch:
             _remove(scratch)
+        if not self.done:
+            for d in self._made:  # deepest first; only if nothing else appeared there
+                try:
+                    d.rmdir()
+                except OSError:
+                    pass
+            self._made = []
 
 
 @contextlib.contextmanager

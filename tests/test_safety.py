@@ -184,39 +184,62 @@ def test_stale_temporaries_of_dead_processes_are_removed(tmp_path):
 # --------------------------------------------------------------------------- #
 # Special files: written through, never replaced
 # --------------------------------------------------------------------------- #
-@pytest.mark.skipif(not Path("/dev/null").exists(), reason="no /dev/null")
-def test_export_to_dev_null_writes_through(capsys):
-    before = os.stat("/dev/null")
+def device_node(tmp_path, name, minor):
+    """A private character device node (1, minor) -- the null (3) or full (7) device --
+    in ``tmp_path``. The tests never write to the real /dev: code that replaced a
+    device node (as the old one did, run as root) would break the machine."""
+    path = tmp_path / name
+    try:
+        os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, minor))
+        with open(path, "wb") as f:  # usable here (not a nodev mount)?
+            f.write(b"")
+    except OSError as error:
+        if path.exists():
+            path.unlink()
+        pytest.skip(f"cannot make a device node here (needs CAP_MKNOD, not nodev): {error}")
+    return path
+
+
+def test_export_to_a_null_device_writes_through(tmp_path, capsys):
+    null = device_node(tmp_path, "null", 3)
+    before = os.stat(null)
     code, out, err = cli_run(["export", "morpho", "--size", "8", "--format", "clf",
-                              "--out", "/dev/null", "--quiet"], capsys)
+                              "--out", str(null), "--quiet"], capsys)
     assert code == 0, err
-    after = os.stat("/dev/null")
+    after = os.stat(null)
     assert stat.S_ISCHR(after.st_mode) and after.st_rdev == before.st_rdev
-    assert not [n for n in os.listdir("/dev") if n.startswith(io.TMP_PREFIX)]
+    assert after.st_ino == before.st_ino
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["null"]
 
 
-@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full")
-def test_export_to_dev_full_fails_in_one_line(capsys):
-    before = os.stat("/dev/full")
+def test_export_to_a_full_device_fails_in_one_line(tmp_path, capsys):
+    full = device_node(tmp_path, "full", 7)
+    before = os.stat(full)
     code, _, err = cli_run(["export", "morpho", "--size", "8", "--format", "cube",
-                            "--out", "/dev/full", "--quiet"], capsys)
-    one_line_error(code, err, "/dev/full")
-    assert stat.S_ISCHR(os.stat("/dev/full").st_mode)
-    assert os.stat("/dev/full").st_rdev == before.st_rdev
+                            "--out", str(full), "--quiet"], capsys)
+    one_line_error(code, err, str(full))
+    after = os.stat(full)
+    assert stat.S_ISCHR(after.st_mode) and after.st_rdev == before.st_rdev
+    assert after.st_ino == before.st_ino
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["full"]
 
 
 def test_export_into_a_fifo_writes_through(tmp_path, capsys):
     fifo = tmp_path / "pipe.cube"
     os.mkfifo(fifo)
     got = []
-    reader = threading.Thread(target=lambda: got.append(fifo.read_bytes()))
+    reader = threading.Thread(target=lambda: got.append(fifo.read_bytes()), daemon=True)
     reader.start()
     code, _, err = cli_run(["export", "morpho", "--size", "8", "--out", str(fifo),
                             "--quiet"], capsys)
     reader.join(30)
     assert code == 0, err
-    assert stat.S_ISFIFO(os.lstat(fifo).st_mode)
-    assert got and got[0].startswith(b"LUT_1D_SIZE 8") or b"LUT_1D_SIZE 8" in got[0]
+    alive = reader.is_alive()
+    if alive:  # the FIFO was replaced: unblock the reader with a writer of our own
+        with open(fifo, "wb"):
+            pass
+    assert not alive and stat.S_ISFIFO(os.lstat(fifo).st_mode)
+    assert got and got[0].startswith(b"LUT_1D_SIZE 8")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pipe.cube"]
 
 
@@ -234,19 +257,31 @@ def test_export_through_a_symlink_keeps_the_link(tmp_path, capsys):
     assert temporaries(tmp_path) == []
 
 
-def test_export_to_stdout_keeps_the_data_clean(tmp_path):
+@pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs /proc/self/fd")
+@pytest.mark.parametrize("via_link", [False, True])
+def test_export_to_stdout_keeps_the_data_clean(tmp_path, via_link):
+    """``--out`` naming standard output (``/proc/self/fd/1``, or a link to it as
+    /dev/stdout is) writes the LUT there and the message to stderr. (Never /dev/stdout
+    itself: code that replaced the link, run as root, would break the machine.)"""
     out = tmp_path / "captured.cube"
+    target = "/proc/self/fd/1"
+    if via_link:
+        target = str(tmp_path / "stdout")
+        os.symlink("/proc/self/fd/1", target)
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     with open(out, "wb") as f:
         p = subprocess.run([sys.executable, "-m", "ocio_thinfilm", "export", "morpho",
-                            "--size", "8", "--format", "cube", "--out", "/dev/stdout",
+                            "--size", "8", "--format", "cube", "--out", target,
                             "--quiet"], stdout=f, stderr=subprocess.PIPE, text=True,
-                           env=env, timeout=120)
+                           env=env, timeout=120, cwd=tmp_path)
     assert p.returncode == 0, p.stderr
     text = out.read_text()
     assert text.startswith("LUT_1D_SIZE 8") and "wrote" not in text
-    assert "wrote /dev/stdout" in p.stderr
-    assert sorted(x.name for x in tmp_path.iterdir()) == ["captured.cube"]
+    assert f"wrote {target}" in p.stderr
+    if via_link:
+        assert os.readlink(target) == "/proc/self/fd/1"
+    assert sorted(x.name for x in tmp_path.iterdir()) == \
+        sorted(["captured.cube"] + (["stdout"] if via_link else []))
 
 
 def test_render_refuses_before_writing_when_an_output_is_a_directory(tmp_path, capsys):
@@ -428,7 +463,7 @@ def test_bake_killed_at_each_commit_step(tmp_path, baked, point):
     assert temporaries(tmp_path) == []
 
 
-def _wait_for_handlers(pid, timeout=60.0):
+def _wait_for_handlers(pid, timeout=20.0):
     """Until the child has installed its SIGTERM handler (``SigCgt`` in /proc):
     from then on a signal reaches ocio-thinfilm's code, not the interpreter's start-up."""
     deadline = time.monotonic() + timeout
@@ -521,4 +556,39 @@ def test_argument_errors_are_one_line(argv, needles, capsys, tmp_path, monkeypat
     code, out, err = cli_run(argv, capsys)
     one_line_error(code, err, *needles)
     assert "usage:" not in err and out == ""
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_bake_luts_nested_in_out_is_refused(tmp_path, capsys):
+    for luts in ("cfg/luts", "cfg", "."):
+        code, _, err = cli_run(["bake", "--out", str(tmp_path / "cfg"), "--luts",
+                                str(tmp_path / luts), "--quiet", "--clip-size", "5"], capsys)
+        one_line_error(code, err, "--luts")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_leftovers_of_the_old_directory_swap_are_removed(tmp_path, capsys, baked):
+    """A kill during the old ``atomic_directory`` left ``.cfg.XXXXXXXX`` / ``.cfg.old``
+    (a whole bake each); a user's look-alike directory with other files stays."""
+    for name in (".cfg.k3j9x_2a", ".cfg.old"):
+        baked(tmp_path / name)
+        (tmp_path / name / io.MARKER).unlink()  # the old versions wrote no marker
+    (tmp_path / ".cfg.abcdefgh").mkdir()
+    (tmp_path / ".cfg.abcdefgh" / "mine.txt").write_text("the user's")
+    assert cli_run(["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "5"],
+                   capsys)[0] == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == [".cfg.abcdefgh", "cfg"]
+
+
+def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch):
+    def enospc(path):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
+
+    monkeypatch.setattr(io, "_fsync_file", enospc)
+    code, _, err = cli_run(["export", "morpho", "--size", "8", "--out",
+                            str(tmp_path / "a" / "b" / "x.cube"), "--quiet"], capsys)
+    one_line_error(code, err, "x.cube")
+    code, _, err = cli_run(["bake", "--out", str(tmp_path / "c" / "cfg"), "--quiet",
+                            "--clip-size", "5"], capsys)
+    one_line_error(code, err)
     assert list(tmp_path.iterdir()) == []
