@@ -44,10 +44,10 @@ def test_single_wavelength_is_a_point_evaluation():
     (lambda: colorimetry.film_XYZ(300, step=np.nan), "step"),
     (lambda: spectra.wavelength_grid(stop=np.inf), "stop"),
     (lambda: spectra.wavelength_grid(start=np.nan), "start"),
-    (lambda: spectra.wavelength_grid(step=1e-9), "samples"),
+    (lambda: spectra.wavelength_grid(step=3e-5), "samples"),  # 14 million > the limit
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], np.inf), "layers"),
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], np.nan), "layers"),
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], 1e12), "layers"),
+    (lambda: spectra.multilayer_reflectance(100.0, [500.0], 200_000), "layers"),
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], 2.5), "layers"),
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], True), "layers"),
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], "many"), "layers"),
