@@ -2,13 +2,11 @@
 
 from __future__ import annotations
 
-from pathlib import Path
+import sys
 
 import numpy as np
 
 from . import clip, colorimetry, spectra
-import sys
-
 from .io import check_output_file, is_stdout, write_image
 
 SOAP_INDEX = 1.33
@@ -49,9 +47,9 @@ def run(args) -> int:
     result = soap_film_colour(args.thickness)
     print(f"Soap film, n = {SOAP_INDEX}, t = {args.thickness:g} nm, normal incidence "
           f"(t' = {result['optical_thickness_nm']:g} nm)", file=text)
-    print(f"  XYZ (D65, Y_white = 1)      {np.array2string(result['XYZ'], precision=4)}", file=text)
-    print(f"  linear sRGB, unclipped      {np.array2string(result['linear_rgb'], precision=4)}", file=text)
-    print(f"  constant-lightness clip     {np.array2string(result['clipped_rgb'], precision=4)}", file=text)
+    for label, key in (("XYZ (D65, Y_white = 1)", "XYZ"), ("linear sRGB, unclipped", "linear_rgb"),
+                       ("constant-lightness clip", "clipped_rgb")):
+        print(f"  {label:<28}{np.array2string(result[key], precision=4)}", file=text)
     code = "#" + "".join(f"{int(round(v * 255)):02X}" for v in result["encoded"])
     print(f"  sRGB-encoded                {code}", file=text)
     write_image(out, soap_strip())

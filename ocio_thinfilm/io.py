@@ -788,12 +788,12 @@ def _check_image_file(tmp, path, shape) -> None:
         problem = inp.geterror()
     finally:
         inp.close()
-    if data is None or problem or np_shape(data) != (h, w, c):
+    if data is None or problem or _np_shape(data) != (h, w, c):
         raise OSError(f"cannot write {path}: the written file is incomplete "
                       f"({(problem or 'wrong size').strip().splitlines()[0]}); disk full?")
 
 
-def np_shape(a):
+def _np_shape(a):
     return tuple(getattr(a, "shape", ()))
 
 
