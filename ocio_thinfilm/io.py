@@ -466,11 +466,14 @@ class Transaction:
         _fault("before-commit")
         plans = self._verify()
         umask = _umask()
+        # Special files first, with signals deliverable: opening a FIFO waits for its
+        # reader, and Ctrl-C must still end that wait.
+        for e in self._files:
+            if e.mode == "through":
+                _write_through(e.tmp, e.dest)
         with deferred_signals():
             for e in self._files:
-                if e.mode == "through":
-                    _write_through(e.tmp, e.dest)
-                else:
+                if e.mode == "replace":
                     os.chmod(e.tmp, 0o666 & ~umask)
                     os.replace(e.tmp, e.dest)
                     _fsync_dir(e.dest.parent)
