@@ -1,26 +1,132 @@
 """The ``ocio-thinfilm`` command line.
 
 Each sub-command lives in the module of its pipeline stage, which exposes
-``register(subparsers)``; this module only collects them and turns errors into a
-one-line message with exit code 2.
+``register(subparsers)``; this module only collects them and holds the contract every
+command keeps:
+
+- **Errors** are one line on stderr, ``ocio-thinfilm <command>: error: <message>``,
+  naming the option and what it allows, and exit code 2 (argparse's usage block is
+  folded into that line: the message ends with where to find ``--help``).
+- **Signals.** SIGINT (Ctrl-C), SIGTERM and SIGHUP, at any moment, print
+  ``ocio-thinfilm <command>: interrupted`` (``... interrupted by SIGTERM``) and exit
+  with 128 + the signal number (130, 143, 129); every output is then either the old
+  file or the new one (:mod:`.io` commits with signals held back) and no temporary is
+  left. A signal that a shell set to be ignored (``nohup``, background jobs) stays
+  ignored. Run as the program (``main()`` with no arguments), the process ends with
+  ``os._exit`` right after flushing its output, so there is no interpreter shutdown
+  during which a signal could kill it silently.
+- Anything unexpected is one line too (exit 1); ``OCIO_THINFILM_DEBUG=1`` shows the
+  traceback.
+
+This module imports only the standard library at import time, so the handlers are in
+place before the heavy imports (numpy, colour-science, OpenColorIO) start.
 """
 
 from __future__ import annotations
 
-import argparse
-import importlib
+import os
+import signal
 import sys
 
 from . import __version__
-from .io import UsageError
 
 #: Modules that contribute sub-commands, in the order ``--help`` lists them.
 COMMAND_MODULES = ("demo", "export", "render", "report")
+PROG = "ocio-thinfilm"
+_HANDLED = ("SIGINT", "SIGTERM", "SIGHUP")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="ocio-thinfilm",
+class Interrupted(KeyboardInterrupt):
+    """Raised by the signal handler: a KeyboardInterrupt that knows its signal."""
+
+    def __init__(self, signum=signal.SIGINT):
+        super().__init__(signum)
+        self.signum = signum
+
+
+class _ParseError(Exception):
+    def __init__(self, prog, message):
+        super().__init__(message)
+        self.prog = prog
+
+
+_state = {"interrupted": None}
+
+
+def _handler(signum, frame):
+    if _state["interrupted"] is not None:
+        return  # already unwinding: let the clean-up finish
+    _state["interrupted"] = signum
+    raise Interrupted(signum)
+
+
+def _install_handlers() -> dict:
+    previous = {}
+    for name in _HANDLED:
+        sig = getattr(signal, name, None)
+        if sig is None:
+            continue
+        try:
+            current = signal.getsignal(sig)
+            if current is signal.SIG_IGN:
+                continue  # nohup / background job: keep ignoring
+            previous[sig] = current
+            signal.signal(sig, _handler)
+        except (ValueError, OSError):  # not the main thread
+            pass
+    return previous
+
+
+def _restore_handlers(previous: dict) -> None:
+    for sig, handler in previous.items():
+        try:
+            signal.signal(sig, handler if handler is not None else signal.SIG_DFL)
+        except (ValueError, OSError, TypeError):
+            pass
+
+
+def _parser_class():
+    import argparse
+
+    class Parser(argparse.ArgumentParser):
+        """argparse with one-line errors (raised, printed by :func:`main`)."""
+
+        def error(self, message):
+            raise _ParseError(self.prog, _explain(self, message))
+
+    return Parser
+
+
+def _explain(parser, message: str) -> str:
+    """argparse's message, made to say what is allowed and where the help is."""
+    import re
+
+    m = re.match(r"argument (\S+?)(?:/\S+)?: invalid (float|int) value: (.*)", message)
+    if m:
+        what = "a number" if m.group(2) == "float" else "an integer"
+        message = f"{m.group(1)} must be {what}, got {m.group(3)}"
+    m = re.match(r"argument (\S+?)(?:/\S+)?: expected (\w+) arguments?", message)
+    if m:
+        for action in parser._actions:
+            if m.group(1) in action.option_strings and isinstance(action.metavar, tuple):
+                message += f" ({' '.join(action.metavar)})"
+    m = re.match(r"argument (\S+): invalid choice: (\S+) \(choose from (.*)\)", message)
+    if m and m.group(1) in ("COMMAND", "command"):
+        message = f"unknown command {m.group(2)}; choose from {m.group(3).replace(chr(39), '')}"
+    m = re.match(r"the following arguments are required: (.*)", message)
+    if m:
+        for action in parser._actions:
+            if action.metavar == m.group(1) or action.dest == m.group(1):
+                message += f" ({action.help})" if action.help else ""
+    return f"{message} (see '{parser.prog} --help')"
+
+
+def build_parser():
+    import argparse
+    import importlib
+
+    parser = _parser_class()(
+        prog=PROG,
         description="Thin-film interference colours (Smits & Meyer 1990) for "
                     "OpenColorIO pipelines: spectra, constant-lightness gamut clip, "
                     "LUTs, an OCIO config and the paper's example scenes.")
@@ -34,29 +140,125 @@ def build_parser() -> argparse.ArgumentParser:
                 raise
             continue
         module.register(sub)
+    assert isinstance(parser, argparse.ArgumentParser)
     return parser
 
 
+def _error(command, message) -> None:
+    where = PROG if command is None else f"{PROG} {command}"
+    text = " ".join(str(message).split())  # one line, whatever the message held
+    print(f"{where}: error: {text}", file=sys.stderr)
+
+
 def main(argv=None) -> int:
+    as_program = argv is None
+    _state.update(interrupted=None, late=None, command=None)
+    previous = _install_handlers()
+    code = 1
+    try:
+        code = _main(argv, _set)
+    except SystemExit as error:  # --help, --version
+        code = error.code if isinstance(error.code, int) else (0 if error.code is None else 1)
+        if not as_program:
+            raise
+    except KeyboardInterrupt as error:
+        signum = getattr(error, "signum", signal.SIGINT)
+        name = signal.Signals(signum).name if signum != signal.SIGINT else None
+        command = _state.get("command")
+        where = PROG if command is None else f"{PROG} {command}"
+        print(f"{where}: interrupted" + (f" by {name}" if name else ""), file=sys.stderr)
+        code = 128 + int(signum)
+    finally:
+        if as_program:
+            _exit_soon(code)
+        else:
+            _restore_handlers(previous)
+    return code
+
+
+def _set(name):
+    _state["command"] = name
+
+
+def _main(argv, set_command) -> int:
+    from .io import UsageError
+
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args, extra = parser.parse_known_args(argv)
+        command = getattr(args, "command", None)
+        set_command(command)
+        if extra:
+            prog = PROG if command is None else f"{PROG} {command}"
+            raise _ParseError(prog, f"unrecognized arguments: {' '.join(extra)} "
+                                    f"(see '{prog} --help')")
+    except _ParseError as error:
+        print(f"{error.prog}: error: {' '.join(str(error).split())}", file=sys.stderr)
+        return 2
     if not getattr(args, "func", None):
-        parser.print_help()
+        names = ", ".join(sorted(parser._subparsers._group_actions[0].choices))
+        _error(None, f"no command given; choose from {names} (see '{PROG} --help')")
         return 2
     try:
         return int(args.func(args) or 0)
     except (UsageError, ValueError) as error:
-        print(f"ocio-thinfilm {args.command}: error: {error}", file=sys.stderr)
+        _error(command, error)
         return 2
     except BrokenPipeError:  # e.g. `ocio-thinfilm demo | head`
-        sys.stderr.close()
+        try:
+            sys.stderr.close()
+        except OSError:
+            pass
         return 0
     except OSError as error:
-        print(f"ocio-thinfilm {args.command}: error: {error}", file=sys.stderr)
+        _error(command, error)
+        return 2
+    except MemoryError:
+        _error(command, "out of memory")
         return 2
     except KeyboardInterrupt:
-        print(f"ocio-thinfilm {args.command}: interrupted", file=sys.stderr)
-        return 130
+        raise
+    except Exception as error:  # noqa: BLE001 -- one line for the farm's logs
+        ocio = sys.modules.get("PyOpenColorIO")
+        if ocio is not None and isinstance(error, ocio.Exception):
+            _error(command, f"OpenColorIO: {error}")
+            return 2
+        if os.environ.get("OCIO_THINFILM_DEBUG"):
+            raise
+        _error(command, f"internal error: {type(error).__name__}: {error} "
+                        "(OCIO_THINFILM_DEBUG=1 shows the traceback)")
+        return 1
+
+
+def _exit_soon(code: int) -> None:
+    """End the program now: flush, then ``os._exit`` at the first atexit call (no
+    interpreter shutdown, during which a signal would kill the process silently)."""
+    import atexit
+
+    def record(signum, frame):
+        _state["late"] = signum
+
+    for name in _HANDLED:
+        sig = getattr(signal, name, None)
+        if sig is not None and signal.getsignal(sig) is _handler:
+            signal.signal(sig, record)
+
+    def finish():
+        late = _state.get("late")
+        final = code
+        if late is not None and code == 0:
+            command = _state.get("command")
+            print(f"{PROG}{'' if command is None else ' ' + command}: interrupted",
+                  file=sys.stderr)
+            final = 128 + int(late)
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except Exception:  # noqa: BLE001 -- a closed pipe: nothing more to say
+                pass
+        os._exit(final)
+
+    atexit.register(finish)
 
 
 if __name__ == "__main__":  # pragma: no cover

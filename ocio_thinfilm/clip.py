@@ -190,6 +190,19 @@ def aces_gamut_compress_RGB(RGB):
     transform = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
                                             list(ACES_GAMUT_COMP13_PARAMS))
     cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
-    a = np.ascontiguousarray(np.asarray(RGB, dtype=np.float32).reshape(-1, 3))
-    cpu.applyRGB(a)
-    return np.clip(a.reshape(np.shape(RGB)), 0.0, 1.0)
+    # On a copy (never the caller's array). The compression works on distances
+    # d = (max - c) / |max|, so it commutes with a positive scale: each pixel is scaled
+    # to max |c| = 1 and back, and d is capped at 1e6 (the curve is then within 1e-7
+    # of its limit), which keeps OCIO's float32 arithmetic from overflowing to NaN
+    # for huge (<= -1e30) components. Infinities are taken as +-3e38; NaN stays NaN.
+    a = np.array(RGB, dtype=np.float64, copy=True).reshape(-1, 3)
+    np.clip(a, -3e38, 3e38, out=a)
+    ach = np.max(a, axis=1, keepdims=True)
+    with np.errstate(invalid="ignore"):
+        np.maximum(a, ach - 1e6 * np.abs(ach), out=a, where=ach != 0)
+    scale = np.max(np.abs(a), axis=1, keepdims=True)
+    scale = np.where(np.isfinite(scale) & (scale > 0), scale, 1.0)
+    unit = np.ascontiguousarray(a / scale, dtype=np.float32)
+    cpu.applyRGB(unit)
+    out = np.clip(unit.astype(np.float64) * scale, 0.0, 1.0).astype(np.float32)
+    return out.reshape(np.shape(RGB))

@@ -140,11 +140,20 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
             f"illuminant must be one of colour.SDS_ILLUMINANTS, got {illuminant!r}") from None
     # colour-science interpolates (Sprague for the 1 nm CMFs / 5 nm D65) and holds the
     # end values constant outside the tabulated range.
-    cmf = np.asarray(cmfs.copy().extrapolate(colour.SpectralShape(wl.min(), wl.max(), 1))[wl])
-    s = np.asarray(sd.copy().extrapolate(colour.SpectralShape(wl.min(), wl.max(), 1))[wl])
+    # (a single wavelength still needs a shape with end > start)
+    shape = colour.SpectralShape(wl.min(), max(wl.max(), wl.min() + 1.0), 1)
+    cmf = np.asarray(cmfs.copy().extrapolate(shape)[wl]).reshape(-1, 3)
+    s = np.asarray(sd.copy().extrapolate(shape)[wl]).reshape(-1)
     lower, upper = spectra.bin_edges(wl)
-    w = cmf * (s * (upper - lower))[:, None]  # bin widths: trapezoid rule
-    return w / w[:, 1].sum()
+    # bin widths: the trapezoid rule; one sample is a point evaluation (width 1)
+    width = (upper - lower) if wl.size > 1 else np.ones(1)
+    w = cmf * (s * width)[:, None]
+    total = w[:, 1].sum()
+    if not total > 0:
+        raise ValueError(f"wavelengths: the luminance weight (y-bar times the illuminant) "
+                         f"is 0 over {wl.min():g}-{wl.max():g} nm; use wavelengths within "
+                         "the visible range")
+    return w / total
 
 
 def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
@@ -283,5 +292,16 @@ def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
 def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
     """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs
     (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm."""
+    try:
+        Y = float(Y)
+    except (TypeError, ValueError):
+        raise ValueError(f"Y must be a finite number >= 0, got {Y!r}") from None
+    if not (np.isfinite(Y) and Y >= 0):
+        raise ValueError(f"Y must be a finite number >= 0, got {Y!r}")
     xyz = cmfs_at(np.arange(380.0, 701.0) if wavelengths is None else wavelengths)
+    if np.any(xyz[:, 1] <= 0):
+        bad = np.asarray(np.arange(380.0, 701.0) if wavelengths is None
+                         else wavelengths, dtype=float)[xyz[:, 1] <= 0][0]
+        raise ValueError(f"wavelengths: y-bar is 0 at {bad:g} nm, which has no luminance "
+                         "to scale to Y")
     return xyz * (Y / xyz[:, 1:2])

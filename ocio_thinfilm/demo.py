@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-from pathlib import Path
+import sys
 
 import numpy as np
 
 from . import clip, colorimetry, spectra
-from .io import check_writable, write_image
+from .io import check_output_file, is_stdout, write_image
 
 SOAP_INDEX = 1.33
 
@@ -42,19 +42,19 @@ def soap_strip(width: int = 1024, height: int = 96, max_thickness_nm: float = 20
 
 
 def run(args) -> int:
-    out = Path(args.out)
-    check_writable(out.parent)
+    out = check_output_file(args.out)
+    text = sys.stderr if is_stdout(out) else sys.stdout  # keep a PNG on stdout clean
     result = soap_film_colour(args.thickness)
     print(f"Soap film, n = {SOAP_INDEX}, t = {args.thickness:g} nm, normal incidence "
-          f"(t' = {result['optical_thickness_nm']:g} nm)")
-    print(f"  XYZ (D65, Y_white = 1)      {np.array2string(result['XYZ'], precision=4)}")
-    print(f"  linear sRGB, unclipped      {np.array2string(result['linear_rgb'], precision=4)}")
-    print(f"  constant-lightness clip     {np.array2string(result['clipped_rgb'], precision=4)}")
+          f"(t' = {result['optical_thickness_nm']:g} nm)", file=text)
+    for label, key in (("XYZ (D65, Y_white = 1)", "XYZ"), ("linear sRGB, unclipped", "linear_rgb"),
+                       ("constant-lightness clip", "clipped_rgb")):
+        print(f"  {label:<28}{np.array2string(result[key], precision=4)}", file=text)
     code = "#" + "".join(f"{int(round(v * 255)):02X}" for v in result["encoded"])
-    print(f"  sRGB-encoded                {code}")
+    print(f"  sRGB-encoded                {code}", file=text)
     write_image(out, soap_strip())
     print(f"wrote {out}: soap-film colours for 0-2 um (top: constant-lightness clip, "
-          "bottom: channel clamp)")
+          "bottom: channel clamp)", file=text)
     return 0
 
 

@@ -22,6 +22,7 @@ exactly what a render farm would run. Output bytes are a function of the argumen
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import re
 import subprocess
@@ -32,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from . import scenes as scene_module
-from .io import UsageError, check_writable, write_image
+from .io import UsageError, check_output_file, check_writable, transaction, write_image
 
 __all__ = ["register", "run", "render_scene", "write_frame", "save_frame", "parse_size", "parse_frames", "MAX_SIDE",
            "MAX_PIXELS", "SCENE_CHOICES"]
@@ -214,11 +215,27 @@ def _exr_attributes(scene, picture, *, seed, frame, display, view):
     return attrs
 
 
+def frame_paths(name: str, out_dir: Path, frame: int | None) -> list[Path]:
+    """The EXR and PNG paths of one frame of one scene."""
+    stem = name if frame is None else f"{name}.{frame:04d}"
+    return [Path(out_dir) / f"{stem}.exr", Path(out_dir) / f"{stem}.png"]
+
+
 def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int | None,
-               display: str, view: str) -> list[Path]:
-    """Write a rendered frame as ``NAME[.####].exr`` and ``.png``; returns the paths."""
+               display: str, view: str, tx=None) -> list[Path]:
+    """Write a rendered frame as ``NAME[.####].exr`` and ``.png``; returns the paths.
+
+    The pair is one transaction (:mod:`.io`): both files are written aside and checked,
+    then renamed together, so a failed EXR never leaves a new PNG beside an old EXR.
+    With ``tx`` they join the caller's transaction instead (committed by the caller)."""
+    if tx is None:
+        with transaction() as own:
+            return save_frame(name, picture, rgb, out_dir, seed=seed, frame=frame,
+                              display=display, view=view, tx=own)
     scene = scene_module.get_scene(name)
     stem = name if frame is None else f"{name}.{frame:04d}"
+    for path in frame_paths(name, out_dir, frame):
+        check_output_file(path)
     channels = ["R", "G", "B"] + list(picture.aovs)
     data = np.concatenate([picture.xyz] + [a[..., None] for a in picture.aovs.values()],
                           axis=-1)
@@ -236,22 +253,22 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
 
     with ThreadPoolExecutor(max_workers=2) as pool:
         exr_job = pool.submit(write_image, out_dir / f"{stem}.exr", data,
-                              channel_names=channels, dtype="half", attributes=attrs)
+                              channel_names=channels, dtype="half", attributes=attrs, tx=tx)
         raw = all((region[2] or view) == "Raw" for region in picture.regions)
         png_tag = "data" if raw else PNG_COLORSPACE[display]
         png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
                               attributes={"png:compressionLevel": 3,
-                                          "oiio:ColorSpace": png_tag})
+                                          "oiio:ColorSpace": png_tag}, tx=tx)
         return [exr_job.result(), png_job.result()]
 
 
 def write_frame(name: str, out_dir: Path, size, *, seed: int, frame: int | None,
-                display: str, view: str, lookup=None) -> list[Path]:
+                display: str, view: str, lookup=None, tx=None) -> list[Path]:
     """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths."""
     picture, rgb = render_scene(name, size, seed=seed, frame=frame or 1, display=display,
                                 view=view, lookup=lookup)
     return save_frame(name, picture, rgb, out_dir, seed=seed, frame=frame, display=display,
-                      view=view)
+                      view=view, tx=tx)
 
 
 # --------------------------------------------------------------------------- #
@@ -277,15 +294,23 @@ def run(args) -> int:
     if frames is not None and len(frames) > 1:
         return _render_frames_in_children(args, frames)
 
-    lookup = make_lookup()
     frame = None if frames is None else frames[0]
+    # Every output is checked before anything is rendered, and all of them are
+    # committed together at the end: a failure leaves every previous file as it was.
     for name in names:
-        start = time.perf_counter()
-        paths = write_frame(name, out_dir, size, seed=args.seed, frame=frame,
-                            display=args.display, view=args.view, lookup=lookup)
-        if not args.quiet:
-            print(f"{name}: wrote {', '.join(str(p) for p in paths)} "
-                  f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)")
+        for path in frame_paths(name, out_dir, frame):
+            check_output_file(path)
+    lookup = make_lookup()
+    messages = []
+    with transaction() as tx:
+        for name in names:
+            start = time.perf_counter()
+            paths = write_frame(name, out_dir, size, seed=args.seed, frame=frame,
+                                display=args.display, view=args.view, lookup=lookup, tx=tx)
+            messages.append(f"{name}: wrote {', '.join(str(p) for p in paths)} "
+                            f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)")
+    if not args.quiet:
+        print("\n".join(messages))
     return 0
 
 
@@ -309,7 +334,16 @@ def _render_frames_in_children(args, frames) -> int:
                 _child_command(args, frame), stdout=None if not args.quiet else
                 subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)))
         frame, proc = running.pop(0)
-        _, err = proc.communicate()
+        try:
+            _, err = proc.communicate()
+        except BaseException:  # Ctrl-C / SIGTERM: stop every child, each cleans up
+            for _, other in [(frame, proc)] + running:
+                with contextlib.suppress(OSError):
+                    other.terminate()
+            for _, other in [(frame, proc)] + running:
+                with contextlib.suppress(Exception):
+                    other.wait(timeout=30)
+            raise
         if proc.returncode != 0 and failed is None:
             lines = [line for line in (err or "").strip().splitlines() if line.strip()]
             last = lines[-1] if lines else f"exit code {proc.returncode}"

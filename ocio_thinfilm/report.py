@@ -60,7 +60,7 @@ from pathlib import Path
 import numpy as np
 
 from . import clip, colorimetry, spectra
-from .io import UsageError, atomic_file, check_writable
+from .io import UsageError, atomic_file, check_writable, transaction
 
 __all__ = [
     "register",
@@ -309,17 +309,22 @@ def machine_description() -> dict:
 class _Context:
     """What every section shares: output folder, mode, figures, raw numbers."""
 
-    def __init__(self, out: Path, quick: bool):
+    def __init__(self, out: Path, quick: bool, tx=None):
         self.out = out
         self.quick = quick
+        self.tx = tx  # every file joins this transaction (committed with report.md)
         self.results: dict = {}
         self.figures: list[str] = []
 
     def savefig(self, fig, name):
         import matplotlib.pyplot as plt
 
-        with atomic_file(self.out / name) as tmp:
-            fig.savefig(tmp, dpi=110, bbox_inches="tight", format="png")
+        if self.tx is not None:
+            fig.savefig(self.tx.file(self.out / name), dpi=110, bbox_inches="tight",
+                        format="png")
+        else:
+            with atomic_file(self.out / name) as tmp:
+                fig.savefig(tmp, dpi=110, bbox_inches="tight", format="png")
         plt.close(fig)
         self.figures.append(name)
         return f"![{name}]({name})"
@@ -1540,11 +1545,17 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
     import matplotlib
 
     matplotlib.use("Agg")
-    from tqdm import tqdm
 
     out = check_writable(out)
     out.mkdir(parents=True, exist_ok=True)
-    ctx = _Context(out, quick)
+    with transaction() as tx:  # plots, report.md and report.json commit together
+        return _run_report(_Context(out, quick, tx), quick, progress)
+
+
+def _run_report(ctx, quick, progress) -> Path:
+    from tqdm import tqdm
+
+    out = ctx.out
     start = time.perf_counter()
     parts, timings = [], {}
     bar = tqdm(SECTIONS, desc="report", unit="section", disable=not progress, file=sys.stderr)
@@ -1573,10 +1584,9 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
     ]
     head += ["## Headline", ""] + _headline(ctx.results) + [""]
     text = "\n".join(head) + "\n" + "\n\n".join(parts) + "\n"
-    with atomic_file(out / "report.md") as tmp:
-        tmp.write_text(text, encoding="utf-8")
-    with atomic_file(out / "report.json") as tmp:
-        tmp.write_text(json.dumps(ctx.results, indent=1, default=_json_default), encoding="utf-8")
+    ctx.tx.write(out / "report.md", text)
+    ctx.tx.write(out / "report.json",
+                 json.dumps(ctx.results, indent=1, default=_json_default))
     return out / "report.md"
 
 

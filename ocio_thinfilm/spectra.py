@@ -94,6 +94,25 @@ def _range_text(minimum, maximum, strict, unit):
     return f" and in [{minimum:g}, {maximum:g}]{unit}"
 
 
+def _count(name, value, minimum=1, maximum=None):
+    """An integer parameter (layers, harmonics): a ValueError naming it otherwise."""
+    if isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
+    try:
+        f = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}") from None
+    if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):
+        limit = f" and <= {maximum}" if maximum is not None else ""
+        raise ValueError(f"{name} must be an integer >= {minimum}{limit}, got {value!r}")
+    return int(f)
+
+
+#: Largest wavelength grid :func:`wavelength_grid` makes, and most Eq. 9 layers.
+MAX_SAMPLES = 10_000_000
+MAX_LAYERS = 100_000
+
+
 def _angle(theta):
     return _array("theta", theta, minimum=0.0, maximum=90.0, unit=" degrees")
 
@@ -116,11 +135,23 @@ def check_wavelengths(wavelengths) -> np.ndarray:
 
 def wavelength_grid(start: float = 360.0, stop: float = 780.0, step: float = 5.0) -> np.ndarray:
     """Uniform wavelength grid in nm, ``start`` and ``stop`` included."""
-    if not (np.isfinite(step) and step > 0):
+    for name, value in (("start", start), ("stop", stop), ("step", step)):
+        try:
+            value = float(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name} must be a number of nm, got {value!r}") from None
+        if not np.isfinite(value):
+            raise ValueError(f"{name} must be finite, got {value}")
+    start, stop, step = float(start), float(stop), float(step)
+    if not step > 0:
         raise ValueError(f"step must be > 0 nm, got {step}")
     if not (0 < start < stop):
         raise ValueError(f"wavelength range must satisfy 0 < start < stop, got {start}..{stop}")
+    if step > stop - start:
+        raise ValueError(f"step must be at most stop - start ({stop - start:g} nm), got {step:g}")
     count = int(round((stop - start) / step)) + 1
+    if count > MAX_SAMPLES:
+        raise ValueError(f"step {step:g} nm gives {count} samples; at most {MAX_SAMPLES}")
     return check_wavelengths(start + step * np.arange(count))
 
 
@@ -225,7 +256,7 @@ def two_beam_reflectance(optical_thickness_nm, wavelengths, *, phase_change: boo
     t = _array("optical_thickness", optical_thickness_nm, minimum=0.0, unit=" nm")
     wl = check_wavelengths(wavelengths)
     phi, dphi = _phase(2.0 * t, wl, band_limited)
-    return _cosine_series([0.5, -0.5 if phase_change else 0.5], phi, dphi)
+    return np.clip(_cosine_series([0.5, -0.5 if phase_change else 0.5], phi, dphi), 0.0, 1.0)
 
 
 def morpho_layer_thickness(theta=0.0, d1: float = MORPHO["d1"], d2: float = MORPHO["d2"],
@@ -255,14 +286,13 @@ def multilayer_reflectance(thickness, wavelengths, layers: int = MORPHO["layers"
     """
     t = _array("thickness", thickness, minimum=0.0, unit=" nm")
     wl = check_wavelengths(wavelengths)
-    if isinstance(layers, (bool, np.bool_)) or int(layers) != layers or layers < 1:
-        raise ValueError(f"layers must be an integer >= 1, got {layers!r}")
-    l = int(layers)
+    l = _count("layers", layers, 1, MAX_LAYERS)
     peak = float((l + 1) ** 2)
     coefficients = [(l + 1) / peak] + [2.0 * (l + 1 - k) / peak for k in range(1, l + 1)]
     # cos(2 k x) = cos(k phi) with phi = 4 pi t / lambda: optical path P = 2 t.
     phi, dphi = _phase(2.0 * t, wl, band_limited)
-    return _cosine_series(coefficients, phi, dphi)
+    # The series is >= 0 and <= 1 exactly; rounding can leave it 1e-11 outside.
+    return np.clip(_cosine_series(coefficients, phi, dphi), 0.0, 1.0)
 
 
 # --------------------------------------------------------------------------- #
@@ -325,9 +355,7 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
     """
     d = _array("thickness", thickness, minimum=0.0, unit=" nm")
     wl = check_wavelengths(wavelengths)
-    if isinstance(harmonics, (bool, np.bool_)) or int(harmonics) != harmonics or harmonics < 1:
-        raise ValueError(f"harmonics must be an integer >= 1, got {harmonics!r}")
-    harmonics = int(harmonics)
+    harmonics = _count("harmonics", harmonics, 1, MAX_LAYERS)
     theta = np.deg2rad(_angle(theta))
     n0 = _complex_index("n_incident", n_incident)
     n1 = _complex_index("n_film", n_film)
@@ -420,7 +448,7 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
         return point(psi, np.exp(-decay * wavenumber) if np.any(decay) else None)
 
     if not band_limited:
-        return exact()
+        return np.clip(exact(), 0.0, 1.0)
     # Lossless propagating film: real path. Fourier-expand R over one period of delta.
     # (A property of the film, not of the product with d: a zero-thickness evanescent
     # film has a real path but R(delta) with poles, which no Fourier series captures.)
@@ -440,8 +468,8 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
                                               for k in range(1, harmonics // 2)]
     smooth = _cosine_series(coefficients, phi_c, dphi)
     if np.all(real_path):
-        return smooth
-    return np.where(real_path[..., None], smooth, exact())
+        return np.clip(smooth, 0.0, 1.0)
+    return np.clip(np.where(real_path[..., None], smooth, exact()), 0.0, 1.0)
 
 
 def transfer_matrix_reflectance(n_layers, thicknesses, wavelengths, theta=0.0, *,
@@ -494,4 +522,4 @@ def transfer_matrix_reflectance(n_layers, thicknesses, wavelengths, theta=0.0, *
             # keep the interface's own total reflection there.
             r = np.divide(a + rz, den, out=a.copy(), where=den != 0)
         out += 0.5 * np.abs(r) ** 2
-    return out
+    return np.clip(out, 0.0, 1.0)  # |r|^2 <= 1; rounding can leave 1e-16 outside

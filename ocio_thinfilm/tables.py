@@ -282,7 +282,11 @@ class Table1D:
         u = self.shaper(x) * (self.size - 1)
         i = np.minimum(np.floor(u).astype(np.int64), self.size - 2)
         f = (u - i)[..., None]
-        return self.values[i] * (1.0 - f) + self.values[i + 1] * f
+        out = self.values[i] * (1.0 - f) + self.values[i + 1] * f
+        if self.encoding == "log":  # negative and NaN thickness: black (as through OCIO)
+            x = np.asarray(x)
+            out[(x < 0) | np.isnan(x)] = 0.0
+        return out
 
     # -- OCIO path --------------------------------------------------------- #
     def shaper_transform(self):
@@ -303,11 +307,28 @@ class Table1D:
     def lut_transform(self):
         return lut1d_transform(self.values)
 
+    def _black_node(self) -> bool:
+        """A thickness table whose t' = 0 entry is not black (no phase change: white)
+        gets a black node in front of it, so negative, -inf and NaN thicknesses give
+        black through OCIO as well (the LUT's clamp lands on that node)."""
+        return self.encoding == "log" and bool(np.any(self.values[0] != 0.0))
+
     def transform(self):
         """OCIO transform from the pixel encoding to CIE-XYZ-D65 (a GroupTransform
         with CLF metadata: shaper, then the Lut1D)."""
         ops = [self.lut_transform()]
-        if self.encoding == "log":
+        if self._black_node():
+            # Nodes i/(n-1) move to (i+1)/n, behind a black node at 0: t' >= 0 is
+            # unchanged, t' < 0 (the log goes negative), -inf and NaN give black;
+            # only -0.6 nm < t' < 0 blends towards the t' = 0 colour.
+            n = self.size
+            shaper = self.shaper_transform()
+            shaper.setLogSideSlopeValue([v * (n - 1) / n for v in
+                                         shaper.getLogSideSlopeValue()])
+            shaper.setLogSideOffsetValue([1.0 / n] * 3)
+            values = np.vstack([np.zeros((1, 3)), self.values])
+            ops = [shaper, lut1d_transform(values)]
+        elif self.encoding == "log":
             # Negative thickness: log of (1 + t/t0) < 1 is negative -> clamped to
             # u = 0 by the LUT; t <= -t0 is clamped by OCIO's log to a tiny argument.
             ops.insert(0, self.shaper_transform())

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm import cli, colorimetry, config, export, tables
+from ocio_thinfilm.io import MARKER
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG_DIR = ROOT / "configs" / "thinfilm"
@@ -21,8 +22,9 @@ LUTS_DIR = ROOT / "luts"
 
 
 def _tree(directory):
+    """Every file under ``directory`` except the bake's ownership marker (not committed)."""
     return sorted(p.relative_to(directory).as_posix() for p in Path(directory).rglob("*")
-                  if p.is_file())
+                  if p.is_file() and p.name != MARKER)
 
 
 _NUMBER = re.compile(rb"-?\d+\.?\d*(?:[eE][-+]?\d+)?")
