@@ -366,7 +366,8 @@ def _legacy_luts(directory):
     owned = set()
     for entry in Path(directory).iterdir():
         if not (entry.is_file() and not entry.is_symlink() and entry.suffix in exts
-                and entry.name.startswith(("ThinFilm_", "ConstantLightnessClip_"))):
+                and entry.name.startswith(("ThinFilm_", "ConstantLightnessClip_",
+                                           "ACEScct_to_"))):
             return None
         owned.add(entry.name)
     return owned
@@ -393,8 +394,8 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
     """
     from . import config
 
-    if isinstance(clip_size, bool) or not 5 <= int(clip_size) <= 129:
-        raise UsageError(f"--clip-size must be in [5, 129], got {clip_size}")
+    if isinstance(clip_size, bool) or not 9 <= int(clip_size) <= 129:
+        raise UsageError(f"--clip-size must be in [9, 129], got {clip_size}")
     claim = claim_directory(out, option="--out", legacy=_legacy_config, last=("config.ocio",))
     luts_claim = None
     if luts is not None:

@@ -520,11 +520,11 @@ def clip_black_faces_RGB(RGB, display):
     its smallest channel is 0 (unchanged when no channel is negative).
     """
     rgb = np.asarray(RGB, dtype=np.float64)
-    Y = rgb @ _luminance(display)
-    lo = rgb.min(axis=-1)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):  # non-finite inputs give non-finite rows, no warning
+        Y = rgb @ _luminance(display)
+        lo = rgb.min(axis=-1)
         t = np.where(lo < 0.0, Y / (Y - lo), 1.0)
-    out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
+        out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
     out[Y <= 0.0] = 0.0
     return out
 

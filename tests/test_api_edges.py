@@ -120,7 +120,7 @@ def baked_config(tmp_path_factory):
     import PyOpenColorIO as ocio
 
     out = tmp_path_factory.mktemp("cfg") / "thinfilm"
-    assert cli.main(["bake", "--out", str(out), "--quiet", "--clip-size", "5"]) == 0
+    assert cli.main(["bake", "--out", str(out), "--quiet", "--clip-size", "9"]) == 0
     ocio.ClearAllCaches()
     return ocio.Config.CreateFromFile(str(out / "config.ocio"))
 

@@ -110,7 +110,7 @@ CHECKERS = [c for c in (shutil.which("ociochecklut"), "/usr/bin/ociochecklut")
 
 
 @pytest.mark.skipif(not CHECKERS, reason="ociochecklut not installed")
-@pytest.mark.parametrize("path", sorted(LUTS_DIR.glob("*")) +
+@pytest.mark.parametrize("path", sorted(LUTS_DIR.glob("[!.]*")) +
                          sorted((CONFIG_DIR / "luts").glob("*.clf")), ids=lambda p: p.name)
 def test_ociochecklut(path):
     for checker in dict.fromkeys(CHECKERS):

@@ -101,7 +101,7 @@ def test_bake_refuses_a_directory_holding_a_users_files(tmp_path, capsys):
     before = snapshot(tmp_path)
     for argv in (["bake", "--out", str(shots)],
                  ["bake", "--out", str(tmp_path / "cfg"), "--luts", str(shots)]):
-        code, _, err = cli_run(argv + ["--quiet", "--clip-size", "5"], capsys)
+        code, _, err = cli_run(argv + ["--quiet", "--clip-size", "9"], capsys)
         one_line_error(code, err, str(shots), "not written by ocio-thinfilm")
         assert snapshot(tmp_path) == before
 
@@ -110,7 +110,7 @@ def test_bake_luts_into_a_users_file_is_refused(tmp_path, capsys):
     user = tmp_path / "notes.txt"
     user.write_text("mine")
     code, _, err = cli_run(["bake", "--out", str(tmp_path / "cfg"), "--luts", str(user),
-                            "--quiet", "--clip-size", "5"], capsys)
+                            "--quiet", "--clip-size", "9"], capsys)
     one_line_error(code, err, "--luts", "not a directory")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
     assert user.read_text() == "mine"
@@ -126,7 +126,7 @@ def test_bake_out_empty_is_a_one_line_error(tmp_path, capsys, monkeypatch, out):
 
 def test_rebake_replaces_only_its_own_files(tmp_path, capsys):
     cfg = tmp_path / "cfg"
-    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "5"], capsys)[0] == 0
+    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     first = files_under(cfg)
     assert marker_files(cfg) == first and "config.ocio" in first
     (cfg / "notes.txt").write_text("the user's")
@@ -135,12 +135,12 @@ def test_rebake_replaces_only_its_own_files(tmp_path, capsys):
     (cfg / "luts" / "Obsolete.clf").write_text("<ProcessList/>")
     with open(cfg / io.MARKER, "a") as f:
         f.write("luts/Obsolete.clf\n")
-    old_clip = (cfg / "luts" / "ConstantLightnessClip_sRGB.clf").read_bytes()
-    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "6"], capsys)[0] == 0
+    old_clip = (cfg / "luts" / "ConstantLightnessClip_sRGB_BlackFaces.clf").read_bytes()
+    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10"], capsys)[0] == 0
     assert (cfg / "notes.txt").read_text() == "the user's"
     assert (cfg / "luts" / "mine.clf").read_text() == "the user's LUT"
     assert not (cfg / "luts" / "Obsolete.clf").exists()
-    assert (cfg / "luts" / "ConstantLightnessClip_sRGB.clf").read_bytes() != old_clip
+    assert (cfg / "luts" / "ConstantLightnessClip_sRGB_BlackFaces.clf").read_bytes() != old_clip
     assert marker_files(cfg) == first
     assert temporaries(tmp_path) == []
     config_loads(cfg)
@@ -150,13 +150,15 @@ def test_committed_config_without_marker_is_recognised(tmp_path, capsys):
     import shutil
 
     cfg = tmp_path / "thinfilm"
-    shutil.copytree(CONFIG_DIR, cfg)
-    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "5"], capsys)[0] == 0
+    # as committed: a working copy may hold the (git-ignored) marker of a local bake
+    committed = shutil.ignore_patterns(".ocio-thinfilm-*")
+    shutil.copytree(CONFIG_DIR, cfg, ignore=committed)
+    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     assert marker_files(cfg) == files_under(cfg)
     config_loads(cfg)
     # ... but not once a user's file sits in it
     shutil.rmtree(cfg)
-    shutil.copytree(CONFIG_DIR, cfg)
+    shutil.copytree(CONFIG_DIR, cfg, ignore=committed)
     (cfg / "README.txt").write_text("mine")
     code, _, err = cli_run(["bake", "--out", str(cfg), "--quiet"], capsys)
     one_line_error(code, err, "--out")
@@ -239,7 +241,7 @@ def test_export_into_a_fifo_writes_through(tmp_path, capsys):
         with open(fifo, "wb"):
             pass
     assert not alive and stat.S_ISFIFO(os.lstat(fifo).st_mode)
-    assert got and got[0].startswith(b"LUT_1D_SIZE 8")
+    assert got and b"\nLUT_1D_SIZE 8\n" in b"\n" + got[0]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pipe.cube"]
 
 
@@ -253,7 +255,7 @@ def test_export_through_a_symlink_keeps_the_link(tmp_path, capsys):
                             "--quiet"], capsys)
     assert code == 0, err
     assert link.is_symlink() and os.readlink(link) == str(target)
-    assert target.read_text().startswith("LUT_1D_SIZE 8")
+    assert "\nLUT_1D_SIZE 8\n" in "\n" + target.read_text()
     assert temporaries(tmp_path) == []
 
 
@@ -276,7 +278,7 @@ def test_export_to_stdout_keeps_the_data_clean(tmp_path, via_link):
                            env=env, timeout=120, cwd=tmp_path)
     assert p.returncode == 0, p.stderr
     text = out.read_text()
-    assert text.startswith("LUT_1D_SIZE 8") and "wrote" not in text
+    assert "\nLUT_1D_SIZE 8\n" in "\n" + text and "wrote" not in text
     assert f"wrote {target}" in p.stderr
     if via_link:
         assert os.readlink(target) == "/proc/self/fd/1"
@@ -368,10 +370,10 @@ def test_full_disk_demo_and_render_keep_the_old_images(small_disk, capsys):
 
 def test_full_disk_bake_luts_leaves_out_as_it_was(small_disk, tmp_path, capsys):
     cfg = tmp_path / "cfg"
-    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "5"], capsys)[0] == 0
+    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     before = snapshot(cfg)
     fill(small_disk)
-    code, _, err = cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "6",
+    code, _, err = cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10",
                             "--luts", str(small_disk / "luts")], capsys)
     one_line_error(code, err)
     assert snapshot(cfg) == before
@@ -379,7 +381,7 @@ def test_full_disk_bake_luts_leaves_out_as_it_was(small_disk, tmp_path, capsys):
     assert temporaries(cfg, small_disk) == []
     # and a bake whose own directory is on the full disk: one line, nothing left
     code, _, err = cli_run(["bake", "--out", str(small_disk / "cfg"), "--quiet",
-                            "--clip-size", "5"], capsys)
+                            "--clip-size", "9"], capsys)
     one_line_error(code, err)
     assert "Traceback" not in err
     assert sorted(p.name for p in small_disk.iterdir()) == ["filler"]
@@ -394,7 +396,7 @@ def test_failing_fsync_keeps_the_old_files(tmp_path, capsys, monkeypatch):
     assert cli_run(["export", "morpho", "--size", "16", "--out", str(good), "--quiet"],
                    capsys)[0] == 0
     assert cli_run(["demo", "--out", str(png)], capsys)[0] == 0
-    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "5"], capsys)[0] == 0
+    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     before = snapshot(tmp_path)
 
     def enospc(path):
@@ -403,7 +405,7 @@ def test_failing_fsync_keeps_the_old_files(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(io, "_fsync_file", enospc)
     for argv in (["export", "film", "--out", str(good), "--quiet"],
                  ["demo", "--out", str(png)],
-                 ["bake", "--out", str(cfg), "--quiet", "--clip-size", "6"]):
+                 ["bake", "--out", str(cfg), "--quiet", "--clip-size", "10"]):
         code, _, err = cli_run(argv, capsys)
         one_line_error(code, err, "No space left")
     assert snapshot(tmp_path) == before
@@ -423,8 +425,8 @@ def baked(tmp_path_factory):
     import shutil
 
     base = tmp_path_factory.mktemp("baked")
-    assert cli.main(["bake", "--out", str(base / "cfg"), "--quiet", "--clip-size", "5"]) == 0
-    assert cli.main(["bake", "--out", str(base / "new"), "--quiet", "--clip-size", "6"]) == 0
+    assert cli.main(["bake", "--out", str(base / "cfg"), "--quiet", "--clip-size", "9"]) == 0
+    assert cli.main(["bake", "--out", str(base / "new"), "--quiet", "--clip-size", "10"]) == 0
 
     def copy(dest):
         shutil.copytree(base / "cfg", dest, symlinks=True)
@@ -447,7 +449,7 @@ def test_bake_killed_at_each_commit_step(tmp_path, baked, point):
             devnull = os.open(os.devnull, os.O_WRONLY)
             os.dup2(devnull, 1)
             os.dup2(devnull, 2)
-            code = cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "6",
+            code = cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10",
                              "--luts", str(luts)])
         finally:
             os._exit(code)
@@ -456,7 +458,7 @@ def test_bake_killed_at_each_commit_step(tmp_path, baked, point):
     config_loads(cfg)  # old, new or a mix of complete files: it loads
     assert marker_files(cfg) >= files_under(cfg)  # everything of ours is listed
     # the next run cleans up and completes
-    assert cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "6",
+    assert cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10",
                      "--luts", str(luts)]) == 0
     config_loads(cfg)
     assert marker_files(cfg) == files_under(cfg)
@@ -483,7 +485,7 @@ def _bake_process(out, *extra):
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     env.pop("OCIO_THINFILM_FAULT", None)
     return subprocess.Popen([sys.executable, "-m", "ocio_thinfilm", "bake", "--out", str(out),
-                             "--quiet", "--clip-size", "6", *extra], env=env,
+                             "--quiet", "--clip-size", "10", *extra], env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
@@ -503,7 +505,7 @@ def test_bake_killed_at_random_moments(tmp_path, baked):
         p.kill()
         p.communicate(timeout=60)
         config_loads(cfg)
-    assert cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "5"]) == 0
+    assert cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"]) == 0
     config_loads(cfg)
     assert temporaries(tmp_path) == []
 
@@ -562,7 +564,7 @@ def test_argument_errors_are_one_line(argv, needles, capsys, tmp_path, monkeypat
 def test_bake_luts_nested_in_out_is_refused(tmp_path, capsys):
     for luts in ("cfg/luts", "cfg", "."):
         code, _, err = cli_run(["bake", "--out", str(tmp_path / "cfg"), "--luts",
-                                str(tmp_path / luts), "--quiet", "--clip-size", "5"], capsys)
+                                str(tmp_path / luts), "--quiet", "--clip-size", "9"], capsys)
         one_line_error(code, err, "--luts")
     assert list(tmp_path.iterdir()) == []
 
@@ -575,7 +577,7 @@ def test_leftovers_of_the_old_directory_swap_are_removed(tmp_path, capsys, baked
         (tmp_path / name / io.MARKER).unlink()  # the old versions wrote no marker
     (tmp_path / ".cfg.abcdefgh").mkdir()
     (tmp_path / ".cfg.abcdefgh" / "mine.txt").write_text("the user's")
-    assert cli_run(["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "5"],
+    assert cli_run(["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "9"],
                    capsys)[0] == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == [".cfg.abcdefgh", "cfg"]
 
@@ -589,6 +591,6 @@ def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch)
                             str(tmp_path / "a" / "b" / "x.cube"), "--quiet"], capsys)
     one_line_error(code, err, "x.cube")
     code, _, err = cli_run(["bake", "--out", str(tmp_path / "c" / "cfg"), "--quiet",
-                            "--clip-size", "5"], capsys)
+                            "--clip-size", "9"], capsys)
     one_line_error(code, err)
     assert list(tmp_path.iterdir()) == []
