@@ -482,6 +482,20 @@ def _float(option, text):
 
 
 def _run_bake(args) -> int:
+    if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
+        from . import merge  # --into CONFIG and/or an .ocioz archive (issue 10)
+
+        if args.into and args.out == DEFAULT_CONFIG_DIR:
+            raise UsageError("--into needs --out DIR (or FILE.ocioz)")
+        if args.luts is not None:
+            raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
+        clip_size = _int("--clip-size", args.clip_size)
+        if isinstance(clip_size, bool) or not 9 <= int(clip_size) <= 129:
+            raise UsageError(f"--clip-size must be in [9, 129], got {clip_size}")
+        path = (merge.bake_into(args.into, args.out, clip_size=clip_size) if args.into
+                else merge.bake_archive(args.out, clip_size=clip_size))
+        print(f"wrote {path}")
+        return 0
     path = bake(args.out, clip_size=_int("--clip-size", args.clip_size),
                 show_progress=not args.quiet, luts=args.luts)
     print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
@@ -514,6 +528,11 @@ def register(sub) -> None:
     p.add_argument("--luts", default=None, metavar="DIR",
                    help="also write the standalone LUT set (every table, display and "
                         "format) into DIR, e.g. luts")
+    p.add_argument("--into", default=None, metavar="CONFIG",
+                   help="add the thin-film input spaces, the clip views and named "
+                        "transforms to CONFIG (a config file or a built-in ocio:// URI, "
+                        "e.g. ocio://studio-config-latest) and write the result to --out "
+                        "(see docs/studio.md); --out FILE.ocioz writes an OCIO archive")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_run_bake)
 

@@ -1,0 +1,383 @@
+"""Add the thin-film spaces and the constant-lightness clip to an existing OCIO config
+(``ocio-thinfilm bake --into CONFIG``), and write configs as OCIO archives (``.ocioz``).
+
+Studios run the ACES studio/CG configs (OCIO ships them built in, ``ocio://...``) and
+add to them. :func:`merge_config` takes such a config and adds, leaving everything
+else of it as it was:
+
+- the three thin-film input spaces (scene-referred: the table to CIE-XYZ-D65, then the
+  config's own conversion to its scene reference);
+- on every SDR display whose display colour space has the primaries and white of a
+  gamut the clip supports (sRGB / Rec.709, Display P3 / P3-D65, Rec.2020) -- found by
+  running the display colour space's own processor on test colours, whatever its name
+  and encoding -- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression``
+  (and ``Channel Clamp`` on displays without an ``Un-tone-mapped`` view, which is that
+  baseline already), each through one view transform per gamut;
+- named transforms: the clip per matched gamut (display-linear in and out) and the
+  three tables (pixel value in, CIE XYZ out);
+- ``luts`` on the search path, with the LUT files the additions use.
+
+The conversions come from the config itself, through its ``cie_xyz_d65_interchange``
+role, as OCIO converts between scene and display colour spaces: when that colour space
+is display-referred (the ACES configs), scene reference -> CIE-XYZ-D65 is the config's
+default view transform followed by the interchange space's own transform (an identity
+there); a scene-referred interchange space gives it directly. The result must be
+linear (checked numerically), or the merge is refused.
+
+Why not ``PyOpenColorIO.ConfigMerger`` (OCIO 2.6): its reference-space adaptation
+(``adjust_input_reference_space``) finds each config's interchange space by heuristics
+against the built-in CG config, and its display/view merge adds views only to displays
+of the same name, so the input config would have to replicate the base's display names
+and display colour spaces just to be merged away again. Editing a copy of the base
+config with OCIO's Config API does exactly this job in a few calls, and everything not
+added is the base's own objects, untouched.
+
+Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`,
+:func:`bake_into`, :func:`write_archive`, :func:`bake_archive`.
+"""
+
+from __future__ import annotations
+
+import copy
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from . import clip, colorimetry, config, tables
+from .io import UsageError, atomic_directory, atomic_file, check_writable
+
+__all__ = ["load_base", "match_displays", "merge_config", "bake_into", "write_archive",
+           "bake_archive", "MERGED_VIEWS"]
+
+#: Views added to every matched display (Channel Clamp only where no Un-tone-mapped).
+MERGED_VIEWS = ("Constant-Lightness Clip", "ACES Gamut Compression", "Channel Clamp")
+#: Minimum profile version: ACES_GamutComp13 and the LUT ops need 2.1.
+MIN_PROFILE = (2, 1)
+#: Tolerance of the display match, in code values for the white and the grey ramp and in
+#: display-linear values for colours (float32 round-off ~1e-6; the nearest other
+#: gamut, e.g. P3-D60 against P3-D65, is off by > 1e-2).
+MATCH_TOLERANCE = 2e-4
+
+
+def _ocio():
+    import PyOpenColorIO as ocio
+
+    return ocio
+
+
+def load_base(source):
+    """The base config from a file or an ``ocio://`` URI (one-line errors)."""
+    ocio = _ocio()
+    text = str(source)
+    if not text.startswith("ocio://") and not Path(text).is_file():
+        raise UsageError(f"--into {text}: no such config file (or ocio:// URI)")
+    try:
+        return ocio.Config.CreateFromFile(text)
+    except ocio.Exception as error:
+        raise UsageError(f"--into {text}: {str(error).splitlines()[0]}") from None
+
+
+def _cs_transform(cs, to_reference):
+    """A colour space's transform to (or from) its reference, None for an identity."""
+    ocio = _ocio()
+    want, other = ((ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)
+                   if to_reference else
+                   (ocio.COLORSPACE_DIR_FROM_REFERENCE, ocio.COLORSPACE_DIR_TO_REFERENCE))
+    t = cs.getTransform(want)
+    if t is not None:
+        return t
+    t = cs.getTransform(other)
+    if t is None:
+        return None
+    g = ocio.GroupTransform()
+    g.appendTransform(t)
+    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return g
+
+
+def _vt_from_scene(vt):
+    ocio = _ocio()
+    t = vt.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    if t is not None:
+        return t
+    t = vt.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
+    g = ocio.GroupTransform()
+    g.appendTransform(t)
+    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return g
+
+
+def _group(parts):
+    ocio = _ocio()
+    g = ocio.GroupTransform()
+    for part in parts:
+        if part is not None:
+            g.appendTransform(part)
+    return g
+
+
+def _inverse(transform):
+    ocio = _ocio()
+    g = _group([transform])
+    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return g
+
+
+def _apply(cfg, transform, values):
+    out = np.ascontiguousarray(values, dtype=np.float32).copy()
+    cfg.getProcessor(transform).getDefaultCPUProcessor().applyRGB(out)
+    return out.astype(np.float64)
+
+
+def interchange(cfg):
+    """(scene reference -> CIE-XYZ-D65, CIE-XYZ-D65 -> display reference) of ``cfg``,
+    from its ``cie_xyz_d65_interchange`` role (see the module docstring)."""
+    ocio = _ocio()
+    roles = dict(cfg.getRoles())
+    name = roles.get("cie_xyz_d65_interchange")
+    cs = cfg.getColorSpace(name) if name else None
+    if cs is None:
+        raise UsageError("the config has no cie_xyz_d65_interchange role (needed to place "
+                         "CIE-XYZ-D65 in it)")
+    if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY:
+        vt_name = cfg.getDefaultViewTransformName() or (
+            next(iter(cfg.getViewTransformNames()), None))
+        vt = cfg.getViewTransform(vt_name) if vt_name else None
+        if vt is None or vt.getReferenceSpaceType() != ocio.REFERENCE_SPACE_SCENE:
+            raise UsageError(f"the cie_xyz_d65_interchange space {name!r} is "
+                             "display-referred and the config has no scene-referred "
+                             "default view transform to reach it")
+        scene_to_xyz = _group([_vt_from_scene(vt), _cs_transform(cs, to_reference=False)])
+        xyz_to_display = _group([_cs_transform(cs, to_reference=True)])
+    else:
+        scene_to_xyz = _group([_cs_transform(cs, to_reference=False)])
+        vt_name = cfg.getDefaultViewTransformName() or (
+            next(iter(cfg.getViewTransformNames()), None))
+        if not vt_name:
+            raise UsageError("the config has no view transform: no display reference")
+        xyz_to_display = _group([_cs_transform(cs, to_reference=True),
+                                 _vt_from_scene(cfg.getViewTransform(vt_name))])
+    # it must be a colorimetric (linear) conversion, not a tone scale
+    rng = np.random.default_rng(1)
+    a, b = rng.uniform(0.0, 1.0, (2, 64, 3))
+    for t in (scene_to_xyz, xyz_to_display):
+        fa, fb, fab = (_apply(cfg, t, v) for v in (a, b, 0.5 * a + 0.25 * b))
+        if not np.allclose(fab, 0.5 * fa + 0.25 * fb, atol=1e-5):
+            raise UsageError(f"the config's conversion to cie_xyz_d65_interchange ({name!r}) "
+                             "is not linear: cannot place CIE-XYZ-D65 in it")
+    return scene_to_xyz, xyz_to_display
+
+
+def _display_colorspace(cfg, display):
+    """The display colour space of ``display``: the one its views use (the colour space
+    named like the display for ``<USE_DISPLAY_NAME>``)."""
+    ocio = _ocio()
+    for view in cfg.getViews(display):
+        name = cfg.getDisplayViewColorSpaceName(display, view)
+        if name == "<USE_DISPLAY_NAME>":
+            name = display
+        cs = cfg.getColorSpace(name)
+        if (cs is not None and not cs.isData()
+                and cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY):
+            return cs
+    return None
+
+
+def _match_gamut(cfg, xyz_to_display, cs):
+    """The clip display whose primaries and white ``cs`` has (SDR, any per-channel
+    encoding with white at code 1), or None. XYZ of in-gamut RGB of the candidate gamut
+    goes through the colour space's own processor; a grey ramp gives the encoding
+    curve, and every colour must come out as that curve applied per channel."""
+    if cs.getEncoding() in ("hdr-video", "edr-video"):
+        return None
+    transform = _group([xyz_to_display, _cs_transform(cs, to_reference=False)])
+    ramp = np.linspace(0.0, 1.0, 257)
+    rng = np.random.default_rng(7)
+    # colours whose channels sit on the ramp's nodes: primaries, secondaries, random
+    index = np.vstack([np.eye(3, dtype=int) * 256, np.eye(3, dtype=int) * 128,
+                       256 - np.eye(3, dtype=int) * 256, rng.integers(0, 257, (200, 3))])
+    rgb = ramp[index]
+    for display in clip.DISPLAYS:
+        to_rgb = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display)).T
+        try:
+            grey = _apply(cfg, transform, np.repeat(ramp[:, None], 3, 1) @ to_rgb)
+            codes = _apply(cfg, transform, rgb @ to_rgb)
+        except Exception:  # noqa: BLE001 -- a colour space that cannot process: no match
+            return None
+        curve = grey[:, 1]
+        if (np.abs(grey - curve[:, None]).max() > MATCH_TOLERANCE
+                or abs(curve[-1] - 1.0) > MATCH_TOLERANCE or abs(curve[0]) > MATCH_TOLERANCE
+                or np.any(np.diff(curve) <= 0)):
+            continue
+        # compared display-linear (through the curve's inverse, exact at the nodes):
+        # a steep encoding near black would magnify float round-off of a zero channel
+        linear = np.interp(codes, curve, ramp)
+        if np.abs(linear - rgb).max() <= MATCH_TOLERANCE:
+            return display
+    return None
+
+
+def match_displays(cfg):
+    """{display of ``cfg``: (its display colour space name, clip display)} for every
+    display that the clip supports."""
+    _, xyz_to_display = interchange(cfg)
+    found = {}
+    for display in cfg.getDisplays():
+        cs = _display_colorspace(cfg, display)
+        if cs is None:
+            continue
+        gamut = _match_gamut(cfg, xyz_to_display, cs)
+        if gamut is not None:
+            found[display] = (cs.getName(), gamut)
+    return found
+
+
+def merge_config(base, *, clip_size=tables.CLIP_SIZE):
+    """``base`` plus the additions (module docstring) as a new, validated-ready config,
+    and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
+    ocio = _ocio()
+    version = (base.getMajorVersion(), base.getMinorVersion())
+    if version < MIN_PROFILE:
+        raise UsageError(f"the config's profile version {version[0]}.{version[1]} is below "
+                         f"{MIN_PROFILE[0]}.{MIN_PROFILE[1]} (needed by the clip's LUT ops)")
+    scene_to_xyz, xyz_to_display = interchange(base)
+    matches = match_displays(base)
+    if not matches:
+        raise UsageError("the config has no SDR display with the primaries and white of "
+                         f"{', '.join(clip.DISPLAYS)} (or Rec.709)")
+    gamuts = [d for d in clip.DISPLAYS if d in {g for _, g in matches.values()}]
+    data = config.config_data(clip_size=clip_size)
+    cfg = copy.deepcopy(base)
+
+    def _taken(name):
+        return (cfg.getColorSpace(name) is not None or cfg.getViewTransform(name) is not None
+                or cfg.getNamedTransform(name) is not None)
+
+    # input spaces: table -> CIE-XYZ-D65 -> the config's scene reference
+    spaces = [s for s in data.colorspaces if s["name"] in config.THIN_FILM_SPACES]
+    for spec in spaces:
+        if _taken(spec["name"]):
+            raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
+        spec = dict(spec, to_reference=_group([spec["to_reference"],
+                                               _inverse(scene_to_xyz)]))
+        cfg.addColorSpace(config.colorspace_factory(**spec))
+
+    # view transforms: scene reference -> CIE-XYZ-D65 -> the view -> display reference
+    described = {vt["name"]: vt for vt in data.view_transforms}
+    added_views = []
+    for gamut in gamuts:
+        for view in MERGED_VIEWS:
+            spec = described[f"{view} - {gamut}"]
+            if _taken(spec["name"]):
+                raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
+            parts = config._view_parts(gamut, view, False, data.luts, clip_size)
+            cfg.addViewTransform(config.view_transform_factory(
+                name=spec["name"], family=spec["family"], description=spec["description"],
+                from_reference=_group([scene_to_xyz, parts, xyz_to_display])))
+    for display, (cs_name, gamut) in matches.items():
+        views = list(base.getViews(display))
+        for view in MERGED_VIEWS:
+            if view in views:
+                raise UsageError(f"display {display!r} already has a view {view!r}")
+            if view == "Channel Clamp" and "Un-tone-mapped" in views:
+                continue  # the base's colorimetric view is that baseline already
+            cfg.addDisplayView(display, view, f"{view} - {gamut}", cs_name, "", "", "")
+            if view not in added_views:
+                added_views.append(view)
+    active = list(base.getActiveViews())
+    if active:
+        cfg.setActiveViews(", ".join(active + [v for v in added_views if v not in active]))
+    # named transforms: the clip per gamut and the tables
+    for spec in config.named_transforms(gamuts, clip_size=clip_size):
+        if _taken(spec["name"]):
+            raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
+        cfg.addNamedTransform(config.named_transform_factory(**spec))
+    paths = list(cfg.getSearchPaths())
+    if config.LUT_DIRECTORY not in paths:
+        cfg.addSearchPath(config.LUT_DIRECTORY)
+    cfg.setDescription((base.getDescription().rstrip() + "\n\n" if base.getDescription()
+                        else "") + "Extended by ocio-thinfilm (`ocio-thinfilm bake --into`): "
+                        "thin-film input spaces, the constant-lightness clip views and "
+                        "named transforms.")
+    names = [config.named_lut(s[2]) for s in config.THIN_FILM_SPACES.values()]
+    names += [config.named_lut(config._clip_stem(g, w)) for g in gamuts for w in (False, True)]
+    return cfg, {name: data.luts[name] for name in names}, matches
+
+
+def _copy_base_files(base, source, directory):
+    """A base config file's relative search-path folders, copied next to the result."""
+    if str(source).startswith("ocio://"):
+        return
+    root = Path(source).resolve().parent
+    for entry in list(base.getSearchPaths()):
+        if not entry or Path(entry).is_absolute() or "$" in entry:
+            continue
+        src, dst = root / entry, Path(directory) / entry
+        if src.is_dir() and src.resolve() != root and not dst.exists():
+            shutil.copytree(src, dst)
+
+
+def write_merged(source, directory, *, clip_size=tables.CLIP_SIZE):
+    """Write the merged config (``config.ocio``, ``luts/``) into the existing
+    ``directory``; returns (config path, display matches)."""
+    ocio = _ocio()
+    base = load_base(source)
+    cfg, luts, matches = merge_config(base, clip_size=clip_size)
+    directory = Path(directory)
+    _copy_base_files(base, source, directory)
+    (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
+    raw = ocio.Config.CreateRaw()
+    for filename, transform in sorted(luts.items()):
+        transform.write("Academy/ASC Common LUT Format",
+                        str(directory / config.LUT_DIRECTORY / filename), raw)
+    cfg.setWorkingDir(str(directory))
+    cfg.validate()
+    for display in matches:
+        for view in cfg.getViews(display):
+            cfg.getProcessor(dict(cfg.getRoles())["cie_xyz_d65_interchange"], display, view,
+                             ocio.TRANSFORM_DIR_FORWARD)
+    for name in cfg.getNamedTransformNames():
+        cfg.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD)
+    path = directory / "config.ocio"
+    text = cfg.serialize()
+    path.write_text(text if text.endswith("\n") else text + "\n")
+    return path, matches
+
+
+def write_archive(config_path, out):
+    """Archive the config folder of ``config_path`` as ``out`` (``.ocioz``, OCIO >= 2.2
+    to read), atomically."""
+    ocio = _ocio()
+    cfg = ocio.Config.CreateFromFile(str(config_path))
+    if not cfg.isArchivable():
+        raise UsageError(f"{config_path}: not archivable (absolute or parent search paths "
+                         "or LUT paths)")
+    with atomic_file(Path(out)) as tmp:
+        cfg.archive(str(tmp))
+    return Path(out)
+
+
+def bake_into(source, out, *, clip_size=tables.CLIP_SIZE):
+    """``ocio-thinfilm bake --into SOURCE --out OUT``: a folder or an ``.ocioz``."""
+    out = Path(out)
+    check_writable(out.parent if str(out.parent) else Path("."))
+    if out.suffix.lower() == ".ocioz":
+        with tempfile.TemporaryDirectory() as tmp:
+            path, _ = write_merged(source, tmp, clip_size=clip_size)
+            return write_archive(path, out)
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"--out {out}: not a directory")
+    with atomic_directory(out) as tmp:
+        write_merged(source, tmp, clip_size=clip_size)
+    return out / "config.ocio"
+
+
+def bake_archive(out, *, clip_size=tables.CLIP_SIZE):
+    """``ocio-thinfilm bake --out thinfilm.ocioz``: the project's config as an archive."""
+    out = Path(out)
+    check_writable(out.parent if str(out.parent) else Path("."))
+    with tempfile.TemporaryDirectory() as tmp:
+        path = config.write_config(tmp, clip_size=clip_size)
+        return write_archive(path, out)
