@@ -127,6 +127,36 @@ def accuracy():
     return out
 
 
+BEGIN, END = "<!-- bench_gamut_map:begin -->", "<!-- bench_gamut_map:end -->"
+
+
+def numbers_markdown(result):
+    """The measured tables of docs/gamut_map.md, from the benchmark's JSON."""
+    out = ["| display | set | colours | dE2000 mean | p99 | max | max \\|dY\\| | in-gamut max |",
+           "|---|---|---|---|---|---|---|---|"]
+    for display, sets in result["accuracy"].items():
+        for name, m in sets.items():
+            out.append(f"| {display} | {name} | {m['n']} | {m['mean']:.3f} | {m['p99']:.3f} | "
+                       f"{m['max']:.3f} | {m['dY_max']:.1e} | {m['in_gamut_max']:.3f} |")
+    if result.get("speed"):
+        out += ["", "| data set | clip | ACES view | ACES bare | 65³ Lut3D | clip / ACES view | "
+                "clip / ACES bare | clip / Lut3D |", "|---|---|---|---|---|---|---|---|"]
+        for r in result["speed"]:
+            m = r["mpix_per_s"]
+            out.append(f"| {r['dataset']} | {m['clip']:.1f} | {m['aces']:.1f} | "
+                       f"{m['aces bare']:.1f} | {m['lut65']:.1f} | {r['clip_over_aces']:.2f}× | "
+                       f"{r['clip_over_aces_bare']:.2f}× | {r['clip_over_lut65']:.2f}× |")
+    return "\n".join(out)
+
+
+def update_markdown(path, result):
+    """Replace the text between BEGIN and END in ``path`` by :func:`numbers_markdown`."""
+    text = Path(path).read_text()
+    head, rest = text.split(BEGIN, 1)
+    _, tail = rest.split(END, 1)
+    Path(path).write_text(f"{head}{BEGIN}\n{numbers_markdown(result)}\n{END}{tail}")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--size", type=int, default=1024)
@@ -147,6 +177,9 @@ def main(argv=None):
     if args.no_speed:
         path.write_text(json.dumps(result, indent=2) + "\n")
         print(f"wrote {path}")
+        doc = ROOT / "docs" / "gamut_map.md"
+        if doc.exists():
+            update_markdown(doc, result)
         return
     rows = measure(args.size, args.repeats)
     print(f"{'data set':20s} {'clip':>7s} {'aces':>7s} {'bare':>7s} {'lut65':>7s}   "
@@ -159,6 +192,10 @@ def main(argv=None):
     result["speed"] = rows
     path.write_text(json.dumps(result, indent=2) + "\n")
     print(f"wrote {path}")
+    doc = ROOT / "docs" / "gamut_map.md"
+    if doc.exists():
+        update_markdown(doc, result)
+        print(f"updated {doc}")
 
 
 if __name__ == "__main__":

@@ -175,3 +175,20 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
                 if not (np.all(np.isfinite(px)) and px.min() >= -TOL and px.max() <= 1.0 + TOL):
                     bad.append((src, display, view, float(np.nanmin(px)), float(np.nanmax(px))))
     assert not bad, bad[:10]
+
+
+def test_documented_numbers_come_from_the_benchmark():
+    """docs/gamut_map.md's measured tables are what benchmarks/bench_gamut_map.py
+    renders from reports/bench_gamut_map.json (no figure typed by hand)."""
+    import importlib.util
+    import json
+
+    root = Path(__file__).resolve().parents[1]
+    spec = importlib.util.spec_from_file_location("bench_gamut_map",
+                                                  root / "benchmarks" / "bench_gamut_map.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    result = json.loads((root / "reports" / "bench_gamut_map.json").read_text())
+    doc = (root / "docs" / "gamut_map.md").read_text()
+    section = doc.split(bench.BEGIN, 1)[1].split(bench.END, 1)[0].strip()
+    assert section == bench.numbers_markdown(result)

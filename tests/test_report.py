@@ -126,3 +126,17 @@ def test_oklch_gamut_map_follows_css_color_4():
     # Compared with a clamp, it keeps more of the lightness on the spectrum.
     lab_c = colour.XYZ_to_Oklab(clip.clamp_RGB(rgb) @ Minv.T)
     assert np.abs(lab1[mid, 0] - lab0[mid, 0]).mean() < np.abs(lab_c[mid, 0] - lab0[mid, 0]).mean()
+
+
+def test_readme_headline_is_the_committed_reports():
+    """The README quotes the headline of reports/report.md verbatim (no number typed
+    by hand): the lines between its markers are the report's headline lines."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    report = (root / "reports" / "report.md").read_text()
+    headline = report.split("## Headline\n\n", 1)[1].split("\n\n", 1)[0].strip().split("\n")
+    readme = (root / "README.md").read_text()
+    quoted = readme.split("<!-- report:headline:begin -->\n", 1)[1].split(
+        "\n<!-- report:headline:end -->", 1)[0].split("\n")
+    assert quoted == [line for line in headline if not line.startswith("- Machine:")]
