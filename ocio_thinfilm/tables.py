@@ -447,10 +447,11 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 #
 # Pass 2, U, works on that RGB directly: every face, the white point and the planes
 # R = G, G = B, R = B where the binding face changes are grid or split planes; below
-# 1 the grid nodes sit at display-encoded values and the LUT stores display code
-# values, so the identity (every in-gamut colour) is reproduced exactly and the
-# display encoding costs nothing. Nothing follows the second LUT, so the LUTs'
-# rounding (16-bit files, half-float GPU textures) is never amplified.
+# 1 the grid nodes sit at sRGB-encoded values and the LUT stores sRGB code values, so
+# the identity (every in-gamut colour) is reproduced exactly and the display encoding
+# costs nothing (sRGB, Display P3) or one analytic op (Rec.2020). No gain follows a
+# LUT, so the LUTs' rounding (16-bit files, half-float GPU textures) is never
+# amplified. Design notes and measurements: docs/gamut_map.md.
 #: Default edge length of both clip LUTs.
 CLIP_SIZE = 65
 #: The black pass's chart covers these colours (with a uniform grid): the spectral
@@ -481,9 +482,6 @@ WORKING_ENCODING = "sRGB"
 LUT_CODE_MAX = 65535
 #: Components are limited to [0, LIMIT] before the chart (see :func:`xyz_limit_transform`).
 LIMIT = 1e6
-#: The canonical triangle the primaries are sent to: its edges a = 0, b = 1 and
-#: a = b are grid planes and tetrahedral split planes.
-_CANONICAL = np.array([[0.0, 0.0], [0.0, 1.0], [1.0, 1.0]])
 
 
 def xyz_limit_transform():
