@@ -32,9 +32,10 @@ _NUMBER = re.compile(rb"-?\d+\.?\d*(?:[eE][-+]?\d+)?")
 
 def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
     """True if two files differ only in numeric tokens, each by at most one rounding
-    step -- 1e-7 for decimals (tables.quantize), one code for the 16-bit integer LUTs --
-    the trace a different SIMD code path (numpy's or OCIO's CPU dispatch on another CPU
-    generation) can leave."""
+    step -- 1e-7 for decimals (tables.quantize), one code for the 16-bit integer LUTs,
+    one half-float step (2^-10 relative) for the half-float LUT of the clip's first
+    pass -- the trace a different SIMD code path (numpy's or OCIO's CPU dispatch on
+    another CPU generation) can leave."""
     if _NUMBER.sub(b"#", x) != _NUMBER.sub(b"#", y):
         return False
     tx, ty = _NUMBER.findall(x), _NUMBER.findall(y)
@@ -43,7 +44,8 @@ def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
     a = np.array([float(t) for t in tx])
     b = np.array([float(t) for t in ty])
     integer = np.array([b"." not in t and b"e" not in t.lower() for t in ty])
-    step = np.where(integer, 1.0, 1.5e-7 + 1e-7 * np.abs(b))
+    half = b"16f" in y  # a CLF holding half floats
+    step = np.where(integer, 1.0, 1.5e-7 + (2.0 ** -10 if half else 1e-7) * np.abs(b))
     return bool(np.all(np.abs(a - b) <= step))
 
 
