@@ -137,8 +137,9 @@ def uvY_uniform(display, size):
 def options(quick):
     """The shipped two-pass design at several sizes, and two single-LUT baselines.
 
-    Rejected designs measured while choosing it (sRGB, 65^3 unless noted; dE2000 p99 /
-    max on object colours, then on monochromatic stimuli; see docs/gamut_map.md):
+    Rejected designs measured while choosing it, with prototypes not kept here (sRGB,
+    65^3 unless noted; dE2000 p99 / max on object colours, then on monochromatic
+    stimuli; indicative; see docs/gamut_map.md):
     one Lut3D over RGB_TO_HSV of display RGB 4.2 / 16.7, 39 / 42 (OCIO's extended HSV
     is singular where max = -min); one Lut3D over an xy chart with Y 1.1 / 5.5, 0.7 /
     2.4 (the faces through white cut the cells); one Lut3D over (R, B, Y) 7.3 / 15.7
