@@ -119,10 +119,37 @@ def _fraction_to_boundary(values, grey):
 
 
 def clip_RGB(RGB, display: str = "sRGB"):
-    """Constant-lightness clip of display-linear RGB into the unit cube.
+    """Constant-lightness clip of display-linear RGB into the unit cube (Section 3.2).
 
-    ``RGB`` is any array with a last axis of 3 in the linear RGB of ``display``
-    (RGB = 1 is the display's white). Returns the clipped RGB, same shape and dtype.
+    The ray test of the paper's Section 3.2 in the display's RGB, where the
+    parallelepiped is the unit cube and the grey of luminance Y is (Y, Y, Y).
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display``, last axis 3 (RGB = 1 is its white).
+    display : str
+        One of :data:`DISPLAYS`.
+
+    Returns
+    -------
+    numpy.ndarray
+        The clipped RGB, same shape and dtype (float32 or float64).
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    In-gamut colours are unchanged; an out-of-gamut colour keeps its luminance:
+
+    >>> clip_RGB([0.5, 0.4, 0.3]).tolist()
+    [0.5, 0.4, 0.3]
+    >>> w = colorimetry.RGB_to_XYZ(np.eye(3), "sRGB")[:, 1]  # luminance weights
+    >>> out = clip_RGB([1.2, 0.5, -0.1])
+    >>> bool(in_gamut(out)), bool(np.isclose(out @ w, np.dot([1.2, 0.5, -0.1], w)))
+    (True, True)
     """
     M = _display_matrix(display)
     luminance = np.linalg.inv(M)[1]  # Y = luminance . RGB

@@ -2,7 +2,8 @@
 would), so the documentation cannot drift from the code. Their expected values are
 independent of the code: hand-computed (optical path, quarter wave, Eq. 9's peak,
 Eq. 14 at normal incidence) or documented elsewhere (colour-science's thin_film_tmm
-doctest value for a 250 nm film of index 1.5)."""
+doctest value for a 250 nm film of index 1.5; the D65 white; the luminance a clip
+keeps)."""
 
 from __future__ import annotations
 
@@ -10,9 +11,9 @@ import doctest
 
 import pytest
 
-from ocio_thinfilm import spectra
+from ocio_thinfilm import clip, colorimetry, spectra
 
-MODULES = [spectra]
+MODULES = [spectra, colorimetry, clip]
 
 
 @pytest.mark.parametrize("module", MODULES, ids=lambda m: m.__name__)
