@@ -40,6 +40,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import registry
 from . import scenes as scene_module
 from .io import UsageError, check_output_file, check_writable, transaction, write_image
 
@@ -65,8 +66,7 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
 #: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
 #: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4) and the Raw view no tag --
 #: never a wrong sRGB one.
-PNG_COLORSPACE = {"sRGB": "srgb_rec709_display", "Display P3": "srgb_p3d65_display",
-                  "Rec.2020": "g24_rec2020_display"}
+PNG_COLORSPACE = {d.name: d.png_colorspace for d in registry.DISPLAY_LIST}
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
@@ -107,12 +107,10 @@ def parse_frames(text: str | None) -> list[int] | None:
 
 
 def _check_display_view(display: str, view: str) -> None:
-    from . import clip, tables
-
-    if display not in clip.DISPLAYS:
-        raise UsageError(f"--display {display!r}: choose from {', '.join(clip.DISPLAYS)}")
-    if view not in tables.VIEWS:
-        raise UsageError(f"--view {view!r}: choose from {', '.join(tables.VIEWS)}")
+    if display not in registry.DISPLAYS:
+        raise UsageError(f"--display {display!r}: choose from {', '.join(registry.DISPLAYS)}")
+    if view not in registry.VIEWS:
+        raise UsageError(f"--view {view!r}: choose from {', '.join(registry.VIEWS)}")
 
 
 # --------------------------------------------------------------------------- #
@@ -143,16 +141,7 @@ def table_colorspace(spec: scene_module.TableSpec) -> str:
     elif (lo, hi) != (0.0, tables.FILM_TMAX_UM) or spec.entries != tables.FILM_SIZE:
         raise ValueError(f"the config's thickness tables cover t' in [0, {tables.FILM_TMAX_UM:g}] "
                          f"um with {tables.FILM_SIZE} entries, got {spec}")
-    for name, (factory, args, _) in _thin_film_spaces().items():
-        if (args[0] if factory == "film" else "morpho") == spec.kind:
-            return name
-    raise ValueError(f"no thin-film colour space for table kind {spec.kind!r}")
-
-
-def _thin_film_spaces():
-    from . import config
-
-    return config.THIN_FILM_SPACES
+    return registry.thin_film_space_for_kind(spec.kind).name
 
 
 def load_config(path=None):
@@ -378,7 +367,8 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     with ThreadPoolExecutor(max_workers=2) as pool:
         exr_job = pool.submit(write_image, out_dir / f"{stem}.exr", data,
                               channel_names=channels, dtype="half", attributes=attrs, tx=tx)
-        raw = all((region[2] or view) == "Raw" for region in picture.regions)
+        raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
+        raw = all((region[2] or view) in raw_views for region in picture.regions)
         png_tag = "data" if raw else PNG_COLORSPACE[display]
         png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
                               attributes={"png:compressionLevel": 3,

@@ -60,7 +60,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import clip, colorimetry
+from . import clip, colorimetry, registry
 
 __all__ = [
     "BUILT",
@@ -93,7 +93,8 @@ __all__ = [
     "spectral_colours",
 ]
 
-VIEWS = ("Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression", "Raw")
+#: The views of every display (:mod:`.registry`).
+VIEWS = registry.VIEWS
 
 #: Tables and LUTs computed in this process (cache hits are not re-appended).
 BUILT: list[str] = []
@@ -815,11 +816,8 @@ def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
 
 
 #: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.
-DISPLAY_ENCODINGS = {
-    "sRGB": ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055),
-    "Display P3": ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055),
-    "Rec.2020": ("BT.1886 gamma 2.4", 2.4, None),
-}
+#: Display -> (description, gamma, offset or None for a pure power) (:mod:`.registry`).
+DISPLAY_ENCODINGS = {d.name: d.encoding for d in registry.DISPLAY_LIST}
 
 
 def display_encoding_transform(display: str):
