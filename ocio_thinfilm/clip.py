@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import colorimetry
+from . import colorimetry, registry
 
 __all__ = [
     "DISPLAYS",
@@ -47,8 +47,8 @@ __all__ = [
     "ACES_GAMUT_COMP13_PARAMS",
 ]
 
-#: The display gamuts we ship, by the name used in the OCIO config.
-DISPLAYS = ("sRGB", "Display P3", "Rec.2020")
+#: The display gamuts we ship, by the name used in the OCIO config (:mod:`.registry`).
+DISPLAYS = registry.DISPLAYS
 
 #: Magnitude to which components are limited before clipping (+-Inf included).
 LIMIT = 1e100

@@ -31,13 +31,13 @@ from __future__ import annotations
 import hashlib
 import inspect
 import os
-from functools import lru_cache, wraps
+from functools import wraps
 from importlib import metadata
 from pathlib import Path
 
 import numpy as np
 
-from . import spectra
+from . import cache, spectra
 
 __all__ = [
     "DEFAULT_OBSERVER",
@@ -94,7 +94,7 @@ def persistent(function=None, *, modules=()):
         return lambda f: persistent(f, modules=modules)
     source = inspect.getsource(function)
 
-    @lru_cache(maxsize=64)
+    @cache.memoize(maxsize=64)
     @wraps(function)
     def wrapper(*args):
         directory = _cache_dir()

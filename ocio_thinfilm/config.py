@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, tables
+from . import clip, colorimetry, registry, tables
 
 __all__ = [
     "CONFIG_NAME",
@@ -55,15 +55,8 @@ CONFIG_NAME = "ocio-thinfilm"
 PROFILE_VERSION = (2, 1)
 LUT_DIRECTORY = "luts"
 
-#: Display -> (display colour space name, description).
-DISPLAY_SPACES = {
-    "sRGB": ("sRGB - Display", "sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, "
-                               "sRGB piecewise encoding"),
-    "Display P3": ("Display P3 - Display", "Apple Display P3: P3 primaries, D65, "
-                                           "sRGB piecewise encoding"),
-    "Rec.2020": ("Rec.1886 Rec.2020 - Display", "ITU-R BT.2020 primaries, D65, "
-                                                "BT.1886 gamma 2.4 encoding"),
-}
+#: Display -> (display colour space name, description) (from :mod:`.registry`).
+DISPLAY_SPACES = {d.name: (d.colorspace, d.description) for d in registry.DISPLAY_LIST}
 
 #: Scene-linear RGB spaces: name -> (colorimetry space, description).
 LINEAR_SPACES = {
@@ -74,14 +67,12 @@ LINEAR_SPACES = {
     "Linear Rec.2020": ("Rec.2020", "Scene-linear Rec.2020 primaries, D65"),
 }
 
-#: Thin-film input spaces: name -> (table factory, arguments, LUT file stem).
-THIN_FILM_SPACES = {
-    "Thin Film Phase-Change Thickness": ("film", ("phase-change",),
-                                         "ThinFilm_PhaseChange_Thickness"),
-    "Thin Film No-Phase-Change Thickness": ("film", ("no-phase-change",),
-                                            "ThinFilm_NoPhaseChange_Thickness"),
-    "Thin Film Morpho Iridescence": ("morpho", (), "ThinFilm_Morpho_Iridescence"),
-}
+#: Thin-film input spaces: name -> (table factory, arguments, LUT file stem) (from
+#: :mod:`.registry`).
+THIN_FILM_SPACES = {s.name: (s.table, s.args, s.lut_stem) for s in registry.THIN_FILM_LIST}
+
+#: Views that show the data unchanged (the config's Raw colour space).
+_RAW_VIEWS = tuple(v.name for v in registry.VIEW_LIST if v.raw)
 
 ROLES = {
     "scene_linear": "Linear Rec.709 (sRGB)",
@@ -150,8 +141,7 @@ def lut_files(clip_size: int = tables.CLIP_SIZE, film_size: int = tables.FILM_SI
 
 def _clip_stem(display, white=False):
     """Clip LUT file stem: the pass against the faces through black or white."""
-    stem = "ConstantLightnessClip_" + display.replace(".", "").replace(" ", "")
-    return stem + ("_WhiteFaces" if white else "_BlackFaces")
+    return registry.clip_lut_stem(display, white)
 
 
 def _matrix_to_reference(space):
@@ -246,22 +236,12 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
                                         "and display colour spaces.",
                             from_reference=tables.group([tables._matrix()]))]
     displays = {}
-    descriptions = {
-        "Constant-Lightness Clip": "Smits & Meyer 1990 Section 3.2: display-linear RGB "
-                                   "clipped at constant luminance Y towards the display's "
-                                   "neutral axis (two 3D LUTs, faces through black then "
-                                   "through white); scene-linear 1.0 is "
-                                   "display white, above white gives white, no tone mapping.",
-        "Channel Clamp": "Baseline: display-linear RGB clamped per channel to [0, 1].",
-        "ACES Gamut Compression": "Baseline: OCIO's ACES 1.3 reference gamut compression "
-                                  "(ACES_GamutComp13) in display-linear RGB, then a clamp "
-                                  "to [0, 1].",
-    }
+    descriptions = {v.name: v.description for v in registry.VIEW_LIST}
     for display, (display_space, _) in DISPLAY_SPACES.items():
         views = []
         for view in tables.VIEWS:
-            if view == "Raw":
-                views.append(dict(name="Raw", colorspace="Raw"))
+            if view in _RAW_VIEWS:
+                views.append(dict(name=view, colorspace="Raw"))
                 continue
             vt = f"{view} - {display}"
             view_transforms.append(dict(name=vt, family="Thin Film",

@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, tables
+from . import clip, colorimetry, registry, tables
 from .io import (UsageError, atomic_file, check_output_file, claim_directory, is_stdout,
                  transaction)
 
@@ -122,7 +122,7 @@ def _stem(table, kind, display, index):
     else:
         stem = "ConstantLightnessClip"
     if display is not None:
-        stem += "_" + display.replace(".", "").replace(" ", "")
+        stem += "_" + registry.display(display).lut_stem
     return stem
 
 

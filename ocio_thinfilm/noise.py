@@ -30,6 +30,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from . import cache
+
 __all__ = ["noise", "turbulence", "TABLE_SIZE", "MEAN_ABS_NOISE"]
 
 #: Lattice period: the noise repeats every 256 units along each axis.
@@ -40,7 +42,7 @@ TABLE_SIZE = 256
 MEAN_ABS_NOISE = {1: 0.37, 2: 0.234, 3: 0.171}
 
 
-@lru_cache(maxsize=64)
+@cache.memoize(maxsize=64)
 def _tables(seed: int, dims: int):
     """Permutation (doubled, int32) and, per axis, the unit gradients already
     gathered through the permutation (``g[perm]``, float32, doubled): the last hash
@@ -59,7 +61,7 @@ def _tables(seed: int, dims: int):
     return perm2, gperm
 
 
-@lru_cache(maxsize=64)
+@cache.memoize(maxsize=64)
 def _lattice2(seed: int):
     """2-D fast path: the gradient of every lattice point of one period, hashed once.
 

@@ -1,19 +1,27 @@
 """``ocio-thinfilm render``: the paper's example scenes through the generated LUTs.
 
-Stage 7 of the pipeline. For each scene (:mod:`.scenes`) the renderer
+Stage 7 of the pipeline. A render goes through an OCIO config file -- ``--config``,
+by default the package's baked ``configs/thinfilm/config.ocio`` (baked first when
+missing) -- so it is an end-to-end test of what users load. For each scene
+(:mod:`.scenes`) the renderer
 
-1. builds exactly the tables the scene declares (``tables.film_table`` /
-   ``tables.morpho_table``) and hands the scene a ``lookup`` that applies each
-   table's OCIO transform (pixel encoding -> CIE-XYZ-D65) with an OCIO CPU processor;
+1. hands the scene a ``lookup`` that applies, for each table the scene declares, the
+   config's thin-film input colour space (pixel encoding -> CIE-XYZ-D65, e.g.
+   ``config.getProcessor("Thin Film Morpho Iridescence", "CIE-XYZ-D65")``) with an
+   OCIO CPU processor;
 2. writes the composited scene-linear picture as an OpenEXR file: CIE XYZ (D65,
    Y = 1 the perfect white) in the R, G, B channels (``oiio:ColorSpace`` names it), plus
    the scene's AOVs (optical thickness, view angle ...) as extra channels;
-3. applies ``tables.view_transform(display, view)`` (CIE-XYZ-D65 -> display-encoded
-   RGB) with OCIO and writes an 8-bit PNG, with captions where the scene has them.
+3. applies the config's display view (``config.getProcessor("CIE-XYZ-D65", display,
+   view, ...)``: CIE-XYZ-D65 -> display-encoded RGB) and writes an 8-bit PNG, with
+   captions where the scene has them.
+
+Only the colour spaces and views a scene uses become processors (:data:`PROCESSORS`
+records them); nothing is computed from the spectra at render time.
 
 Frames: without ``--frames`` a scene is written as ``NAME.exr`` / ``NAME.png``
 (frame 1, the still). ``--frames A-B`` writes ``NAME.####.exr`` / ``.png``; every
-frame depends only on (scene, frame, seed, size, display, view), and a range of
+frame depends only on (scene, frame, seed, size, display, view, config), and a range of
 more than one frame is rendered by one child process per frame
 (``python -m ocio_thinfilm render SCENE --frames N-N ...``), ``--jobs`` at a time,
 exactly what a render farm would run. Output bytes are a function of the arguments.
@@ -32,11 +40,13 @@ from pathlib import Path
 
 import numpy as np
 
+from . import registry
 from . import scenes as scene_module
 from .io import UsageError, check_output_file, check_writable, transaction, write_image
 
 __all__ = ["register", "run", "render_scene", "write_frame", "save_frame", "parse_size", "parse_frames", "MAX_SIDE",
-           "MAX_PIXELS", "SCENE_CHOICES"]
+           "MAX_PIXELS", "SCENE_CHOICES", "DEFAULT_CONFIG", "PROCESSORS", "ConfigProcessors",
+           "load_config", "make_lookup", "display_image", "table_colorspace"]
 
 #: Limits on --size: each side 16..8192 and at most 4096 x 4096 pixels in total.
 MIN_SIDE, MAX_SIDE, MAX_PIXELS = 16, 8192, 4096 * 4096
@@ -56,8 +66,7 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
 #: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
 #: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4) and the Raw view no tag --
 #: never a wrong sRGB one.
-PNG_COLORSPACE = {"sRGB": "srgb_rec709_display", "Display P3": "srgb_p3d65_display",
-                  "Rec.2020": "g24_rec2020_display"}
+PNG_COLORSPACE = {d.name: d.png_colorspace for d in registry.DISPLAY_LIST}
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
@@ -98,19 +107,119 @@ def parse_frames(text: str | None) -> list[int] | None:
 
 
 def _check_display_view(display: str, view: str) -> None:
-    from . import clip, tables
-
-    if display not in clip.DISPLAYS:
-        raise UsageError(f"--display {display!r}: choose from {', '.join(clip.DISPLAYS)}")
-    if view not in tables.VIEWS:
-        raise UsageError(f"--view {view!r}: choose from {', '.join(tables.VIEWS)}")
+    if display not in registry.DISPLAYS:
+        raise UsageError(f"--display {display!r}: choose from {', '.join(registry.DISPLAYS)}")
+    if view not in registry.VIEWS:
+        raise UsageError(f"--view {view!r}: choose from {', '.join(registry.VIEWS)}")
 
 
 # --------------------------------------------------------------------------- #
-# Tables and OCIO
+# The config: tables and views as OCIO processors
 # --------------------------------------------------------------------------- #
+#: The config a render goes through by default: the package's baked config (baked
+#: with ``ocio-thinfilm bake`` first when it is missing).
+DEFAULT_CONFIG = Path(__file__).resolve().parent.parent / "configs" / "thinfilm" / "config.ocio"
+#: The config's reference, the EXR's colour space: tables go to it, views start at it.
+REFERENCE_SPACE = "CIE-XYZ-D65"
+
+#: Processors created from a config in this process, one string per processor
+#: (``"colorspace:<name>"``, ``"view:<display>/<view>"``). Tests use it to prove a scene
+#: turns only the colour spaces and views it uses into processors.
+PROCESSORS: list[str] = []
+
+
+def table_colorspace(spec: scene_module.TableSpec) -> str:
+    """The config's input colour space (pixel value -> CIE-XYZ-D65) of a scene's
+    :class:`~.scenes.TableSpec`: the table the config ships for its kind."""
+    from . import tables
+
+    lo, hi = spec.range
+    if spec.kind == "morpho":
+        if (lo, hi) != (0.0, 1.0) or spec.entries != tables.MORPHO_SIZE:
+            raise ValueError(f"the config's Morpho table covers cos(theta) in [0, 1] with "
+                             f"{tables.MORPHO_SIZE} entries, got {spec}")
+    elif (lo, hi) != (0.0, tables.FILM_TMAX_UM) or spec.entries != tables.FILM_SIZE:
+        raise ValueError(f"the config's thickness tables cover t' in [0, {tables.FILM_TMAX_UM:g}] "
+                         f"um with {tables.FILM_SIZE} entries, got {spec}")
+    return registry.thin_film_space_for_kind(spec.kind).name
+
+
+def load_config(path=None):
+    """``PyOpenColorIO.Config`` of ``path`` (default :data:`DEFAULT_CONFIG`, baked with
+    :func:`.export.bake` first when missing)."""
+    import PyOpenColorIO as ocio
+
+    if path is None:
+        path = DEFAULT_CONFIG
+        if not path.is_file():
+            from . import export
+
+            export.bake(path.parent)
+    path = Path(path)
+    if not path.is_file():
+        raise UsageError(f"--config {path}: no such config file")
+    try:
+        return ocio.Config.CreateFromFile(str(path))
+    except Exception as error:  # OCIO's parse errors
+        raise UsageError(f"--config {path}: {str(error).splitlines()[0]}") from None
+
+
+class ConfigProcessors:
+    """The OCIO CPU processors a render needs, created from one config on first use
+    (and recorded in :data:`PROCESSORS`): ``table(spec)`` for a scene's table (its
+    thin-film colour space -> CIE-XYZ-D65), ``view(display, view)`` for a view
+    (CIE-XYZ-D65 -> display code values)."""
+
+    def __init__(self, config=None):
+        self.config = config if config is not None and not isinstance(config, (str, Path)) \
+            else load_config(config)
+        self._cpu = {}
+
+    def _processor(self, key, make):
+        if key not in self._cpu:
+            try:
+                self._cpu[key] = make().getDefaultCPUProcessor()
+            except Exception as error:  # a missing space / view / LUT file
+                raise UsageError(f"config: cannot build {key}: "
+                                 f"{str(error).splitlines()[0]}") from None
+            PROCESSORS.append(key)
+        return self._cpu[key]
+
+    def table(self, spec):
+        space = table_colorspace(spec)
+        return self._processor(f"colorspace:{space}",
+                               lambda: self.config.getProcessor(space, REFERENCE_SPACE))
+
+    def view(self, display: str, view: str):
+        import PyOpenColorIO as ocio
+
+        return self._processor(
+            f"view:{display}/{view}",
+            lambda: self.config.getProcessor(REFERENCE_SPACE, display, view,
+                                             ocio.TRANSFORM_DIR_FORWARD))
+
+    def check_display_view(self, display: str, view: str) -> None:
+        """UsageError unless the config has ``display`` with ``view``."""
+        displays = list(self.config.getDisplays())
+        if display not in displays:
+            raise UsageError(f"--display {display!r}: the config has {', '.join(displays)}")
+        views = list(self.config.getViews(display))
+        if view not in views:
+            raise UsageError(f"--view {view!r}: the config's display {display} has "
+                             f"{', '.join(views)}")
+
+
+def _apply(cpu, pixels) -> np.ndarray:
+    out = np.array(pixels, dtype=np.float32, order="C", copy=True)
+    flat = out.reshape(-1, 3)
+    if flat.size:
+        cpu.applyRGB(flat)
+    return flat.reshape(out.shape)
+
+
 def build_table(spec: scene_module.TableSpec):
-    """The tables-module table for a scene's :class:`~.scenes.TableSpec`."""
+    """The tables-module table for a scene's :class:`~.scenes.TableSpec` (computed
+    here, not read from a config: for comparisons with what the config holds)."""
     from . import tables
 
     lo, hi = spec.range
@@ -129,35 +238,29 @@ def _as_rgb(values: np.ndarray) -> np.ndarray:
     return np.repeat(v[..., None], 3, axis=-1)
 
 
-def make_lookup():
-    """A scene ``lookup(spec, encoded)`` that builds each table once and applies its
-    OCIO transform (pixel encoding -> CIE-XYZ-D65) with OCIO's CPU processor."""
-    from . import tables
-
-    built = {}
+def make_lookup(processors: ConfigProcessors | None = None):
+    """A scene ``lookup(spec, encoded)`` that applies the config's colour space of
+    each table (pixel encoding -> CIE-XYZ-D65) with OCIO's CPU processor, each built
+    once on first use."""
+    processors = processors if processors is not None else ConfigProcessors()
 
     def lookup(spec, encoded):
-        if spec not in built:
-            built[spec] = build_table(spec).transform()
-        return tables.apply(built[spec], _as_rgb(encoded))
+        return _apply(processors.table(spec), _as_rgb(encoded))
 
+    lookup.processors = processors
     return lookup
 
 
-def display_image(picture, display: str, view: str) -> np.ndarray:
+def display_image(picture, display: str, view: str,
+                  processors: ConfigProcessors | None = None) -> np.ndarray:
     """The display-encoded RGB of a scene's picture (float32, (H, W, 3)), each column
-    region through its view (OCIO processors from ``tables.view_transform``)."""
-    from . import tables
-
+    region through its view (the config's display/view processors)."""
+    processors = processors if processors is not None else ConfigProcessors()
     h, w, _ = picture.xyz.shape
     out = np.zeros((h, w, 3), np.float32)
-    transforms = {}
     for x0, x1, region_view in picture.regions:
-        v = region_view or view
-        if v not in transforms:
-            transforms[v] = tables.view_transform(display, v)
-        out[:, x0:x1] = tables.apply(transforms[v],
-                                     np.ascontiguousarray(picture.xyz[:, x0:x1]))
+        cpu = processors.view(display, region_view or view)
+        out[:, x0:x1] = _apply(cpu, np.ascontiguousarray(picture.xyz[:, x0:x1]))
     return np.clip(out, 0.0, 1.0)
 
 
@@ -184,13 +287,23 @@ def draw_labels(rgb: np.ndarray, labels) -> tuple[np.ndarray, bool]:
 # Rendering one frame of one scene
 # --------------------------------------------------------------------------- #
 def render_scene(name: str, size=DEFAULT_SIZE, *, seed: int = 0, frame: int = 1,
-                 display: str = DEFAULT_DISPLAY, view: str = DEFAULT_VIEW, lookup=None):
-    """Render one frame: returns (picture, display-encoded RGB float32)."""
+                 display: str = DEFAULT_DISPLAY, view: str = DEFAULT_VIEW, lookup=None,
+                 config=None):
+    """Render one frame through a config's processors: returns (picture,
+    display-encoded RGB float32). ``config``: a :class:`ConfigProcessors`, a
+    ``PyOpenColorIO.Config`` or a path (default: :data:`DEFAULT_CONFIG`); a ``lookup``
+    from :func:`make_lookup` brings its own."""
     scene = scene_module.get_scene(name)
     width, height = size
-    lookup = lookup or make_lookup()
+    if isinstance(config, ConfigProcessors):
+        processors = config
+    elif config is None and getattr(lookup, "processors", None) is not None:
+        processors = lookup.processors
+    else:
+        processors = ConfigProcessors(config)
+    lookup = lookup or make_lookup(processors)
     picture = scene.render(width, height, lookup=lookup, seed=seed, frame=frame)
-    rgb = display_image(picture, display, view)
+    rgb = display_image(picture, display, view, processors)
     rgb, _ = draw_labels(rgb, picture.labels)
     return picture, rgb
 
@@ -254,7 +367,8 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     with ThreadPoolExecutor(max_workers=2) as pool:
         exr_job = pool.submit(write_image, out_dir / f"{stem}.exr", data,
                               channel_names=channels, dtype="half", attributes=attrs, tx=tx)
-        raw = all((region[2] or view) == "Raw" for region in picture.regions)
+        raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
+        raw = all((region[2] or view) in raw_views for region in picture.regions)
         png_tag = "data" if raw else PNG_COLORSPACE[display]
         png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
                               attributes={"png:compressionLevel": 3,
@@ -263,10 +377,10 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
 
 
 def write_frame(name: str, out_dir: Path, size, *, seed: int, frame: int | None,
-                display: str, view: str, lookup=None, tx=None) -> list[Path]:
+                display: str, view: str, lookup=None, config=None, tx=None) -> list[Path]:
     """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths."""
     picture, rgb = render_scene(name, size, seed=seed, frame=frame or 1, display=display,
-                                view=view, lookup=lookup)
+                                view=view, lookup=lookup, config=config)
     return save_frame(name, picture, rgb, out_dir, seed=seed, frame=frame, display=display,
                       view=view, tx=tx)
 
@@ -290,6 +404,10 @@ def run(args) -> int:
     args.seed = _parse_int("--seed", args.seed, 0, 2**31 - 1)
     args.jobs = _parse_int("--jobs", args.jobs, 1, 64)
     out_dir = check_writable(args.out)
+    # the config is read (baked first when the default one is missing) before any
+    # frame: --jobs children then find it in place
+    processors = ConfigProcessors(getattr(args, "config", None))
+    processors.check_display_view(args.display, args.view)
 
     if frames is not None and len(frames) > 1:
         return _render_frames_in_children(args, frames)
@@ -300,13 +418,14 @@ def run(args) -> int:
     for name in names:
         for path in frame_paths(name, out_dir, frame):
             check_output_file(path)
-    lookup = make_lookup()
+    lookup = make_lookup(processors)
     messages = []
     with transaction() as tx:
         for name in names:
             start = time.perf_counter()
             paths = write_frame(name, out_dir, size, seed=args.seed, frame=frame,
-                                display=args.display, view=args.view, lookup=lookup, tx=tx)
+                                display=args.display, view=args.view, lookup=lookup,
+                                config=processors, tx=tx)
             messages.append(f"{name}: wrote {', '.join(str(p) for p in paths)} "
                             f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)")
     if not args.quiet:
@@ -318,6 +437,8 @@ def _child_command(args, frame: int) -> list[str]:
     cmd = [sys.executable, "-m", "ocio_thinfilm", "render", args.scene,
            "--frames", f"{frame}-{frame}", "--size", str(args.size), "--out", str(args.out),
            "--seed", str(args.seed), "--display", args.display, "--view", args.view]
+    if getattr(args, "config", None) is not None:
+        cmd += ["--config", str(args.config)]
     return cmd + (["--quiet"] if args.quiet else [])
 
 
@@ -375,6 +496,10 @@ def register(sub) -> None:
                    help="view of the PNG (default 'Constant-Lightness Clip'; also 'Channel "
                         "Clamp', 'ACES Gamut Compression', 'Raw'); the spectrum scene always "
                         "shows the first three side by side")
+    p.add_argument("--config", default=None,
+                   help="OCIO config whose thin-film input spaces and display views the "
+                        "render applies (default: the package's configs/thinfilm/"
+                        "config.ocio, baked first when missing)")
     p.add_argument("--frames", default=None,
                    help="A-B: render frames A..B as NAME.####.exr/png with the scene's "
                         "animation, one process per frame")

@@ -56,11 +56,10 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 
-from . import clip, colorimetry
+from . import cache, clip, colorimetry, registry
 
 __all__ = [
     "BUILT",
@@ -93,7 +92,8 @@ __all__ = [
     "spectral_colours",
 ]
 
-VIEWS = ("Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression", "Raw")
+#: The views of every display (:mod:`.registry`).
+VIEWS = registry.VIEWS
 
 #: Tables and LUTs computed in this process (cache hits are not re-appended).
 BUILT: list[str] = []
@@ -367,7 +367,7 @@ def _check_positive(name, value):
     return value
 
 
-@lru_cache(maxsize=32)
+@cache.memoize(maxsize=32)
 def _film_table(kind, size, tmax_um, t0_um, step):
     u = np.linspace(0.0, 1.0, size)
     t_um = t0_um * np.expm1(u * np.log1p(tmax_um / t0_um))
@@ -405,7 +405,7 @@ def film_table(kind: str = "phase-change", size: int = FILM_SIZE, *,
         return _film_table(kind, size, tmax, t0, step)
 
 
-@lru_cache(maxsize=8)
+@cache.memoize(maxsize=8)
 def _morpho_table(size, step):
     c = np.linspace(0.0, 1.0, size)
     theta = np.degrees(np.arccos(c))
@@ -560,7 +560,7 @@ def _chart_cover():
     return points / np.abs(points).sum(axis=1, keepdims=True)
 
 
-@lru_cache(maxsize=16)
+@cache.memoize(maxsize=16)
 def _black_plan(display, size):
     """The black pass's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives the
     Lut3D's coordinates (u_a, u_b) directly, uniform in a chromaticity chart where
@@ -737,7 +737,7 @@ class ClipLUT:
                 self.white_core() if white is None else white]
 
 
-@lru_cache(maxsize=16)
+@cache.memoize(maxsize=16)
 def _clip_lut(display, size):
     P, _ = _black_plan(display, size)
     top_nodes, top = _white_nodes(size, display)
@@ -813,11 +813,8 @@ def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
 
 
 #: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.
-DISPLAY_ENCODINGS = {
-    "sRGB": ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055),
-    "Display P3": ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055),
-    "Rec.2020": ("BT.1886 gamma 2.4", 2.4, None),
-}
+#: Display -> (description, gamma, offset or None for a pure power) (:mod:`.registry`).
+DISPLAY_ENCODINGS = {d.name: d.encoding for d in registry.DISPLAY_LIST}
 
 
 def display_encoding_transform(display: str):

@@ -255,27 +255,148 @@ def test_morpho_is_blue_and_darkens_with_angle():
 
 
 # --------------------------------------------------------------------------- #
-# Only the declared tables are built
+# Only the declared tables and views become processors; the config is the source
 # --------------------------------------------------------------------------- #
 def _built(*argv, tmp_path):
-    code = ("import json, sys; from ocio_thinfilm import cli, tables; "
-            "rc = cli.main(sys.argv[1:]); print(json.dumps(tables.BUILT)); sys.exit(rc)")
+    """(tables computed, processors created from the config) by one render process."""
+    code = ("import json, sys; from ocio_thinfilm import cli, render, tables; "
+            "rc = cli.main(sys.argv[1:]); "
+            "print(json.dumps([tables.BUILT, render.PROCESSORS])); sys.exit(rc)")
     out = subprocess.run([sys.executable, "-c", code, "render", *argv, "--size", "16",
                           "--out", str(tmp_path), "--quiet"], capture_output=True, text=True,
                          env=_env(), check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
-def test_morpho_builds_only_its_table_and_the_displays_clip(tmp_path):
-    built = _built("morpho", "--display", "Display P3", tmp_path=tmp_path)
-    assert [b.split(":")[0] for b in built].count("film") == 0
-    assert sorted(built) == sorted([f"morpho:{tables.MORPHO_SIZE}",
-                                    f"clip3d:Display P3:{tables.CLIP_SIZE}"])
+def test_morpho_uses_only_its_table_and_the_displays_view(tmp_path):
+    # The tables and the clip come from the baked config's files: nothing is computed.
+    built, processors = _built("morpho", "--display", "Display P3", tmp_path=tmp_path)
+    assert built == []
+    assert sorted(processors) == sorted(["colorspace:Thin Film Morpho Iridescence",
+                                         "view:Display P3/Constant-Lightness Clip"])
 
 
-def test_a_view_without_the_clip_builds_no_3d_lut(tmp_path):
+def test_a_scene_uses_only_the_view_it_shows(tmp_path):
     assert _built("oil", "--view", "Channel Clamp", tmp_path=tmp_path) == [
-        f"film:phase-change:{tables.FILM_SIZE}"]
+        [], ["colorspace:Thin Film Phase-Change Thickness", "view:sRGB/Channel Clamp"]]
+
+
+def test_spectrum_uses_both_tables_and_its_three_views(tmp_path):
+    _, processors = _built("spectrum", "--display", "Rec.2020", tmp_path=tmp_path)
+    assert sorted(processors) == sorted(
+        ["colorspace:Thin Film Phase-Change Thickness", "colorspace:Thin Film Morpho Iridescence"]
+        + [f"view:Rec.2020/{v}" for v in ("Constant-Lightness Clip", "Channel Clamp",
+                                          "ACES Gamut Compression")])
+
+
+def _modified_config(tmp_path, *, film=None, view=None):
+    """The baked config copied to ``tmp_path`` with the phase-change film space's
+    transform and/or the sRGB Channel Clamp view transform replaced."""
+    import PyOpenColorIO as ocio
+
+    src = ROOT / "configs" / "thinfilm"
+    shutil.copytree(src / "luts", tmp_path / "luts")
+    cfg = ocio.Config.CreateFromFile(str(src / "config.ocio"))
+    if film is not None:
+        cs = cfg.getColorSpace("Thin Film Phase-Change Thickness")
+        cs.setTransform(film, ocio.COLORSPACE_DIR_TO_REFERENCE)
+        cfg.addColorSpace(cs)
+    if view is not None:
+        vt = cfg.getViewTransform("Channel Clamp - sRGB")
+        vt.setTransform(view, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+        cfg.addViewTransform(vt)
+    path = tmp_path / "config.ocio"
+    path.write_text(cfg.serialize())
+    return path
+
+
+def test_render_goes_through_the_configs_thin_film_space(tmp_path):
+    import PyOpenColorIO as ocio
+
+    scale = (0.2, 0.3, 0.4)
+    m = [0.0] * 16
+    m[0], m[5], m[10], m[15] = *scale, 1.0
+    config = _modified_config(tmp_path / "cfg", film=ocio.MatrixTransform(m))
+    out = tmp_path / "out"
+    assert cli.main(["render", "spectrum", "--size", "96x64", "--config", str(config),
+                     "--out", str(out), "--quiet"]) == 0
+    ch = _channels(out / "spectrum.exr")
+    strip = ch["thickness"] > 0.05
+    got = np.stack([ch["R"], ch["G"], ch["B"]], axis=-1)[strip]
+    expected = ch["thickness"][strip][:, None] * np.array(scale)
+    assert np.abs(got - expected).max() < 2e-3  # half floats
+    # the Morpho strips still hold the (unchanged) Morpho table's colours
+    morpho = ch["angle"] > 1.0
+    assert np.stack([ch["R"], ch["G"], ch["B"]], axis=-1)[morpho][:, 2].max() > 0.1
+
+
+def test_render_goes_through_the_configs_view(tmp_path, colour):
+    import PyOpenColorIO as ocio
+
+    half = ocio.MatrixTransform([0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 1])
+    config = _modified_config(tmp_path / "cfg", view=half)
+    out, plain = tmp_path / "out", tmp_path / "plain"
+    for directory, extra in ((out, ["--config", str(config)]), (plain, [])):
+        assert cli.main(["render", "oil", "--size", "48", "--view", "Channel Clamp",
+                         "--out", str(directory), "--quiet", *extra]) == 0
+    xyz = read_image(out / "oil.exr")[..., :3].astype(np.float64)
+    srgb = colour.RGB_COLOURSPACES["sRGB"]
+    linear = np.clip(colour.XYZ_to_RGB(0.5 * xyz, srgb, apply_cctf_encoding=False), 0, 1)
+    expected = colour.cctf_encoding(linear, function="sRGB")
+    png, before = read_image(out / "oil.png"), read_image(plain / "oil.png")
+    assert np.abs(png - expected).max() < 2.5 / 255
+    assert np.abs(before - expected).max() > 10 / 255  # the change shows
+
+
+def test_config_option_reaches_frame_children(tmp_path):
+    import PyOpenColorIO as ocio
+
+    zero = ocio.MatrixTransform([0.0] * 15 + [1.0])
+    config = _modified_config(tmp_path / "cfg", view=zero)
+    out = tmp_path / "out"
+    subprocess.run([sys.executable, "-m", "ocio_thinfilm", "render", "oil", "--frames", "1-2",
+                    "--size", "16", "--view", "Channel Clamp", "--config", str(config),
+                    "--out", str(out), "--quiet", "--jobs", "2"], check=True, env=_env())
+    for frame in (1, 2):
+        assert read_image(out / f"oil.{frame:04d}.png").max() == 0.0
+
+
+def test_missing_default_config_is_baked_first(tmp_path, monkeypatch):
+    from ocio_thinfilm import export
+
+    baked = []
+    real_bake = export.bake
+
+    def small_bake(out, **kwargs):
+        baked.append(Path(out))
+        return real_bake(out, clip_size=9)
+
+    monkeypatch.setattr(render, "DEFAULT_CONFIG", tmp_path / "thinfilm" / "config.ocio")
+    monkeypatch.setattr(export, "bake", small_bake)
+    assert cli.main(["render", "morpho", "--size", "16", "--out", str(tmp_path / "out"),
+                     "--quiet"]) == 0
+    assert baked == [tmp_path / "thinfilm"]
+    assert (tmp_path / "thinfilm" / "config.ocio").is_file()
+    assert (tmp_path / "out" / "morpho.png").is_file()
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--config", "no/such/config.ocio"], "no such config file"),
+    (["--view", "Channel Clamp", "--config", "{removed}"], "Channel Clamp"),
+])
+def test_config_errors_are_one_line_exit_2(capsys, tmp_path, argv, message):
+    import PyOpenColorIO as ocio
+
+    config = _modified_config(tmp_path / "cfg")
+    cfg = ocio.Config.CreateFromFile(str(config))
+    cfg.clearDisplays()
+    cfg.addDisplayView("sRGB", "Raw", "Raw", "")
+    cfg.setActiveViews("")
+    config.write_text(cfg.serialize())
+    argv = [a.replace("{removed}", str(config)) for a in argv]
+    code, _, err = _cli(capsys, "oil", "--size", "16", "--out", str(tmp_path / "out"), *argv)
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "out" / "oil.png").exists()
 
 
 # --------------------------------------------------------------------------- #

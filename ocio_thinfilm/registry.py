@@ -1,0 +1,185 @@
+"""One registry of the displays, views and thin-film input spaces the package ships.
+
+Every other module derives its lists from here: ``clip.DISPLAYS``,
+``config.DISPLAY_SPACES`` / ``config.THIN_FILM_SPACES``, ``tables.DISPLAY_ENCODINGS`` /
+``tables.VIEWS``, the LUT file names of the config and of ``export``, and the
+renderer's display checks and PNG tags. Adding a display is one :class:`Display`
+entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm bake``).
+
+The registry is plain data (frozen dataclasses) and imports nothing but
+:mod:`.colorimetry`; it is validated once, at import (:func:`validate`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from . import colorimetry
+
+__all__ = ["Display", "View", "ThinFilmSpace", "DISPLAY_LIST", "VIEW_LIST",
+           "THIN_FILM_LIST", "DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display",
+           "thin_film_space_for_kind", "clip_lut_stem", "validate"]
+
+
+@dataclass(frozen=True)
+class Display:
+    """A display of the config.
+
+    ``name``: the OCIO display name (also the gamut the clip works in);
+    ``colorimetry``: its RGB space in :data:`.colorimetry.RGB_SPACES` (primaries,
+    white); ``colorspace``: the config's display colour space; ``description``: that
+    colour space's description; ``encoding``: (description, gamma, offset) of the
+    inverse EOTF -- an offset is the sRGB-style piecewise curve, ``None`` a pure power
+    (BT.1886); ``lut_stem``: the display's part of LUT file names;
+    ``png_colorspace``: the OpenImageIO colour interop ID a PNG for it is tagged with.
+    """
+
+    name: str
+    colorimetry: str
+    colorspace: str
+    description: str
+    encoding: tuple
+    lut_stem: str
+    png_colorspace: str
+
+
+@dataclass(frozen=True)
+class View:
+    """A view of every display: ``name``, ``description`` (of its view transforms;
+    empty for ``Raw``) and ``raw`` (data passed through: no view transform)."""
+
+    name: str
+    description: str = ""
+    raw: bool = False
+
+
+@dataclass(frozen=True)
+class ThinFilmSpace:
+    """A thin-film input colour space (pixel value -> CIE-XYZ-D65): ``name``,
+    ``table`` (``"film"`` or ``"morpho"``: :func:`.tables.film_table` /
+    :func:`.tables.morpho_table`), ``args`` for that factory and ``lut_stem`` (its CLF
+    file in the config)."""
+
+    name: str
+    table: str
+    args: tuple
+    lut_stem: str
+
+    @property
+    def kind(self) -> str:
+        """The table kind (``"phase-change"``, ``"no-phase-change"`` or ``"morpho"``)."""
+        return self.args[0] if self.table == "film" else "morpho"
+
+
+_SRGB_PIECEWISE = ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055)
+
+DISPLAY_LIST = (
+    Display("sRGB", "sRGB", "sRGB - Display",
+            "sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, sRGB piecewise encoding",
+            _SRGB_PIECEWISE, "sRGB", "srgb_rec709_display"),
+    Display("Display P3", "Display P3", "Display P3 - Display",
+            "Apple Display P3: P3 primaries, D65, sRGB piecewise encoding",
+            _SRGB_PIECEWISE, "DisplayP3", "srgb_p3d65_display"),
+    Display("Rec.2020", "Rec.2020", "Rec.1886 Rec.2020 - Display",
+            "ITU-R BT.2020 primaries, D65, BT.1886 gamma 2.4 encoding",
+            ("BT.1886 gamma 2.4", 2.4, None), "Rec2020", "g24_rec2020_display"),
+)
+
+VIEW_LIST = (
+    View("Constant-Lightness Clip",
+         "Smits & Meyer 1990 Section 3.2: display-linear RGB clipped at constant luminance "
+         "Y towards the display's neutral axis (two 3D LUTs, faces through black then "
+         "through white); scene-linear 1.0 is display white, above white gives white, no "
+         "tone mapping."),
+    View("Channel Clamp", "Baseline: display-linear RGB clamped per channel to [0, 1]."),
+    View("ACES Gamut Compression",
+         "Baseline: OCIO's ACES 1.3 reference gamut compression (ACES_GamutComp13) in "
+         "display-linear RGB, then a clamp to [0, 1]."),
+    View("Raw", raw=True),
+)
+
+THIN_FILM_LIST = (
+    ThinFilmSpace("Thin Film Phase-Change Thickness", "film", ("phase-change",),
+                  "ThinFilm_PhaseChange_Thickness"),
+    ThinFilmSpace("Thin Film No-Phase-Change Thickness", "film", ("no-phase-change",),
+                  "ThinFilm_NoPhaseChange_Thickness"),
+    ThinFilmSpace("Thin Film Morpho Iridescence", "morpho", (), "ThinFilm_Morpho_Iridescence"),
+)
+
+#: Names, in order.
+DISPLAYS = tuple(d.name for d in DISPLAY_LIST)
+VIEWS = tuple(v.name for v in VIEW_LIST)
+THIN_FILM_SPACES = tuple(s.name for s in THIN_FILM_LIST)
+
+_BY_NAME = {d.name: d for d in DISPLAY_LIST}
+
+
+def display(name: str) -> Display:
+    """The :class:`Display` called ``name`` (ValueError naming the choices otherwise)."""
+    try:
+        return _BY_NAME[name]
+    except (KeyError, TypeError):
+        raise ValueError(f"display must be one of {DISPLAYS}, got {name!r}") from None
+
+
+def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
+    """The thin-film input space holding the table of ``kind``."""
+    for space in THIN_FILM_LIST:
+        if space.kind == kind:
+            return space
+    raise ValueError(f"no thin-film colour space for table kind {kind!r}")
+
+
+def clip_lut_stem(name: str, white: bool = False) -> str:
+    """File stem of a display's clip LUT: the pass against the faces through black
+    (``white=False``) or through white."""
+    return (f"ConstantLightnessClip_{display(name).lut_stem}"
+            + ("_WhiteFaces" if white else "_BlackFaces"))
+
+
+def validate() -> None:
+    """Names unique and non-empty, colorimetry spaces known, encodings well formed,
+    LUT stems file-name safe and unique, exactly one raw view, last. Raises
+    ValueError. The clip's math (:mod:`.clip`, :mod:`.tables`) looks matrices up by
+    the display's name, so a display's name must equal its colorimetry space."""
+    import re
+
+    for kind, names in (("display", DISPLAYS), ("view", VIEWS),
+                        ("thin-film space", THIN_FILM_SPACES)):
+        if len(set(names)) != len(names) or not all(names):
+            raise ValueError(f"registry: {kind} names must be unique and non-empty: {names}")
+    stems = [d.lut_stem for d in DISPLAY_LIST] + [s.lut_stem for s in THIN_FILM_LIST]
+    if len(set(stems)) != len(stems):
+        raise ValueError(f"registry: LUT file stems must be unique: {stems}")
+    for stem in stems:
+        if not re.fullmatch(r"[A-Za-z0-9_]+", stem):
+            raise ValueError(f"registry: LUT file stem {stem!r} is not file-name safe")
+    for d in DISPLAY_LIST:
+        if d.colorimetry not in colorimetry.RGB_SPACES:
+            raise ValueError(f"registry: display {d.name!r}: unknown colorimetry space "
+                             f"{d.colorimetry!r}")
+        if d.colorimetry != d.name:
+            raise ValueError(f"registry: display {d.name!r}: the clip looks its matrix up by "
+                             f"name, so its colorimetry space must be {d.name!r}")
+        text, gamma, offset = d.encoding
+        if not text or not gamma > 0 or not (offset is None or 0 < offset < 1):
+            raise ValueError(f"registry: display {d.name!r}: bad encoding {d.encoding!r}")
+        if d.colorspace in THIN_FILM_SPACES or not d.colorspace:
+            raise ValueError(f"registry: display {d.name!r}: bad colour space {d.colorspace!r}")
+    if [v.name for v in VIEW_LIST if v.raw] != [VIEW_LIST[-1].name]:
+        raise ValueError("registry: exactly one raw view, listed last")
+    if any(not v.description for v in VIEW_LIST if not v.raw):
+        raise ValueError("registry: every view but the raw one needs a description")
+    kinds = [s.kind for s in THIN_FILM_LIST]
+    if len(set(kinds)) != len(kinds):
+        raise ValueError(f"registry: one thin-film space per table kind: {kinds}")
+    for s in THIN_FILM_LIST:
+        if s.table not in ("film", "morpho") or (
+                s.table == "film" and (len(s.args) != 1
+                                       or s.args[0] not in colorimetry.FILM_KINDS)) or (
+                s.table == "morpho" and s.args):
+            raise ValueError(f"registry: thin-film space {s.name!r}: bad table "
+                             f"{s.table!r} {s.args!r}")
+
+
+validate()

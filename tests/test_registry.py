@@ -1,0 +1,108 @@
+"""One registry of displays, views and thin-film input spaces (ocio_thinfilm.registry)."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from ocio_thinfilm import clip, config, export, registry, render, tables
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_every_module_lists_the_registrys_displays_views_and_spaces():
+    assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
+    assert tables.VIEWS == registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
+                                              "ACES Gamut Compression", "Raw")
+    assert list(config.DISPLAY_SPACES) == list(registry.DISPLAYS)
+    assert list(tables.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
+    assert list(render.PNG_COLORSPACE) == list(registry.DISPLAYS)
+    assert list(config.THIN_FILM_SPACES) == list(registry.THIN_FILM_SPACES)
+
+
+def test_the_baked_config_has_exactly_the_registrys_entries():
+    import PyOpenColorIO as ocio
+
+    cfg = ocio.Config.CreateFromFile(str(ROOT / "configs" / "thinfilm" / "config.ocio"))
+    assert tuple(cfg.getDisplays()) == registry.DISPLAYS
+    for d in registry.DISPLAY_LIST:
+        assert tuple(cfg.getViews(d.name)) == registry.VIEWS
+        assert cfg.getColorSpace(d.colorspace) is not None
+        for white in (False, True):
+            assert (ROOT / "configs" / "thinfilm" / "luts"
+                    / f"{registry.clip_lut_stem(d.name, white)}.clf").is_file()
+    for s in registry.THIN_FILM_LIST:
+        assert cfg.getColorSpace(s.name).getFamily() == "Thin Film"
+        assert (ROOT / "configs" / "thinfilm" / "luts" / f"{s.lut_stem}.clf").is_file()
+
+
+def test_file_stems_come_from_the_registry():
+    assert registry.clip_lut_stem("Rec.2020", True) == "ConstantLightnessClip_Rec2020_WhiteFaces"
+    assert config._clip_stem("Display P3") == "ConstantLightnessClip_DisplayP3_BlackFaces"
+    assert export._stem("clip", None, "Display P3", None) == "ConstantLightnessClip_DisplayP3"
+    assert registry.thin_film_space_for_kind("morpho").name == "Thin Film Morpho Iridescence"
+    with pytest.raises(ValueError, match="display must be one of"):
+        registry.display("Rec.709")
+
+
+def test_entries_are_frozen():
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        registry.DISPLAY_LIST[0].name = "other"
+
+
+@pytest.mark.parametrize("attr, value, message", [
+    ("DISPLAYS", ("sRGB", "sRGB", "Rec.2020"), "unique"),
+    ("DISPLAY_LIST", registry.DISPLAY_LIST[:2] + (dataclasses.replace(
+        registry.DISPLAY_LIST[2], colorimetry="Rec.2100"),), "colorimetry"),
+    ("DISPLAY_LIST", registry.DISPLAY_LIST[:2] + (dataclasses.replace(
+        registry.DISPLAY_LIST[2], lut_stem="Rec.2020"),), "file-name safe"),
+    ("DISPLAY_LIST", registry.DISPLAY_LIST[:2] + (dataclasses.replace(
+        registry.DISPLAY_LIST[2], encoding=("BT.1886", 0.0, None)),), "encoding"),
+    ("VIEW_LIST", registry.VIEW_LIST[::-1], "raw view"),
+    ("THIN_FILM_LIST", registry.THIN_FILM_LIST[:2] + (dataclasses.replace(
+        registry.THIN_FILM_LIST[2], table="film", args=("thick",)),), "bad table"),
+])
+def test_validation_rejects_bad_entries(monkeypatch, attr, value, message):
+    monkeypatch.setattr(registry, attr, value)
+    with pytest.raises(ValueError, match=message):
+        registry.validate()
+
+
+def test_adding_a_display_is_one_entry(tmp_path):
+    """A copy of the package with one more Display entry (Rec.709) in the registry
+    generates a config with that display, its views, clip LUT files and PNG tag."""
+    package = tmp_path / "ocio_thinfilm"
+    shutil.copytree(ROOT / "ocio_thinfilm", package,
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    source = (package / "registry.py").read_text()
+    anchor = "DISPLAY_LIST = (\n"
+    assert source.count(anchor) == 1
+    entry = ('    Display("Rec.709", "Rec.709", "Rec.1886 Rec.709 - Display", "BT.709 primaries, '
+             'D65, BT.1886 gamma 2.4", ("BT.1886 gamma 2.4", 2.4, None), "Rec709", '
+             '"g24_rec709_display"),\n')
+    (package / "registry.py").write_text(source.replace(anchor, anchor + entry))
+    code = (
+        "import json; from ocio_thinfilm import config, clip, render, tables\n"
+        "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"
+        "cfg = config.generate_config(data)\n"
+        "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
+        "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
+        "    render.PNG_COLORSPACE['Rec.709'], tables.DISPLAY_ENCODINGS['Rec.709'][0]]))\n")
+    env = dict(os.environ, PYTHONPATH=str(tmp_path))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=env, cwd=tmp_path, check=True)
+    displays, views, luts, clip_displays, tag, encoding = json.loads(
+        out.stdout.strip().splitlines()[-1])
+    assert displays == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
+    assert views == ["Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression",
+                     "Raw"]
+    assert luts == ["ConstantLightnessClip_Rec709_BlackFaces.clf",
+                    "ConstantLightnessClip_Rec709_WhiteFaces.clf"]
+    assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"
