@@ -40,14 +40,15 @@ CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
-    from ocio_thinfilm import render, tables
+    from ocio_thinfilm import render
+    from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 
     side = int(np.sqrt(n))
     rng = np.random.default_rng(0)
     uniform = rng.uniform(0.0, 1.0, (n, 3))
     picture, _ = render.render_scene("oil", (side, side), view="Raw")
     oil = picture.xyz.reshape(-1, 3)
-    colours = np.concatenate([tables.object_colours(), tables.spectral_colours(0.6)])
+    colours = np.concatenate([object_colours(), spectral_colours(0.6)])
     colours = np.resize(colours, (n, 3))
     return {"uniform XYZ": uniform, "oil scene": oil, "object + spectral": colours}
 

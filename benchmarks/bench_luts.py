@@ -9,7 +9,7 @@ Run:  python benchmarks/bench_luts.py [--quick] [--displays sRGB "Display P3" Re
 (``Table1D.lookup``) and through OCIO's CPU processor (``Table1D.transform()``).
 
 3D clip LUT: dE2000 of the OCIO transform against the analytic ``clip.clip_XYZ`` on
-``tables.object_colours()`` (random smooth reflectances, ColorCheckers, Munsell,
+``object_colours()`` (random smooth reflectances, ColorCheckers, Munsell,
 interference colours); on spectral colours at Y <= 0.6 the luminance error and
 whether the output is in gamut; bake time (vertex values + OCIO processor) and the
 size of the CLF the config would ship.
@@ -32,6 +32,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from ocio_thinfilm import clip, colorimetry, tables  # noqa: E402
+from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours  # noqa: E402
 
 
 def grey(x):
@@ -180,8 +181,8 @@ def _flatten(transform):
 
 
 def bench_3d(displays, quick):
-    objects = tables.object_colours()
-    locus = tables.spectral_colours(0.6)
+    objects = object_colours()
+    locus = spectral_colours(0.6)
     rows = []
     for display in displays:
         truth = clip.clip_XYZ(objects, display)

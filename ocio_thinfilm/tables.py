@@ -48,8 +48,9 @@ Added names (beyond the contract): :func:`clip_lut` / :class:`ClipLUT` (the LUT 
 :func:`clip_black_faces_RGB`, :func:`clip_white_faces_RGB`, :func:`view_linear_transform`,
 :func:`display_matrix_transform`, :func:`display_encoding_transform`,
 :func:`xyz_limit_transform`, :func:`group`, :func:`quantize`, :func:`transform_id`,
-:func:`object_colours`, :func:`spectral_colours`, ``Table1D.rgb(display)`` (per-display
-clipped variant), ``Table1D.shaper(x)``.
+``Table1D.rgb(display)`` (per-display clipped variant), ``Table1D.shaper(x)``. The
+test colours the tests, benchmarks and report evaluate against live in
+:mod:`ocio_thinfilm.evaluation.colours`, outside the shipped path.
 """
 
 from __future__ import annotations
@@ -88,8 +89,6 @@ __all__ = [
     "clip_white_faces_RGB",
     "transform_id",
     "quantize",
-    "object_colours",
-    "spectral_colours",
 ]
 
 #: The views of every display (:mod:`.registry`).
@@ -873,50 +872,3 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
                      name=lut.name, id=transform_id("Gamut_Map", lut.name))
     return group([view_linear_transform(display, view, size),
                   display_encoding_transform(display)])
-
-
-# --------------------------------------------------------------------------- #
-# Test colours (shared by the tests, the benchmark and the report)
-# --------------------------------------------------------------------------- #
-def object_colours(seed: int = 0, n_random: int = 4000) -> np.ndarray:
-    """A set of object colours (CIE-XYZ-D65, reflectances under D65, Y <= 1):
-
-    ``n_random`` random smooth reflectance spectra (three Gaussian bumps on a
-    random base, clipped to [0, 1], scaled), the ColorChecker sets of colour-science,
-    the measured ("real") Munsell renotation colours, and the interference colours of
-    the two film kinds (0-3 um, 3000 each) and of the Morpho multilayer (500 angles).
-    """
-    import colour
-    from colour.notation.datasets.munsell import MUNSELL_COLOURS_REAL
-
-    rng = np.random.default_rng(seed)
-    wl = np.arange(360.0, 781.0, 5.0)
-    R = np.zeros((n_random, wl.size))
-    for _ in range(3):
-        centre = rng.uniform(380, 720, n_random)[:, None]
-        width = rng.uniform(10, 120, n_random)[:, None]
-        amplitude = rng.uniform(-1, 1.2, n_random)[:, None]
-        R += amplitude * np.exp(-0.5 * ((wl - centre) / width) ** 2)
-    R = np.clip(R + rng.uniform(0, 0.6, n_random)[:, None], 0, 1)
-    R *= rng.uniform(0.05, 1, n_random)[:, None]
-    random_XYZ = colorimetry.reflectance_to_XYZ(R, wl)
-    shape = colour.SpectralShape(360, 780, 5)
-    checker = []
-    for name in sorted(colour.SDS_COLOURCHECKERS):
-        for sd in colour.SDS_COLOURCHECKERS[name].values():
-            checker.append(colour.sd_to_XYZ(sd.copy().align(shape),
-                                            illuminant=colour.SDS_ILLUMINANTS["D65"]) / 100)
-    munsell = np.array([v[1] for v in MUNSELL_COLOURS_REAL], dtype=np.float64)
-    munsell[:, 2] /= 100.0
-    munsell = colour.xyY_to_XYZ(munsell[munsell[:, 2] <= 1.0])
-    t = np.linspace(0.0, 3000.0, 3000)
-    films = np.concatenate([colorimetry.film_XYZ(t, "phase-change"),
-                            colorimetry.film_XYZ(t, "no-phase-change"),
-                            colorimetry.morpho_XYZ(np.linspace(0.0, 89.0, 500))])
-    return np.concatenate([random_XYZ, np.array(checker), munsell, films])
-
-
-def spectral_colours(max_Y: float = 0.6, levels: int = 60) -> np.ndarray:
-    """Monochromatic colours 380-700 nm at ``levels`` luminances in (0, max_Y]."""
-    Ys = np.linspace(max_Y / levels, max_Y, levels)
-    return np.concatenate([colorimetry.spectral_locus_XYZ(Y) for Y in Ys])

@@ -1,0 +1,6 @@
+"""Evaluation code: what the tests, the benchmarks and the report measure against.
+
+Not part of the shipped path (tables, LUTs, config, export, render never import it).
+
+- :mod:`.colours`: the test-colour sets (object and monochromatic colours).
+"""
