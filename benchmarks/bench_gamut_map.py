@@ -56,16 +56,16 @@ def datasets(n):
 def processors():
     import PyOpenColorIO as ocio
 
-    from ocio_thinfilm import clip, tables
+    from ocio_thinfilm import clip, ocio_ops, tables
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
                                       ocio.TRANSFORM_DIR_FORWARD)
-    bare = tables.group([tables.display_matrix_transform("sRGB"),
-                         tables.aces_gamut_compression_transform(), tables._range(0.0, 1.0),
+    bare = ocio_ops.group([tables.display_matrix_transform("sRGB"),
+                         tables.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
                          tables.display_encoding_transform("sRGB")])
     g = np.linspace(0.0, 1.0, 65)
-    lut = tables.lut3d_transform(np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9)
+    lut = ocio_ops.lut3d_transform(np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9)
     raw = ocio.Config.CreateRaw()
     procs = {"clip": view("Constant-Lightness Clip"), "aces": view("ACES Gamut Compression"),
              "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut)}

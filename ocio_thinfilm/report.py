@@ -59,7 +59,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, spectra
+from . import clip, colorimetry, ocio_ops, spectra
 from .io import UsageError, atomic_file, check_writable, transaction
 
 __all__ = [
@@ -611,7 +611,7 @@ def _ocio_gamut_speeds(img, display):
     if tables is not None and hasattr(tables, "view_transform"):
         # like with like: whole views (display-linear RGB in -> sRGB code values out)
         M = colorimetry.matrix_XYZ_to_RGB(display)
-        to_xyz = ocio.MatrixTransform(_m44(np.linalg.inv(M)))
+        to_xyz = ocio_ops.matrix(np.linalg.inv(M))
         for label, view in (("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
                             ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip")):
             try:
@@ -620,12 +620,6 @@ def _ocio_gamut_speeds(img, display):
             except Exception as error:  # noqa: BLE001 -- reported, not hidden
                 speeds[f"{label}: failed: {error}"] = float("nan")
     return speeds
-
-
-def _m44(m3):
-    m = np.eye(4)
-    m[:3, :3] = m3
-    return [float(v) for v in m.ravel()]
 
 
 def _tables():
@@ -927,7 +921,7 @@ def _ocio_clip_rows(add, W):
     tf = tables.clip_transform("sRGB")
 
     def run(x):
-        return tables.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
+        return ocio_ops.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
 
     bw_in = np.array([[-0.1, -0.2, -0.1], [0.0, 0.0, 0.0], 2 * W, [0.5, 1.5, 0.5],
                       [0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]])
@@ -1162,7 +1156,7 @@ def _section_table1d(ctx):
             tf = table.transform()
             cpu = _ocio_cpu(tf)
             mpix = _ocio_apply_speed(cpu, img)
-            via = tables.apply(tf, img[:4096])
+            via = ocio_ops.apply(tf, img[:4096])
             ocio_check = max(ocio_check, float(np.max(colorimetry.delta_E2000(
                 via.astype(np.float64), table.lookup(img[:4096, 0].astype(np.float64))))))
             if not isinstance(t0, tuple) and t0 == d_t0 and size == d_size:
@@ -1247,7 +1241,7 @@ def _naive_lut_transform(display, size, interp):
     lut.setGridSize(size)
     lut.setInterpolation(interp)
     lut.setData(np.ascontiguousarray(rgb, dtype=np.float32).ravel())
-    scale = ocio.MatrixTransform(_m44(np.diag(1.0 / W)))
+    scale = ocio_ops.matrix(np.diag(1.0 / W))
     return ocio.GroupTransform([scale, lut, ocio.RangeTransform(0.0, 1.0, 0.0, 1.0)])
 
 
@@ -1312,7 +1306,7 @@ def _section_lut3d(ctx):
                 bake = time.perf_counter() - t_start
                 stats = {}
                 for s_name, xyz in sets.items():
-                    out = tables.apply(tf, xyz).astype(np.float64) @ Minv.T
+                    out = ocio_ops.apply(tf, xyz).astype(np.float64) @ Minv.T
                     stats[s_name] = _stats(colorimetry.delta_E2000(out, refs[s_name]))
                 mpix = _ocio_apply_speed(_ocio_cpu(tf), img)
                 a, b = stats["interference colours"], stats["spectral mixtures (Y 0.01-0.99)"]
@@ -1374,8 +1368,8 @@ def _section_analytic_vs_lut(ctx):
     big = 65 if d_size < 65 else d_size
     ocio_paths = {
         f"Lut1D + {d_size}³ clip LUT, OCIO (shipped)":
-            tables.group([table.transform(), tables.clip_transform(display)]),
-        f"Lut1D + {big}³ clip LUT, OCIO": tables.group([table.transform(),
+            ocio_ops.group([table.transform(), tables.clip_transform(display)]),
+        f"Lut1D + {big}³ clip LUT, OCIO": ocio_ops.group([table.transform(),
                                                         tables.clip_transform(display, big)]),
     }
     lut1d_tf = table.transform()
@@ -1385,10 +1379,10 @@ def _section_analytic_vs_lut(ctx):
         "table lookup (numpy) + clip_RGB (numpy)":
             lambda: clip.clip_RGB(table.lookup(x_um) @ M.T, display),
         "Lut1D (OCIO) + clip_RGB (numpy)":
-            lambda: clip.clip_RGB(tables.apply(lut1d_tf, img).astype(np.float64) @ M.T, display),
+            lambda: clip.clip_RGB(ocio_ops.apply(lut1d_tf, img).astype(np.float64) @ M.T, display),
     }
     for name, tf in ocio_paths.items():
-        paths[name] = (lambda tf: lambda: tables.apply(tf, img))(tf)
+        paths[name] = (lambda tf: lambda: ocio_ops.apply(tf, img))(tf)
     rows, series, raw = [], {}, []
     for name, fn in paths.items():
         out = np.asarray(fn(), dtype=np.float64)
