@@ -40,14 +40,15 @@ CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
-    from ocio_thinfilm import render, tables
+    from ocio_thinfilm import render
+    from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 
     side = int(np.sqrt(n))
     rng = np.random.default_rng(0)
     uniform = rng.uniform(0.0, 1.0, (n, 3))
     picture, _ = render.render_scene("oil", (side, side), view="Raw")
     oil = picture.xyz.reshape(-1, 3)
-    colours = np.concatenate([tables.object_colours(), tables.spectral_colours(0.6)])
+    colours = np.concatenate([object_colours(), spectral_colours(0.6)])
     colours = np.resize(colours, (n, 3))
     return {"uniform XYZ": uniform, "oil scene": oil, "object + spectral": colours}
 
@@ -55,16 +56,16 @@ def datasets(n):
 def processors():
     import PyOpenColorIO as ocio
 
-    from ocio_thinfilm import clip, tables
+    from ocio_thinfilm import clip, ocio_ops, tables
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
                                       ocio.TRANSFORM_DIR_FORWARD)
-    bare = tables.group([tables.display_matrix_transform("sRGB"),
-                         tables.aces_gamut_compression_transform(), tables._range(0.0, 1.0),
+    bare = ocio_ops.group([tables.display_matrix_transform("sRGB"),
+                         tables.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
                          tables.display_encoding_transform("sRGB")])
     g = np.linspace(0.0, 1.0, 65)
-    lut = tables.lut3d_transform(np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9)
+    lut = ocio_ops.lut3d_transform(np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9)
     raw = ocio.Config.CreateRaw()
     procs = {"clip": view("Constant-Lightness Clip"), "aces": view("ACES Gamut Compression"),
              "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut)}

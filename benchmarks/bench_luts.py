@@ -9,7 +9,7 @@ Run:  python benchmarks/bench_luts.py [--quick] [--displays sRGB "Display P3" Re
 (``Table1D.lookup``) and through OCIO's CPU processor (``Table1D.transform()``).
 
 3D clip LUT: dE2000 of the OCIO transform against the analytic ``clip.clip_XYZ`` on
-``tables.object_colours()`` (random smooth reflectances, ColorCheckers, Munsell,
+``object_colours()`` (random smooth reflectances, ColorCheckers, Munsell,
 interference colours); on spectral colours at Y <= 0.6 the luminance error and
 whether the output is in gamut; bake time (vertex values + OCIO processor) and the
 size of the CLF the config would ship.
@@ -31,7 +31,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from ocio_thinfilm import clip, colorimetry, tables  # noqa: E402
+from ocio_thinfilm import clip, colorimetry, ocio_ops, tables  # noqa: E402
+from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours  # noqa: E402
 
 
 def grey(x):
@@ -56,7 +57,7 @@ def bench_1d(quick):
         direct = colorimetry.film_XYZ(mid * 1000.0, kind)
         de_np = colorimetry.delta_E2000(table.lookup(mid), direct).max()
         de_ocio = colorimetry.delta_E2000(
-            tables.apply(table.transform(), grey(mid)).astype(np.float64), direct).max()
+            ocio_ops.apply(table.transform(), grey(mid)).astype(np.float64), direct).max()
         rows.append(dict(spacing="uniform 0-1.5 um", size=size, max_dE_numpy=de_np,
                          max_dE_ocio=de_ocio, bake_s=bake))
     log_sizes = (2048, 4096, 8192) if quick else (2048, 4096, 8192, 16384, 65536)
@@ -69,7 +70,7 @@ def bench_1d(quick):
         direct = colorimetry.film_XYZ(mid * 1000.0, kind)
         de_np = colorimetry.delta_E2000(table.lookup(mid), direct).max()
         de_ocio = colorimetry.delta_E2000(
-            tables.apply(table.transform(), grey(mid)).astype(np.float64), direct).max()
+            ocio_ops.apply(table.transform(), grey(mid)).astype(np.float64), direct).max()
         rows.append(dict(spacing="log2 shaper t0=1 um, 0-100 um", size=size,
                          max_dE_numpy=de_np, max_dE_ocio=de_ocio, bake_s=bake))
     for size in (512, 1024, 4096):
@@ -80,7 +81,7 @@ def bench_1d(quick):
         direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(c)))
         rows.append(dict(spacing="Morpho, uniform cos(theta)", size=size,
                          max_dE_numpy=colorimetry.delta_E2000(table.lookup(c), direct).max(),
-                         max_dE_ocio=colorimetry.delta_E2000(tables.apply(
+                         max_dE_ocio=colorimetry.delta_E2000(ocio_ops.apply(
                              table.transform(), grey(c)).astype(np.float64), direct).max(),
                          bake_s=bake))
     return rows
@@ -89,23 +90,13 @@ def bench_1d(quick):
 # --------------------------------------------------------------------------- #
 # 3D clip LUT options
 # --------------------------------------------------------------------------- #
-def _lut3d(values):
-    import PyOpenColorIO as ocio
-
-    t = ocio.Lut3DTransform()
-    t.setGridSize(values.shape[0])
-    t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    t.setData(np.ascontiguousarray(values, np.float32).ravel())
-    return t
-
-
 def naive_xyz(display, size):
     """Baseline: LUT over XYZ / white in [0, 1]^3, outputs clipped RGB, no shaper."""
     W = colorimetry.white_XYZ(display)
     g = np.linspace(0, 1, size)
     P = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) * W
     V = colorimetry.XYZ_to_RGB(clip.clip_XYZ(P, display), display)
-    return tables.group([tables._matrix(np.diag(1 / W)), _lut3d(V), tables._range(0, 1)])
+    return ocio_ops.group([ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V), ocio_ops.range_(0, 1)])
 
 
 def uvY_uniform(display, size):
@@ -128,10 +119,10 @@ def uvY_uniform(display, size):
     fwd = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return tables.group([tables.xyz_limit_transform(), fwd,
-                         tables._matrix(np.diag(1 / hi)), _lut3d(uvY / hi),
-                         tables._matrix(np.diag(hi)), inv,
-                         tables.display_matrix_transform(display), tables._range(0, 1)])
+    return ocio_ops.group([tables.xyz_limit_transform(), fwd,
+                         ocio_ops.matrix(np.diag(1 / hi)), ocio_ops.lut3d_transform(uvY / hi),
+                         ocio_ops.matrix(np.diag(hi)), inv,
+                         tables.display_matrix_transform(display), ocio_ops.range_(0, 1)])
 
 
 def options(quick):
@@ -160,7 +151,7 @@ def clf_size(transform):
     CLF-writable around it)."""
     import PyOpenColorIO as ocio
 
-    writable = tables.group([t for t in _flatten(transform)
+    writable = ocio_ops.group([t for t in _flatten(transform)
                              if not isinstance(t, ocio.FixedFunctionTransform)])
     with tempfile.TemporaryDirectory() as d:
         path = Path(d) / "x.clf"
@@ -180,8 +171,8 @@ def _flatten(transform):
 
 
 def bench_3d(displays, quick):
-    objects = tables.object_colours()
-    locus = tables.spectral_colours(0.6)
+    objects = object_colours()
+    locus = spectral_colours(0.6)
     rows = []
     for display in displays:
         truth = clip.clip_XYZ(objects, display)
@@ -191,11 +182,11 @@ def bench_3d(displays, quick):
                 tables._black_plan.cache_clear()
                 t0 = time.perf_counter()
                 transform = build(display, size)
-                out = tables.apply(transform, objects[:1])  # processor built
+                out = ocio_ops.apply(transform, objects[:1])  # processor built
                 bake = time.perf_counter() - t0
-                out = tables.apply(transform, objects).astype(np.float64)
+                out = ocio_ops.apply(transform, objects).astype(np.float64)
                 de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(out, display))
-                lo = tables.apply(transform, locus).astype(np.float64)
+                lo = ocio_ops.apply(transform, locus).astype(np.float64)
                 Y = colorimetry.RGB_to_XYZ(lo, display)[:, 1]
                 de_locus = colorimetry.delta_E2000(clip.clip_XYZ(locus, display),
                                                    colorimetry.RGB_to_XYZ(lo, display))

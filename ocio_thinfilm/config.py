@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, registry, tables
+from . import clip, colorimetry, ocio_ops, registry, tables
 
 __all__ = [
     "CONFIG_NAME",
@@ -150,7 +150,7 @@ def _matrix_to_reference(space):
     would overflow the matrix to Inf - Inf = NaN, which no later op can repair at
     OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6."""
     M = colorimetry.matrix_XYZ_to_RGB(space)
-    return tables.group([tables.finite_limit_transform(), tables._matrix(np.linalg.inv(M))])
+    return ocio_ops.group([tables.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
 
 
 def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):
@@ -165,7 +165,7 @@ def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):
         linear = lut.transforms(*cores) + [tables.working_decoding_transform()]
     else:
         linear = [tables.view_linear_transform(display, view)]
-    return tables.group(linear + [tables.display_matrix_transform(display, inverse=True)])
+    return ocio_ops.group(linear + [tables.display_matrix_transform(display, inverse=True)])
 
 
 def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
@@ -196,8 +196,8 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
                    aliases=["srgb_tx"],
                    description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour "
                                "picking)",
-                   to_reference=tables.group([
-                       _invert(tables.display_encoding_transform("sRGB")),
+                   to_reference=ocio_ops.group([
+                       ocio_ops.inverse([tables.display_encoding_transform("sRGB")]),
                        _matrix_to_reference("Rec.709")])))
     cs.append(dict(name="Raw", family="Utility", encoding="data", is_data=True,
                    categories=["file-io"], aliases=["Utility - Raw"],
@@ -222,7 +222,7 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
         cs.append(dict(name=name, family="Display", encoding="sdr-video",
                        categories=["file-io"], reference_space="display",
                        description=description,
-                       from_reference=tables.group([
+                       from_reference=ocio_ops.group([
                            tables.display_matrix_transform(display),
                            tables.display_encoding_transform(display)])))
 
@@ -234,7 +234,7 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
                                         "spaces (both CIE-XYZ-D65): no tone mapping, no "
                                         "gamut mapping. Used for conversions between scene "
                                         "and display colour spaces.",
-                            from_reference=tables.group([tables._matrix()]))]
+                            from_reference=ocio_ops.group([ocio_ops.matrix()]))]
     displays = {}
     descriptions = {v.name: v.description for v in registry.VIEW_LIST}
     for display, (display_space, _) in DISPLAY_SPACES.items():
@@ -285,7 +285,7 @@ def clip_named_transform(display, *, inline=False, luts=None, clip_size=tables.C
     lut = tables.clip_lut(display, clip_size)
     cores = [named_lut(_clip_stem(display, white)) for white in (False, True)]
     cores = [luts[name] if inline else _file_transform(name) for name in cores]
-    return tables.group([tables.display_matrix_transform(display, inverse=True)]
+    return ocio_ops.group([tables.display_matrix_transform(display, inverse=True)]
                         + lut.transforms(*cores) + [tables.working_decoding_transform()])
 
 
@@ -317,14 +317,6 @@ def named_transforms(displays=clip.DISPLAYS, *, inline=False, luts=None,
     return out
 
 
-def _invert(transform):
-    import PyOpenColorIO as ocio
-
-    g = tables.group([transform])
-    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return g
-
-
 def _acescct_to_reference():
     """ACEScct -> CIE-XYZ-D65: inverse ACEScct curve (LogCameraTransform), AP1 -> XYZ."""
     import PyOpenColorIO as ocio
@@ -336,7 +328,7 @@ def _acescct_to_reference():
     curve.setLinSideSlopeValue([1.0] * 3)
     curve.setLinSideOffsetValue([0.0] * 3)
     curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return tables.group([curve, _matrix_to_reference("ACEScg")])
+    return ocio_ops.group([curve, _matrix_to_reference("ACEScg")])
 
 
 # --------------------------------------------------------------------------- #

@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, registry, tables
+from . import clip, colorimetry, ocio_ops, registry, tables
 from .io import (UsageError, atomic_file, check_output_file, claim_directory, is_stdout,
                  transaction)
 
@@ -173,13 +173,13 @@ def lut_contents(table, *, kind="phase-change", display=None, index=None, value_
             values = clip.clip_RGB(colorimetry.XYZ_to_RGB(values, display), display)
             output = f"{display} display-linear RGB, constant-lightness clipped"
             description += f", clipped into {display}"
-        lut = tables.lut1d_transform(values)
+        lut = ocio_ops.lut1d_transform(values)
     else:
         output = f"{display} display-linear RGB, constant-lightness clipped"
-        lut = tables.lut3d_transform(values)
+        lut = ocio_ops.lut3d_transform(values)
     meta = dict(name=_stem(table, kind, display, index), input=what, output=output,
                 description=description, range=(lo, hi), size=size,
-                id=tables.transform_id("Export", _stem(table, kind, display, index)))
+                id=ocio_ops.transform_id("Export", _stem(table, kind, display, index)))
     return values, lut, meta
 
 
@@ -205,12 +205,12 @@ def _baker_config(lut, lo, hi):
     config.addColorSpace(ref)
     out = ocio.ColorSpace()
     out.setName("output")
-    out.setTransform(tables.group([tables._matrix(np.eye(3) / span, [-lo / span] * 3), lut]),
+    out.setTransform(ocio_ops.group([ocio_ops.matrix(np.eye(3) / span, [-lo / span] * 3), lut]),
                      ocio.COLORSPACE_DIR_FROM_REFERENCE)
     config.addColorSpace(out)
     domain = ocio.ColorSpace()
     domain.setName("domain")
-    domain.setTransform(tables._matrix(np.eye(3) * span, [lo] * 3),
+    domain.setTransform(ocio_ops.matrix(np.eye(3) * span, [lo] * 3),
                         ocio.COLORSPACE_DIR_TO_REFERENCE)
     config.addColorSpace(domain)
     config.setRole("scene_linear", "input")
@@ -239,9 +239,9 @@ def write_lut(path, fmt, values, lut, meta):
             span = hi - lo
             ops = []
             if (lo, hi) != (0.0, 1.0):
-                ops.append(tables._matrix(np.eye(3) / span, [-lo / span] * 3))
+                ops.append(ocio_ops.matrix(np.eye(3) / span, [-lo / span] * 3))
             ops.append(lut)
-            g = tables.group(ops, name=meta["name"], id=meta["id"],
+            g = ocio_ops.group(ops, name=meta["name"], id=meta["id"],
                              description=meta["description"],
                              input_descriptor=meta["input"], output_descriptor=meta["output"])
             g.write(writer, str(tmp), ocio.Config.CreateRaw())

@@ -55,7 +55,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, tables
+from . import clip, colorimetry, ocio_ops, tables
 from .io import UsageError, atomic_file, check_writable
 
 __all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
@@ -125,7 +125,7 @@ def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE):
     if linear_space in NO_NEGATIVE_SHAPER:
         lo = 0.0
     hi = max(SHAPER_MIN_HI, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
-    return tables.quantize(lo, 6), tables.quantize(hi, 6)
+    return ocio_ops.quantize(lo, 6), ocio_ops.quantize(hi, 6)
 
 
 def _mirror_root(x):
@@ -139,7 +139,7 @@ def _shaper_to_linear(lo, hi):
     e_lo, e_hi = _mirror_root(lo), _mirror_root(hi)
     power = ocio.ExponentTransform([SHAPER_GAMMA] * 3 + [1.0])
     power.setNegativeStyle(ocio.NEGATIVE_MIRROR)
-    return tables.group([tables._matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
+    return ocio_ops.group([ocio_ops.matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
 
 
 def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
@@ -162,7 +162,7 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
     cs.setFamily("Utility")
     cs.setDescription(f"Shaper for {source}: per channel of {sibling}, "
                       f"sign(x)|x|^(1/2) from {lo:.6g}..{hi:.6g} onto 0..1")
-    cs.setTransform(tables.group(parts), ocio.COLORSPACE_DIR_TO_REFERENCE)
+    cs.setTransform(ocio_ops.group(parts), ocio.COLORSPACE_DIR_TO_REFERENCE)
     cfg.addColorSpace(cs)
     return cfg, SHAPER_SPACE
 
@@ -244,7 +244,7 @@ def _description(source, display, view, size, shaper, baked):
 
 def _metadata(source, display, view):
     stem = _stem(source, display, view)
-    return dict(name=stem, id=tables.transform_id("Display_View", stem),
+    return dict(name=stem, id=ocio_ops.transform_id("Display_View", stem),
                 input=f"{source}: raw pixel values",
                 output=f"{display} display code values ({view})")
 
@@ -279,7 +279,7 @@ def _write_text(path, text):
 def _write_group(path, fmt, transforms, meta, description):
     import PyOpenColorIO as ocio
 
-    g = tables.group(transforms, name=meta["name"], id=meta["id"], description=description,
+    g = ocio_ops.group(transforms, name=meta["name"], id=meta["id"], description=description,
                      input_descriptor=meta["input"], output_descriptor=meta["output"])
     with atomic_file(path) as tmp:
         g.write(VIEW_FORMATS[fmt], str(tmp), ocio.Config.CreateRaw())
@@ -305,10 +305,10 @@ def _baked_3d_transforms(cfg, source, shaper, display, view, size):
         # Display code values: 16-bit integers (half the text of floats; the step,
         # 1.5e-5, is far below the interpolation error).
         values = np.round(np.clip(values, 0.0, 1.0) * tables.LUT_CODE_MAX) / tables.LUT_CODE_MAX
-        ops.append(tables.lut3d_transform(values, bitdepth="uint16"))
-        ops.append(tables._matrix())  # the CLF writer keeps 16i only before another op
+        ops.append(ocio_ops.lut3d_transform(values, bitdepth="uint16"))
+        ops.append(ocio_ops.matrix())  # the CLF writer keeps 16i only before another op
     else:
-        ops.append(tables.lut3d_transform(values))
+        ops.append(ocio_ops.lut3d_transform(values))
     return ops
 
 
@@ -329,7 +329,7 @@ def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, de
     lut_meta = dict(meta, input=f"{source}: {what}", range=(lo, hi), size=size,
                     description=description + f" 1D LUT, {size} entries uniform over "
                                               f"{lo:g}..{hi:g}.")
-    return export.write_lut(path, fmt, values, tables.lut1d_transform(values), lut_meta)
+    return export.write_lut(path, fmt, values, ocio_ops.lut1d_transform(values), lut_meta)
 
 
 def export_view(source, display, view, out=None, *, fmt=None, size=None,

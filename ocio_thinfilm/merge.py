@@ -45,7 +45,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, config, tables
+from . import clip, colorimetry, config, ocio_ops, tables
 from .io import UsageError, atomic_directory, atomic_file, check_writable
 
 __all__ = ["load_base", "match_displays", "merge_config", "bake_into", "write_archive",
@@ -61,15 +61,9 @@ MIN_PROFILE = (2, 1)
 MATCH_TOLERANCE = 2e-4
 
 
-def _ocio():
-    import PyOpenColorIO as ocio
-
-    return ocio
-
-
 def load_base(source):
     """The base config from a file or an ``ocio://`` URI (one-line errors)."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     text = str(source)
     if not text.startswith("ocio://") and not Path(text).is_file():
         raise UsageError(f"--into {text}: no such config file (or ocio:// URI)")
@@ -81,7 +75,7 @@ def load_base(source):
 
 def _cs_transform(cs, to_reference):
     """A colour space's transform to (or from) its reference, None for an identity."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     want, other = ((ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)
                    if to_reference else
                    (ocio.COLORSPACE_DIR_FROM_REFERENCE, ocio.COLORSPACE_DIR_TO_REFERENCE))
@@ -91,50 +85,26 @@ def _cs_transform(cs, to_reference):
     t = cs.getTransform(other)
     if t is None:
         return None
-    g = ocio.GroupTransform()
-    g.appendTransform(t)
-    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return g
+    return ocio_ops.inverse([t])
 
 
 def _vt_from_scene(vt):
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     t = vt.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
     if t is not None:
         return t
     t = vt.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
-    g = ocio.GroupTransform()
-    g.appendTransform(t)
-    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return g
-
-
-def _group(parts):
-    ocio = _ocio()
-    g = ocio.GroupTransform()
-    for part in parts:
-        if part is not None:
-            g.appendTransform(part)
-    return g
-
-
-def _inverse(transform):
-    ocio = _ocio()
-    g = _group([transform])
-    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return g
+    return ocio_ops.inverse([t])
 
 
 def _apply(cfg, transform, values):
-    out = np.ascontiguousarray(values, dtype=np.float32).copy()
-    cfg.getProcessor(transform).getDefaultCPUProcessor().applyRGB(out)
-    return out.astype(np.float64)
+    return ocio_ops.apply(transform, values, config=cfg).astype(np.float64)
 
 
 def interchange(cfg):
     """(scene reference -> CIE-XYZ-D65, CIE-XYZ-D65 -> display reference) of ``cfg``,
     from its ``cie_xyz_d65_interchange`` role (see the module docstring)."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     roles = dict(cfg.getRoles())
     name = roles.get("cie_xyz_d65_interchange")
     cs = cfg.getColorSpace(name) if name else None
@@ -149,16 +119,16 @@ def interchange(cfg):
             raise UsageError(f"the cie_xyz_d65_interchange space {name!r} is "
                              "display-referred and the config has no scene-referred "
                              "default view transform to reach it")
-        scene_to_xyz = _group([_vt_from_scene(vt), _cs_transform(cs, to_reference=False)])
-        xyz_to_display = _group([_cs_transform(cs, to_reference=True)])
+        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt), _cs_transform(cs, to_reference=False)])
+        xyz_to_display = ocio_ops.group([_cs_transform(cs, to_reference=True)])
     else:
-        scene_to_xyz = _group([_cs_transform(cs, to_reference=False)])
+        scene_to_xyz = ocio_ops.group([_cs_transform(cs, to_reference=False)])
         vt_name = cfg.getDefaultViewTransformName() or (
             next(iter(cfg.getViewTransformNames()), None))
         if not vt_name:
             raise UsageError("the config has no view transform: no display reference")
-        xyz_to_display = _group([_cs_transform(cs, to_reference=True),
-                                 _vt_from_scene(cfg.getViewTransform(vt_name))])
+        xyz_to_display = ocio_ops.group([_cs_transform(cs, to_reference=True),
+                                         _vt_from_scene(cfg.getViewTransform(vt_name))])
     # it must be a colorimetric (linear) conversion, not a tone scale
     rng = np.random.default_rng(1)
     a, b = rng.uniform(0.0, 1.0, (2, 64, 3))
@@ -173,7 +143,7 @@ def interchange(cfg):
 def _display_colorspace(cfg, display):
     """The display colour space of ``display``: the one its views use (the colour space
     named like the display for ``<USE_DISPLAY_NAME>``)."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     for view in cfg.getViews(display):
         name = cfg.getDisplayViewColorSpaceName(display, view)
         if name == "<USE_DISPLAY_NAME>":
@@ -192,7 +162,7 @@ def _match_gamut(cfg, xyz_to_display, cs):
     curve, and every colour must come out as that curve applied per channel."""
     if cs.getEncoding() in ("hdr-video", "edr-video"):
         return None
-    transform = _group([xyz_to_display, _cs_transform(cs, to_reference=False)])
+    transform = ocio_ops.group([xyz_to_display, _cs_transform(cs, to_reference=False)])
     ramp = np.linspace(0.0, 1.0, 257)
     rng = np.random.default_rng(7)
     # colours whose channels sit on the ramp's nodes: primaries, secondaries, random
@@ -237,7 +207,7 @@ def match_displays(cfg):
 def merge_config(base, *, clip_size=tables.CLIP_SIZE):
     """``base`` plus the additions (module docstring) as a new, validated-ready config,
     and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
         raise UsageError(f"the config's profile version {version[0]}.{version[1]} is below "
@@ -260,8 +230,8 @@ def merge_config(base, *, clip_size=tables.CLIP_SIZE):
     for spec in spaces:
         if _taken(spec["name"]):
             raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
-        spec = dict(spec, to_reference=_group([spec["to_reference"],
-                                               _inverse(scene_to_xyz)]))
+        spec = dict(spec, to_reference=ocio_ops.group([spec["to_reference"],
+                                                       ocio_ops.inverse([scene_to_xyz])]))
         cfg.addColorSpace(config.colorspace_factory(**spec))
 
     # view transforms: scene reference -> CIE-XYZ-D65 -> the view -> display reference
@@ -275,7 +245,7 @@ def merge_config(base, *, clip_size=tables.CLIP_SIZE):
             parts = config._view_parts(gamut, view, False, data.luts, clip_size)
             cfg.addViewTransform(config.view_transform_factory(
                 name=spec["name"], family=spec["family"], description=spec["description"],
-                from_reference=_group([scene_to_xyz, parts, xyz_to_display])))
+                from_reference=ocio_ops.group([scene_to_xyz, parts, xyz_to_display])))
     for display, (cs_name, gamut) in matches.items():
         views = list(base.getViews(display))
         for view in MERGED_VIEWS:
@@ -322,7 +292,7 @@ def _copy_base_files(base, source, directory):
 def write_merged(source, directory, *, clip_size=tables.CLIP_SIZE):
     """Write the merged config (``config.ocio``, ``luts/``) into the existing
     ``directory``; returns (config path, display matches)."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     base = load_base(source)
     cfg, luts, matches = merge_config(base, clip_size=clip_size)
     directory = Path(directory)
@@ -349,7 +319,7 @@ def write_merged(source, directory, *, clip_size=tables.CLIP_SIZE):
 def write_archive(config_path, out):
     """Archive the config folder of ``config_path`` as ``out`` (``.ocioz``, OCIO >= 2.2
     to read), atomically."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     cfg = ocio.Config.CreateFromFile(str(config_path))
     if not cfg.isArchivable():
         raise UsageError(f"{config_path}: not archivable (absolute or parent search paths "

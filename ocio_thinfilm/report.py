@@ -59,7 +59,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, spectra
+from . import clip, colorimetry, ocio_ops, spectra
+from .evaluation import stability
+from .evaluation.stability import fmt as _fmt
 from .io import UsageError, atomic_file, check_writable, transaction
 
 __all__ = [
@@ -226,22 +228,6 @@ def _dE_white(a, b, white_xy):
     la = colour.XYZ_to_Lab(np.asarray(a, float), white_xy)
     lb = colour.XYZ_to_Lab(np.asarray(b, float), white_xy)
     return colour.delta_E(la, lb, method="CIE 2000")
-
-
-def _fmt(x, digits=3):
-    if x is None:
-        return "–"
-    if isinstance(x, str):
-        return x
-    if isinstance(x, (int, np.integer)) and not isinstance(x, bool):
-        return str(x)
-    if not np.isfinite(x):
-        return str(x)
-    if x == 0:
-        return "0"
-    if abs(x) >= 1e4 or abs(x) < 1e-3:
-        return f"{x:.{digits - 1}e}"
-    return f"{x:.{digits}g}"
 
 
 def _table(header, rows):
@@ -611,7 +597,7 @@ def _ocio_gamut_speeds(img, display):
     if tables is not None and hasattr(tables, "view_transform"):
         # like with like: whole views (display-linear RGB in -> sRGB code values out)
         M = colorimetry.matrix_XYZ_to_RGB(display)
-        to_xyz = ocio.MatrixTransform(_m44(np.linalg.inv(M)))
+        to_xyz = ocio_ops.matrix(np.linalg.inv(M))
         for label, view in (("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
                             ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip")):
             try:
@@ -620,12 +606,6 @@ def _ocio_gamut_speeds(img, display):
             except Exception as error:  # noqa: BLE001 -- reported, not hidden
                 speeds[f"{label}: failed: {error}"] = float("nan")
     return speeds
-
-
-def _m44(m3):
-    m = np.eye(4)
-    m[:3, :3] = m3
-    return [float(v) for v in m.ravel()]
 
 
 def _tables():
@@ -909,10 +889,9 @@ def stability_rows():
             o32.dtype == np.float32 and dd32 < 1e-6 and np.abs(x32 - x64).max() < 1e-6,
             "test_float32_vs_float64")
         # XYZ inputs.
-        for case, xyz, expected, check, test in _xyz_cases(W):
-            out = clip.clip_XYZ(np.asarray(xyz, dtype=np.float64))
-            ok, text = check(out)
-            add(case, expected, text, ok, test)
+        for case in stability.xyz_cases(W):
+            ok, text = case.check(clip.clip_XYZ(case.inputs))
+            add(case.name, case.expected, text, ok, case.test)
         _ocio_clip_rows(add, W)
     return rows
 
@@ -927,7 +906,7 @@ def _ocio_clip_rows(add, W):
     tf = tables.clip_transform("sRGB")
 
     def run(x):
-        return tables.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
+        return ocio_ops.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
 
     bw_in = np.array([[-0.1, -0.2, -0.1], [0.0, 0.0, 0.0], 2 * W, [0.5, 1.5, 0.5],
                       [0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]])
@@ -980,110 +959,6 @@ def _eq9_singular_worst():
                     exact = float((mpmath.sin((layers + 1) * x) / s) ** 2 / (layers + 1) ** 2)
                 worst = max(worst, abs(float(val) - exact))
     return worst
-
-
-def _xyz_cases(W):
-    """(case, XYZ input, expected text, check(out) -> (ok, observed), test name)."""
-    M = colorimetry.matrix_XYZ_to_RGB("sRGB")
-    Minv = np.linalg.inv(M)
-    grey_dir_limit = _limit_along(M, Minv, W, np.array([1.0, 0.0, 0.0]), 0.5)
-
-    def in_gamut_keep_Y(Y):
-        def check(out):
-            rgb = out @ M.T
-            ok = bool(np.all(np.isfinite(out)) and np.all(rgb > -1e-9) and np.all(rgb < 1 + 1e-9)
-                      and np.allclose(out[..., 1], Y, rtol=1e-9, atol=1e-12))
-            return ok, f"RGB [{', '.join(_fmt(float(v), 4) for v in np.ravel(rgb)[:3])}], Y {_fmt(float(np.ravel(out)[1]), 6)}"
-        return check
-
-    def equals(target, tol, label):
-        def check(out):
-            err = float(np.max(np.abs(np.asarray(out) - target)))
-            return err <= tol, f"{label}: |Δ| {_fmt(err)}"
-        return check
-
-    cases = [
-        ("XYZ negative (−0.1, −0.2, −0.1)", [-0.1, -0.2, -0.1], "black (Y ≤ 0)",
-         equals(0.0, 0.0, "black"), "test_xyz_negative_and_zero_give_black"),
-        ("XYZ zero", [0.0, 0.0, 0.0], "black", equals(0.0, 0.0, "black"),
-         "test_xyz_negative_and_zero_give_black"),
-        ("XYZ above white: 2·white and (0.5, 1.5, 0.5)", [2 * W, [0.5, 1.5, 0.5]],
-         "white (Y ≥ Y_white)", equals(W, 1e-12, "white"), "test_xyz_above_white_gives_white"),
-        ("XYZ (1e30, 0.5, 0.5)", [1e30, 0.5, 0.5],
-         "finite, in gamut, Y = 0.5: the boundary point from grey along +X",
-         equals(grey_dir_limit, 1e-9, "vs limit"), "test_xyz_huge_and_infinite_components"),
-        ("XYZ (+Inf, 0.5, 0.5)", [np.inf, 0.5, 0.5], "same as the 1e30 limit",
-         equals(grey_dir_limit, 1e-9, "vs limit"), "test_xyz_huge_and_infinite_components"),
-        ("XYZ (−Inf, 0.5, 0.5)", [-np.inf, 0.5, 0.5], "finite, in gamut, Y = 0.5",
-         in_gamut_keep_Y(0.5), "test_xyz_huge_and_infinite_components"),
-        ("XYZ (0.3, +Inf, 0.3) / (0.3, −Inf, 0.3)", [[0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]],
-         "white / black", equals(np.array([W, np.zeros(3)]), 1e-12, "white/black"),
-         "test_xyz_infinite_luminance"),
-        ("XYZ NaN in one pixel of two", [[np.nan, 0.5, 0.5], [0.2, 0.3, 0.9]],
-         "NaN in that pixel only; the other as if clipped alone (≤ 1e-15)",
-         _nan_check(), "test_xyz_nan_stays_in_its_pixel"),
-        ("XYZ on faces and edges (RGB channels exactly 0 or 1)", _faces_edges() @ Minv.T,
-         "unchanged (≤ 1e-12: only the XYZ↔RGB round-off)",
-         equals(_faces_edges() @ Minv.T, 1e-12, "moved"), "test_xyz_on_faces_and_edges_unchanged"),
-        ("rays nearly parallel to a face (R − grey = ±1e-15…1e-6, G far out)", _near_parallel(M, Minv),
-         "finite, in gamut, Y preserved to 1e-9", _near_parallel_check(M, Minv),
-         "test_rays_nearly_parallel_to_a_face"),
-    ]
-    return cases
-
-
-def _limit_along(M, Minv, W, direction, Y):
-    """Independent limit: from the grey of luminance Y, the furthest point along
-    ``direction`` projected to constant Y that stays in the unit RGB cube."""
-    grey = W * (Y / W[1])
-    d = direction - W * (direction[1] / W[1])  # remove the luminance component
-    g, dr = grey @ M.T, d @ M.T
-    s = np.inf
-    for c in range(3):
-        if dr[c] > 0:
-            s = min(s, (1 - g[c]) / dr[c])
-        elif dr[c] < 0:
-            s = min(s, -g[c] / dr[c])
-    return grey + s * d
-
-
-def _nan_check():
-    alone = clip.clip_XYZ(np.array([[0.2, 0.3, 0.9]]))[0]
-
-    def check(out):
-        err = float(np.abs(out[1] - alone).max())
-        ok = bool(np.all(np.isnan(out[0])) and err <= 1e-15)
-        return ok, f"pixel 0 NaN: {bool(np.all(np.isnan(out[0])))}; pixel 1 vs alone |Δ| {_fmt(err)}"
-    return check
-
-
-def _faces_edges():
-    vals = [0.0, 0.37, 1.0]
-    pts = np.array([[a, b, c] for a in vals for b in vals for c in vals])
-    return pts
-
-
-def _near_parallel(M, Minv):
-    lum = Minv[1]
-    out = []
-    for delta in (1e-15, -1e-15, 1e-12, -1e-12, 1e-9, 1e-6, -1e-6):
-        g = 0.4
-        # RGB = (g + delta, g + a, g + b) with the same luminance as grey g:
-        a = 3.0
-        b = -(lum[0] * delta + lum[1] * a) / lum[2]
-        out.append([g + delta, g + a, g + b])
-    return np.array(out) @ Minv.T
-
-
-def _near_parallel_check(M, Minv):
-    def check(out):
-        xyz = _near_parallel(M, Minv)
-        rgb = out @ M.T
-        ok = bool(np.all(np.isfinite(out)) and rgb.min() > -1e-12 and rgb.max() < 1 + 1e-12
-                  and np.allclose(out[:, 1], xyz[:, 1], rtol=1e-9))
-        return ok, (f"RGB in [{_fmt(float(rgb.min()))}, {_fmt(float(rgb.max()), 6)}], "
-                    f"max |ΔY| {_fmt(float(np.abs(out[:, 1] - xyz[:, 1]).max()))}")
-    return check
 
 
 def _section_stability(ctx):
@@ -1162,7 +1037,7 @@ def _section_table1d(ctx):
             tf = table.transform()
             cpu = _ocio_cpu(tf)
             mpix = _ocio_apply_speed(cpu, img)
-            via = tables.apply(tf, img[:4096])
+            via = ocio_ops.apply(tf, img[:4096])
             ocio_check = max(ocio_check, float(np.max(colorimetry.delta_E2000(
                 via.astype(np.float64), table.lookup(img[:4096, 0].astype(np.float64))))))
             if not isinstance(t0, tuple) and t0 == d_t0 and size == d_size:
@@ -1247,7 +1122,7 @@ def _naive_lut_transform(display, size, interp):
     lut.setGridSize(size)
     lut.setInterpolation(interp)
     lut.setData(np.ascontiguousarray(rgb, dtype=np.float32).ravel())
-    scale = ocio.MatrixTransform(_m44(np.diag(1.0 / W)))
+    scale = ocio_ops.matrix(np.diag(1.0 / W))
     return ocio.GroupTransform([scale, lut, ocio.RangeTransform(0.0, 1.0, 0.0, 1.0)])
 
 
@@ -1312,7 +1187,7 @@ def _section_lut3d(ctx):
                 bake = time.perf_counter() - t_start
                 stats = {}
                 for s_name, xyz in sets.items():
-                    out = tables.apply(tf, xyz).astype(np.float64) @ Minv.T
+                    out = ocio_ops.apply(tf, xyz).astype(np.float64) @ Minv.T
                     stats[s_name] = _stats(colorimetry.delta_E2000(out, refs[s_name]))
                 mpix = _ocio_apply_speed(_ocio_cpu(tf), img)
                 a, b = stats["interference colours"], stats["spectral mixtures (Y 0.01-0.99)"]
@@ -1374,8 +1249,8 @@ def _section_analytic_vs_lut(ctx):
     big = 65 if d_size < 65 else d_size
     ocio_paths = {
         f"Lut1D + {d_size}³ clip LUT, OCIO (shipped)":
-            tables.group([table.transform(), tables.clip_transform(display)]),
-        f"Lut1D + {big}³ clip LUT, OCIO": tables.group([table.transform(),
+            ocio_ops.group([table.transform(), tables.clip_transform(display)]),
+        f"Lut1D + {big}³ clip LUT, OCIO": ocio_ops.group([table.transform(),
                                                         tables.clip_transform(display, big)]),
     }
     lut1d_tf = table.transform()
@@ -1385,10 +1260,10 @@ def _section_analytic_vs_lut(ctx):
         "table lookup (numpy) + clip_RGB (numpy)":
             lambda: clip.clip_RGB(table.lookup(x_um) @ M.T, display),
         "Lut1D (OCIO) + clip_RGB (numpy)":
-            lambda: clip.clip_RGB(tables.apply(lut1d_tf, img).astype(np.float64) @ M.T, display),
+            lambda: clip.clip_RGB(ocio_ops.apply(lut1d_tf, img).astype(np.float64) @ M.T, display),
     }
     for name, tf in ocio_paths.items():
-        paths[name] = (lambda tf: lambda: tables.apply(tf, img))(tf)
+        paths[name] = (lambda tf: lambda: ocio_ops.apply(tf, img))(tf)
     rows, series, raw = [], {}, []
     for name, fn in paths.items():
         out = np.asarray(fn(), dtype=np.float64)

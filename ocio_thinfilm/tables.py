@@ -48,8 +48,9 @@ Added names (beyond the contract): :func:`clip_lut` / :class:`ClipLUT` (the LUT 
 :func:`clip_black_faces_RGB`, :func:`clip_white_faces_RGB`, :func:`view_linear_transform`,
 :func:`display_matrix_transform`, :func:`display_encoding_transform`,
 :func:`xyz_limit_transform`, :func:`group`, :func:`quantize`, :func:`transform_id`,
-:func:`object_colours`, :func:`spectral_colours`, ``Table1D.rgb(display)`` (per-display
-clipped variant), ``Table1D.shaper(x)``.
+``Table1D.rgb(display)`` (per-display clipped variant), ``Table1D.shaper(x)``. The
+test colours the tests, benchmarks and report evaluate against live in
+:mod:`ocio_thinfilm.evaluation.colours`, outside the shipped path.
 """
 
 from __future__ import annotations
@@ -59,7 +60,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import cache, clip, colorimetry, registry
+from . import cache, clip, colorimetry, ocio_ops, registry
+# Re-exported (the contract above names them); the one implementation is in ocio_ops.
+from .ocio_ops import (VENDOR, apply, group, lut1d_transform, lut3d_transform,  # noqa: F401
+                       quantize, transform_id)
 
 __all__ = [
     "BUILT",
@@ -88,8 +92,6 @@ __all__ = [
     "clip_white_faces_RGB",
     "transform_id",
     "quantize",
-    "object_colours",
-    "spectral_colours",
 ]
 
 #: The views of every display (:mod:`.registry`).
@@ -109,138 +111,12 @@ MORPHO_SIZE = 1024
 #: Wavelength step (nm) of the spectra behind the tables (band-limited integration).
 SPECTRAL_STEP = 5.0
 
-#: ``urn:aswf:ocio:transformId:1.0:<Vendor>:<Type>:<Name>:1.0`` (OpenColorIO-Config-ACES).
-VENDOR = "OCIO-ThinFilm"
-
 _LOCK = threading.RLock()
-
-
-def transform_id(kind: str, name: str) -> str:
-    """Transform ID in the style of the ACES OCIO configs."""
-    safe = "".join(c if c.isalnum() else "_" for c in name).strip("_")
-    return f"urn:aswf:ocio:transformId:1.0:{VENDOR}:{kind}:{safe}:1.0"
-
-
-# --------------------------------------------------------------------------- #
-# OCIO helpers
-# --------------------------------------------------------------------------- #
-def _ocio():
-    import PyOpenColorIO as ocio
-
-    return ocio
-
-
-def group(transforms, *, name: str | None = None, description: str | None = None,
-          id: str | None = None, input_descriptor: str | None = None,
-          output_descriptor: str | None = None):
-    """A ``GroupTransform`` of ``transforms`` with CLF-style metadata."""
-    ocio = _ocio()
-    g = ocio.GroupTransform()
-    for t in transforms:
-        g.appendTransform(t)
-    md = g.getFormatMetadata()
-    if name:
-        md.setName(name)
-    if id:
-        md.setID(id)
-    if description:
-        md.addChildElement("Description", description)
-    if input_descriptor:
-        md.addChildElement("InputDescriptor", input_descriptor)
-    if output_descriptor:
-        md.addChildElement("OutputDescriptor", output_descriptor)
-    return g
-
-
-def quantize(values, decimals: int = 7) -> np.ndarray:
-    """Round to ``decimals`` decimal places (and turn -0 into 0) before data go into a
-    file: float64 results can differ in the last bits between runs (BLAS reduction
-    order, memory alignment); rounded, the written files are byte-reproducible."""
-    return np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0
-
-
-def _matrix(m3=None, offset=(0.0, 0.0, 0.0)):
-    ocio = _ocio()
-    m = np.eye(4)
-    if m3 is not None:
-        m[:3, :3] = m3
-    return ocio.MatrixTransform([float(v) for v in quantize(m, 12).ravel()],
-                                [float(v) for v in quantize(offset, 12)] + [0.0])
-
-
-def _range(lo, hi):
-    ocio = _ocio()
-    r = ocio.RangeTransform()
-    r.setMinInValue(lo)
-    r.setMaxInValue(hi)
-    r.setMinOutValue(lo)
-    r.setMaxOutValue(hi)
-    return r
-
-
-def _inverse(transforms):
-    """A GroupTransform of ``transforms`` applied in the inverse direction."""
-    ocio = _ocio()
-    g = group(transforms)
-    g.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return g
-
-
-def apply(transform, pixels) -> np.ndarray:
-    """Apply an OCIO transform to a (..., 3) array with OCIO's CPU processor.
-
-    The input is converted to float32 and not modified; returns a new float32 array
-    of the same shape.
-    """
-    ocio = _ocio()
-    a = np.asarray(pixels, dtype=np.float32)
-    if a.ndim == 0 or a.shape[-1] != 3:
-        raise ValueError(f"pixels must have a last axis of length 3, got shape {a.shape}")
-    out = np.ascontiguousarray(a.reshape(-1, 3)).copy()
-    cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
-    if out.size:
-        cpu.applyRGB(out)
-    return out.reshape(a.shape)
 
 
 # --------------------------------------------------------------------------- #
 # 1D tables
 # --------------------------------------------------------------------------- #
-def lut1d_transform(values, *, bitdepth: str | None = None):
-    """An OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3).
-
-    ``bitdepth="uint16"``: the values already lie on the 16-bit grid (in [0, 1]) and
-    are written as 16-bit integers; otherwise they are quantised
-    (:func:`quantize`) and written as floats."""
-    ocio = _ocio()
-    t = ocio.Lut1DTransform()
-    t.setLength(len(values))
-    data = values if bitdepth else quantize(values)
-    t.setData(np.ascontiguousarray(data, dtype=np.float32).ravel())
-    t.setInterpolation(ocio.INTERP_LINEAR)
-    if bitdepth == "uint16":
-        t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-    return t
-
-
-def lut3d_transform(values, *, bitdepth: str | None = None):
-    """An OCIO Lut3DTransform (tetrahedral) holding ``values`` (N, N, N, 3), index
-    [r][g][b]. ``bitdepth``: ``"uint16"`` (values on the 16-bit grid in [0, 1]) or
-    ``"half"`` (values already rounded to half floats) are written as such in a CLF
-    file; otherwise values are quantised (:func:`quantize`) and written as floats."""
-    ocio = _ocio()
-    t = ocio.Lut3DTransform()
-    t.setGridSize(values.shape[0])
-    t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    t.setData(np.ascontiguousarray(values if bitdepth else quantize(values),
-                                   dtype=np.float32).ravel())
-    if bitdepth == "uint16":
-        t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-    elif bitdepth == "half":
-        t.setFileOutputBitDepth(ocio.BIT_DEPTH_F16)
-    return t
-
-
 @dataclass(frozen=True, eq=False)
 class Table1D:
     """A 1D table: pixel value (all three channels equal) -> exact XYZ.
@@ -291,7 +167,7 @@ class Table1D:
     # -- OCIO path --------------------------------------------------------- #
     def shaper_transform(self):
         """OCIO transform: pixel value -> u in [0, 1] (before the LUT's clamp)."""
-        ocio = _ocio()
+        ocio = ocio_ops.module()
         if self.encoding == "log":
             t = ocio.LogAffineTransform()
             t.setBase(2.0)
@@ -302,7 +178,7 @@ class Table1D:
             t.setLinSideOffsetValue([1.0] * 3)
             return t
         span = self.domain_max - self.domain_min
-        return _matrix(np.eye(3) / span, [-self.domain_min / span] * 3)
+        return ocio_ops.matrix(np.eye(3) / span, [-self.domain_min / span] * 3)
 
     def lut_transform(self):
         return lut1d_transform(self.values)
@@ -492,17 +368,17 @@ def xyz_limit_transform():
     normaliser positive and makes +-Inf finite (Y <= 0 gives black, as in the
     analytic clip).
     """
-    return _range(0.0, LIMIT)
+    return ocio_ops.range_(0.0, LIMIT)
 
 
 def finite_limit_transform():
     """Clamp every component to [-LIMIT, LIMIT]: +-Inf become finite (and NaN, which
     OCIO's CPU Range sends to the lower bound)."""
-    return _range(-LIMIT, LIMIT)
+    return ocio_ops.range_(-LIMIT, LIMIT)
 
 
 def xyY_forward_transform():
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
 
 
@@ -641,7 +517,7 @@ def _white_nodes(size, display):
     # of two above it, so that white (1 / top) is exact in half floats
     top = 2.0 ** np.ceil(np.log2(1.0 / _luminance(display).min()))
     code = 1.0 - (1.0 - np.linspace(0.0, 1.0, inside + 1)) ** WHITE_POWER
-    below = apply(_inverse([display_encoding_transform(WORKING_ENCODING)]),
+    below = apply(ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
                   np.repeat(code[:, None], 3, axis=1))[:, 0].astype(np.float64)
     below[0], below[-1] = 0.0, 1.0
     above = 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0, cells - inside))
@@ -653,7 +529,7 @@ def y_shaper_transform():
     unchanged -- an analytic op, exact in float on every GPU (a Lut1D shaper here
     would be stored in half floats by some hosts, placing colours only to 1/30 of a
     cell)."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     t = ocio.ExponentTransform([1.0, 1.0, Y_POWER, 1.0])
     t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
     t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
@@ -730,7 +606,7 @@ class ClipLUT:
         """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
         [0, 1], sRGB-encoded (:data:`WORKING_ENCODING`); ``black`` / ``white`` replace
         the CLF-writable cores (e.g. by FileTransforms in the config)."""
-        return [xyz_limit_transform(), _matrix(self.chart / _y_top(self.size)),
+        return [xyz_limit_transform(), ocio_ops.matrix(self.chart / _y_top(self.size)),
                 xyY_forward_transform(),
                 y_shaper_transform(),
                 self.black_core() if black is None else black,
@@ -793,12 +669,12 @@ def display_matrix_transform(display: str, inverse: bool = False):
     """CIE-XYZ-D65 -> display-linear RGB (or back) as an OCIO MatrixTransform."""
     M = colorimetry.matrix_XYZ_to_RGB(_check_display(display) if display in clip.DISPLAYS
                                       else display)
-    return _matrix(np.linalg.inv(M) if inverse else M)
+    return ocio_ops.matrix(np.linalg.inv(M) if inverse else M)
 
 
 def working_decoding_transform():
     """sRGB code values (the white pass's output) -> display-linear RGB."""
-    return _inverse([display_encoding_transform(WORKING_ENCODING)])
+    return ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)])
 
 
 def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
@@ -808,7 +684,7 @@ def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
     lut = clip_lut(display, size)
     # the clamp only removes float32 round-off of the EOTF (1.0 -> 1.00002 through
     # OCIO's fast pow): the code values are in [0, 1] already
-    return group(lut.transforms() + [working_decoding_transform(), _range(0.0, 1.0)],
+    return group(lut.transforms() + [working_decoding_transform(), ocio_ops.range_(0.0, 1.0)],
                  name=lut.name, id=transform_id("Gamut_Map", lut.name))
 
 
@@ -819,7 +695,7 @@ DISPLAY_ENCODINGS = {d.name: d.encoding for d in registry.DISPLAY_LIST}
 
 def display_encoding_transform(display: str):
     """Display-linear RGB -> display code values (the display's inverse EOTF)."""
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     _, gamma, offset = DISPLAY_ENCODINGS[_check_display(display)]
     if offset is None:
         t = ocio.ExponentTransform([gamma, gamma, gamma, 1.0])
@@ -831,7 +707,7 @@ def display_encoding_transform(display: str):
 
 
 def aces_gamut_compression_transform():
-    ocio = _ocio()
+    ocio = ocio_ops.module()
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
                                        list(clip.ACES_GAMUT_COMP13_PARAMS))
 
@@ -847,10 +723,10 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     # overflowed to Inf - Inf = NaN)
     if view == "Channel Clamp":
         return group([finite_limit_transform(), display_matrix_transform(display),
-                      _range(0.0, 1.0)])
+                      ocio_ops.range_(0.0, 1.0)])
     if view == "ACES Gamut Compression":
         return group([finite_limit_transform(), display_matrix_transform(display),
-                      aces_gamut_compression_transform(), _range(0.0, 1.0)])
+                      aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0)])
     raise ValueError(f"view must be one of {VIEWS[:3]}, got {view!r}")
 
 
@@ -873,50 +749,3 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
                      name=lut.name, id=transform_id("Gamut_Map", lut.name))
     return group([view_linear_transform(display, view, size),
                   display_encoding_transform(display)])
-
-
-# --------------------------------------------------------------------------- #
-# Test colours (shared by the tests, the benchmark and the report)
-# --------------------------------------------------------------------------- #
-def object_colours(seed: int = 0, n_random: int = 4000) -> np.ndarray:
-    """A set of object colours (CIE-XYZ-D65, reflectances under D65, Y <= 1):
-
-    ``n_random`` random smooth reflectance spectra (three Gaussian bumps on a
-    random base, clipped to [0, 1], scaled), the ColorChecker sets of colour-science,
-    the measured ("real") Munsell renotation colours, and the interference colours of
-    the two film kinds (0-3 um, 3000 each) and of the Morpho multilayer (500 angles).
-    """
-    import colour
-    from colour.notation.datasets.munsell import MUNSELL_COLOURS_REAL
-
-    rng = np.random.default_rng(seed)
-    wl = np.arange(360.0, 781.0, 5.0)
-    R = np.zeros((n_random, wl.size))
-    for _ in range(3):
-        centre = rng.uniform(380, 720, n_random)[:, None]
-        width = rng.uniform(10, 120, n_random)[:, None]
-        amplitude = rng.uniform(-1, 1.2, n_random)[:, None]
-        R += amplitude * np.exp(-0.5 * ((wl - centre) / width) ** 2)
-    R = np.clip(R + rng.uniform(0, 0.6, n_random)[:, None], 0, 1)
-    R *= rng.uniform(0.05, 1, n_random)[:, None]
-    random_XYZ = colorimetry.reflectance_to_XYZ(R, wl)
-    shape = colour.SpectralShape(360, 780, 5)
-    checker = []
-    for name in sorted(colour.SDS_COLOURCHECKERS):
-        for sd in colour.SDS_COLOURCHECKERS[name].values():
-            checker.append(colour.sd_to_XYZ(sd.copy().align(shape),
-                                            illuminant=colour.SDS_ILLUMINANTS["D65"]) / 100)
-    munsell = np.array([v[1] for v in MUNSELL_COLOURS_REAL], dtype=np.float64)
-    munsell[:, 2] /= 100.0
-    munsell = colour.xyY_to_XYZ(munsell[munsell[:, 2] <= 1.0])
-    t = np.linspace(0.0, 3000.0, 3000)
-    films = np.concatenate([colorimetry.film_XYZ(t, "phase-change"),
-                            colorimetry.film_XYZ(t, "no-phase-change"),
-                            colorimetry.morpho_XYZ(np.linspace(0.0, 89.0, 500))])
-    return np.concatenate([random_XYZ, np.array(checker), munsell, films])
-
-
-def spectral_colours(max_Y: float = 0.6, levels: int = 60) -> np.ndarray:
-    """Monochromatic colours 380-700 nm at ``levels`` luminances in (0, max_Y]."""
-    Ys = np.linspace(max_Y / levels, max_Y, levels)
-    return np.concatenate([colorimetry.spectral_locus_XYZ(Y) for Y in Ys])

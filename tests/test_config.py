@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm import clip, colorimetry, config, tables
+from ocio_thinfilm.evaluation.colours import object_colours
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
@@ -158,7 +159,7 @@ def test_thin_film_spaces_through_config(cfg):
 
 
 def test_config_views_equal_package_view_transforms(cfg, ocio):
-    X = tables.object_colours(n_random=500)[::3]
+    X = object_colours(n_random=500)[::3]
     for display in clip.DISPLAYS:
         for view in tables.VIEWS:
             out = X.astype(np.float32).copy()

@@ -29,7 +29,8 @@ import subprocess
 import numpy as np
 import pytest
 
-from ocio_thinfilm import cli, clip, colorimetry, export_view, tables
+from ocio_thinfilm import cli, clip, colorimetry, export_view
+from ocio_thinfilm.evaluation.colours import object_colours
 
 CLC = "Constant-Lightness Clip"
 FFMPEG = shutil.which("ffmpeg")
@@ -121,7 +122,7 @@ def ffmpeg_apply(path, values):
 # --------------------------------------------------------------------------- #
 @pytest.fixture(scope="module")
 def object_XYZ():
-    return tables.object_colours()
+    return object_colours()
 
 
 @pytest.fixture(scope="module")

@@ -2,7 +2,7 @@
 ``Constant-Lightness Clip`` views through OCIO's CPU processor, on every display --
 against the analytic clip (``clip.clip_XYZ``, the paper's Section 3.2 form).
 
-Sets: (a) object and interference colours (``tables.object_colours``: random smooth
+Sets: (a) object and interference colours (``evaluation.colours.object_colours``: random smooth
 reflectances, ColorCheckers, Munsell, thin films, Morpho), (b) monochromatic stimuli
 380-700 nm at Y in {0.02, 0.1, 0.3, 0.6}, (c) random XYZ inside ACES AP0 with
 0 <= Y <= 1, (d) extremes. The issue's targets for (a)-(c): dE2000 p99 <= 0.5 and
@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, tables
+from ocio_thinfilm import clip, colorimetry
+from ocio_thinfilm.evaluation.colours import object_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -59,7 +60,7 @@ def _sets():
     ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
     locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
                             for Y in (0.02, 0.1, 0.3, 0.6)])
-    return {"object": tables.object_colours(), "monochromatic": locus, "ap0": ap0}
+    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0}
 
 
 @pytest.fixture(scope="module")

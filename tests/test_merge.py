@@ -15,7 +15,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, config, merge, tables
+from ocio_thinfilm import clip, colorimetry, config, merge
+from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.cli import main
 
 ocio = pytest.importorskip("PyOpenColorIO")
@@ -161,8 +162,8 @@ def test_oiiotool_clip_view_matches_project_config(merged, tmp_path, colour):
     uri, path, _ = merged
     if not PROJECT.exists():
         pytest.skip("configs/thinfilm not baked")
-    X = np.vstack([tables.object_colours(n_random=300)[::2],
-                   tables.spectral_colours(max_Y=0.6, levels=8)])
+    X = np.vstack([object_colours(n_random=300)[::2],
+                   spectral_colours(max_Y=0.6, levels=8)])
     xyz, ap0 = tmp_path / "xyz.exr", tmp_path / "ap0.exr"
     _write_exr(xyz, X)
     # ACES2065-1 from colour-science (Bradford D65 -> ACES white), not from our code
@@ -202,7 +203,7 @@ def _check_clip_named_transform(cfg, display):
     rng = np.random.default_rng(5)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     inside = rng.uniform(0.0, 1.0, (500, 3))
-    X = tables.object_colours(n_random=200)
+    X = object_colours(n_random=200)
     rgb = X @ M.T
     nt = f"Constant-Lightness Clip - {display} (display-linear)"
     proc = cfg.getProcessor(nt, ocio.TRANSFORM_DIR_FORWARD)

@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm import clip, colorimetry, tables
+from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.io import read_image, write_image
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -69,15 +70,15 @@ def thickness_ramp(tmp_path_factory):
 @pytest.fixture(scope="module")
 def colour_chart(tmp_path_factory):
     """An XYZ EXR: spectral colours at Y <= 0.6 and object colours."""
-    xyz = np.concatenate([tables.spectral_colours(0.6, 30),
-                          tables.object_colours(n_random=1000)])
+    xyz = np.concatenate([spectral_colours(0.6, 30),
+                          object_colours(n_random=1000)])
     width = 128
     rows = -(-len(xyz) // width)
     pad = np.zeros((rows * width - len(xyz), 3))
     img = np.concatenate([xyz, pad]).reshape(rows, width, 3)
     path = tmp_path_factory.mktemp("chart") / "xyz.exr"
     write_image(path, img, dtype="float")
-    n_spectral = len(tables.spectral_colours(0.6, 30))
+    n_spectral = len(spectral_colours(0.6, 30))
     return path, xyz, n_spectral
 
 

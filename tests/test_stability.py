@@ -1,5 +1,7 @@
 """Stability on stiff and extreme cases: one test per row of the report's table
-(``ocio_thinfilm.report.stability_rows``; the row names its test).
+(``ocio_thinfilm.report.stability_rows``; the row names its test). The clip's extreme
+XYZ cases are defined once, in ``ocio_thinfilm.evaluation.stability``: the report
+lists them and ``test_xyz_stability_case`` runs each one.
 
 Every expectation here is independent of the code under test: physical limits
 (incoherent average = half the illuminant, total internal reflection R = 1, the
@@ -15,6 +17,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm import clip, colorimetry, spectra
+from ocio_thinfilm.evaluation import stability
 
 WL = spectra.wavelength_grid()
 
@@ -285,6 +288,33 @@ def test_rays_nearly_parallel_to_a_face():
     x = x * (Y / x[1])
     out = clip.clip_XYZ(x)
     assert np.all(np.isfinite(out)) and _in_gamut(out, 1e-9)
+
+
+XYZ_CASES = stability.xyz_cases()
+
+
+@pytest.mark.parametrize("case", XYZ_CASES, ids=[c.name for c in XYZ_CASES])
+def test_xyz_stability_case(case):
+    """Each shared case (the rows of the report's table) through the analytic clip."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ok, observed = case.check(clip.clip_XYZ(case.inputs))
+    assert ok, f"{case.name}: expected {case.expected}; observed {observed}"
+
+
+def test_xyz_stability_cases_name_their_tests():
+    """Every shared case names a detailed test of this module, and the list is not empty."""
+    assert len(XYZ_CASES) >= 10
+    for case in XYZ_CASES:
+        assert callable(globals().get(case.test)), case.test
+
+
+def test_xyz_stability_case_checks_can_fail():
+    """The checks reject a wrong output (a check that always passed would be no test)."""
+    for case in XYZ_CASES:
+        wrong = np.full_like(case.inputs, 0.123)
+        ok, _ = case.check(wrong)
+        assert not ok, case.name
 
 
 # --------------------------------------------------------------------------- #

@@ -1,0 +1,62 @@
+"""Test colours for evaluating the tables and the clip LUTs (not part of the shipped path).
+
+The tests, the benchmarks and the report measure the LUTs against these sets; nothing
+that builds a table, a LUT or the config imports this module.
+
+- :func:`object_colours`: object and interference colours (random smooth reflectances,
+  the ColorCheckers, the real Munsell colours, the two film kinds and the Morpho
+  multilayer), CIE-XYZ-D65 with Y <= 1.
+- :func:`spectral_colours`: monochromatic colours at a range of luminances.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import colorimetry
+
+__all__ = ["object_colours", "spectral_colours"]
+
+
+def object_colours(seed: int = 0, n_random: int = 4000) -> np.ndarray:
+    """A set of object colours (CIE-XYZ-D65, reflectances under D65, Y <= 1):
+
+    ``n_random`` random smooth reflectance spectra (three Gaussian bumps on a
+    random base, clipped to [0, 1], scaled), the ColorChecker sets of colour-science,
+    the measured ("real") Munsell renotation colours, and the interference colours of
+    the two film kinds (0-3 um, 3000 each) and of the Morpho multilayer (500 angles).
+    """
+    import colour
+    from colour.notation.datasets.munsell import MUNSELL_COLOURS_REAL
+
+    rng = np.random.default_rng(seed)
+    wl = np.arange(360.0, 781.0, 5.0)
+    R = np.zeros((n_random, wl.size))
+    for _ in range(3):
+        centre = rng.uniform(380, 720, n_random)[:, None]
+        width = rng.uniform(10, 120, n_random)[:, None]
+        amplitude = rng.uniform(-1, 1.2, n_random)[:, None]
+        R += amplitude * np.exp(-0.5 * ((wl - centre) / width) ** 2)
+    R = np.clip(R + rng.uniform(0, 0.6, n_random)[:, None], 0, 1)
+    R *= rng.uniform(0.05, 1, n_random)[:, None]
+    random_XYZ = colorimetry.reflectance_to_XYZ(R, wl)
+    shape = colour.SpectralShape(360, 780, 5)
+    checker = []
+    for name in sorted(colour.SDS_COLOURCHECKERS):
+        for sd in colour.SDS_COLOURCHECKERS[name].values():
+            checker.append(colour.sd_to_XYZ(sd.copy().align(shape),
+                                            illuminant=colour.SDS_ILLUMINANTS["D65"]) / 100)
+    munsell = np.array([v[1] for v in MUNSELL_COLOURS_REAL], dtype=np.float64)
+    munsell[:, 2] /= 100.0
+    munsell = colour.xyY_to_XYZ(munsell[munsell[:, 2] <= 1.0])
+    t = np.linspace(0.0, 3000.0, 3000)
+    films = np.concatenate([colorimetry.film_XYZ(t, "phase-change"),
+                            colorimetry.film_XYZ(t, "no-phase-change"),
+                            colorimetry.morpho_XYZ(np.linspace(0.0, 89.0, 500))])
+    return np.concatenate([random_XYZ, np.array(checker), munsell, films])
+
+
+def spectral_colours(max_Y: float = 0.6, levels: int = 60) -> np.ndarray:
+    """Monochromatic colours 380-700 nm at ``levels`` luminances in (0, max_Y]."""
+    Ys = np.linspace(max_Y / levels, max_Y, levels)
+    return np.concatenate([colorimetry.spectral_locus_XYZ(Y) for Y in Ys])
