@@ -12,7 +12,10 @@ Processors (CIE-XYZ-D65 -> sRGB display code values):
   components to +-1e6 first, so that no input overflows to NaN);
 - ``aces bare``: the same view without that guard (matrix, ACES_GamutComp13, clamp,
   sRGB encoding) -- the target is checked against the faster of the two;
-- ``lut65``: a single 65^3 tetrahedral Lut3D, nothing else (the practical ceiling).
+- ``lut65``: a single 65^3 tetrahedral Lut3D, nothing else (the practical ceiling);
+- ``one-LUT chain``: what the cheapest single-LUT design would cost -- the clip's input
+  limit, a matrix, ``XYZ_TO_xyY``, one 65^3 Lut3D and the sRGB encoding (its values are
+  a stand-in: only its speed is measured).
 
 Data sets (1024 x 1024 pixels each): uniform XYZ in [0, 1]^3; the rendered oil scene
 (Fig. 5, scene-linear XYZ); object colours + monochromatic stimuli (the test sets,
@@ -62,13 +65,18 @@ def processors():
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
                                       ocio.TRANSFORM_DIR_FORWARD)
     bare = ocio_ops.group([tables.display_matrix_transform("sRGB"),
-                         tables.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
-                         tables.display_encoding_transform("sRGB")])
+                           tables.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
+                           tables.display_encoding_transform("sRGB")])
     g = np.linspace(0.0, 1.0, 65)
-    lut = ocio_ops.lut3d_transform(np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9)
+    values = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9
+    lut = ocio_ops.lut3d_transform(values)
+    one_lut = ocio_ops.group([tables.xyz_limit_transform(), ocio_ops.matrix(np.eye(3)),
+                              tables.xyY_forward_transform(), ocio_ops.lut3d_transform(values),
+                              tables.display_encoding_transform("sRGB")])
     raw = ocio.Config.CreateRaw()
     procs = {"clip": view("Constant-Lightness Clip"), "aces": view("ACES Gamut Compression"),
-             "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut)}
+             "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut),
+             "one-LUT chain": raw.getProcessor(one_lut)}
     del clip
     return {k: p.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
                                           ocio.OPTIMIZATION_DEFAULT) for k, p in procs.items()}
@@ -94,7 +102,8 @@ def measure(size=1024, repeats=7):
                          clip_over_aces=mpx["clip"] / mpx["aces"],
                          clip_over_aces_bare=mpx["clip"] / mpx["aces bare"],
                          clip_over_fastest_aces=mpx["clip"] / aces,
-                         clip_over_lut65=mpx["clip"] / mpx["lut65"]))
+                         clip_over_lut65=mpx["clip"] / mpx["lut65"],
+                         one_lut_chain_over_aces=mpx["one-LUT chain"] / mpx["aces"]))
     return rows
 
 
@@ -140,13 +149,15 @@ def numbers_markdown(result):
             out.append(f"| {display} | {name} | {m['n']} | {m['mean']:.3f} | {m['p99']:.3f} | "
                        f"{m['max']:.3f} | {m['dY_max']:.1e} | {m['in_gamut_max']:.3f} |")
     if result.get("speed"):
-        out += ["", "| data set | clip | ACES view | ACES bare | 65³ Lut3D | clip / ACES view | "
-                "clip / ACES bare | clip / Lut3D |", "|---|---|---|---|---|---|---|---|"]
+        out += ["", "| data set | clip | ACES view | ACES bare | 65³ Lut3D | one-LUT chain | "
+                "clip / ACES view | clip / ACES bare | clip / Lut3D | one-LUT chain / ACES view |",
+                "|---|---|---|---|---|---|---|---|---|---|"]
         for r in result["speed"]:
             m = r["mpix_per_s"]
             out.append(f"| {r['dataset']} | {m['clip']:.1f} | {m['aces']:.1f} | "
-                       f"{m['aces bare']:.1f} | {m['lut65']:.1f} | {r['clip_over_aces']:.2f}× | "
-                       f"{r['clip_over_aces_bare']:.2f}× | {r['clip_over_lut65']:.2f}× |")
+                       f"{m['aces bare']:.1f} | {m['lut65']:.1f} | {m['one-LUT chain']:.1f} | "
+                       f"{r['clip_over_aces']:.2f}× | {r['clip_over_aces_bare']:.2f}× | "
+                       f"{r['clip_over_lut65']:.2f}× | {r['one_lut_chain_over_aces']:.2f}× |")
     return "\n".join(out)
 
 
