@@ -180,25 +180,17 @@ def colour_acescct(linear):
     return colour.models.log_encoding_ACEScct(linear)
 
 
-#: (display, format, consumer) -> (p99, max) limits: the issue's target (p99 1.0,
-#: max 3.0) for every display and consumer; measured p99 0.13-0.68, max 1.7-2.4.
-LIMITS = {
-    ("sRGB", "cube", "ocio"): (1.0, 3.0),
-    ("sRGB", "csp", "colour"): (1.0, 3.0),
-    ("sRGB", "csp", "ocio"): (1.0, 3.0),
-    ("sRGB", "clf", "ocio"): (1.0, 3.0),
-    ("sRGB", "spi3d", "colour"): (1.0, 3.0),
-    ("sRGB", "spi3d", "ocio"): (1.0, 3.0),
-    ("Display P3", "cube", "colour"): (1.0, 3.0),
-    ("Display P3", "csp", "ocio"): (1.0, 3.0),
-    ("Display P3", "clf", "ocio"): (1.0, 3.0),
-    ("Rec.2020", "cube", "colour"): (1.0, 3.0),
-    ("Rec.2020", "csp", "ocio"): (1.0, 3.0),
-    ("Rec.2020", "clf", "ocio"): (1.0, 3.0),
-}
+#: The issue's target for every display, format and consumer: dE2000 p99 <= 1.0 and
+#: max <= 3.0 (measured p99 0.12-0.61, max 1.8-2.5).
+TARGET_P99, TARGET_MAX = 1.0, 3.0
+CASES = [("sRGB", fmt, consumer) for fmt, consumer in
+         (("cube", "ocio"), ("csp", "colour"), ("csp", "ocio"), ("clf", "ocio"),
+          ("spi3d", "colour"), ("spi3d", "ocio"))]
+CASES += [(display, fmt, consumer) for display in ("Display P3", "Rec.2020")
+          for fmt, consumer in (("cube", "colour"), ("csp", "ocio"), ("clf", "ocio"))]
 
 
-@pytest.mark.parametrize("display,fmt,consumer", list(LIMITS), ids=lambda v: str(v))
+@pytest.mark.parametrize("display,fmt,consumer", CASES, ids=lambda v: str(v))
 def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, display, fmt,
                                                      consumer):
     XYZ, cct = inside_AP1
@@ -210,8 +202,7 @@ def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, di
     mean, p99, worst = _stats(_dE(code, XYZ, display))
     print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
           f"max {worst:.3f}")
-    limit_p99, limit_max = LIMITS[display, fmt, consumer]
-    assert p99 <= limit_p99 and worst <= limit_max
+    assert p99 <= TARGET_P99 and worst <= TARGET_MAX
 
 
 @pytest.mark.skipif(FFMPEG is None, reason="ffmpeg not installed (Debian package ffmpeg)")
