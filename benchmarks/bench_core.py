@@ -29,7 +29,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from ocio_thinfilm import clip, colorimetry, spectra  # noqa: E402
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.physics import spectra  # noqa: E402
 
 
 def best_of(fn, repeats):

@@ -43,7 +43,7 @@ CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
-    from ocio_thinfilm import render
+    from ocio_thinfilm.render import frames as render
     from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 
     side = int(np.sqrt(n))
@@ -59,7 +59,8 @@ def datasets(n):
 def processors():
     import PyOpenColorIO as ocio
 
-    from ocio_thinfilm import clip, ocio_ops, tables
+    from ocio_thinfilm.colour import clip
+    from ocio_thinfilm.lut import ocio_ops, tables
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
@@ -115,7 +116,7 @@ def accuracy():
     import PyOpenColorIO as ocio
     from test_gamut_map import _apply_view, _decode, _sets
 
-    from ocio_thinfilm import clip, colorimetry
+    from ocio_thinfilm.colour import clip, colorimetry
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))
     out = {}

@@ -31,7 +31,8 @@ def _one(scene: str, size: int, out: str) -> dict:
     import OpenImageIO  # noqa: F401  (library start-up, not building; colour-science is
     import PyOpenColorIO  # noqa: F401  only imported when its data cache is cold)
 
-    from ocio_thinfilm import render, tables
+    from ocio_thinfilm.render import frames as render
+    from ocio_thinfilm.lut import tables
     t_import = time.perf_counter() - t0
 
     phases = {}

@@ -1,5 +1,5 @@
 """``python -m ocio_thinfilm`` is the ``ocio-thinfilm`` command."""
 
-from .cli import main
+from ocio_thinfilm.cli.main import main
 
 raise SystemExit(main())

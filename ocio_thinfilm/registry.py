@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from . import colorimetry
+from ocio_thinfilm.colour import colorimetry
 
 __all__ = ["Display", "View", "ThinFilmSpace", "DISPLAY_LIST", "VIEW_LIST",
            "THIN_FILM_LIST", "DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display",

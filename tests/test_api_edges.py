@@ -14,7 +14,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ocio_thinfilm import cli, clip, colorimetry, spectra
+from ocio_thinfilm.cli import main as cli
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.physics import spectra
 
 
 def _cmf(wavelength):

@@ -10,16 +10,19 @@ import numpy as np
 import pytest
 
 import ocio_thinfilm
-from ocio_thinfilm import cache, colorimetry, noise, tables
+from ocio_thinfilm import cache
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.render import noise
+from ocio_thinfilm.lut import tables
 
 
 def _lru_functions():
     """Every lru_cache function at module level in the package, by qualified name."""
     found = {}
-    for info in pkgutil.iter_modules(ocio_thinfilm.__path__):
-        if info.name == "__main__":  # runs the command
+    for info in pkgutil.walk_packages(ocio_thinfilm.__path__, "ocio_thinfilm."):
+        if info.name.endswith("__main__"):  # runs the command
             continue
-        module = importlib.import_module(f"ocio_thinfilm.{info.name}")
+        module = importlib.import_module(info.name)
         for value in vars(module).values():
             if isinstance(value, functools._lru_cache_wrapper) and \
                     value.__module__ == module.__name__:
@@ -30,7 +33,7 @@ def _lru_functions():
 def test_every_memoised_function_is_in_the_store():
     found = _lru_functions()
     # the noise module's thread pool is a resource, not a cached result
-    found.pop("ocio_thinfilm.noise._pool")
+    found.pop("ocio_thinfilm.render.noise._pool")
     assert len(found) >= 8
     registered = cache.names()
     for name in found:
@@ -43,7 +46,7 @@ def test_clear_empties_every_cache_and_results_do_not_change():
     morpho = tables.morpho_table(41)
     noise.noise(np.array([0.3]), np.array([0.7]), seed=987)
     assert tables.film_table("no-phase-change", 37) is film  # cached
-    assert cache.info()["ocio_thinfilm.tables._film_table"].currsize > 0
+    assert cache.info()["ocio_thinfilm.lut.tables._film_table"].currsize > 0
 
     built = len(tables.BUILT)
     cache.clear()

@@ -16,7 +16,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from ocio_thinfilm import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry
 
 DISPLAYS = ("sRGB", "Display P3", "Rec.2020")
 NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}

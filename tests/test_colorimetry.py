@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ocio_thinfilm import colorimetry, spectra
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.physics import spectra
 
 OBS = "CIE 1931 2 Degree Standard Observer"
 D65_XY = np.array([0.3127, 0.3290])
@@ -320,7 +321,7 @@ def test_persistent_cache_returns_what_a_fresh_computation_gives(tmp_path, monke
     np.testing.assert_array_equal(first, again)
     np.testing.assert_array_equal(again, np.arange(4.0) * 3.0)
 
-    colorimetry.persistent(square, modules=("ocio_thinfilm.spectra",))(3.0)
+    colorimetry.persistent(square, modules=("ocio_thinfilm.physics.spectra",))(3.0)
     assert calls == [3.0, 3.0]  # other dependencies: another key, computed again
 
     monkeypatch.setenv("OCIO_THINFILM_CACHE", "0")

@@ -12,7 +12,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, config, tables
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.config import generate as config
+from ocio_thinfilm.lut import tables
 from ocio_thinfilm.evaluation.colours import object_colours
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -11,7 +11,8 @@ import doctest
 
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, spectra
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.physics import spectra
 
 MODULES = [spectra, colorimetry, clip]
 

@@ -13,7 +13,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import cli, colorimetry, config, export, tables
+from ocio_thinfilm.cli import main as cli
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.config import generate as config
+from ocio_thinfilm.export import files as export
+from ocio_thinfilm.lut import tables
 from ocio_thinfilm.io import MARKER
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -203,7 +207,7 @@ def test_clip_files_take_display_linear_rgb(clip_files, name, consumer):
     |dY| max 0.021 on these colours, limit 0.03. (Its chromaticity is coarse for dark
     saturated colours, documented; the display LUTs of ``export view`` are the
     accurate ones.)"""
-    from ocio_thinfilm import clip
+    from ocio_thinfilm.colour import clip
 
     display = {"sRGB": "sRGB", "DisplayP3": "Display P3",
                "Rec2020": "Rec.2020"}[name.split("_")[1].split(".")[0]]
@@ -249,7 +253,7 @@ def test_clf_export_takes_thickness_in_micrometres(tmp_path):
 
 def test_clip_export_reproduces_in_gamut_exactly_and_clips(tmp_path):
     import PyOpenColorIO as ocio
-    from ocio_thinfilm import clip
+    from ocio_thinfilm.colour import clip
 
     path = export.export_lut("clip", tmp_path / "c.clf", display="sRGB", size=17)
     rgb = np.random.default_rng(0).uniform(-0.5, 1.5, (4000, 3))

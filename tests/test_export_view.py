@@ -29,7 +29,9 @@ import subprocess
 import numpy as np
 import pytest
 
-from ocio_thinfilm import cli, clip, colorimetry, export_view
+from ocio_thinfilm.cli import main as cli
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.export import view as export_view
 from ocio_thinfilm.evaluation.colours import object_colours
 
 CLC = "Constant-Lightness Clip"

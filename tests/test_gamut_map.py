@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.evaluation.colours import object_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")

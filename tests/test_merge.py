@@ -15,9 +15,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, config, merge
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.config import generate as config, merge
 from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
-from ocio_thinfilm.cli import main
+from ocio_thinfilm.cli.main import main
 
 ocio = pytest.importorskip("PyOpenColorIO")
 

@@ -1,9 +1,9 @@
-"""Perlin gradient noise and turbulence (ocio_thinfilm.noise)."""
+"""Perlin gradient noise and turbulence (ocio_thinfilm.render.noise)."""
 
 import numpy as np
 import pytest
 
-from ocio_thinfilm import noise
+from ocio_thinfilm.render import noise
 
 
 def _grid(n=256, scale=1 / 16):

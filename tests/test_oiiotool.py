@@ -16,7 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, tables
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import tables
 from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.io import read_image, write_image
 

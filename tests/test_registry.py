@@ -12,7 +12,12 @@ from pathlib import Path
 
 import pytest
 
-from ocio_thinfilm import clip, config, export, registry, render, tables
+from ocio_thinfilm.colour import clip
+from ocio_thinfilm.config import generate as config
+from ocio_thinfilm.export import files as export
+from ocio_thinfilm import registry
+from ocio_thinfilm.render import frames as render
+from ocio_thinfilm.lut import tables
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -89,7 +94,9 @@ def test_adding_a_display_is_one_entry(tmp_path):
              '"g24_rec709_display"),\n')
     (package / "registry.py").write_text(source.replace(anchor, anchor + entry))
     code = (
-        "import json; from ocio_thinfilm import config, clip, render, tables\n"
+        "import json; from ocio_thinfilm.config import generate as config\n"
+        "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
+        "from ocio_thinfilm.lut import tables\n"
         "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"
         "cfg = config.generate_config(data)\n"
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"

@@ -1,4 +1,4 @@
-"""The ``render`` command and the paper's scenes (ocio_thinfilm.render / .scenes).
+"""The ``render`` command and the paper's scenes (ocio_thinfilm.render.frames / .scenes).
 
 Reference images: ``tests/reference/<scene>.png`` are 64x64 renders (seed 0, sRGB,
 Constant-Lightness Clip) compared with OpenImageIO's ``idiff``:
@@ -25,7 +25,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import cli, colorimetry, render, scenes, tables
+from ocio_thinfilm.cli import main as cli
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.render import frames as render, scenes
+from ocio_thinfilm.lut import tables
 from ocio_thinfilm.io import read_image
 
 REFERENCE = Path(__file__).parent / "reference"
@@ -259,7 +262,8 @@ def test_morpho_is_blue_and_darkens_with_angle():
 # --------------------------------------------------------------------------- #
 def _built(*argv, tmp_path):
     """(tables computed, processors created from the config) by one render process."""
-    code = ("import json, sys; from ocio_thinfilm import cli, render, tables; "
+    code = ("import json, sys; from ocio_thinfilm.cli import main as cli; "
+            "from ocio_thinfilm.render import frames as render; from ocio_thinfilm.lut import tables; "
             "rc = cli.main(sys.argv[1:]); "
             "print(json.dumps([tables.BUILT, render.PROCESSORS])); sys.exit(rc)")
     out = subprocess.run([sys.executable, "-c", code, "render", *argv, "--size", "16",
@@ -362,7 +366,7 @@ def test_config_option_reaches_frame_children(tmp_path):
 
 
 def test_missing_default_config_is_baked_first(tmp_path, monkeypatch):
-    from ocio_thinfilm import export
+    from ocio_thinfilm.export import files as export
 
     baked = []
     real_bake = export.bake

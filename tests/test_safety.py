@@ -22,7 +22,8 @@ from pathlib import Path
 
 import pytest
 
-from ocio_thinfilm import cli, io
+from ocio_thinfilm.cli import main as cli
+from ocio_thinfilm import io
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG_DIR = ROOT / "configs" / "thinfilm"

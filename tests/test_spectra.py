@@ -15,7 +15,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from conftest import colour_multilayer_R, colour_thin_film_R, mp_airy_R
-from ocio_thinfilm import spectra
+from ocio_thinfilm.physics import spectra
 
 WL_10 = np.arange(380.0, 781.0, 10.0)
 

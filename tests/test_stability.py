@@ -1,5 +1,5 @@
 """Stability on stiff and extreme cases: one test per row of the report's table
-(``ocio_thinfilm.report.stability_rows``; the row names its test). The clip's extreme
+(``ocio_thinfilm.evaluation.report.stability_rows``; the row names its test). The clip's extreme
 XYZ cases are defined once, in ``ocio_thinfilm.evaluation.stability``: the report
 lists them and ``test_xyz_stability_case`` runs each one.
 
@@ -16,7 +16,8 @@ import warnings
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, spectra
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.evaluation import stability
 
 WL = spectra.wavelength_grid()
@@ -322,7 +323,7 @@ def test_xyz_stability_case_checks_can_fail():
 # --------------------------------------------------------------------------- #
 @pytest.fixture(scope="module")
 def ocio_clip():
-    tables = pytest.importorskip("ocio_thinfilm.tables")
+    tables = pytest.importorskip("ocio_thinfilm.lut.tables")
     if not hasattr(tables, "clip_transform"):
         pytest.skip("tables.clip_transform not implemented")
     tf = tables.clip_transform("sRGB")

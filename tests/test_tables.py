@@ -1,4 +1,4 @@
-"""Tables and the 3D clip LUT (ocio_thinfilm.tables): accuracy budgets, edge inputs,
+"""Tables and the 3D clip LUT (ocio_thinfilm.lut.tables): accuracy budgets, edge inputs,
 the view transforms and the interface contract the renderer and the report use."""
 
 from __future__ import annotations
@@ -6,7 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ocio_thinfilm import clip, colorimetry, tables
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import tables
 from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 
 DISPLAYS = clip.DISPLAYS

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import colorimetry
+from ocio_thinfilm.colour import colorimetry
 
 __all__ = ["object_colours", "spectral_colours"]
 

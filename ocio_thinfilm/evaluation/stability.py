@@ -1,6 +1,6 @@
 """The stability cases of the analytic clip, defined once (tests and report share them).
 
-Each :class:`Case` is an extreme CIE-XYZ-D65 input to :func:`ocio_thinfilm.clip.clip_XYZ`
+Each :class:`Case` is an extreme CIE-XYZ-D65 input to :func:`ocio_thinfilm.colour.clip.clip_XYZ`
 (sRGB) with the behaviour expected of it and a check of the output. The expectations
 are geometric facts of the unit RGB cube (black, white, the boundary point along a
 direction from grey), not outputs copied from the code under test.
@@ -15,7 +15,7 @@ from typing import Callable
 
 import numpy as np
 
-from .. import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry
 
 __all__ = ["Case", "fmt", "limit_along", "xyz_cases"]
 

@@ -34,7 +34,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import colorimetry, registry
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm import registry
 
 __all__ = [
     "DISPLAYS",

@@ -28,10 +28,10 @@ import os
 import signal
 import sys
 
-from . import __version__
+from ocio_thinfilm import __version__
 
 #: Modules that contribute sub-commands, in the order ``--help`` lists them.
-COMMAND_MODULES = ("demo", "export", "render", "report")
+COMMAND_MODULES = ("cli.demo", "export.files", "render.frames", "evaluation.report")
 PROG = "ocio-thinfilm"
 _HANDLED = ("SIGINT", "SIGTERM", "SIGHUP")
 
@@ -181,7 +181,7 @@ def _set(name):
 
 
 def _main(argv, set_command) -> int:
-    from .io import UsageError
+    from ocio_thinfilm.io import UsageError
 
     parser = build_parser()
     try:

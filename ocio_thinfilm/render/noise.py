@@ -30,7 +30,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import cache
+from ocio_thinfilm import cache
 
 __all__ = ["noise", "turbulence", "TABLE_SIZE", "MEAN_ABS_NOISE"]
 

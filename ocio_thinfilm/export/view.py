@@ -55,8 +55,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, ocio_ops, tables
-from .io import UsageError, atomic_file, check_writable
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import ocio_ops, tables
+from ocio_thinfilm.io import UsageError, atomic_file, check_writable
 
 __all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
            "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view", "run"]
@@ -148,7 +149,7 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
     name or None)."""
     import PyOpenColorIO as ocio
 
-    from . import config as config_module
+    from ocio_thinfilm.config import generate as config_module
 
     cfg = config_module.generate_config(config_module.config_data(inline=True), validate=False)
     if source not in LINEAR_SIBLING:
@@ -171,7 +172,7 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
 # Validation
 # --------------------------------------------------------------------------- #
 def _validate(source, display, view, size, fmt, value_range):
-    from . import config as config_module
+    from ocio_thinfilm.config import generate as config_module
 
     spaces = [cs["name"] for cs in config_module.config_data(inline=True).colorspaces]
     if source is None:
@@ -317,7 +318,7 @@ def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, de
     (which states the domain in every format)."""
     import PyOpenColorIO as ocio
 
-    from . import export
+    from ocio_thinfilm.export import files as export
 
     lo, hi = value_range
     x = np.linspace(lo, hi, size)
@@ -383,7 +384,7 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
 
 def run(args) -> int:
     """``ocio-thinfilm export view`` (called from :func:`.export._run_export`)."""
-    from .export import _float, _int
+    from ocio_thinfilm.export.files import _float, _int
 
     value_range = (None if args.range is None
                    else tuple(_float("--range", v) for v in args.range))

@@ -40,9 +40,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import registry
-from . import scenes as scene_module
-from .io import UsageError, check_output_file, check_writable, transaction, write_image
+from ocio_thinfilm import registry
+from ocio_thinfilm.render import scenes as scene_module
+from ocio_thinfilm.io import UsageError, check_output_file, check_writable, transaction, write_image
 
 __all__ = ["register", "run", "render_scene", "write_frame", "save_frame", "parse_size", "parse_frames", "MAX_SIDE",
            "MAX_PIXELS", "SCENE_CHOICES", "DEFAULT_CONFIG", "PROCESSORS", "ConfigProcessors",
@@ -118,7 +118,7 @@ def _check_display_view(display: str, view: str) -> None:
 # --------------------------------------------------------------------------- #
 #: The config a render goes through by default: the package's baked config (baked
 #: with ``ocio-thinfilm bake`` first when it is missing).
-DEFAULT_CONFIG = Path(__file__).resolve().parent.parent / "configs" / "thinfilm" / "config.ocio"
+DEFAULT_CONFIG = Path(__file__).resolve().parents[2] / "configs" / "thinfilm" / "config.ocio"
 #: The config's reference, the EXR's colour space: tables go to it, views start at it.
 REFERENCE_SPACE = "CIE-XYZ-D65"
 
@@ -131,7 +131,7 @@ PROCESSORS: list[str] = []
 def table_colorspace(spec: scene_module.TableSpec) -> str:
     """The config's input colour space (pixel value -> CIE-XYZ-D65) of a scene's
     :class:`~.scenes.TableSpec`: the table the config ships for its kind."""
-    from . import tables
+    from ocio_thinfilm.lut import tables
 
     lo, hi = spec.range
     if spec.kind == "morpho":
@@ -152,7 +152,7 @@ def load_config(path=None):
     if path is None:
         path = DEFAULT_CONFIG
         if not path.is_file():
-            from . import export
+            from ocio_thinfilm.export import files as export
 
             export.bake(path.parent)
     path = Path(path)
@@ -220,7 +220,7 @@ def _apply(cpu, pixels) -> np.ndarray:
 def build_table(spec: scene_module.TableSpec):
     """The tables-module table for a scene's :class:`~.scenes.TableSpec` (computed
     here, not read from a config: for comparisons with what the config holds)."""
-    from . import tables
+    from ocio_thinfilm.lut import tables
 
     lo, hi = spec.range
     if spec.kind == "morpho":

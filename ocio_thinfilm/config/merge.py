@@ -45,8 +45,10 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, config, ocio_ops, tables
-from .io import UsageError, atomic_directory, atomic_file, check_writable
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.config import generate as config
+from ocio_thinfilm.lut import ocio_ops, tables
+from ocio_thinfilm.io import UsageError, atomic_directory, atomic_file, check_writable
 
 __all__ = ["load_base", "match_displays", "merge_config", "bake_into", "write_archive",
            "bake_archive", "MERGED_VIEWS"]

@@ -38,7 +38,10 @@ from typing import Callable
 
 import numpy as np
 
-from . import colorimetry, noise, spectra, tables
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.render import noise
+from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.lut import tables
 
 __all__ = ["TableSpec", "Picture", "Scene", "SCENES", "FILM_TABLE", "MORPHO_TABLE",
            "get_scene", "D65_WHITE"]

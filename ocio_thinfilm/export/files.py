@@ -38,8 +38,10 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, ocio_ops, registry, tables
-from .io import (UsageError, atomic_file, check_output_file, claim_directory, is_stdout,
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import ocio_ops, tables
+from ocio_thinfilm import registry
+from ocio_thinfilm.io import (UsageError, atomic_file, check_output_file, claim_directory, is_stdout,
                  transaction)
 
 __all__ = ["FORMATS", "TABLES", "DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "export_lut",
@@ -292,7 +294,7 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
     hold it with its domain, plus the common display LUTs
     (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
     a 65^3 .cube), into ``directory``, which must exist."""
-    from . import export_view
+    from ocio_thinfilm.export import view as export_view
 
     jobs = []
     for fmt in FORMATS:
@@ -374,7 +376,7 @@ def _legacy_luts(directory):
 
 
 def _check_staged_clfs(directory, final):
-    from .io import _check_xml
+    from ocio_thinfilm.io import _check_xml
 
     for path in sorted(Path(directory).rglob("*.clf")):
         _check_xml(path, Path(final) / path.relative_to(directory))
@@ -392,7 +394,7 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=Fa
     Ctrl-C) leaves both directories as they were, and a kill leaves each a complete,
     loadable set of files.
     """
-    from . import config
+    from ocio_thinfilm.config import generate as config
 
     if isinstance(clip_size, bool) or not 9 <= int(clip_size) <= 129:
         raise UsageError(f"--clip-size must be in [9, 129], got {clip_size}")
@@ -483,7 +485,7 @@ def _float(option, text):
 
 def _run_bake(args) -> int:
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
-        from . import merge  # --into CONFIG and/or an .ocioz archive (issue 10)
+        from ocio_thinfilm.config import merge  # --into CONFIG and/or an .ocioz archive (issue 10)
 
         if args.into and args.out == DEFAULT_CONFIG_DIR:
             raise UsageError("--into needs --out DIR (or FILE.ocioz)")
@@ -504,7 +506,7 @@ def _run_bake(args) -> int:
 
 def _run_export(args) -> int:
     if args.table == "view":
-        from . import export_view
+        from ocio_thinfilm.export import view as export_view
 
         return export_view.run(args)
     value_range = (None if args.range is None

@@ -30,7 +30,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, ocio_ops, registry, tables
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import ocio_ops, tables
+from ocio_thinfilm import registry
 
 __all__ = [
     "CONFIG_NAME",

@@ -59,10 +59,12 @@ from pathlib import Path
 
 import numpy as np
 
-from . import clip, colorimetry, ocio_ops, spectra
-from .evaluation import stability
-from .evaluation.stability import fmt as _fmt
-from .io import UsageError, atomic_file, check_writable, transaction
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.evaluation import stability
+from ocio_thinfilm.evaluation.stability import fmt as _fmt
+from ocio_thinfilm.io import UsageError, atomic_file, check_writable, transaction
 
 __all__ = [
     "register",
@@ -279,7 +281,7 @@ def machine_description() -> dict:
         info["OpenImageIO"] = oiio.__version__
     except ImportError:  # pragma: no cover
         info["OpenImageIO"] = "missing"
-    from . import __version__
+    from ocio_thinfilm import __version__
     info["ocio-thinfilm"] = __version__
     with contextlib.suppress(OSError, subprocess.SubprocessError):
         rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
@@ -611,7 +613,7 @@ def _ocio_gamut_speeds(img, display):
 def _tables():
     """The tables module if it implements the contract, else None."""
     try:
-        from . import tables
+        from ocio_thinfilm.lut import tables
     except ImportError:
         return None
     if not hasattr(tables, "film_table"):
@@ -984,10 +986,10 @@ def _section_stability(ctx):
 
 
 # --------------------------------------------------------------------------- #
-# Sections 1b-1d: tables and LUTs (need ocio_thinfilm.tables)
+# Sections 1b-1d: tables and LUTs (need ocio_thinfilm.lut.tables)
 # --------------------------------------------------------------------------- #
 def _tables_missing(title):
-    return (f"### {title}\n\nSkipped: `ocio_thinfilm.tables` does not implement the interface "
+    return (f"### {title}\n\nSkipped: `ocio_thinfilm.lut.tables` does not implement the interface "
             "contract in this checkout.")
 
 

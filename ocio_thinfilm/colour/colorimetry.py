@@ -37,7 +37,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import cache, spectra
+from ocio_thinfilm import cache
+from ocio_thinfilm.physics import spectra
 
 __all__ = [
     "DEFAULT_OBSERVER",
@@ -88,7 +89,7 @@ def persistent(function=None, *, modules=()):
     ``modules`` it depends on (names, read at the first call) and colour-science's
     version, so changed code or a changed library never returns a stale array. A
     cache that cannot be read or written is ignored. Use as ``@persistent`` or
-    ``@persistent(modules=("ocio_thinfilm.tables",))``.
+    ``@persistent(modules=("ocio_thinfilm.lut.tables",))``.
     """
     if function is None:
         return lambda f: persistent(f, modules=modules)
@@ -112,7 +113,7 @@ def persistent(function=None, *, modules=()):
                 pass
         value = np.asarray(function(*args))
         if path is not None:
-            from .io import atomic_file
+            from ocio_thinfilm.io import atomic_file
 
             try:
                 with atomic_file(path) as tmp:
@@ -162,7 +163,7 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     ``XYZ = R @ W`` and the perfect reflector has Y = 1.
 
     ``W[i] = cmf(l_i) S(l_i) (upper_i - lower_i) / sum(ybar S dl)`` with the bins
-    of :func:`ocio_thinfilm.spectra.bin_edges`: the trapezoid rule on the grid; for a
+    of :func:`ocio_thinfilm.physics.spectra.bin_edges`: the trapezoid rule on the grid; for a
     band-limited (hat-averaged) spectrum, the exact integral of ``R`` against the
     linearly interpolated weights.
     """

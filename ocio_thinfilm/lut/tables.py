@@ -60,9 +60,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import cache, clip, colorimetry, ocio_ops, registry
+from ocio_thinfilm import cache, registry
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import ocio_ops
 # Re-exported (the contract above names them); the one implementation is in ocio_ops.
-from .ocio_ops import (VENDOR, apply, group, lut1d_transform, lut3d_transform,  # noqa: F401
+from ocio_thinfilm.lut.ocio_ops import (VENDOR, apply, group, lut1d_transform, lut3d_transform,  # noqa: F401
                        quantize, transform_id)
 
 __all__ = [
@@ -312,7 +314,7 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 # The clip moves a colour along its constant-Y ray towards the grey Y W until it is
 # inside all six faces: t = min(t_black, t_white). It therefore factors exactly as
 # clip = U o L, L clipping only against R, G, B >= 0 and U only against R, G, B <= 1,
-# both along the same ray (paper, Section 3.2; :mod:`ocio_thinfilm.clip`).
+# both along the same ray (paper, Section 3.2; :mod:`ocio_thinfilm.colour.clip`).
 #
 # Pass 1, L, is homogeneous of degree 1: over a projective chart of the
 # chromaticities and Y it is exactly linear along Y, so dark colours keep their
@@ -577,7 +579,7 @@ class ClipLUT:
                                   f"{self.size}^3 tetrahedral Lut3D over a projective "
                                   "chart of the chromaticity (the primaries' triangle on "
                                   "grid and split planes) and Y^(1/3), exactly linear "
-                                  "along Y. See ocio_thinfilm.tables.ClipLUT."),
+                                  "along Y. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
                      input_descriptor=("(u_a, u_b, Y^(1/3)): XYZ_TO_xyY of a matrix of "
                                        "CIE-XYZ-D65, then the cube root of Y"),
                      output_descriptor=(f"{self.display} display-linear RGB of the "
@@ -596,7 +598,7 @@ class ClipLUT:
                                   f"by the sRGB encoding: a {self.size}^3 tetrahedral "
                                   "Lut3D over display RGB whose nodes below 1 sit at "
                                   "sRGB-encoded values, so in-gamut colours are "
-                                  "reproduced exactly. See ocio_thinfilm.tables.ClipLUT."),
+                                  "reproduced exactly. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
                      input_descriptor=f"{self.display} display-linear RGB divided by "
                                       f"{self.top:g}, no negative channel",
                      output_descriptor=f"{self.display} display RGB, clipped, sRGB-encoded "
@@ -658,7 +660,7 @@ def _check_display(display):
 def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
     """The baked clip LUTs for ``display`` (cached): both passes, from
     :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
-    is :func:`ocio_thinfilm.clip.clip_RGB` exactly."""
+    is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly."""
     _check_display(display)
     size = _check_size(size, 9, 129, "clip LUT size")
     with _LOCK:

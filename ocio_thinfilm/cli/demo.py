@@ -6,8 +6,9 @@ import sys
 
 import numpy as np
 
-from . import clip, colorimetry, spectra
-from .io import check_output_file, is_stdout, write_image
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.io import check_output_file, is_stdout, write_image
 
 SOAP_INDEX = 1.33
 
