@@ -43,8 +43,8 @@ CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
-    from ocio_thinfilm.render import frames as render
     from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+    from ocio_thinfilm.render import frames as render
 
     side = int(np.sqrt(n))
     rng = np.random.default_rng(0)
@@ -60,20 +60,20 @@ def processors():
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm.colour import clip
-    from ocio_thinfilm.lut import ocio_ops, tables
+    from ocio_thinfilm.lut import clip_lut, display_transforms, ocio_ops
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
                                       ocio.TRANSFORM_DIR_FORWARD)
-    bare = ocio_ops.group([tables.display_matrix_transform("sRGB"),
-                           tables.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
-                           tables.display_encoding_transform("sRGB")])
+    bare = ocio_ops.group([display_transforms.display_matrix_transform("sRGB"),
+                           display_transforms.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
+                           display_transforms.display_encoding_transform("sRGB")])
     g = np.linspace(0.0, 1.0, 65)
     values = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9
     lut = ocio_ops.lut3d_transform(values)
-    one_lut = ocio_ops.group([tables.xyz_limit_transform(), ocio_ops.matrix(np.eye(3)),
-                              tables.xyY_forward_transform(), ocio_ops.lut3d_transform(values),
-                              tables.display_encoding_transform("sRGB")])
+    one_lut = ocio_ops.group([clip_lut.xyz_limit_transform(), ocio_ops.matrix(np.eye(3)),
+                              clip_lut.xyY_forward_transform(), ocio_ops.lut3d_transform(values),
+                              display_transforms.display_encoding_transform("sRGB")])
     raw = ocio.Config.CreateRaw()
     procs = {"clip": view("Constant-Lightness Clip"), "aces": view("ACES Gamut Compression"),
              "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut),

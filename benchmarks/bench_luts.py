@@ -32,8 +32,8 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.lut import ocio_ops, tables  # noqa: E402
 from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours  # noqa: E402
+from ocio_thinfilm.lut import clip_lut, display_transforms, ocio_ops, tables  # noqa: E402
 
 
 def grey(x):
@@ -120,10 +120,10 @@ def uvY_uniform(display, size):
     fwd = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return ocio_ops.group([tables.xyz_limit_transform(), fwd,
+    return ocio_ops.group([clip_lut.xyz_limit_transform(), fwd,
                          ocio_ops.matrix(np.diag(1 / hi)), ocio_ops.lut3d_transform(uvY / hi),
                          ocio_ops.matrix(np.diag(hi)), inv,
-                         tables.display_matrix_transform(display), ocio_ops.range_(0, 1)])
+                         display_transforms.display_matrix_transform(display), ocio_ops.range_(0, 1)])
 
 
 def options(quick):
@@ -144,7 +144,7 @@ def options(quick):
     return [("naive XYZ/white (baseline)", naive_xyz, (33, 65)),
             ("u'v'Y uniform", uvY_uniform, (33, 65)),
             ("two passes: black faces over a chart, white faces over encoded RGB (shipped)",
-             lambda d, n: tables.clip_transform(d, n), sizes)]
+             lambda d, n: clip_lut.clip_transform(d, n), sizes)]
 
 
 def clf_size(transform):
@@ -179,8 +179,8 @@ def bench_3d(displays, quick):
         truth = clip.clip_XYZ(objects, display)
         for label, build, sizes in options(quick):
             for size in sizes:
-                tables._clip_lut.cache_clear()
-                tables._black_plan.cache_clear()
+                clip_lut._clip_lut.cache_clear()
+                clip_lut._black_plan.cache_clear()
                 t0 = time.perf_counter()
                 transform = build(display, size)
                 out = ocio_ops.apply(transform, objects[:1])  # processor built

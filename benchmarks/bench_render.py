@@ -31,24 +31,26 @@ def _one(scene: str, size: int, out: str) -> dict:
     import OpenImageIO  # noqa: F401  (library start-up, not building; colour-science is
     import PyOpenColorIO  # noqa: F401  only imported when its data cache is cold)
 
+    from ocio_thinfilm import cache
+    from ocio_thinfilm.lut import view_transforms
     from ocio_thinfilm.render import frames as render
-    from ocio_thinfilm.lut import tables
+    from ocio_thinfilm.render import processors, scenes
     t_import = time.perf_counter() - t0
 
     phases = {}
     start = time.perf_counter()
-    lookup = render.make_lookup()
-    s = render.scene_module.get_scene(scene)
+    lookup = processors.make_lookup()
+    s = scenes.get_scene(scene)
     a = time.perf_counter()
     for spec in s.tables:
-        render.build_table(spec)
-    tables.view_transform("sRGB", render.DEFAULT_VIEW)  # builds the clip LUT
+        processors.build_table(spec)
+    view_transforms.view_transform("sRGB", render.DEFAULT_VIEW)  # builds the clip LUT
     phases["build"] = time.perf_counter() - a
     a = time.perf_counter()
     picture = s.render(size, size, lookup=lookup, seed=0, frame=1)
     phases["scene+lookup"] = time.perf_counter() - a
     a = time.perf_counter()
-    rgb = render.display_image(picture, "sRGB", render.DEFAULT_VIEW)
+    rgb = processors.display_image(picture, "sRGB", render.DEFAULT_VIEW)
     rgb, _ = render.draw_labels(rgb, picture.labels)
     phases["view"] = time.perf_counter() - a
     a = time.perf_counter()
@@ -56,7 +58,8 @@ def _one(scene: str, size: int, out: str) -> dict:
                       display="sRGB", view=render.DEFAULT_VIEW)
     phases["write"] = time.perf_counter() - a
     total = time.perf_counter() - start
-    return {"scene": scene, "size": size, "import_s": t_import, "built": list(tables.BUILT),
+    return {"scene": scene, "size": size, "import_s": t_import, "built": {k: [list(map(str, key)) for key in v]
+                      for k, v in cache.entries("ocio_thinfilm.lut.").items()},
             "phases": phases, "total_s": total}
 
 

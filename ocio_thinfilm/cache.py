@@ -1,73 +1,124 @@
 """The package's in-process caches, in one clearable store.
 
-Every memoised function of the package (the tables and clip LUTs of
-:mod:`.tables`, the colour-science data of :mod:`.colorimetry`, the noise lattices of
-:mod:`.noise`) is an :func:`functools.lru_cache` registered here, by its qualified
-name. Caching never changes a result: :func:`clear` only makes the next call compute
-again (and, for :mod:`.tables`, append to ``tables.BUILT`` again).
+Every memoised function of the package (the thin-film tables of
+:mod:`ocio_thinfilm.lut.tables`, the clip LUTs of :mod:`ocio_thinfilm.lut.clip_lut`,
+the colour-science data of :mod:`ocio_thinfilm.colour.colorimetry`, the noise lattices
+of :mod:`ocio_thinfilm.render.noise`) is a :class:`Memo` held here under its qualified
+name. A memo's key is the whole argument tuple of its pure function, so the key covers
+what the result depends on; caching never changes a result, :func:`clear` only makes
+the next call compute again.
 
-- :func:`memoize` -- ``lru_cache`` that registers the function;
-- :func:`register` -- register an existing ``lru_cache`` function;
-- :func:`clear` -- empty every registered cache (in memory: the on-disk cache of
-  :func:`.colorimetry.persistent` is keyed by the code and stays valid);
-- :func:`info` -- ``{name: functools CacheInfo}`` of every registered cache.
+- :func:`memoize` -- decorator: a :class:`Memo` (least-recently-used, ``maxsize``
+  entries, one computation at a time), registered in the store;
+- :func:`clear` -- empty every memo (in memory: the on-disk cache of
+  :func:`ocio_thinfilm.colour.colorimetry.persistent` is keyed by the code and stays
+  valid);
+- :func:`info` -- ``{name: CacheInfo(hits, misses, maxsize, currsize)}``;
+- :func:`entries` -- ``{name: (key, ...)}``: what each memo holds now, e.g. which
+  tables this process has computed (the tests' proof that a scene builds only what it
+  needs).
 
-This module imports nothing from the package, so any module may use it.
+``functools.lru_cache`` would do the memoising but hides its keys; this store shows
+them. It imports nothing from the package, so any module may use it.
 """
 
 from __future__ import annotations
 
+import functools
 import threading
 import weakref
-from functools import lru_cache
+from collections import OrderedDict, namedtuple
 
-__all__ = ["memoize", "register", "clear", "info", "names"]
+__all__ = ["Memo", "CacheInfo", "memoize", "clear", "info", "entries", "names"]
 
-#: name -> cache function, held weakly (a discarded cache is not kept alive by the store).
-_CACHES = weakref.WeakValueDictionary()
-_LOCK = threading.Lock()
+#: Statistics of one memo (the fields of ``functools.lru_cache``'s ``cache_info()``).
+CacheInfo = namedtuple("CacheInfo", "hits misses maxsize currsize")
+
+#: name -> Memo, held weakly (a discarded memo is not kept alive by the store).
+_STORE = weakref.WeakValueDictionary()
+_STORE_LOCK = threading.Lock()
 
 
-def _name(function) -> str:
-    return f"{function.__module__}.{function.__qualname__}"
+class Memo:
+    """A memoised pure function: ``memo(*args)`` is ``function(*args)``, computed once
+    per argument tuple (positional, hashable) while fewer than ``maxsize`` newer keys
+    have been used; calls are serialised while a value is computed."""
 
+    def __init__(self, function, maxsize: int, name: str):
+        functools.update_wrapper(self, function)
+        self.function, self.maxsize, self.name = function, int(maxsize), name
+        self._values: OrderedDict = OrderedDict()
+        self._lock = threading.RLock()
+        self._hits = self._misses = 0
 
-def register(function, name: str | None = None):
-    """Register an ``lru_cache``-wrapped ``function`` (has ``cache_clear`` and
-    ``cache_info``); returns it unchanged. A new cache of the same name (the same
-    function wrapped again) replaces the earlier one in the store."""
-    if not (callable(getattr(function, "cache_clear", None))
-            and callable(getattr(function, "cache_info", None))):
-        raise TypeError(f"{function!r} is not an lru_cache function")
-    key = name or _name(function)
-    with _LOCK:
-        _CACHES[key] = function
-    return function
+    def __call__(self, *args):
+        with self._lock:
+            if args in self._values:
+                self._hits += 1
+                self._values.move_to_end(args)
+                return self._values[args]
+            value = self.function(*args)
+            self._misses += 1
+            self._values[args] = value
+            while len(self._values) > self.maxsize:
+                self._values.popitem(last=False)
+            return value
+
+    def cache_clear(self) -> None:
+        with self._lock:
+            self._values.clear()
+            self._hits = self._misses = 0
+
+    def cache_info(self) -> CacheInfo:
+        with self._lock:
+            return CacheInfo(self._hits, self._misses, self.maxsize, len(self._values))
+
+    def keys(self) -> tuple:
+        """The argument tuples held now, oldest first."""
+        with self._lock:
+            return tuple(self._values)
+
+    def __repr__(self) -> str:
+        return f"<Memo {self.name} ({len(self._values)}/{self.maxsize})>"
 
 
 def memoize(maxsize: int = 128):
-    """``functools.lru_cache(maxsize)``, registered in this store."""
+    """Decorator: the function as a :class:`Memo` of ``maxsize`` entries, registered
+    in the store by its qualified name (a new memo of the same name replaces the old).
+    """
     def decorate(function):
-        return register(lru_cache(maxsize=maxsize)(function), _name(function))
+        memo = Memo(function, maxsize, f"{function.__module__}.{function.__qualname__}")
+        with _STORE_LOCK:
+            _STORE[memo.name] = memo
+        return memo
 
     return decorate
 
 
+def _memos() -> dict:
+    with _STORE_LOCK:
+        return dict(sorted(_STORE.items()))  # strong references while in use
+
+
 def clear() -> None:
-    """Empty every registered cache."""
-    with _LOCK:
-        caches = list(_CACHES.values())  # strong references while clearing
-    for function in caches:
-        function.cache_clear()
+    """Empty every memo of the store."""
+    for memo in _memos().values():
+        memo.cache_clear()
 
 
 def info() -> dict:
-    """``{name: CacheInfo(hits, misses, maxsize, currsize)}`` of every registered cache."""
-    with _LOCK:
-        return {name: function.cache_info() for name, function in sorted(_CACHES.items())}
+    """``{name: CacheInfo(hits, misses, maxsize, currsize)}`` of every memo."""
+    return {name: memo.cache_info() for name, memo in _memos().items()}
+
+
+def entries(prefix: str = "") -> dict:
+    """``{name: keys}`` of the memos whose name starts with ``prefix`` and that hold
+    at least one value (e.g. ``entries("ocio_thinfilm.lut.")``: the tables and clip
+    LUTs computed in this process and still cached)."""
+    return {name: memo.keys() for name, memo in _memos().items()
+            if name.startswith(prefix) and memo.keys()}
 
 
 def names() -> tuple:
-    """The registered caches' names."""
-    with _LOCK:
-        return tuple(sorted(_CACHES))
+    """The registered memos' names."""
+    return tuple(_memos())

@@ -234,7 +234,7 @@ def deferred_signals():
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
-def _check_xml(path, name=None) -> None:
+def check_xml(path, name=None) -> None:
     import xml.etree.ElementTree as ET
 
     try:
@@ -256,7 +256,7 @@ def _cannot_write(dest, error: OSError) -> OSError:
 
 
 #: Checks run on a staged file before it is committed, by suffix.
-_CHECKS = {".clf": _check_xml, ".ctf": _check_xml}
+_CHECKS = {".clf": check_xml, ".ctf": check_xml}
 
 
 def _fault(point: str) -> None:

@@ -1,8 +1,8 @@
 """One registry of the displays, views and thin-film input spaces the package ships.
 
 Every other module derives its lists from here: ``clip.DISPLAYS``,
-``config.DISPLAY_SPACES`` / ``config.THIN_FILM_SPACES``, ``tables.DISPLAY_ENCODINGS`` /
-``tables.VIEWS``, the LUT file names of the config and of ``export``, and the
+``config.DISPLAY_SPACES`` / ``config.THIN_FILM_SPACES``, ``display_transforms.DISPLAY_ENCODINGS`` /
+``registry.VIEWS``, the LUT file names of the config and of ``export``, and the
 renderer's display checks and PNG tags. Adding a display is one :class:`Display`
 entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm bake``).
 

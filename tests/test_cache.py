@@ -7,31 +7,31 @@ import importlib
 import pkgutil
 
 import numpy as np
-import pytest
 
 import ocio_thinfilm
 from ocio_thinfilm import cache
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.render import noise
 from ocio_thinfilm.lut import tables
+from ocio_thinfilm.render import noise
 
 
-def _lru_functions():
-    """Every lru_cache function at module level in the package, by qualified name."""
+def _memoised_functions():
+    """Every memoised function (an lru_cache or a cache.Memo) at module level in the
+    package, by qualified name."""
     found = {}
     for info in pkgutil.walk_packages(ocio_thinfilm.__path__, "ocio_thinfilm."):
         if info.name.endswith("__main__"):  # runs the command
             continue
         module = importlib.import_module(info.name)
         for value in vars(module).values():
-            if isinstance(value, functools._lru_cache_wrapper) and \
+            if isinstance(value, (functools._lru_cache_wrapper, cache.Memo)) and \
                     value.__module__ == module.__name__:
                 found[f"{value.__module__}.{value.__qualname__}"] = value
     return found
 
 
 def test_every_memoised_function_is_in_the_store():
-    found = _lru_functions()
+    found = _memoised_functions()
     # the noise module's thread pool is a resource, not a cached result
     found.pop("ocio_thinfilm.render.noise._pool")
     assert len(found) >= 8
@@ -48,14 +48,16 @@ def test_clear_empties_every_cache_and_results_do_not_change():
     assert tables.film_table("no-phase-change", 37) is film  # cached
     assert cache.info()["ocio_thinfilm.lut.tables._film_table"].currsize > 0
 
-    built = len(tables.BUILT)
     cache.clear()
     assert all(i.currsize == 0 for i in cache.info().values())
     again = tables.film_table("no-phase-change", 37)
     assert again is not film  # computed again ...
     assert np.array_equal(again.values, film.values)  # ... to the same values
     assert np.array_equal(tables.morpho_table(41).values, morpho.values)
-    assert tables.BUILT[built:] == ["film:no-phase-change:37", "morpho:41"]
+    assert cache.entries("ocio_thinfilm.lut.tables.") == {
+        "ocio_thinfilm.lut.tables._film_table": (("no-phase-change", 37, tables.FILM_TMAX_UM,
+                                                  tables.FILM_T0_UM, tables.SPECTRAL_STEP),),
+        "ocio_thinfilm.lut.tables._morpho_table": ((41, tables.SPECTRAL_STEP),)}
 
 
 def test_colorimetry_matrices_survive_a_clear():
@@ -64,6 +66,17 @@ def test_colorimetry_matrices_survive_a_clear():
     assert np.array_equal(colorimetry.matrix_XYZ_to_RGB("Rec.2020"), before)
 
 
-def test_register_refuses_a_plain_function():
-    with pytest.raises(TypeError):
-        cache.register(lambda x: x)
+def test_a_memo_holds_at_most_maxsize_values_newest_kept():
+    calls = []
+
+    @cache.memoize(maxsize=2)
+    def square(x):
+        calls.append(x)
+        return x * x
+
+    assert [square(v) for v in (1, 2, 1, 3, 1, 2)] == [1, 4, 1, 9, 1, 4]
+    assert calls == [1, 2, 3, 2]  # 2 was the least recently used when 3 came
+    assert square.keys() == ((1,), (2,))
+    assert square.cache_info() == cache.CacheInfo(hits=2, misses=4, maxsize=2, currsize=2)
+    assert "test_cache.test_a_memo_holds_at_most_maxsize_values_newest_kept.<locals>.square" \
+        in " ".join(cache.names())

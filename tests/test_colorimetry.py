@@ -305,7 +305,6 @@ def test_persistent_cache_returns_what_a_fresh_computation_gives(tmp_path, monke
     """The disk memo (colorimetry.persistent): a value read back from the cache equals
     the freshly computed one, another process's call reads the file instead of
     computing, the key changes with the code it depends on, and "0" disables it."""
-    import importlib
 
     monkeypatch.setenv("OCIO_THINFILM_CACHE", str(tmp_path))
     calls = []

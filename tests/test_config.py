@@ -12,10 +12,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config import generate as config
-from ocio_thinfilm.lut import tables
 from ocio_thinfilm.evaluation.colours import object_colours
+from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
@@ -74,7 +75,7 @@ def test_colour_spaces_displays_views(cfg):
         assert name in names, name
     assert list(cfg.getDisplays()) == ["sRGB", "Display P3", "Rec.2020"]
     for display in cfg.getDisplays():
-        assert list(cfg.getViews(display)) == list(tables.VIEWS)
+        assert list(cfg.getViews(display)) == list(registry.VIEWS)
 
 
 def test_file_rules_present(cfg):
@@ -163,17 +164,17 @@ def test_thin_film_spaces_through_config(cfg):
 def test_config_views_equal_package_view_transforms(cfg, ocio):
     X = object_colours(n_random=500)[::3]
     for display in clip.DISPLAYS:
-        for view in tables.VIEWS:
+        for view in registry.VIEWS:
             out = X.astype(np.float32).copy()
             cfg.getProcessor("CIE-XYZ-D65", display, view,
                              ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(out)
-            ref = tables.apply(tables.view_transform(display, view), X)
+            ref = ocio_ops.apply(view_transforms.view_transform(display, view), X)
             np.testing.assert_allclose(out, ref, atol=2e-4, err_msg=f"{display} / {view}")
 
 
 def test_scene_linear_white_is_display_white(cfg, ocio):
     for display in cfg.getDisplays():
-        for view in tables.VIEWS[:3]:
+        for view in registry.VIEWS[:3]:
             px = np.ones((1, 3), np.float32)
             cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
                              ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
@@ -218,6 +219,6 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
     text = result.stdout + result.stderr
     assert "Color management: Error" not in text, text
     for display in clip.DISPLAYS:
-        for view in tables.VIEWS:
+        for view in registry.VIEWS:
             assert f"SET {display} / {view}" in text, text
     assert "IMAGE Thin Film Phase-Change Thickness" in text, text

@@ -17,7 +17,6 @@ from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.export import files as export
-from ocio_thinfilm.lut import tables
 from ocio_thinfilm.io import MARKER
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -36,7 +35,7 @@ _NUMBER = re.compile(rb"-?\d+\.?\d*(?:[eE][-+]?\d+)?")
 
 def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
     """True if two files differ only in numeric tokens, each by at most one rounding
-    step -- 1e-7 for decimals (tables.quantize), one code for the 16-bit integer LUTs,
+    step -- 1e-7 for decimals (ocio_ops.quantize), one code for the 16-bit integer LUTs,
     one half-float step (2^-10 relative) for the half-float LUT of the clip's first
     pass -- the trace a different SIMD code path (numpy's or OCIO's CPU dispatch on
     another CPU generation) can leave."""
@@ -253,6 +252,7 @@ def test_clf_export_takes_thickness_in_micrometres(tmp_path):
 
 def test_clip_export_reproduces_in_gamut_exactly_and_clips(tmp_path):
     import PyOpenColorIO as ocio
+
     from ocio_thinfilm.colour import clip
 
     path = export.export_lut("clip", tmp_path / "c.clf", display="sRGB", size=17)

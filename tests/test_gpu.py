@@ -399,7 +399,7 @@ def test_gpu_nonfinite_inputs(gl, config, display, view):
     Raw passes NaN/+-Inf through unchanged (it is data). Every other view gives finite
     codes, and the GPU (Mesa llvmpipe, OCIO 2.6, f4 and f2 textures) the same codes
     within 2/255 (measured 0.19/255): every input space and every view first limits
-    its components to +-1e6 (``tables.finite_limit_transform`` /
+    its components to +-1e6 (``ocio_ops.finite_limit_transform`` /
     ``xyz_limit_transform``), where OCIO's Range sends NaN to the lower bound and
     +-Inf to the bounds on both paths. So NaN components count as the lower bound
     (black for an all-NaN pixel), +Inf as 1e6 (white through the clip when Y

@@ -15,10 +15,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.config import generate as config, merge
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.cli.main import main
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.config import generate as config
+from ocio_thinfilm.config import merge
+from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")
 

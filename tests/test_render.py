@@ -15,7 +15,6 @@ views. Regenerate after an intended change with ``python tests/test_render.py``.
 
 from __future__ import annotations
 
-import json
 import os
 import shutil
 import subprocess
@@ -25,11 +24,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ocio_thinfilm import cache
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.render import frames as render, scenes
-from ocio_thinfilm.lut import tables
 from ocio_thinfilm.io import read_image
+from ocio_thinfilm.lut import ocio_ops, view_transforms
+from ocio_thinfilm.render import frames as render
+from ocio_thinfilm.render import processors, scenes
 
 REFERENCE = Path(__file__).parent / "reference"
 REF_SIZE = "64"
@@ -96,7 +97,7 @@ def test_seed_changes_the_noise_but_not_the_spectrum(stills, tmp_path):
 
 
 @pytest.mark.parametrize("argv, message", [
-    (["nosuch"], "unknown scene"),
+    (["nosuch"], "invalid choice"),
     (["oil", "--size", "0"], "--size"),
     (["oil", "--size", "-5"], "--size"),
     (["oil", "--size", "64x0"], "--size"),
@@ -168,7 +169,7 @@ def test_exr_is_scene_linear_xyz_with_aovs_and_documented(stills):
 def test_png_is_the_exr_through_the_chosen_view(stills):
     exr = read_image(stills / "oil.exr")
     png = read_image(stills / "oil.png")
-    expected = np.clip(tables.apply(tables.view_transform("sRGB", render.DEFAULT_VIEW),
+    expected = np.clip(ocio_ops.apply(view_transforms.view_transform("sRGB", render.DEFAULT_VIEW),
                                     exr[..., :3]), 0, 1)
     # Half-float EXR and 8-bit PNG: within a couple of code values.
     assert np.abs(expected - png).max() < 3 / 255
@@ -260,34 +261,32 @@ def test_morpho_is_blue_and_darkens_with_angle():
 # --------------------------------------------------------------------------- #
 # Only the declared tables and views become processors; the config is the source
 # --------------------------------------------------------------------------- #
-def _built(*argv, tmp_path):
-    """(tables computed, processors created from the config) by one render process."""
-    code = ("import json, sys; from ocio_thinfilm.cli import main as cli; "
-            "from ocio_thinfilm.render import frames as render; from ocio_thinfilm.lut import tables; "
-            "rc = cli.main(sys.argv[1:]); "
-            "print(json.dumps([tables.BUILT, render.PROCESSORS])); sys.exit(rc)")
-    out = subprocess.run([sys.executable, "-c", code, "render", *argv, "--size", "16",
-                          "--out", str(tmp_path), "--quiet"], capture_output=True, text=True,
-                         env=_env(), check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+def _built(scene, *, display="sRGB", view="Constant-Lightness Clip"):
+    """(tables and clip LUTs computed, processors created from the config) by one render
+    of ``scene`` in a process whose caches are emptied first."""
+    cache.clear()
+    procs = processors.ConfigProcessors()
+    render.render_scene(scene, (16, 16), display=display, view=view, config=procs)
+    return cache.entries("ocio_thinfilm.lut."), procs.created
 
 
-def test_morpho_uses_only_its_table_and_the_displays_view(tmp_path):
+def test_morpho_uses_only_its_table_and_the_displays_view():
     # The tables and the clip come from the baked config's files: nothing is computed.
-    built, processors = _built("morpho", "--display", "Display P3", tmp_path=tmp_path)
-    assert built == []
-    assert sorted(processors) == sorted(["colorspace:Thin Film Morpho Iridescence",
-                                         "view:Display P3/Constant-Lightness Clip"])
+    built, created = _built("morpho", display="Display P3")
+    assert built == {}
+    assert sorted(created) == sorted(["colorspace:Thin Film Morpho Iridescence",
+                                      "view:Display P3/Constant-Lightness Clip"])
 
 
-def test_a_scene_uses_only_the_view_it_shows(tmp_path):
-    assert _built("oil", "--view", "Channel Clamp", tmp_path=tmp_path) == [
-        [], ["colorspace:Thin Film Phase-Change Thickness", "view:sRGB/Channel Clamp"]]
+def test_a_scene_uses_only_the_view_it_shows():
+    assert _built("oil", view="Channel Clamp") == (
+        {}, ["colorspace:Thin Film Phase-Change Thickness", "view:sRGB/Channel Clamp"])
 
 
-def test_spectrum_uses_both_tables_and_its_three_views(tmp_path):
-    _, processors = _built("spectrum", "--display", "Rec.2020", tmp_path=tmp_path)
-    assert sorted(processors) == sorted(
+def test_spectrum_uses_both_tables_and_its_three_views():
+    built, created = _built("spectrum", display="Rec.2020")
+    assert built == {}
+    assert sorted(created) == sorted(
         ["colorspace:Thin Film Phase-Change Thickness", "colorspace:Thin Film Morpho Iridescence"]
         + [f"view:Rec.2020/{v}" for v in ("Constant-Lightness Clip", "Channel Clamp",
                                           "ACES Gamut Compression")])
@@ -366,17 +365,17 @@ def test_config_option_reaches_frame_children(tmp_path):
 
 
 def test_missing_default_config_is_baked_first(tmp_path, monkeypatch):
-    from ocio_thinfilm.export import files as export
+    from ocio_thinfilm.export import bake as bake_module
 
     baked = []
-    real_bake = export.bake
+    real_bake = bake_module.bake
 
     def small_bake(out, **kwargs):
         baked.append(Path(out))
         return real_bake(out, clip_size=9)
 
-    monkeypatch.setattr(render, "DEFAULT_CONFIG", tmp_path / "thinfilm" / "config.ocio")
-    monkeypatch.setattr(export, "bake", small_bake)
+    monkeypatch.setattr(processors, "DEFAULT_CONFIG", tmp_path / "thinfilm" / "config.ocio")
+    monkeypatch.setattr(bake_module, "bake", small_bake)
     assert cli.main(["render", "morpho", "--size", "16", "--out", str(tmp_path / "out"),
                      "--quiet"]) == 0
     assert baked == [tmp_path / "thinfilm"]

@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import colour_multilayer_R, colour_thin_film_R, mp_airy_R
 from hypothesis import given
 from hypothesis import strategies as st
 
-from conftest import colour_multilayer_R, colour_thin_film_R, mp_airy_R
 from ocio_thinfilm.physics import spectra
 
 WL_10 = np.arange(380.0, 781.0, 10.0)

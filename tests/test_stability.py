@@ -17,8 +17,9 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.evaluation import stability
+from ocio_thinfilm.lut import clip_lut, ocio_ops
+from ocio_thinfilm.physics import spectra
 
 WL = spectra.wavelength_grid()
 
@@ -323,11 +324,8 @@ def test_xyz_stability_case_checks_can_fail():
 # --------------------------------------------------------------------------- #
 @pytest.fixture(scope="module")
 def ocio_clip():
-    tables = pytest.importorskip("ocio_thinfilm.lut.tables")
-    if not hasattr(tables, "clip_transform"):
-        pytest.skip("tables.clip_transform not implemented")
-    tf = tables.clip_transform("sRGB")
-    return lambda x: tables.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
+    tf = clip_lut.clip_transform("sRGB")
+    return lambda x: ocio_ops.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
 
 
 def test_ocio_clip_black_and_white(ocio_clip):
@@ -348,7 +346,7 @@ def _ocio_limit_check(ocio_clip, sign):
 
 def test_ocio_clip_huge_components(ocio_clip):
     """+1e30 / +Inf X: an imaginary colour redder than ACES AP0, outside the black
-    pass's chart (tables._chart_cover), so it is clamped to the chart's edge: finite,
+    pass's chart (clip_lut._chart_cover), so it is clamped to the chart's edge: finite,
     in gamut, Y kept; its hue is approximate (dE2000 9.9 from the limit)."""
     x = np.array([[1e30, 0.5, 0.5], [np.inf, 0.5, 0.5]])
     out = ocio_clip(x)
@@ -357,7 +355,7 @@ def test_ocio_clip_huge_components(ocio_clip):
 
 
 def test_ocio_clip_negative_infinite_component(ocio_clip):
-    """-Inf / -1e30 X: tables.xyz_limit_transform keeps X+Y+Z >= 0 before XYZ_TO_xyY, so
+    """-Inf / -1e30 X: clip_lut.xyz_limit_transform keeps X+Y+Z >= 0 before XYZ_TO_xyY, so
     the chromaticity does not flip to the +X side (it did, dE2000 ~60, before that)."""
     _ocio_limit_check(ocio_clip, -1.0)
 

@@ -7,8 +7,8 @@ import sys
 import numpy as np
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.io import check_output_file, is_stdout, write_image
+from ocio_thinfilm.physics import spectra
 
 SOAP_INDEX = 1.33
 

@@ -31,7 +31,7 @@ import sys
 from ocio_thinfilm import __version__
 
 #: Modules that contribute sub-commands, in the order ``--help`` lists them.
-COMMAND_MODULES = ("cli.demo", "export.files", "render.frames", "evaluation.report")
+COMMAND_MODULES = ("cli.demo", "cli.export", "cli.render", "cli.report")
 PROG = "ocio-thinfilm"
 _HANDLED = ("SIGINT", "SIGTERM", "SIGHUP")
 

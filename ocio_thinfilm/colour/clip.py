@@ -34,8 +34,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm import registry
+from ocio_thinfilm.colour import colorimetry
 
 __all__ = [
     "DISPLAYS",

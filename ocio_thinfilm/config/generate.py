@@ -30,9 +30,15 @@ from pathlib import Path
 
 import numpy as np
 
-from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm import registry
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.lut import (
+    clip_lut,
+    display_transforms,
+    ocio_ops,
+    tables,
+    view_transforms,
+)
 
 __all__ = [
     "CONFIG_NAME",
@@ -126,7 +132,7 @@ def _file_transform(filename):
     return t
 
 
-def lut_files(clip_size: int = tables.CLIP_SIZE, film_size: int = tables.FILM_SIZE,
+def lut_files(clip_size: int = clip_lut.CLIP_SIZE, film_size: int = tables.FILM_SIZE,
               morpho_size: int = tables.MORPHO_SIZE) -> dict:
     """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses."""
     files = {}
@@ -135,7 +141,7 @@ def lut_files(clip_size: int = tables.CLIP_SIZE, film_size: int = tables.FILM_SI
                  else tables.morpho_table(size=morpho_size))
         files[named_lut(stem)] = table.transform()
     for display in clip.DISPLAYS:
-        lut = tables.clip_lut(display, clip_size)
+        lut = clip_lut.clip_lut(display, clip_size)
         files[named_lut(_clip_stem(display))] = lut.black_core()
         files[named_lut(_clip_stem(display, True))] = lut.white_core()
     return files
@@ -148,29 +154,29 @@ def _clip_stem(display, white=False):
 
 def _matrix_to_reference(space):
     """Linear RGB of ``space`` -> CIE-XYZ-D65, after limiting the components to
-    +-tables.LIMIT: float32-max or infinite values (e.g. ACEScct codes above ~7.9)
+    +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes above ~7.9)
     would overflow the matrix to Inf - Inf = NaN, which no later op can repair at
     OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6."""
     M = colorimetry.matrix_XYZ_to_RGB(space)
-    return ocio_ops.group([tables.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
+    return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
 
 
-def _view_parts(display, view, inline, luts, clip_size=tables.CLIP_SIZE):
+def _view_parts(display, view, inline, luts, clip_size=clip_lut.CLIP_SIZE):
     """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view."""
     if view == "Constant-Lightness Clip":
-        lut = tables.clip_lut(display, clip_size)
+        lut = clip_lut.clip_lut(display, clip_size)
         cores = [named_lut(_clip_stem(display, white)) for white in (False, True)]
         cores = [luts[name] if inline else _file_transform(name) for name in cores]
         # the second LUT ends in sRGB code values: back to display-linear here, the
         # display colour space encodes again (OCIO's optimiser removes the pair for
         # the sRGB-encoded displays)
-        linear = lut.transforms(*cores) + [tables.working_decoding_transform()]
+        linear = lut.transforms(*cores) + [clip_lut.working_decoding_transform()]
     else:
-        linear = [tables.view_linear_transform(display, view)]
-    return ocio_ops.group(linear + [tables.display_matrix_transform(display, inverse=True)])
+        linear = [view_transforms.view_linear_transform(display, view)]
+    return ocio_ops.group(linear + [display_transforms.display_matrix_transform(display, inverse=True)])
 
 
-def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
+def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
                 film_size: int = tables.FILM_SIZE,
                 morpho_size: int = tables.MORPHO_SIZE) -> ConfigData:
     """The config as data. ``inline=True`` puts the LUTs into the transforms
@@ -199,7 +205,7 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
                    description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour "
                                "picking)",
                    to_reference=ocio_ops.group([
-                       ocio_ops.inverse([tables.display_encoding_transform("sRGB")]),
+                       ocio_ops.inverse([display_transforms.display_encoding_transform("sRGB")]),
                        _matrix_to_reference("Rec.709")])))
     cs.append(dict(name="Raw", family="Utility", encoding="data", is_data=True,
                    categories=["file-io"], aliases=["Utility - Raw"],
@@ -225,8 +231,8 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
                        categories=["file-io"], reference_space="display",
                        description=description,
                        from_reference=ocio_ops.group([
-                           tables.display_matrix_transform(display),
-                           tables.display_encoding_transform(display)])))
+                           display_transforms.display_matrix_transform(display),
+                           display_transforms.display_encoding_transform(display)])))
 
     # The default view transform links the two reference spaces when a conversion
     # crosses them without a view (e.g. display space -> scene space): an identity,
@@ -241,7 +247,7 @@ def config_data(*, inline: bool = False, clip_size: int = tables.CLIP_SIZE,
     descriptions = {v.name: v.description for v in registry.VIEW_LIST}
     for display, (display_space, _) in DISPLAY_SPACES.items():
         views = []
-        for view in tables.VIEWS:
+        for view in registry.VIEWS:
             if view in _RAW_VIEWS:
                 views.append(dict(name=view, colorspace="Raw"))
                 continue
@@ -279,20 +285,20 @@ CLIP_NAMED_TRANSFORM = "Constant-Lightness Clip - {display} (display-linear)"
 TABLE_NAMED_TRANSFORM = "{space} to CIE-XYZ-D65"
 
 
-def clip_named_transform(display, *, inline=False, luts=None, clip_size=tables.CLIP_SIZE):
+def clip_named_transform(display, *, inline=False, luts=None, clip_size=clip_lut.CLIP_SIZE):
     """The constant-lightness clip of ``display`` on its own: display-linear RGB in,
     display-linear RGB in [0, 1] out (XYZ -> the two LUT passes -> decoded), for
     hosts that apply a named transform as a node (Nuke OCIONamedTransform, Houdini)."""
     luts = luts if luts is not None else {}
-    lut = tables.clip_lut(display, clip_size)
+    lut = clip_lut.clip_lut(display, clip_size)
     cores = [named_lut(_clip_stem(display, white)) for white in (False, True)]
     cores = [luts[name] if inline else _file_transform(name) for name in cores]
-    return ocio_ops.group([tables.display_matrix_transform(display, inverse=True)]
-                        + lut.transforms(*cores) + [tables.working_decoding_transform()])
+    return ocio_ops.group([display_transforms.display_matrix_transform(display, inverse=True)]
+                        + lut.transforms(*cores) + [clip_lut.working_decoding_transform()])
 
 
 def named_transforms(displays=clip.DISPLAYS, *, inline=False, luts=None,
-                     clip_size=tables.CLIP_SIZE) -> list:
+                     clip_size=clip_lut.CLIP_SIZE) -> list:
     """Named transforms (OCIO >= 2.0) as data: the clip per display in ``displays``
     and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
     config's reference space: merged configs add the same ones)."""
@@ -427,7 +433,7 @@ def generate_config(data: ConfigData | None = None, *, validate: bool = True,
             else:
                 config.addDisplayView(display, view["name"], view["colorspace"], "")
     config.setActiveDisplays(", ".join(data.displays))
-    config.setActiveViews(", ".join(tables.VIEWS))
+    config.setActiveViews(", ".join(registry.VIEWS))
     for role in list(dict(config.getRoles())):
         config.setRole(role, None)
     for role, space in data.roles.items():
@@ -448,7 +454,7 @@ def generate_config(data: ConfigData | None = None, *, validate: bool = True,
     return config
 
 
-def write_config(directory, *, clip_size: int = tables.CLIP_SIZE,
+def write_config(directory, *, clip_size: int = clip_lut.CLIP_SIZE,
                  film_size: int = tables.FILM_SIZE, morpho_size: int = tables.MORPHO_SIZE,
                  progress=None) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.

@@ -47,8 +47,8 @@ import numpy as np
 
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config import generate as config
-from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm.io import UsageError, atomic_directory, atomic_file, check_writable
+from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["load_base", "match_displays", "merge_config", "bake_into", "write_archive",
            "bake_archive", "MERGED_VIEWS"]
@@ -206,10 +206,9 @@ def match_displays(cfg):
     return found
 
 
-def merge_config(base, *, clip_size=tables.CLIP_SIZE):
+def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     """``base`` plus the additions (module docstring) as a new, validated-ready config,
     and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
-    ocio = ocio_ops.module()
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
         raise UsageError(f"the config's profile version {version[0]}.{version[1]} is below "
@@ -291,7 +290,7 @@ def _copy_base_files(base, source, directory):
             shutil.copytree(src, dst)
 
 
-def write_merged(source, directory, *, clip_size=tables.CLIP_SIZE):
+def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
     """Write the merged config (``config.ocio``, ``luts/``) into the existing
     ``directory``; returns (config path, display matches)."""
     ocio = ocio_ops.module()
@@ -331,7 +330,7 @@ def write_archive(config_path, out):
     return Path(out)
 
 
-def bake_into(source, out, *, clip_size=tables.CLIP_SIZE):
+def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
     """``ocio-thinfilm bake --into SOURCE --out OUT``: a folder or an ``.ocioz``."""
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
@@ -346,7 +345,7 @@ def bake_into(source, out, *, clip_size=tables.CLIP_SIZE):
     return out / "config.ocio"
 
 
-def bake_archive(out, *, clip_size=tables.CLIP_SIZE):
+def bake_archive(out, *, clip_size=clip_lut.CLIP_SIZE):
     """``ocio-thinfilm bake --out thinfilm.ocioz``: the project's config as an archive."""
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))

@@ -59,12 +59,13 @@ from pathlib import Path
 
 import numpy as np
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.lut import ocio_ops
-from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.evaluation import stability
 from ocio_thinfilm.evaluation.stability import fmt as _fmt
 from ocio_thinfilm.io import UsageError, atomic_file, check_writable, transaction
+from ocio_thinfilm.lut import clip_lut, ocio_ops, tables, view_transforms
+from ocio_thinfilm.physics import spectra
 
 __all__ = [
     "register",
@@ -250,8 +251,8 @@ def _default(fn, name):
 
 def machine_description() -> dict:
     """CPU model, core counts, memory, OS and library versions of this machine."""
-    import matplotlib
     import colour
+    import matplotlib
 
     info = {"cpu": platform.processor() or platform.machine()}
     with contextlib.suppress(OSError):
@@ -603,7 +604,7 @@ def _ocio_gamut_speeds(img, display):
         for label, view in (("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
                             ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip")):
             try:
-                group = ocio.GroupTransform([to_xyz, tables.view_transform(display, view)])
+                group = ocio.GroupTransform([to_xyz, view_transforms.view_transform(display, view)])
                 speeds[label] = _ocio_apply_speed(_ocio_cpu(group), img)
             except Exception as error:  # noqa: BLE001 -- reported, not hidden
                 speeds[f"{label}: failed: {error}"] = float("nan")
@@ -613,7 +614,7 @@ def _ocio_gamut_speeds(img, display):
 def _tables():
     """The tables module if it implements the contract, else None."""
     try:
-        from ocio_thinfilm.lut import tables
+        from ocio_thinfilm.lut import clip_lut, ocio_ops, tables, view_transforms
     except ImportError:
         return None
     if not hasattr(tables, "film_table"):
@@ -905,7 +906,7 @@ def _ocio_clip_rows(add, W):
         return
     M = colorimetry.matrix_XYZ_to_RGB("sRGB")
     Minv = np.linalg.inv(M)
-    tf = tables.clip_transform("sRGB")
+    tf = clip_lut.clip_transform("sRGB")
 
     def run(x):
         return ocio_ops.apply(tf, np.asarray(x, dtype=np.float64)).astype(np.float64)
@@ -1156,7 +1157,7 @@ def _section_lut3d(ctx):
     display = "sRGB"
     M = colorimetry.matrix_XYZ_to_RGB(display)
     Minv = np.linalg.inv(M)
-    d_size = _default(tables.clip_transform, "size")
+    d_size = _default(clip_lut.clip_transform, "size")
     sizes = sorted({17, d_size}) if q else sorted({17, 33, 65, d_size})
     sets = _lut_test_sets(q)
     refs = {k: clip.clip_XYZ(v, display) for k, v in sets.items()}
@@ -1168,7 +1169,7 @@ def _section_lut3d(ctx):
     img = np.resize(allx, (h * w, 3)).astype(np.float32)
     interps = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "linear": ocio.INTERP_LINEAR}
     shipped = "two passes (shipped)"
-    domains = {shipped: lambda size, it: _with_interp(tables.clip_transform(display, size), it)}
+    domains = {shipped: lambda size, it: _with_interp(clip_lut.clip_transform(display, size), it)}
     domains.update({
         f"display RGB [{lo:g}, {hi:g}]³, affine": lambda size, it: _rgb_domain_lut_transform(display, size, it, lo, hi),
         "XYZ/white [0, 1], no shaper": lambda size, it: _naive_lut_transform(display, size, it),
@@ -1214,9 +1215,9 @@ def _section_lut3d(ctx):
         "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
         f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} spectral "
         "mixtures (random mixtures of up to three spectral colours at Y 0.01–0.99: extreme "
-        "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `tables.clip_transform` (the faces through black "
+        "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `clip_lut.clip_transform` (the faces through black "
         "over a projective chromaticity chart and Y, then the faces through white over "
-        "encoded display RGB; see `tables.ClipLUT`); "
+        "encoded display RGB; see `clip_lut.ClipLUT`); "
         "display-linear RGB over the box that holds the interference colours, with an affine "
         "shaper (spectral mixtures beyond it are clamped by the LUT); "
         "and the naive XYZ/white cube without shaper. Bake = building the transform "
@@ -1247,13 +1248,13 @@ def _section_analytic_vs_lut(ctx):
     reference = clip.clip_XYZ(_film_XYZ_chunked(x_um * 1000.0, ref_step, True, chunk=512))
     table = tables.film_table("phase-change")
     img = np.repeat(x_um.astype(np.float32)[:, None], 3, axis=1)
-    d_size = _default(tables.clip_transform, "size")
+    d_size = _default(clip_lut.clip_transform, "size")
     big = 65 if d_size < 65 else d_size
     ocio_paths = {
         f"Lut1D + {d_size}³ clip LUT, OCIO (shipped)":
-            ocio_ops.group([table.transform(), tables.clip_transform(display)]),
+            ocio_ops.group([table.transform(), clip_lut.clip_transform(display)]),
         f"Lut1D + {big}³ clip LUT, OCIO": ocio_ops.group([table.transform(),
-                                                        tables.clip_transform(display, big)]),
+                                                        clip_lut.clip_transform(display, big)]),
     }
     lut1d_tf = table.transform()
     paths = {
@@ -1299,13 +1300,13 @@ def _section_analytic_vs_lut(ctx):
 # Section 4: throughput against a memory copy
 # --------------------------------------------------------------------------- #
 def _section_throughput(ctx):
+    import matplotlib.pyplot as plt
     import OpenImageIO as oiio
     import PyOpenColorIO as ocio
-    import matplotlib.pyplot as plt
 
     tables = _tables()
     if tables is None or not hasattr(tables, "view_transform"):
-        return "## 4. Throughput\n\nSkipped: `tables.view_transform` is not available."
+        return "## 4. Throughput\n\nSkipped: `view_transforms.view_transform` is not available."
     q = ctx.quick
     h, w = (540, 1024) if q else (2160, 4096)
     threads = os.cpu_count() or 1
@@ -1334,8 +1335,8 @@ def _section_throughput(ctx):
                                      "OIIO 1 thread": oiio_copy[1], "OIIO all threads": oiio_copy[0]},
                      "views": {}}
     with tempfile.TemporaryDirectory() as tmp:
-        for view in tables.VIEWS:
-            tf = tables.view_transform("sRGB", view)
+        for view in registry.VIEWS:
+            tf = view_transforms.view_transform("sRGB", view)
             cpu = _ocio_cpu(tf)
 
             def one():
@@ -1387,7 +1388,7 @@ def _section_throughput(ctx):
     return "\n".join([
         "## 4. Throughput against the physical limit",
         "",
-        f"Each view of `tables.view_transform('sRGB', view)` (CIE-XYZ-D65 → sRGB-encoded) on a "
+        f"Each view of `view_transforms.view_transform('sRGB', view)` (CIE-XYZ-D65 → sRGB-encoded) on a "
         f"{w}×{h} float32 RGB image of interference colours ({px * 12 / 2 ** 20:.0f} MiB). The "
         "bound is a plain memory copy of the same buffer: numpy `copyto` "
         f"{copy1:.0f} Mpixel/s on one thread, {copyN:.0f} on {threads} threads; OIIO "
@@ -1578,21 +1579,3 @@ def _json_default(o):
     if isinstance(o, np.bool_):
         return bool(o)
     return str(o)
-
-
-def _command(args):
-    path = run_report(args.out, quick=args.quick, progress=not args.no_progress)
-    print(path)
-    return 0
-
-
-def register(subparsers):
-    p = subparsers.add_parser(
-        "report", help="measure error against run time, peers, stability and throughput",
-        description="Measure everything on this machine and write <out>/report.md with PNG plots.")
-    p.add_argument("--out", default="reports", help="output directory (default: reports)")
-    p.add_argument("--quick", action="store_true",
-                   help="smaller sweeps (about 30 s): keeps the report working in the test suite")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
-    p.set_defaults(func=_command)
-    return p

@@ -1,8 +1,8 @@
-"""``ocio-thinfilm bake`` and ``ocio-thinfilm export``: the config folder and standalone LUTs.
+"""Standalone LUT files (``ocio-thinfilm export``) and the shipped ``luts/`` set.
 
-Stage 6 of the pipeline. Every file is written by OpenColorIO's own writers
+Every file is written by OpenColorIO's own writers
 (``GroupTransform.write`` for CLF, ``Baker`` for .cube / .spi1d / .spi3d / .csp),
-atomically (:mod:`.io`), and without timestamps, so equal inputs give equal bytes.
+atomically (:mod:`ocio_thinfilm.io`), and without timestamps, so equal inputs give equal bytes.
 
 Standalone LUTs (``export``)
 ----------------------------
@@ -23,11 +23,12 @@ the pixel as it is.
   0..1), so it is refused unless ``--range 0 1``. Output: clipped display-linear
   RGB. (The config's own clip LUTs work in projective chromaticity charts through
   ``FixedFunction XYZ_TO_xyY`` ops, which these formats cannot hold.)
-- ``view`` (:mod:`.export_view`): a whole display/view of the config from any of its
+- ``view`` (:mod:`ocio_thinfilm.export.view`): a whole display/view of the config from any of its
   colour spaces, input the raw pixel values of that space, output display code
   values.
 
-Functions: :func:`export_lut`, :func:`export_set`, :func:`bake`, :func:`register`.
+Functions: :func:`lut_contents`, :func:`write_lut`, :func:`export_lut`, :func:`export_set`,
+:func:`progress_bar`.
 """
 
 from __future__ import annotations
@@ -38,14 +39,13 @@ from pathlib import Path
 
 import numpy as np
 
-from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm import registry
-from ocio_thinfilm.io import (UsageError, atomic_file, check_output_file, claim_directory, is_stdout,
-                 transaction)
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.io import UsageError, atomic_file, check_output_file
+from ocio_thinfilm.lut import ocio_ops, tables
 
-__all__ = ["FORMATS", "TABLES", "DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "export_lut",
-           "export_set", "bake", "register"]
+__all__ = ["FORMATS", "TABLES", "DEFAULT_SIZE", "DEFAULT_RANGE", "lut_contents", "write_lut",
+           "export_lut", "export_set", "EXPORT_SET_VIEWS", "progress_bar"]
 
 #: Format name -> (OCIO writer format, file extension, LUT dimensions it can hold).
 FORMATS = {
@@ -58,8 +58,6 @@ FORMATS = {
 TABLES = ("film", "morpho", "clip")
 #: Formats with no way to state their input domain: only usable over exactly [0, 1].
 NO_DOMAIN = ("spi3d",)
-DEFAULT_CONFIG_DIR = "configs/thinfilm"
-DEFAULT_LUTS_DIR = "luts"
 DEFAULT_SIZE = {"film": 4096, "morpho": 1024, "clip": 33}
 MAX_SIZE = {"film": 1 << 20, "morpho": 1 << 20, "clip": 129}
 DEFAULT_RANGE = {"film": (0.0, 1.5), "morpho": (0.0, 1.0), "clip": (-0.5, 1.5)}
@@ -135,7 +133,13 @@ def lut_contents(table, *, kind="phase-change", display=None, index=None, value_
     ``values``: (size, 3) or (size, size, size, 3), on the uniform grid over the
     normalised input p in [0, 1].
     """
-    size, (lo, hi) = _validate(table, kind, display, index, value_range, size, "clf")
+    size, value_range = _validate(table, kind, display, index, value_range, size, "clf")
+    return _contents(table, kind, display, index, value_range, size, progress)
+
+
+def _contents(table, kind, display, index, value_range, size, progress):
+    """:func:`lut_contents` of arguments already validated."""
+    lo, hi = value_range
     x = np.linspace(lo, hi, size)
     if table == "film":
         n = 1.0 if index is None else index
@@ -273,15 +277,14 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
         fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
         if fmt not in FORMATS:
             raise UsageError(f"cannot tell the format from {out!r}; pass --format")
-    _validate(table, kind, display, index, value_range, size, fmt)
+    size, value_range = _validate(table, kind, display, index, value_range, size, fmt)
     if out is None:
         out = Path(_stem(table, kind, display, index) + "." + FORMATS[fmt][1])
     out = check_output_file(out)
-    bar = _progress(show_progress, total=1.0, desc=f"export {out.name}")
+    bar = progress_bar(show_progress, total=1.0, desc=f"export {out.name}")
     try:
-        values, lut, meta = lut_contents(table, kind=kind, display=display, index=index,
-                                         value_range=value_range, size=size,
-                                         progress=bar.update if bar else None)
+        values, lut, meta = _contents(table, kind, display, index, value_range, size,
+                                      bar.update if bar else None)
         write_lut(out, fmt, values, lut, meta)
     finally:
         if bar:
@@ -309,7 +312,7 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
     views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
              for display in clip.DISPLAYS for fmt in fmts]
     written = []
-    bar = _progress(show_progress, total=len(jobs) + len(views), desc="export luts")
+    bar = progress_bar(show_progress, total=len(jobs) + len(views), desc="export luts")
     cache = {}
     for table, kw, fmt in jobs:
         key = (table, tuple(sorted(kw.items())))
@@ -336,123 +339,8 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
 EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
 
 
-
-def _legacy_config(directory):
-    """The files of a config folder baked before the ownership marker existed (e.g.
-    the committed ``configs/thinfilm``): ``config.ocio`` saying it was generated by
-    ocio-thinfilm, and nothing else but ``luts/*.clf``. None if it is not one."""
-    directory = Path(directory)
-    cfg = directory / "config.ocio"
-    try:
-        if "Generated by ocio-thinfilm" not in cfg.read_text(errors="replace")[:4096]:
-            return None
-    except OSError:
-        return None
-    owned = {"config.ocio"}
-    for entry in directory.iterdir():
-        if entry.name == "config.ocio":
-            continue
-        if entry.name != "luts" or not entry.is_dir() or entry.is_symlink():
-            return None
-        for lut in entry.iterdir():
-            if not (lut.suffix == ".clf" and lut.is_file() and not lut.is_symlink()):
-                return None
-            owned.add(f"luts/{lut.name}")
-    return owned
-
-
-def _legacy_luts(directory):
-    """The files of a standalone LUT set written before the ownership marker existed
-    (e.g. the committed ``luts/``): only our LUT names and extensions. None if not."""
-    exts = {"." + spec[1] for spec in FORMATS.values()}
-    owned = set()
-    for entry in Path(directory).iterdir():
-        if not (entry.is_file() and not entry.is_symlink() and entry.suffix in exts
-                and entry.name.startswith(("ThinFilm_", "ConstantLightnessClip_",
-                                           "ACEScct_to_"))):
-            return None
-        owned.add(entry.name)
-    return owned
-
-
-def _check_staged_clfs(directory, final):
-    from ocio_thinfilm.io import _check_xml
-
-    for path in sorted(Path(directory).rglob("*.clf")):
-        _check_xml(path, Path(final) / path.relative_to(directory))
-
-
-def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=tables.CLIP_SIZE, show_progress=False,
-         luts=None) -> Path:
-    """Write the config folder (config.ocio + luts/*.clf) to ``out`` and, with
-    ``luts``, the standalone LUT set (:func:`export_set`) to that directory.
-
-    Both directories must be new, empty, or written by an earlier bake (they then hold
-    the marker :data:`.io.MARKER`; files they list are replaced or removed, nothing
-    else is touched). Everything is validated, written aside and checked first, then
-    committed file by file with ``config.ocio`` last, so a failure (a full disk,
-    Ctrl-C) leaves both directories as they were, and a kill leaves each a complete,
-    loadable set of files.
-    """
-    from ocio_thinfilm.config import generate as config
-
-    if isinstance(clip_size, bool) or not 9 <= int(clip_size) <= 129:
-        raise UsageError(f"--clip-size must be in [9, 129], got {clip_size}")
-    claim = claim_directory(out, option="--out", legacy=_legacy_config, last=("config.ocio",))
-    luts_claim = None
-    if luts is not None:
-        luts_claim = claim_directory(luts, option="--luts", legacy=_legacy_luts)
-        a, b = luts_claim.path.resolve(), claim.path.resolve()
-        if a == b or a in b.parents or b in a.parents:
-            raise UsageError(f"--luts {luts}: must not be, contain or lie inside the --out "
-                             f"directory {out}")
-    n_files = len(config.THIN_FILM_SPACES) + 2 * len(clip.DISPLAYS) + 1  # 2 clip LUTs each
-    bar = _progress(show_progress, total=n_files, desc=f"bake {claim.path}")
-    try:
-        with transaction() as tx:
-            stage = tx.directory(claim)
-            try:
-                config.write_config(stage, clip_size=int(clip_size),
-                                    progress=(lambda name: bar.update(1)) if bar else None)
-            except OSError as error:
-                raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None
-            except Exception:
-                _check_staged_clfs(stage, claim.path)  # a truncated LUT (disk full) says so
-                raise
-            if luts_claim is not None:
-                export_set(tx.directory(luts_claim), show_progress=show_progress)
-    finally:
-        if bar:
-            bar.close()
-    _remove_old_leftovers(claim.path, _legacy_config)
-    if luts_claim is not None:
-        _remove_old_leftovers(luts_claim.path, _legacy_luts)
-    return claim.path / "config.ocio"
-
-
-def _remove_old_leftovers(path, legacy):
-    """Earlier versions swapped whole directories through ``.NAME.XXXXXXXX`` and
-    ``.NAME.old`` siblings, which a kill could leave behind: remove those that hold
-    exactly what a bake writes (nothing else is touched)."""
-    import re
-    import shutil
-
-    pattern = re.compile(re.escape(f".{path.name}.") + r"(old|[A-Za-z0-9_]{8})")
-    try:
-        entries = list(path.parent.iterdir())
-    except OSError:
-        return
-    for entry in entries:
-        if pattern.fullmatch(entry.name) and entry.is_dir() and not entry.is_symlink():
-            try:
-                empty = not any(entry.iterdir())
-            except OSError:
-                continue
-            if empty or legacy(entry) is not None:
-                shutil.rmtree(entry, ignore_errors=True)
-
-
-def _progress(show, total, desc):
+def progress_bar(show, total, desc):
+    """A tqdm progress bar on stderr (None unless ``show``)."""
     if not show:
         return None
     from tqdm import tqdm
@@ -460,119 +348,3 @@ def _progress(show, total, desc):
     return tqdm(total=total, desc=desc, unit="" if isinstance(total, int) else "",
                 leave=False, file=sys.stderr, mininterval=0.2,
                 bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}")
-
-
-# --------------------------------------------------------------------------- #
-# CLI
-# --------------------------------------------------------------------------- #
-def _int(option, text):
-    if text is None:
-        return None
-    try:
-        return int(text)
-    except ValueError:
-        raise UsageError(f"{option} must be an integer, got {text!r}") from None
-
-
-def _float(option, text):
-    if text is None:
-        return None
-    try:
-        return float(text)
-    except ValueError:
-        raise UsageError(f"{option} must be a number, got {text!r}") from None
-
-
-def _run_bake(args) -> int:
-    if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
-        from ocio_thinfilm.config import merge  # --into CONFIG and/or an .ocioz archive (issue 10)
-
-        if args.into and args.out == DEFAULT_CONFIG_DIR:
-            raise UsageError("--into needs --out DIR (or FILE.ocioz)")
-        if args.luts is not None:
-            raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
-        clip_size = _int("--clip-size", args.clip_size)
-        if isinstance(clip_size, bool) or not 9 <= int(clip_size) <= 129:
-            raise UsageError(f"--clip-size must be in [9, 129], got {clip_size}")
-        path = (merge.bake_into(args.into, args.out, clip_size=clip_size) if args.into
-                else merge.bake_archive(args.out, clip_size=clip_size))
-        print(f"wrote {path}")
-        return 0
-    path = bake(args.out, clip_size=_int("--clip-size", args.clip_size),
-                show_progress=not args.quiet, luts=args.luts)
-    print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
-    return 0
-
-
-def _run_export(args) -> int:
-    if args.table == "view":
-        from ocio_thinfilm.export import view as export_view
-
-        return export_view.run(args)
-    value_range = (None if args.range is None
-                   else tuple(_float("--range", v) for v in args.range))
-    path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
-                      display=args.display, index=_float("--index", args.index),
-                      value_range=value_range, size=_int("--size", args.size),
-                      show_progress=not args.quiet)
-    print(f"wrote {path}", file=sys.stderr if is_stdout(path) else sys.stdout)
-    return 0
-
-
-def register(sub) -> None:
-    p = sub.add_parser("bake", help="write the OpenColorIO config folder "
-                                    "(config.ocio + luts/*.clf)",
-                       description="Write the drop-in OCIO config and its CLF LUTs, atomically.")
-    p.add_argument("--out", default=DEFAULT_CONFIG_DIR,
-                   help=f"config directory to (re)write (default {DEFAULT_CONFIG_DIR})")
-    p.add_argument("--clip-size", default=tables.CLIP_SIZE,
-                   help=f"edge of the 3D clip LUTs (default {tables.CLIP_SIZE})")
-    p.add_argument("--luts", default=None, metavar="DIR",
-                   help="also write the standalone LUT set (every table, display and "
-                        "format) into DIR, e.g. luts")
-    p.add_argument("--into", default=None, metavar="CONFIG",
-                   help="add the thin-film input spaces, the clip views and named "
-                        "transforms to CONFIG (a config file or a built-in ocio:// URI, "
-                        "e.g. ocio://studio-config-latest) and write the result to --out "
-                        "(see docs/studio.md); --out FILE.ocioz writes an OCIO archive")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
-    p.set_defaults(func=_run_bake)
-
-    e = sub.add_parser("export", help="write one table or clip LUT as a standalone file "
-                                      "(CLF, .cube, .spi1d/.spi3d, .csp)",
-                       description="Write one LUT with OpenColorIO's writers. Film/Morpho "
-                                   "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
-                                   "cube, csp; spi3d only over --range 0 1). Every file "
-                                   "takes the value itself: its domain is in the file.")
-    e.add_argument("table", metavar="TABLE",
-                   help="film (thickness table), morpho (angle table), clip (the "
-                        "constant-lightness clip) or view (a display/view of the config "
-                        "from --from SPACE: display code values; cube, csp, clf, ctf, "
-                        "spi3d, or spi1d for thin-film inputs)")
-    e.add_argument("--kind", default="phase-change",
-                   help="film kind: phase-change (soap film) or no-phase-change")
-    e.add_argument("--display", default=None,
-                   help=f"display gamut ({', '.join(clip.DISPLAYS)}): clip into it "
-                        "(required for clip; for tables gives clipped display-linear RGB "
-                        "instead of XYZ)")
-    e.add_argument("--index", default=None,
-                   help="film refractive index n: input becomes physical thickness t "
-                        "(t' = n t, normal incidence)")
-    e.add_argument("--range", nargs=2, metavar=("MIN", "MAX"), default=None,
-                   help="input range: thickness in um (film, default 0 1.5), cos(theta) "
-                        "(morpho, default 0 1), display-linear RGB per channel (clip, "
-                        "default -0.5 1.5)")
-    e.add_argument("--size", default=None,
-                   help="entries (1D) or grid edge (3D); defaults 4096 / 1024 / 33")
-    e.add_argument("--format", default=None,
-                   help=f"{', '.join(FORMATS)} (default: from --out's extension, else clf)")
-    e.add_argument("--out", "-o", default=None, help="file to write (default: a name "
-                                                     "from the options, in the current "
-                                                     "directory)")
-    e.add_argument("--from", dest="source", default=None, metavar="SPACE",
-                   help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
-                        "'Linear Rec.709 (sRGB)', a thin-film space)")
-    e.add_argument("--view", default=None,
-                   help="view: the display's view (e.g. 'Constant-Lightness Clip')")
-    e.add_argument("--quiet", action="store_true", help="no progress bar")
-    e.set_defaults(func=_run_export)

@@ -55,12 +55,13 @@ from pathlib import Path
 
 import numpy as np
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm.io import UsageError, atomic_file, check_writable
+from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
-           "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view", "run"]
+           "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view"]
 
 #: Format -> OCIO writer name. ``.spi1d`` only for the 1D (thin-film) inputs.
 VIEW_FORMATS = {
@@ -185,8 +186,8 @@ def _validate(source, display, view, size, fmt, value_range):
         raise UsageError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
     if view is None:
         raise UsageError("export view needs --view")
-    if view not in tables.VIEWS:
-        raise UsageError(f"unknown view {view!r}; choose from {', '.join(tables.VIEWS)}")
+    if view not in registry.VIEWS:
+        raise UsageError(f"unknown view {view!r}; choose from {', '.join(registry.VIEWS)}")
     if fmt not in VIEW_FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose from {', '.join(VIEW_FORMATS)}")
     one_d = source in THIN_FILM_INPUTS
@@ -305,7 +306,7 @@ def _baked_3d_transforms(cfg, source, shaper, display, view, size):
     if values.min() >= -1e-4 and values.max() <= 1.0 + 1e-4:
         # Display code values: 16-bit integers (half the text of floats; the step,
         # 1.5e-5, is far below the interpolation error).
-        values = np.round(np.clip(values, 0.0, 1.0) * tables.LUT_CODE_MAX) / tables.LUT_CODE_MAX
+        values = np.round(np.clip(values, 0.0, 1.0) * clip_lut.LUT_CODE_MAX) / clip_lut.LUT_CODE_MAX
         ops.append(ocio_ops.lut3d_transform(values, bitdepth="uint16"))
         ops.append(ocio_ops.matrix())  # the CLF writer keeps 16i only before another op
     else:
@@ -380,16 +381,3 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
         return [_write_text(out, text3d), _write_text(companion, text1d)]
     return [_write_text(out, _bake_text(cfg, fmt, source, shaper, display, view, size,
                                         description))]
-
-
-def run(args) -> int:
-    """``ocio-thinfilm export view`` (called from :func:`.export._run_export`)."""
-    from ocio_thinfilm.export.files import _float, _int
-
-    value_range = (None if args.range is None
-                   else tuple(_float("--range", v) for v in args.range))
-    paths = export_view(args.source, args.display, args.view, args.out, fmt=args.format,
-                        size=_int("--size", args.size), value_range=value_range)
-    for path in paths:
-        print(f"wrote {path}")
-    return 0

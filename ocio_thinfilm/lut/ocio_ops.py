@@ -1,15 +1,16 @@
 """The OCIO op helpers: one implementation each, used by every module that builds transforms.
 
-A leaf module (it imports only NumPy and, lazily, PyOpenColorIO): :mod:`.tables`,
-:mod:`.config`, :mod:`.export`, :mod:`.export_view`, :mod:`.merge`, :mod:`.report`
-and the benchmarks build their transforms from these.
+A leaf module (it imports only NumPy and, lazily, PyOpenColorIO): the tables, clip
+LUTs and views of :mod:`ocio_thinfilm.lut`, the config and its merge, the exports, the
+report and the benchmarks build their transforms from these.
 
 - :func:`module`: the ``PyOpenColorIO`` module (imported on first use).
 - :func:`transform_id`: a transform ID in the style of the ACES OCIO configs.
 - :func:`group`: a ``GroupTransform`` with CLF-style metadata.
 - :func:`inverse`: a ``GroupTransform`` applied in the inverse direction.
 - :func:`matrix`: a ``MatrixTransform`` from a 3x3 matrix and an offset.
-- :func:`range_`: a clamping ``RangeTransform`` (same range in and out).
+- :func:`range_`: a clamping ``RangeTransform`` (same range in and out);
+  :func:`finite_limit_transform`: the one that keeps every processor finite.
 - :func:`lut1d_transform`, :func:`lut3d_transform`: LUT ops holding NumPy data.
 - :func:`quantize`: rounding before data go into a file (byte-reproducible files).
 - :func:`apply`: apply a transform to a (..., 3) array with OCIO's CPU processor.
@@ -27,6 +28,8 @@ __all__ = [
     "inverse",
     "matrix",
     "range_",
+    "LIMIT",
+    "finite_limit_transform",
     "lut1d_transform",
     "lut3d_transform",
     "quantize",
@@ -107,6 +110,18 @@ def range_(lo, hi):
     r.setMinOutValue(lo)
     r.setMaxOutValue(hi)
     return r
+
+
+#: Limit of every component before a matrix or a chart: no real pixel comes near it, and
+#: +-Inf (and NaN, which OCIO's CPU Range sends to the lower bound) become finite, so
+#: no processor overflows to Inf - Inf = NaN at OPTIMIZATION_NONE (ops not composed).
+LIMIT = 1e6
+
+
+def finite_limit_transform():
+    """Clamp every component to [-LIMIT, LIMIT]: +-Inf become finite (and NaN, which
+    OCIO's CPU Range sends to the lower bound)."""
+    return range_(-LIMIT, LIMIT)
 
 
 def lut1d_transform(values, *, bitdepth: str | None = None):

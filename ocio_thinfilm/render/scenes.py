@@ -39,9 +39,9 @@ from typing import Callable
 import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.render import noise
-from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.lut import tables
+from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.render import noise
 
 __all__ = ["TableSpec", "Picture", "Scene", "SCENES", "FILM_TABLE", "MORPHO_TABLE",
            "get_scene", "D65_WHITE"]

@@ -1,0 +1,119 @@
+"""``ocio-thinfilm bake`` and ``ocio-thinfilm export``: their options and what they run.
+
+Options are parsed and typed by argparse here; the library functions
+(:func:`ocio_thinfilm.export.bake.bake`, :func:`ocio_thinfilm.config.merge.bake_into`,
+:func:`ocio_thinfilm.export.files.export_lut`,
+:func:`ocio_thinfilm.export.view.export_view`) check what the values allow.
+"""
+
+from __future__ import annotations
+
+import sys
+
+from ocio_thinfilm import registry
+from ocio_thinfilm.export import bake as bake_module
+from ocio_thinfilm.export.files import FORMATS, export_lut
+from ocio_thinfilm.io import UsageError, is_stdout
+from ocio_thinfilm.lut import clip_lut
+
+__all__ = ["register"]
+
+
+def _run_bake(args) -> int:
+    if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
+        from ocio_thinfilm.config import (
+            merge,  # --into CONFIG and/or an .ocioz archive (issue 10)
+        )
+
+        if args.into and args.out == bake_module.DEFAULT_CONFIG_DIR:
+            raise UsageError("--into needs --out DIR (or FILE.ocioz)")
+        if args.luts is not None:
+            raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
+        clip_size = args.clip_size
+        lo, hi = bake_module.CLIP_SIZES
+        if not lo <= clip_size <= hi:
+            raise UsageError(f"--clip-size must be in [{lo}, {hi}], got {clip_size}")
+        path = (merge.bake_into(args.into, args.out, clip_size=clip_size) if args.into
+                else merge.bake_archive(args.out, clip_size=clip_size))
+        print(f"wrote {path}")
+        return 0
+    path = bake_module.bake(args.out, clip_size=args.clip_size,
+                show_progress=not args.quiet, luts=args.luts)
+    print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
+    return 0
+
+
+def _run_export(args) -> int:
+    if args.table == "view":
+        from ocio_thinfilm.export.view import export_view
+
+        paths = export_view(args.source, args.display, args.view, args.out, fmt=args.format,
+                            size=args.size, value_range=args.range)
+        for path in paths:
+            print(f"wrote {path}")
+        return 0
+    path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
+                      display=args.display, index=args.index,
+                      value_range=args.range, size=args.size,
+                      show_progress=not args.quiet)
+    print(f"wrote {path}", file=sys.stderr if is_stdout(path) else sys.stdout)
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("bake", help="write the OpenColorIO config folder "
+                                    "(config.ocio + luts/*.clf)",
+                       description="Write the drop-in OCIO config and its CLF LUTs, atomically.")
+    p.add_argument("--out", default=bake_module.DEFAULT_CONFIG_DIR,
+                   help=f"config directory to (re)write (default {bake_module.DEFAULT_CONFIG_DIR})")
+    p.add_argument("--clip-size", type=int, default=clip_lut.CLIP_SIZE,
+                   help=f"edge of the 3D clip LUTs (default {clip_lut.CLIP_SIZE})")
+    p.add_argument("--luts", default=None, metavar="DIR",
+                   help="also write the standalone LUT set (every table, display and "
+                        "format) into DIR, e.g. luts")
+    p.add_argument("--into", default=None, metavar="CONFIG",
+                   help="add the thin-film input spaces, the clip views and named "
+                        "transforms to CONFIG (a config file or a built-in ocio:// URI, "
+                        "e.g. ocio://studio-config-latest) and write the result to --out "
+                        "(see docs/studio.md); --out FILE.ocioz writes an OCIO archive")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=_run_bake)
+
+    e = sub.add_parser("export", help="write one table or clip LUT as a standalone file "
+                                      "(CLF, .cube, .spi1d/.spi3d, .csp)",
+                       description="Write one LUT with OpenColorIO's writers. Film/Morpho "
+                                   "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
+                                   "cube, csp; spi3d only over --range 0 1). Every file "
+                                   "takes the value itself: its domain is in the file.")
+    e.add_argument("table", metavar="TABLE",
+                   help="film (thickness table), morpho (angle table), clip (the "
+                        "constant-lightness clip) or view (a display/view of the config "
+                        "from --from SPACE: display code values; cube, csp, clf, ctf, "
+                        "spi3d, or spi1d for thin-film inputs)")
+    e.add_argument("--kind", default="phase-change",
+                   help="film kind: phase-change (soap film) or no-phase-change")
+    e.add_argument("--display", default=None,
+                   help=f"display gamut ({', '.join(registry.DISPLAYS)}): clip into it "
+                        "(required for clip; for tables gives clipped display-linear RGB "
+                        "instead of XYZ)")
+    e.add_argument("--index", type=float, default=None,
+                   help="film refractive index n: input becomes physical thickness t "
+                        "(t' = n t, normal incidence)")
+    e.add_argument("--range", nargs=2, type=float, metavar=("MIN", "MAX"), default=None,
+                   help="input range: thickness in um (film, default 0 1.5), cos(theta) "
+                        "(morpho, default 0 1), display-linear RGB per channel (clip, "
+                        "default -0.5 1.5)")
+    e.add_argument("--size", type=int, default=None,
+                   help="entries (1D) or grid edge (3D); defaults 4096 / 1024 / 33")
+    e.add_argument("--format", default=None,
+                   help=f"{', '.join(FORMATS)} (default: from --out's extension, else clf)")
+    e.add_argument("--out", "-o", default=None, help="file to write (default: a name "
+                                                     "from the options, in the current "
+                                                     "directory)")
+    e.add_argument("--from", dest="source", default=None, metavar="SPACE",
+                   help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
+                        "'Linear Rec.709 (sRGB)', a thin-film space)")
+    e.add_argument("--view", default=None,
+                   help="view: the display's view (e.g. 'Constant-Lightness Clip')")
+    e.add_argument("--quiet", action="store_true", help="no progress bar")
+    e.set_defaults(func=_run_export)

@@ -1,0 +1,179 @@
+"""``ocio-thinfilm render``: the paper's scenes, each frame through the config's processors.
+
+Without ``--frames`` a scene is written as ``NAME.exr`` / ``NAME.png`` (frame 1, the
+still). ``--frames A-B`` writes ``NAME.####.exr`` / ``.png``; a range of more than one
+frame is rendered by one child process per frame (``python -m ocio_thinfilm render
+SCENE --frames N-N ...``), ``--jobs`` at a time, exactly what a render farm would run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import re
+import subprocess
+import sys
+import time
+
+from ocio_thinfilm import registry
+from ocio_thinfilm.io import UsageError, check_output_file, check_writable, transaction
+from ocio_thinfilm.render import frames as render
+from ocio_thinfilm.render import scenes as scene_module
+from ocio_thinfilm.render.processors import ConfigProcessors, make_lookup
+
+__all__ = ["register", "run", "size_argument", "frames_argument", "integer_argument"]
+
+MIN_SIDE, MAX_SIDE, MAX_PIXELS = 16, 8192, 4096 * 4096
+#: Limits on --size: each side 16..8192 and at most 4096 x 4096 pixels in total; on --frames.
+MAX_FRAME = 9999
+SCENE_CHOICES = tuple(scene_module.SCENES) + ("all",)
+
+
+def size_argument(text: str) -> tuple[int, int]:
+    """``W`` or ``WxH`` -> (W, H), each side in [16, 8192], W*H <= 4096^2."""
+    m = re.fullmatch(r"\s*([+-]?\d+)\s*(?:[xX]\s*([+-]?\d+)\s*)?", str(text))
+    if not m:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected W or WxH in pixels, e.g. 512 or 640x480")
+    w = int(m.group(1))
+    h = int(m.group(2)) if m.group(2) is not None else w
+    for side in (w, h):
+        if side < MIN_SIDE or side > MAX_SIDE:
+            raise argparse.ArgumentTypeError(f"{text}: each side must be between {MIN_SIDE} and "
+                             f"{MAX_SIDE} pixels")
+    if w * h > MAX_PIXELS:
+        raise argparse.ArgumentTypeError(f"{text}: at most {MAX_PIXELS} pixels (4096x4096) per image")
+    return w, h
+
+
+def frames_argument(text: str) -> list[int]:
+    """``A-B`` (or ``N``) -> [A, ..., B] with 1 <= A <= B <= 9999."""
+    m = re.fullmatch(r"\s*(\d+)\s*(?:-\s*(\d+)\s*)?", str(text))
+    if not m:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected A-B (e.g. 1-24) or a single frame N")
+    a = int(m.group(1))
+    b = int(m.group(2)) if m.group(2) is not None else a
+    if not 1 <= a <= b <= MAX_FRAME:
+        raise argparse.ArgumentTypeError(f"{text}: need 1 <= A <= B <= {MAX_FRAME}")
+    return list(range(a, b + 1))
+
+
+def integer_argument(lo: int, hi: int):
+    """argparse type: an integer in [lo, hi]."""
+    def parse(text: str) -> int:
+        if not re.fullmatch(r"\s*\d+\s*", str(text)) or not lo <= int(text) <= hi:
+            raise argparse.ArgumentTypeError(f"{text!r}: must be an integer in [{lo}, {hi}]")
+        return int(text)
+
+    return parse
+
+
+def run(args) -> int:
+    names = list(scene_module.SCENES) if args.scene == "all" else [args.scene]
+    size, frames = args.size, args.frames
+    out_dir = check_writable(args.out)
+    # the config is read (baked first when the default one is missing) before any
+    # frame: --jobs children then find it in place
+    processors = ConfigProcessors(getattr(args, "config", None))
+    processors.check_display_view(args.display, args.view)
+
+    if frames is not None and len(frames) > 1:
+        return _render_frames_in_children(args, frames)
+
+    frame = None if frames is None else frames[0]
+    # Every output is checked before anything is rendered, and all of them are
+    # committed together at the end: a failure leaves every previous file as it was.
+    for name in names:
+        for path in render.frame_paths(name, out_dir, frame):
+            check_output_file(path)
+    lookup = make_lookup(processors)
+    messages = []
+    with transaction() as tx:
+        for name in names:
+            start = time.perf_counter()
+            paths = render.write_frame(name, out_dir, size, seed=args.seed, frame=frame,
+                                display=args.display, view=args.view, lookup=lookup,
+                                config=processors, tx=tx)
+            messages.append(f"{name}: wrote {', '.join(str(p) for p in paths)} "
+                            f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)")
+    if not args.quiet:
+        print("\n".join(messages))
+    return 0
+
+
+def _child_command(args, frame: int) -> list[str]:
+    cmd = [sys.executable, "-m", "ocio_thinfilm", "render", args.scene,
+           "--frames", f"{frame}-{frame}", "--size", "x".join(map(str, args.size)), "--out", str(args.out),
+           "--seed", str(args.seed), "--display", args.display, "--view", args.view]
+    if getattr(args, "config", None) is not None:
+        cmd += ["--config", str(args.config)]
+    return cmd + (["--quiet"] if args.quiet else [])
+
+
+def _render_frames_in_children(args, frames) -> int:
+    """One process per frame, ``--jobs`` at a time (what a render farm does)."""
+    pending = list(frames)
+    running: list[tuple[int, subprocess.Popen]] = []
+    failed = None
+    env = dict(os.environ)
+    while pending or running:
+        while pending and len(running) < args.jobs and failed is None:
+            frame = pending.pop(0)
+            running.append((frame, subprocess.Popen(
+                _child_command(args, frame), stdout=None if not args.quiet else
+                subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)))
+        frame, proc = running.pop(0)
+        try:
+            _, err = proc.communicate()
+        except BaseException:  # Ctrl-C / SIGTERM: stop every child, each cleans up
+            for _, other in [(frame, proc)] + running:
+                with contextlib.suppress(OSError):
+                    other.terminate()
+            for _, other in [(frame, proc)] + running:
+                with contextlib.suppress(Exception):
+                    other.wait(timeout=30)
+            raise
+        if proc.returncode != 0 and failed is None:
+            lines = [line for line in (err or "").strip().splitlines() if line.strip()]
+            last = lines[-1] if lines else f"exit code {proc.returncode}"
+            failed = f"frame {frame}: {last.split('error: ', 1)[-1]}"
+            pending.clear()
+    if failed:
+        raise UsageError(failed)
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "render",
+        help="render the paper's example scenes (Figures 4-7) through the LUTs",
+        description="Render the paper's example scenes through the generated tables and "
+                    "OCIO views: a scene-linear EXR (CIE XYZ in R,G,B plus AOV channels) "
+                    "and a display-encoded PNG per scene.")
+    p.add_argument("scene", choices=SCENE_CHOICES, metavar="SCENE",
+                   help="scene to render (spectrum = Fig. 4, oil = Fig. 5, soap = Fig. 6, "
+                        "morpho = Fig. 7) or all of them")
+    p.add_argument("--size", type=size_argument, default=render.DEFAULT_SIZE,
+                   help="W or WxH in pixels (default 512x512; sides 16-8192, at most 4096x4096 "
+                        "pixels)")
+    p.add_argument("--out", default="renders", help="output directory (default ./renders)")
+    p.add_argument("--seed", type=integer_argument(0, 2**31 - 1), default=0,
+                   help="noise seed, an integer >= 0 (default 0)")
+    p.add_argument("--display", default=render.DEFAULT_DISPLAY, choices=registry.DISPLAYS,
+                   help=f"display of the PNG: {', '.join(registry.DISPLAYS)} "
+                        f"(default {render.DEFAULT_DISPLAY})")
+    p.add_argument("--view", default=render.DEFAULT_VIEW, choices=registry.VIEWS,
+                   help=f"view of the PNG: {', '.join(registry.VIEWS)} (default "
+                        f"{render.DEFAULT_VIEW}); the spectrum scene shows the first three "
+                        "side by side")
+    p.add_argument("--config", default=None,
+                   help="OCIO config whose thin-film input spaces and display views the "
+                        "render applies (default: the package's configs/thinfilm/"
+                        "config.ocio, baked first when missing)")
+    p.add_argument("--frames", type=frames_argument, default=None,
+                   help="A-B: render frames A..B as NAME.####.exr/png with the scene's "
+                        "animation, one process per frame")
+    p.add_argument("--jobs", type=integer_argument(1, 64), default=1,
+                   help="frame processes to run at once with --frames (default 1)")
+    p.add_argument("--quiet", action="store_true", help="print nothing on success")
+    p.set_defaults(func=run)

@@ -1,0 +1,402 @@
+"""The constant-lightness clip (paper Section 3.2) baked into two 3D LUTs, as OCIO transforms.
+
+The clip moves a colour along its constant-Y ray towards the grey Y W until it is
+inside all six faces: t = min(t_black, t_white). It therefore factors exactly as
+clip = U o L, L clipping only against R, G, B >= 0 and U only against R, G, B <= 1,
+both along the same ray (paper, Section 3.2; :mod:`ocio_thinfilm.colour.clip`).
+
+Pass 1, L, is homogeneous of degree 1: over a projective chart of the
+chromaticities and Y it is exactly linear along Y, so dark colours keep their
+chromaticity however dark they are, and far-out saturated colours (Y a small
+difference of large RGB values) keep an exact Y axis. The primaries' triangle sits
+on grid and tetrahedral split planes. It outputs display-linear RGB of L(X), which
+has no negative channel any more.
+
+Pass 2, U, works on that RGB directly: every face, the white point and the planes
+R = G, G = B, R = B where the binding face changes are grid or split planes; below
+1 the grid nodes sit at sRGB-encoded values and the LUT stores sRGB code values, so
+the identity (every in-gamut colour) is reproduced exactly and the display encoding
+costs nothing (sRGB, Display P3) or one analytic op (Rec.2020). No gain follows a
+LUT, so the LUTs' rounding (16-bit files, half-float GPU textures) is never
+amplified. Design notes and measurements: docs/gamut_map.md.
+
+- :func:`clip_lut` / :class:`ClipLUT` -- the baked LUT data of one display and their
+  CLF-writable cores; :meth:`ClipLUT.transforms` -- the whole chain;
+- :func:`clip_black_faces_RGB` (L), :func:`clip_white_faces_RGB` (U) -- the two
+  factors, whose composition is :func:`ocio_thinfilm.colour.clip.clip_RGB`;
+- :func:`clip_transform` -- CIE-XYZ-D65 -> display-linear RGB, clipped.
+
+Accuracy against the analytic clip, speed and the rejected designs:
+``benchmarks/bench_gamut_map.py``, ``benchmarks/bench_luts.py`` and docs/gamut_map.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ocio_thinfilm import cache
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.display_transforms import (
+    check_display,
+    display_encoding_transform,
+)
+from ocio_thinfilm.lut.ocio_ops import (
+    apply,
+    group,
+    lut1d_transform,
+    lut3d_transform,
+    transform_id,
+)
+from ocio_thinfilm.lut.tables import check_size
+
+__all__ = [
+    "CLIP_SIZE",
+    "WORKING_ENCODING",
+    "ClipLUT",
+    "clip_lut",
+    "clip_transform",
+    "clip_black_faces_RGB",
+    "clip_white_faces_RGB",
+    "xyz_limit_transform",
+    "xyY_forward_transform",
+    "y_shaper_transform",
+    "working_decoding_transform",
+]
+
+#: Default edge length of both clip LUTs.
+CLIP_SIZE = 65
+#: The black pass's chart covers these colours (with a uniform grid): the spectral
+#: locus 360-780 nm, the ACES AP0 gamut with Y >= 0 and the Z axis (anything else is
+#: clamped to the grid's edge and still lands in gamut with its Y).
+CHART_COVERS = "spectral locus 360-780 nm, ACES AP0 (Y >= 0) and pure Z"
+#: Largest ratio of u_b = Y / S across the primaries' triangle (the chart's bend).
+CHART_BEND = 6.0
+#: The black pass's Y nodes are Y_top (k / (size - 1)) ** Y_POWER: uniform in
+#: Y^(1/3) ~ L*, with node size - 2 at Y = 1 (see :func:`_y_top`).
+Y_POWER = 3.0
+#: Share of each axis of the white pass spent on [0, 1] (grid nodes at encoded
+#: values 1 - (1 - k/n)^WHITE_POWER: denser towards white), the rest growing
+#: geometrically from WHITE_FIRST_STEP above 1 up to the brightest black-clipped
+#: channel, 1 / min(luminance weight).
+WHITE_INSIDE = 32 / 64
+WHITE_POWER = 2.0
+WHITE_FIRST_STEP = 0.002
+#: Entries of the Lut1D shapers in front of each Lut3D.
+SHAPER_LENGTH = 32768
+#: The white pass works in (and its LUT outputs) the sRGB piecewise encoding: its
+#: linear toe keeps the grid and the shaper accurate near black. Displays with
+#: another encoding (Rec.2020: BT.1886, a pure power with infinite slope at black)
+#: decode it with OCIO's analytic op and encode their own (for sRGB and Display P3
+#: the pair cancels in OCIO's optimiser).
+WORKING_ENCODING = "sRGB"
+#: 16-bit LUT files: values are stored as codes of this maximum.
+LUT_CODE_MAX = 65535
+
+
+def xyz_limit_transform():
+    """Clamp XYZ to [0, :data:`~ocio_thinfilm.lut.ocio_ops.LIMIT`] per component before the chart.
+
+    No physical colour has a negative X, Y or Z (the CIE 1931 matching functions are
+    non-negative), so this changes only non-physical inputs; it keeps the chart's
+    normaliser positive and makes +-Inf finite (Y <= 0 gives black, as in the
+    analytic clip).
+    """
+    return ocio_ops.range_(0.0, ocio_ops.LIMIT)
+
+
+def xyY_forward_transform():
+    ocio = ocio_ops.module()
+    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
+
+
+def _luminance(display):
+    """Row w with Y = w . RGB (display-linear, RGB = 1 is Y = 1)."""
+    return np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display))[1]
+
+
+def clip_black_faces_RGB(RGB, display):
+    """L: the clip against the faces R, G, B >= 0 only (float64, (N, 3) display RGB).
+
+    ``Y <= 0`` gives black; otherwise the colour moves towards the grey of its Y until
+    its smallest channel is 0 (unchanged when no channel is negative).
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    with np.errstate(all="ignore"):  # non-finite inputs give non-finite rows, no warning
+        Y = rgb @ _luminance(display)
+        lo = rgb.min(axis=-1)
+        t = np.where(lo < 0.0, Y / (Y - lo), 1.0)
+        out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
+    out[Y <= 0.0] = 0.0
+    return out
+
+
+def clip_white_faces_RGB(RGB, display):
+    """U = C o L o C with C(c) = 1 - c: the clip against R, G, B <= 1 only."""
+    return 1.0 - clip_black_faces_RGB(1.0 - np.asarray(RGB, dtype=np.float64), display)
+
+
+def _grow(first, length, cells):
+    """``cells`` steps growing geometrically from ``first`` and summing to ``length``."""
+    if cells <= 0:
+        return np.zeros(0)
+    if first * cells >= length:
+        return np.full(cells, length / cells)
+    lo, hi = 1.0, 64.0
+    for _ in range(200):
+        q = 0.5 * (lo + hi)
+        total = first * (q ** cells - 1.0) / (q - 1.0)
+        lo, hi = (q, hi) if total < length else (lo, q)
+    steps = first * q ** np.arange(cells)
+    return steps * (length / steps.sum())
+
+
+def _chart_cover():
+    """XYZ (any scale) whose chart the black pass's grid must contain: the spectral
+    locus, the corners of ACES AP0 cut at Y = 0 (AP0's blue primary has Y < 0) and
+    the Z axis. (The X axis cannot be added in this chart family: imaginary colours
+    redder than AP0 are clamped to the chart's edge -- in gamut, Y kept, hue
+    approximate.)"""
+    locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
+    ap0 = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T  # rows: primaries
+    cut = [ap0[a] + ap0[a, 1] / (ap0[a, 1] - ap0[2, 1]) * (ap0[2] - ap0[a]) for a in (0, 1)]
+    points = np.concatenate([locus, ap0[:2], np.array(cut), [[0.0, 0.0, 1.0]]])
+    return points / np.abs(points).sum(axis=1, keepdims=True)
+
+
+@cache.memoize(maxsize=16)
+def _black_plan(display, size):
+    """The black pass's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives the
+    Lut3D's coordinates (u_a, u_b) directly, uniform in a chromaticity chart where
+    the display's triangle is canonical -- edges c_i = 0 on u_a = const, c_j = 0 on
+    u_b = const, c_k = 0 on a diagonal u_a - u_b = const, all through nodes -- and
+    Y unchanged (third output).
+
+    With S = lam Y + mu c_j (the normaliser) and u_b = Y / S, u_b is affine in c_j / S;
+    u_a = s lam w_i c_i / S + beta. Of the channel assignments and node positions
+    that keep S > 0 and the chart of :func:`_chart_cover` inside [0, 1]^2, the one
+    with the most cells across the triangle is taken. Returns (P, cells across).
+    """
+    cells = size - 1
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    w = _luminance(display)
+    cover = _chart_cover()
+    best = None
+    for j in range(3):
+        for i in range(3):
+            if i == j:
+                continue
+            for n1 in range(cells, 1, -1):
+                for n0 in range(1, n1):
+                    # u_b = Y / S runs from n0 to n1 across the triangle: the chart
+                    # inside the gamut bends like 1 / u_b, so keep n1 / n0 moderate
+                    if n1 > CHART_BEND * n0:
+                        continue
+                    if best is not None and n1 - n0 <= best[0]:
+                        continue
+                    lam = cells / n1  # u_b = 1/lam = n1/cells where c_j = 0's opposite edge
+                    mu = w[j] * cells / n0 - lam * w[j]  # u_b = n0/cells on c_j = 0
+                    S_row = lam * np.array([0.0, 1.0, 0.0]) + mu * M[j]
+                    S = cover @ S_row
+                    if np.any(S <= 1e-9):
+                        continue
+                    u_b = cover[:, 1] / S
+                    if u_b.max() > 1.0 or u_b.min() < 0.0:
+                        continue
+                    s = np.sign((lam * w[j] + mu) * lam / mu) * (n1 - n0) / cells
+                    u_a = s * lam * w[i] * (cover @ M[i]) / S
+                    beta = np.ceil(-u_a.min() * cells - 1e-9) / cells
+                    if u_a.max() + beta > 1.0 + 1e-12:
+                        continue
+                    P = np.array([s * lam * w[i] * M[i] + beta * S_row,
+                                  [0.0, 1.0, 0.0],
+                                  S_row])
+                    P[2] -= P[0] + P[1]
+                    best = (n1 - n0, P)
+    if best is None:
+        raise ValueError(f"clip LUT size {size} is too small to chart {CHART_COVERS}")
+    return best[1], best[0]
+
+
+def _shaper_values(nodes, lo, hi, along=None):
+    """Lut1D entries over [lo, hi] (SHAPER_LENGTH samples): the grid coordinate
+    k / (size - 1) of the value, piecewise linear between the ``nodes`` (in the
+    variable ``along(value)`` when given: e.g. the display encoding)."""
+    x = np.linspace(lo, hi, SHAPER_LENGTH)
+    grid = np.linspace(0.0, 1.0, len(nodes))
+    if along is not None:
+        x, nodes = along(x), along(nodes)
+    return np.interp(x, nodes, grid)
+
+
+def _encode(values, display):
+    """Display encoding (the OCIO op the config uses), float64 out."""
+    a = np.asarray(values, dtype=np.float64)
+    flat = np.repeat(a.reshape(-1, 1), 3, axis=1)
+    return apply(display_encoding_transform(display), flat)[:, 0].astype(np.float64).reshape(a.shape)
+
+
+def _white_nodes(size, display):
+    """Node values of every axis of the white pass (display-linear; grid nodes below 1
+    at working-encoding code values 1 - (1 - k/n)^WHITE_POWER)."""
+    cells = size - 1
+    inside = max(2, int(round(cells * WHITE_INSIDE)))
+    # the brightest black-clipped channel is 1 / (smallest luminance weight); a power
+    # of two above it, so that white (1 / top) is exact in half floats
+    top = 2.0 ** np.ceil(np.log2(1.0 / _luminance(display).min()))
+    code = 1.0 - (1.0 - np.linspace(0.0, 1.0, inside + 1)) ** WHITE_POWER
+    below = apply(ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
+                  np.repeat(code[:, None], 3, axis=1))[:, 0].astype(np.float64)
+    below[0], below[-1] = 0.0, 1.0
+    above = 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0, cells - inside))
+    return np.concatenate([below, above]), top
+
+
+def y_shaper_transform():
+    """The black pass's third axis: Y^(1/3) (uniform in lightness), chromaticity axes
+    unchanged -- an analytic op, exact in float on every GPU (a Lut1D shaper here
+    would be stored in half floats by some hosts, placing colours only to 1/30 of a
+    cell)."""
+    ocio = ocio_ops.module()
+    t = ocio.ExponentTransform([1.0, 1.0, Y_POWER, 1.0])
+    t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
+    t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return t
+
+
+def _y_top(size):
+    """Y of the black pass's last layer: the layer below it is Y = 1 exactly, the last
+    holds white, so every colour brighter than the display white by 5 % or more is
+    white exactly (Section 3.2: Y >= Y_W gives white)."""
+    return ((size - 1) / (size - 2)) ** Y_POWER
+
+
+@dataclass(frozen=True, eq=False)
+class ClipLUT:
+    """The baked constant-lightness clip for one display (see :func:`clip_lut`).
+
+    ``black``: (size, size, size, 3) display-linear RGB of L(X) / ``top``, over the
+    chart (u_a, u_b, Y^(1/3)) of :func:`_black_plan` (``chart``: its 3x3 matrix),
+    rounded to half floats. ``white``: the same shape, display code values of U(c)
+    over display RGB (:func:`_white_nodes`), rounded to 16 bits; ``white_shaper``:
+    (SHAPER_LENGTH, 3) Lut1D entries (grid coordinates) in front of it;
+    """
+
+    display: str
+    size: int
+    black: np.ndarray
+    white: np.ndarray
+    white_shaper: np.ndarray
+    chart: np.ndarray
+    top: float
+
+    @property
+    def name(self) -> str:
+        return f"Constant-Lightness Clip {self.display}"
+
+    def black_core(self):
+        """CLF-writable black pass: the Lut3D; chart in, display-linear RGB / top out."""
+        name = f"{self.name} Black Faces"
+        return group([lut3d_transform(self.black, bitdepth="half")],
+                     name=name, id=transform_id("Gamut_Map", name),
+                     description=(f"Smits & Meyer 1990 constant-lightness clip into "
+                                  f"{self.display} (Section 3.2), the part against the "
+                                  "gamut faces through black (R, G, B >= 0): a "
+                                  f"{self.size}^3 tetrahedral Lut3D over a projective "
+                                  "chart of the chromaticity (the primaries' triangle on "
+                                  "grid and split planes) and Y^(1/3), exactly linear "
+                                  "along Y. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
+                     input_descriptor=("(u_a, u_b, Y^(1/3)): XYZ_TO_xyY of a matrix of "
+                                       "CIE-XYZ-D65, then the cube root of Y"),
+                     output_descriptor=(f"{self.display} display-linear RGB of the "
+                                        f"black-faces clip, divided by {self.top:g}"))
+
+    def white_core(self):
+        """CLF-writable white pass: per-channel shaper and Lut3D; display-linear RGB /
+        top in (no negative channel), display code values out."""
+        name = f"{self.name} White Faces"
+        ops = [lut1d_transform(self.white_shaper, bitdepth="uint16"),
+               lut3d_transform(self.white, bitdepth="uint16")]
+        return group(ops, name=name, id=transform_id("Gamut_Map", name),
+                     description=(f"Smits & Meyer 1990 constant-lightness clip into "
+                                  f"{self.display} (Section 3.2), the part against the "
+                                  "gamut faces through white (R, G, B <= 1), followed "
+                                  f"by the sRGB encoding: a {self.size}^3 tetrahedral "
+                                  "Lut3D over display RGB whose nodes below 1 sit at "
+                                  "sRGB-encoded values, so in-gamut colours are "
+                                  "reproduced exactly. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
+                     input_descriptor=f"{self.display} display-linear RGB divided by "
+                                      f"{self.top:g}, no negative channel",
+                     output_descriptor=f"{self.display} display RGB, clipped, sRGB-encoded "
+                                       "(IEC 61966-2-1 piecewise curve)")
+
+    def transforms(self, black=None, white=None):
+        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
+        [0, 1], sRGB-encoded (:data:`WORKING_ENCODING`); ``black`` / ``white`` replace
+        the CLF-writable cores (e.g. by FileTransforms in the config)."""
+        return [xyz_limit_transform(), ocio_ops.matrix(self.chart / _y_top(self.size)),
+                xyY_forward_transform(),
+                y_shaper_transform(),
+                self.black_core() if black is None else black,
+                self.white_core() if white is None else white]
+
+
+@cache.memoize(maxsize=16)
+def _clip_lut(display, size):
+    P, _ = _black_plan(display, size)
+    top_nodes, top = _white_nodes(size, display)
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    # black pass: the chart's nodes -> XYZ -> L(X) in display RGB, / top, half floats
+    g = np.linspace(0.0, 1.0, size)
+    U = np.stack(np.meshgrid(g, g, _y_top(size) * g ** Y_POWER, indexing="ij"),
+                 axis=-1).reshape(-1, 3)
+    u_b = np.maximum(U[:, 1], 1e-9)  # u_b = Y / S -> 0: the limit of ever larger chroma
+    S = U[:, 2] / u_b
+    p = np.c_[U[:, 0] * S, U[:, 2], S - U[:, 0] * S - U[:, 2]]
+    XYZ = p @ np.linalg.inv(P).T
+    with np.errstate(all="ignore"):
+        black = clip_black_faces_RGB(XYZ @ M.T, display)
+    black = np.where(np.isfinite(black), black, 0.0)
+    black[np.arange(len(U)) % size == size - 1] = 1.0  # the layer above white: white
+    black = (np.clip(black, 0.0, top) / top).astype(np.float16).astype(np.float64)
+    # white pass: RGB nodes -> U(c), clipped, sRGB-encoded, 16-bit
+    Uw = np.stack(np.meshgrid(top_nodes, top_nodes, top_nodes, indexing="ij"),
+                  axis=-1).reshape(-1, 3)
+    white = np.clip(clip_white_faces_RGB(Uw, display), 0.0, 1.0)
+    white = np.round(_encode(white, WORKING_ENCODING).clip(0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
+    w = _shaper_values(top_nodes, 0.0, top, along=lambda v: _encode(v, WORKING_ENCODING))
+    q16 = lambda v: np.round(np.clip(v, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX  # noqa: E731
+    lut = ClipLUT(display=display, size=size,
+                  black=black.reshape(size, size, size, 3),
+                  white=white.reshape(size, size, size, 3),
+                  white_shaper=q16(np.repeat(w[:, None], 3, axis=1)),
+                  chart=P, top=float(top))
+    for array in (lut.black, lut.white, lut.white_shaper, lut.chart):
+        array.setflags(write=False)
+    return lut
+
+
+def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
+    """The baked clip LUTs for ``display`` (cached): both passes, from
+    :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
+    is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly."""
+    check_display(display)
+    return _clip_lut(display, check_size(size, 9, 129, "clip LUT size"))
+
+
+def working_decoding_transform():
+    """sRGB code values (the white pass's output) -> display-linear RGB."""
+    return ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)])
+
+
+def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
+    """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
+    clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
+    white-faces pass, which ends in display code values), then the display's EOTF."""
+    lut = clip_lut(display, size)
+    # the clamp only removes float32 round-off of the EOTF (1.0 -> 1.00002 through
+    # OCIO's fast pow): the code values are in [0, 1] already
+    return group(lut.transforms() + [working_decoding_transform(), ocio_ops.range_(0.0, 1.0)],
+                 name=lut.name, id=transform_id("Gamut_Map", lut.name))

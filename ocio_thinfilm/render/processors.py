@@ -1,0 +1,171 @@
+"""A render's OCIO processors, created from one config file on first use.
+
+A render goes through an OCIO config -- by default the package's baked
+``configs/thinfilm/config.ocio`` (:data:`DEFAULT_CONFIG`, baked first when missing) --
+so it is an end-to-end test of what users load:
+
+- a scene's table (:class:`ocio_thinfilm.render.scenes.TableSpec`) is the config's
+  thin-film input colour space, pixel encoding -> CIE-XYZ-D65
+  (``config.getProcessor("Thin Film Morpho Iridescence", "CIE-XYZ-D65")``);
+- a display view is ``config.getProcessor("CIE-XYZ-D65", display, view, ...)``:
+  CIE-XYZ-D65 -> display code values.
+
+Only the colour spaces and views a scene uses become processors
+(:attr:`ConfigProcessors.created` lists them); nothing is computed from the spectra at
+render time.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ocio_thinfilm import registry
+from ocio_thinfilm.io import UsageError
+from ocio_thinfilm.lut import tables
+
+__all__ = ["DEFAULT_CONFIG", "REFERENCE_SPACE", "table_colorspace", "load_config",
+           "ConfigProcessors", "make_lookup", "display_image", "build_table"]
+
+# --------------------------------------------------------------------------- #
+#: The config a render goes through by default: the package's baked config (baked
+#: with ``ocio-thinfilm bake`` first when it is missing).
+DEFAULT_CONFIG = Path(__file__).resolve().parents[2] / "configs" / "thinfilm" / "config.ocio"
+#: The config's reference, the EXR's colour space: tables go to it, views start at it.
+REFERENCE_SPACE = "CIE-XYZ-D65"
+
+
+def table_colorspace(spec) -> str:
+    """The config's input colour space (pixel value -> CIE-XYZ-D65) of a scene's
+    :class:`~.scenes.TableSpec`: the table the config ships for its kind."""
+    lo, hi = spec.range
+    if spec.kind == "morpho":
+        if (lo, hi) != (0.0, 1.0) or spec.entries != tables.MORPHO_SIZE:
+            raise ValueError(f"the config's Morpho table covers cos(theta) in [0, 1] with "
+                             f"{tables.MORPHO_SIZE} entries, got {spec}")
+    elif (lo, hi) != (0.0, tables.FILM_TMAX_UM) or spec.entries != tables.FILM_SIZE:
+        raise ValueError(f"the config's thickness tables cover t' in [0, {tables.FILM_TMAX_UM:g}] "
+                         f"um with {tables.FILM_SIZE} entries, got {spec}")
+    return registry.thin_film_space_for_kind(spec.kind).name
+
+
+def load_config(path=None):
+    """``PyOpenColorIO.Config`` of ``path`` (default :data:`DEFAULT_CONFIG`, baked with
+    :func:`ocio_thinfilm.export.bake.bake` first when missing)."""
+    import PyOpenColorIO as ocio
+
+    if path is None:
+        path = DEFAULT_CONFIG
+        if not path.is_file():
+            from ocio_thinfilm.export import bake
+
+            bake.bake(path.parent)
+    path = Path(path)
+    if not path.is_file():
+        raise UsageError(f"--config {path}: no such config file")
+    try:
+        return ocio.Config.CreateFromFile(str(path))
+    except Exception as error:  # OCIO's parse errors
+        raise UsageError(f"--config {path}: {str(error).splitlines()[0]}") from None
+
+
+class ConfigProcessors:
+    """The OCIO CPU processors a render needs, created from one config on first use
+    (and listed in :attr:`created`): ``table(spec)`` for a scene's table (its
+    thin-film colour space -> CIE-XYZ-D65), ``view(display, view)`` for a view
+    (CIE-XYZ-D65 -> display code values)."""
+
+    def __init__(self, config=None):
+        self.config = config if config is not None and not isinstance(config, (str, Path)) \
+            else load_config(config)
+        self._cpu = {}
+        #: The processors created so far, in order: ``"colorspace:<name>"`` and
+        #: ``"view:<display>/<view>"`` (a scene builds only what it shows).
+        self.created: list[str] = []
+
+    def _processor(self, key, make):
+        if key not in self._cpu:
+            try:
+                self._cpu[key] = make().getDefaultCPUProcessor()
+            except Exception as error:  # a missing space / view / LUT file
+                raise UsageError(f"config: cannot build {key}: "
+                                 f"{str(error).splitlines()[0]}") from None
+            self.created.append(key)
+        return self._cpu[key]
+
+    def table(self, spec):
+        space = table_colorspace(spec)
+        return self._processor(f"colorspace:{space}",
+                               lambda: self.config.getProcessor(space, REFERENCE_SPACE))
+
+    def view(self, display: str, view: str):
+        import PyOpenColorIO as ocio
+
+        return self._processor(
+            f"view:{display}/{view}",
+            lambda: self.config.getProcessor(REFERENCE_SPACE, display, view,
+                                             ocio.TRANSFORM_DIR_FORWARD))
+
+    def check_display_view(self, display: str, view: str) -> None:
+        """UsageError unless the config has ``display`` with ``view``."""
+        displays = list(self.config.getDisplays())
+        if display not in displays:
+            raise UsageError(f"--display {display!r}: the config has {', '.join(displays)}")
+        views = list(self.config.getViews(display))
+        if view not in views:
+            raise UsageError(f"--view {view!r}: the config's display {display} has "
+                             f"{', '.join(views)}")
+
+
+def _apply(cpu, pixels) -> np.ndarray:
+    out = np.array(pixels, dtype=np.float32, order="C", copy=True)
+    flat = out.reshape(-1, 3)
+    if flat.size:
+        cpu.applyRGB(flat)
+    return flat.reshape(out.shape)
+
+
+def build_table(spec):
+    """The tables-module table for a scene's :class:`~.scenes.TableSpec` (computed
+    here, not read from a config: for comparisons with what the config holds)."""
+    lo, hi = spec.range
+    if spec.kind == "morpho":
+        if (lo, hi) != (0.0, 1.0):
+            raise ValueError(f"the Morpho table covers cos(theta) in [0, 1], got {spec.range}")
+        return tables.morpho_table(spec.entries)
+    if lo != 0.0:
+        raise ValueError(f"thickness tables start at t' = 0, got {spec.range}")
+    return tables.film_table(spec.kind, spec.entries, max_thickness_um=hi)
+
+
+def _as_rgb(values: np.ndarray) -> np.ndarray:
+    """(H, W) encoded values -> (H, W, 3) float32 with all three channels equal."""
+    v = np.ascontiguousarray(values, dtype=np.float32)
+    return np.repeat(v[..., None], 3, axis=-1)
+
+
+def make_lookup(processors: ConfigProcessors | None = None):
+    """A scene ``lookup(spec, encoded)`` that applies the config's colour space of
+    each table (pixel encoding -> CIE-XYZ-D65) with OCIO's CPU processor, each built
+    once on first use."""
+    processors = processors if processors is not None else ConfigProcessors()
+
+    def lookup(spec, encoded):
+        return _apply(processors.table(spec), _as_rgb(encoded))
+
+    lookup.processors = processors
+    return lookup
+
+
+def display_image(picture, display: str, view: str,
+                  processors: ConfigProcessors | None = None) -> np.ndarray:
+    """The display-encoded RGB of a scene's picture (float32, (H, W, 3)), each column
+    region through its view (the config's display/view processors)."""
+    processors = processors if processors is not None else ConfigProcessors()
+    h, w, _ = picture.xyz.shape
+    out = np.zeros((h, w, 3), np.float32)
+    for x0, x1, region_view in picture.regions:
+        cpu = processors.view(display, region_view or view)
+        out[:, x0:x1] = _apply(cpu, np.ascontiguousarray(picture.xyz[:, x0:x1]))
+    return np.clip(out, 0.0, 1.0)
