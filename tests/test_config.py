@@ -12,9 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import registry
+from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.evaluation.colours import object_colours
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 

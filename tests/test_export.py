@@ -13,9 +13,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ocio_thinfilm import config
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.io import MARKER
 

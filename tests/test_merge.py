@@ -15,9 +15,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 
@@ -104,7 +104,7 @@ def test_merged_contents(merged):
     uri, path, cfg = merged
     base = ocio.Config.CreateFromFile(uri)
     spaces = set(cfg.getColorSpaceNames()) - set(base.getColorSpaceNames())
-    assert spaces == set(config.THIN_FILM_SPACES)
+    assert spaces == set(registry.THIN_FILM_SPACES)
     for display in base.getDisplays():
         added = [v for v in cfg.getViews(display) if v not in base.getViews(display)]
         if display in EXPECTED[uri]:
@@ -122,7 +122,7 @@ def test_merged_contents(merged):
     gamuts = set(EXPECTED[uri].values())
     nts = set(cfg.getNamedTransformNames()) - set(base.getNamedTransformNames())
     assert nts == ({f"Constant-Lightness Clip - {g} (display-linear)" for g in gamuts}
-                   | {f"{s} to CIE-XYZ-D65" for s in config.THIN_FILM_SPACES})
+                   | {f"{s} to CIE-XYZ-D65" for s in registry.THIN_FILM_SPACES})
     luts = {p.name for p in (path.parent / "luts").iterdir()}
     assert len(luts) == 3 + 2 * len(gamuts)
 
@@ -285,7 +285,7 @@ def test_ocioz_gives_the_folders_output(tmp_path):
     for name in a.getNamedTransformNames():
         assert (_apply(a.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
                 == _apply(b.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes())
-    for name in config.THIN_FILM_SPACES:
+    for name in registry.THIN_FILM_SPACES:
         assert (_apply(a.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
                 == _apply(b.getProcessor(name, "CIE-XYZ-D65"), px).tobytes())
 

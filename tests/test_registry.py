@@ -12,9 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from ocio_thinfilm import registry
+from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip
-from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.lut import display_transforms
 from ocio_thinfilm.render import frames as render
@@ -24,12 +23,17 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
-    assert registry.VIEWS == registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
-                                              "ACES Gamut Compression", "Raw")
+    assert registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
+                              "ACES Gamut Compression", "Raw")
     assert list(config.DISPLAY_SPACES) == list(registry.DISPLAYS)
     assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
     assert list(render.PNG_COLORSPACE) == list(registry.DISPLAYS)
-    assert list(config.THIN_FILM_SPACES) == list(registry.THIN_FILM_SPACES)
+    data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
+    assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == \
+        list(registry.THIN_FILM_SPACES)
+    assert list(data.displays) == list(registry.DISPLAYS)
+    assert all([v["name"] for v in views] == list(registry.VIEWS)
+               for views in data.displays.values())
 
 
 def test_the_baked_config_has_exactly_the_registrys_entries():
@@ -50,7 +54,7 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
 
 def test_file_stems_come_from_the_registry():
     assert registry.clip_lut_stem("Rec.2020", True) == "ConstantLightnessClip_Rec2020_WhiteFaces"
-    assert config._clip_stem("Display P3") == "ConstantLightnessClip_DisplayP3_BlackFaces"
+    assert registry.clip_lut_stem("Display P3") == "ConstantLightnessClip_DisplayP3_BlackFaces"
     assert export._stem("clip", None, "Display P3", None) == "ConstantLightnessClip_DisplayP3"
     assert registry.thin_film_space_for_kind("morpho").name == "Thin Film Morpho Iridescence"
     with pytest.raises(ValueError, match="display must be one of"):
@@ -94,7 +98,7 @@ def test_adding_a_display_is_one_entry(tmp_path):
              '"g24_rec709_display"),\n')
     (package / "registry.py").write_text(source.replace(anchor, anchor + entry))
     code = (
-        "import json; from ocio_thinfilm.config import generate as config\n"
+        "import json; from ocio_thinfilm import config\n"
         "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
         "from ocio_thinfilm.lut import display_transforms\n"
         "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"

@@ -45,8 +45,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.config import generate as config
 from ocio_thinfilm.io import UsageError, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
@@ -220,6 +220,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
                          f"{', '.join(clip.DISPLAYS)} (or Rec.709)")
     gamuts = [d for d in clip.DISPLAYS if d in {g for _, g in matches.values()}]
     data = config.config_data(clip_size=clip_size)
+    by_display = config.clip_luts(clip_size)
     cfg = copy.deepcopy(base)
 
     def _taken(name):
@@ -227,7 +228,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
                 or cfg.getNamedTransform(name) is not None)
 
     # input spaces: table -> CIE-XYZ-D65 -> the config's scene reference
-    spaces = [s for s in data.colorspaces if s["name"] in config.THIN_FILM_SPACES]
+    spaces = [s for s in data.colorspaces if s["name"] in registry.THIN_FILM_SPACES]
     for spec in spaces:
         if _taken(spec["name"]):
             raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
@@ -243,7 +244,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
             spec = described[f"{view} - {gamut}"]
             if _taken(spec["name"]):
                 raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
-            parts = config._view_parts(gamut, view, False, data.luts, clip_size)
+            parts = config.view_parts(gamut, view, lut=by_display[gamut], luts=data.luts)
             cfg.addViewTransform(config.view_transform_factory(
                 name=spec["name"], family=spec["family"], description=spec["description"],
                 from_reference=ocio_ops.group([scene_to_xyz, parts, xyz_to_display])))
@@ -261,7 +262,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     if active:
         cfg.setActiveViews(", ".join(active + [v for v in added_views if v not in active]))
     # named transforms: the clip per gamut and the tables
-    for spec in config.named_transforms(gamuts, clip_size=clip_size):
+    for spec in config.named_transforms({g: by_display[g] for g in gamuts}):
         if _taken(spec["name"]):
             raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
         cfg.addNamedTransform(config.named_transform_factory(**spec))
@@ -272,8 +273,9 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
                         else "") + "Extended by ocio-thinfilm (`ocio-thinfilm bake --into`): "
                         "thin-film input spaces, the constant-lightness clip views and "
                         "named transforms.")
-    names = [config.named_lut(s[2]) for s in config.THIN_FILM_SPACES.values()]
-    names += [config.named_lut(config._clip_stem(g, w)) for g in gamuts for w in (False, True)]
+    names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
+    names += [config.named_lut(registry.clip_lut_stem(g, w)) for g in gamuts
+              for w in (False, True)]
     return cfg, {name: data.luts[name] for name in names}, matches
 
 

@@ -12,8 +12,7 @@ import re
 import shutil
 from pathlib import Path
 
-from ocio_thinfilm import registry
-from ocio_thinfilm.config import generate as config
+from ocio_thinfilm import config, registry
 from ocio_thinfilm.export.files import FORMATS, export_set, progress_bar
 from ocio_thinfilm.io import UsageError, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut

@@ -150,7 +150,7 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
     name or None)."""
     import PyOpenColorIO as ocio
 
-    from ocio_thinfilm.config import generate as config_module
+    from ocio_thinfilm import config as config_module
 
     cfg = config_module.generate_config(config_module.config_data(inline=True), validate=False)
     if source not in LINEAR_SIBLING:
@@ -173,7 +173,7 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
 # Validation
 # --------------------------------------------------------------------------- #
 def _validate(source, display, view, size, fmt, value_range):
-    from ocio_thinfilm.config import generate as config_module
+    from ocio_thinfilm import config as config_module
 
     spaces = [cs["name"] for cs in config_module.config_data(inline=True).colorspaces]
     if source is None:

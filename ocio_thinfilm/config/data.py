@@ -1,0 +1,329 @@
+"""The drop-in OpenColorIO config as plain data (cf. OpenColorIO-Config-ACES ``ConfigData``).
+
+:func:`config_data` describes every colour space, view transform, display, role, file
+rule and named transform as dicts for the factories of
+:mod:`ocio_thinfilm.config.factories`, plus the LUTs the config needs (``luts``: CLF file
+name -> GroupTransform). Displays, views and thin-film spaces come from the one
+registry (:mod:`ocio_thinfilm.registry`); each display's clip LUT is computed once and
+handed to every part that uses it.
+
+Reference spaces: the scene reference and the display reference are both
+CIE-XYZ-D65 with the perfect reflector (and the display white) at Y = 1. Scene-linear
+is ``Linear Rec.709 (sRGB)`` (what Blender users expect): scene-linear 1.0 is the
+display white and every view maps it to code value 1.0 (no tone mapping).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ocio_thinfilm import registry
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.config.factories import file_transform
+from ocio_thinfilm.lut import (
+    clip_lut,
+    display_transforms,
+    ocio_ops,
+    tables,
+    view_transforms,
+)
+
+__all__ = [
+    "CONFIG_NAME",
+    "PROFILE_VERSION",
+    "LUT_DIRECTORY",
+    "REFERENCE",
+    "DISPLAY_SPACES",
+    "LINEAR_SPACES",
+    "ROLES",
+    "ConfigData",
+    "named_lut",
+    "clip_luts",
+    "lut_files",
+    "view_parts",
+    "config_data",
+    "CLIP_NAMED_TRANSFORM",
+    "TABLE_NAMED_TRANSFORM",
+    "clip_named_transform",
+    "named_transforms",
+]
+
+CONFIG_NAME = "ocio-thinfilm"
+PROFILE_VERSION = (2, 1)
+LUT_DIRECTORY = "luts"
+
+#: Display -> (display colour space name, description) (from :mod:`.registry`).
+DISPLAY_SPACES = {d.name: (d.colorspace, d.description) for d in registry.DISPLAY_LIST}
+
+#: Scene-linear RGB spaces: name -> (colorimetry space, description).
+LINEAR_SPACES = {
+    "ACES2065-1": ("ACES2065-1", "ACES2065-1: AP0 primaries, ACES white (Bradford from D65)"),
+    "ACEScg": ("ACEScg", "ACEScg: AP1 primaries, ACES white (Bradford from D65)"),
+    "Linear Rec.709 (sRGB)": ("Rec.709", "Scene-linear Rec.709 / sRGB primaries, D65"),
+    "Linear P3-D65": ("Display P3", "Scene-linear P3 primaries, D65"),
+    "Linear Rec.2020": ("Rec.2020", "Scene-linear Rec.2020 primaries, D65"),
+}
+
+#: The reference space of the scene and of the displays.
+REFERENCE = "CIE-XYZ-D65"
+
+#: Views that show the data unchanged (the config's Raw colour space).
+_RAW_VIEWS = tuple(v.name for v in registry.VIEW_LIST if v.raw)
+
+ROLES = {
+    "scene_linear": "Linear Rec.709 (sRGB)",
+    "rendering": "Linear Rec.709 (sRGB)",
+    "default": "Linear Rec.709 (sRGB)",
+    "data": "Raw",
+    "reference": "CIE-XYZ-D65",
+    "color_picking": "sRGB - Texture",
+    "texture_paint": "Linear Rec.709 (sRGB)",
+    "matte_paint": "sRGB - Texture",
+    "compositing_log": "ACEScct",
+    "color_timing": "ACEScct",
+    "aces_interchange": "ACES2065-1",
+    "cie_xyz_d65_interchange": "CIE-XYZ-D65",
+    "default_byte": "sRGB - Texture",
+    "default_float": "Linear Rec.709 (sRGB)",
+    "default_sequencer": "sRGB - Texture",
+}
+
+
+# --------------------------------------------------------------------------- #
+# Data
+# --------------------------------------------------------------------------- #
+@dataclass
+class ConfigData:
+    """The config as data (cf. OpenColorIO-Config-ACES ``ConfigData``)."""
+
+    name: str
+    description: str
+    roles: dict
+    colorspaces: list  # dicts for colorspace_factory
+    view_transforms: list  # dicts for view_transform_factory
+    displays: dict  # display -> list of view dicts
+    file_rules: list
+    luts: dict = field(default_factory=dict)  # file name -> GroupTransform
+    named_transforms: list = field(default_factory=list)  # dicts for named_transform_factory
+    profile_version: tuple = PROFILE_VERSION
+
+
+def named_lut(stem: str) -> str:
+    return f"{stem}.clf"
+
+
+def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
+    """Display -> its :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` of edge ``clip_size``,
+    for every display of the registry (each computed once, then cached)."""
+    return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
+
+
+def lut_files(luts_by_display: dict, film_size: int = tables.FILM_SIZE,
+              morpho_size: int = tables.MORPHO_SIZE) -> dict:
+    """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses:
+    the thin-film tables and, per display, the two passes of its clip LUT
+    (``luts_by_display``: :func:`clip_luts`)."""
+    files = {}
+    for space in registry.THIN_FILM_LIST:
+        table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
+        files[named_lut(space.lut_stem)] = table.transform()
+    for display, lut in luts_by_display.items():
+        files[named_lut(registry.clip_lut_stem(display))] = lut.black_core()
+        files[named_lut(registry.clip_lut_stem(display, True))] = lut.white_core()
+    return files
+
+
+def _lut_reference(name, luts, inline):
+    """The LUT file ``name``: its transform (``inline``) or a FileTransform to it."""
+    return luts[name] if inline else file_transform(name)
+
+
+def _clip_passes(lut, luts, inline):
+    """The clip chain of ``lut`` with its two passes as in the config: CIE-XYZ-D65 ->
+    sRGB code values of the clipped display RGB."""
+    cores = [_lut_reference(named_lut(registry.clip_lut_stem(lut.display, white)), luts, inline)
+             for white in (False, True)]
+    return lut.transforms(*cores)
+
+
+def _matrix_to_reference(space):
+    """Linear RGB of ``space`` -> CIE-XYZ-D65, after limiting the components to
+    +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes above ~7.9)
+    would overflow the matrix to Inf - Inf = NaN, which no later op can repair at
+    OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6."""
+    M = colorimetry.matrix_XYZ_to_RGB(space)
+    return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
+
+
+def view_parts(display, view, *, lut=None, luts=None, inline=False):
+    """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
+    the display's ClipLUT (for the Constant-Lightness Clip), ``luts``: the LUT files."""
+    if view == "Constant-Lightness Clip":
+        # the second LUT ends in sRGB code values: back to display-linear here, the
+        # display colour space encodes again (OCIO's optimiser removes the pair for
+        # the sRGB-encoded displays)
+        linear = _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
+    else:
+        linear = [view_transforms.view_linear_transform(display, view)]
+    return ocio_ops.group(linear + [display_transforms.display_matrix_transform(display,
+                                                                                inverse=True)])
+
+
+def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
+                film_size: int = tables.FILM_SIZE,
+                morpho_size: int = tables.MORPHO_SIZE) -> ConfigData:
+    """The config as data. ``inline=True`` puts the LUTs into the transforms
+    (an in-memory config needing no files, for baking and tests); otherwise colour
+    spaces refer to ``luts/*.clf`` by FileTransform."""
+    by_display = clip_luts(clip_size)
+    luts = lut_files(by_display, film_size, morpho_size)
+    ref = REFERENCE
+    cs = []
+    cs.append(dict(name=ref, family="Utility", encoding="scene-linear",
+                   categories=["file-io", "working-space"],
+                   aliases=["cie_xyz_d65"],
+                   description="CIE XYZ, D65-relative: the perfect reflector under D65 has "
+                               "Y = 1 (CIE 1931 2 degree observer). The reference space."))
+    for name, (space, description) in LINEAR_SPACES.items():
+        cs.append(dict(name=name, family="Scene-Linear", encoding="scene-linear",
+                       categories=["file-io", "working-space"],
+                       description=description, to_reference=_matrix_to_reference(space)))
+    acescct = _acescct_to_reference()
+    cs.append(dict(name="ACEScct", family="ACES", encoding="log",
+                   categories=["file-io", "working-space"],
+                   description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
+                   to_reference=acescct))
+    cs.append(dict(name="sRGB - Texture", family="Texture", encoding="sdr-video",
+                   categories=["file-io", "texture"],
+                   aliases=["srgb_tx"],
+                   description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour "
+                               "picking)",
+                   to_reference=ocio_ops.group([
+                       ocio_ops.inverse([display_transforms.display_encoding_transform("sRGB")]),
+                       _matrix_to_reference("Rec.709")])))
+    cs.append(dict(name="Raw", family="Utility", encoding="data", is_data=True,
+                   categories=["file-io"], aliases=["Utility - Raw"],
+                   description="Non-colour data: passed through unchanged"))
+    for space in registry.THIN_FILM_LIST:
+        table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
+        if space.table == "film":
+            encoding = ("Pixel value (all three channels equal) = optical thickness t' = "
+                        "n t cos(theta_t) in micrometres; beyond 100 um the incoherent grey, "
+                        "negative values black.")
+        else:
+            encoding = ("Pixel value (all three channels equal) = cos(theta), the facing "
+                        "ratio N.V of the viewing direction; clamped to [0, 1] (0 = grazing, "
+                        "1 = normal incidence).")
+        cs.append(dict(name=space.name, family="Thin Film", encoding="scene-linear",
+                       categories=["file-io"],
+                       description=f"{table.description} {encoding}",
+                       to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline)))
+    for display, (name, description) in DISPLAY_SPACES.items():
+        cs.append(dict(name=name, family="Display", encoding="sdr-video",
+                       categories=["file-io"], reference_space="display",
+                       description=description,
+                       from_reference=ocio_ops.group([
+                           display_transforms.display_matrix_transform(display),
+                           display_transforms.display_encoding_transform(display)])))
+
+    # The default view transform links the two reference spaces when a conversion
+    # crosses them without a view (e.g. display space -> scene space): an identity,
+    # as "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless).
+    view_transforms = [dict(name="Un-tone-mapped", family="Utility",
+                            description="Identity between the scene and display reference "
+                                        "spaces (both CIE-XYZ-D65): no tone mapping, no "
+                                        "gamut mapping. Used for conversions between scene "
+                                        "and display colour spaces.",
+                            from_reference=ocio_ops.group([ocio_ops.matrix()]))]
+    displays = {}
+    descriptions = {v.name: v.description for v in registry.VIEW_LIST}
+    for display, (display_space, _) in DISPLAY_SPACES.items():
+        views = []
+        for view in registry.VIEWS:
+            if view in _RAW_VIEWS:
+                views.append(dict(name=view, colorspace="Raw"))
+                continue
+            vt = f"{view} - {display}"
+            view_transforms.append(dict(name=vt, family="Thin Film",
+                                        description=f"{descriptions[view]} Display: {display}.",
+                                        from_reference=view_parts(
+                                            display, view, lut=by_display[display], luts=luts,
+                                            inline=inline)))
+            views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
+        displays[display] = views
+
+    file_rules = [
+        dict(name="OpenEXR", colorspace=ROLES["scene_linear"], pattern="*",
+             extension="[eE][xX][rR]"),
+        dict(name="PNG", colorspace="sRGB - Texture", pattern="*", extension="[pP][nN][gG]"),
+        dict(name="JPEG", colorspace="sRGB - Texture", pattern="*",
+             extension="[jJ][pP][gG]"),
+        dict(name="Default", colorspace=ROLES["default"]),
+    ]
+    return ConfigData(
+        name=CONFIG_NAME,
+        description=("Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
+                     "Colors\") with the paper's constant-lightness gamut clip. Reference: "
+                     "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
+                     "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."),
+        roles=dict(ROLES), colorspaces=cs, view_transforms=view_transforms,
+        displays=displays, file_rules=file_rules, luts=luts,
+        named_transforms=named_transforms(by_display, inline=inline, luts=luts))
+
+
+#: Named transform of the clip alone, per display (display-linear RGB in and out).
+CLIP_NAMED_TRANSFORM = "Constant-Lightness Clip - {display} (display-linear)"
+#: Named transform of a thin-film table (pixel value in, CIE XYZ out).
+TABLE_NAMED_TRANSFORM = "{space} to CIE-XYZ-D65"
+
+
+def clip_named_transform(lut, *, inline=False, luts=None):
+    """The constant-lightness clip of ``display`` on its own: display-linear RGB in,
+    display-linear RGB in [0, 1] out (XYZ -> the two LUT passes -> decoded), for
+    hosts that apply a named transform as a node (Nuke OCIONamedTransform, Houdini)."""
+    return ocio_ops.group(
+        [display_transforms.display_matrix_transform(lut.display, inverse=True)]
+        + _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()])
+
+
+def named_transforms(luts_by_display: dict, *, inline=False, luts=None) -> list:
+    """Named transforms (OCIO >= 2.0) as data: the clip per display of ``luts_by_display``
+    (display -> ClipLUT)
+    and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
+    config's reference space: merged configs add the same ones)."""
+    out = []
+    for display, lut in luts_by_display.items():
+        out.append(dict(
+            name=CLIP_NAMED_TRANSFORM.format(display=display), family="Thin Film",
+            categories=["gamut-mapping"], encoding="display-linear",
+            description=(f"Smits & Meyer 1990 constant-lightness clip into {display} on "
+                         f"its own: {display} display-linear RGB in (any values), "
+                         "display-linear RGB in [0, 1] out, luminance kept. Apply it as "
+                         "a node, then encode for the display."),
+            transform=clip_named_transform(lut, inline=inline, luts=luts)))
+    for space in registry.THIN_FILM_LIST:
+        table = named_lut(space.lut_stem)
+        out.append(dict(
+            name=TABLE_NAMED_TRANSFORM.format(space=space.name), family="Thin Film",
+            categories=["thin-film"], encoding="scene-linear",
+            description=(f"The {space.name} table on its own: pixel value in (all channels "
+                         "equal, as for the colour space of that name), unclipped CIE XYZ "
+                         "(D65, perfect reflector Y = 1) out."),
+            transform=_lut_reference(table, luts, inline)))
+    return out
+
+
+def _acescct_to_reference():
+    """ACEScct -> CIE-XYZ-D65: inverse ACEScct curve (LogCameraTransform), AP1 -> XYZ."""
+    import PyOpenColorIO as ocio
+
+    curve = ocio.LogCameraTransform([0.0078125] * 3)
+    curve.setBase(2.0)
+    curve.setLogSideSlopeValue([1.0 / 17.52] * 3)
+    curve.setLogSideOffsetValue([9.72 / 17.52] * 3)
+    curve.setLinSideSlopeValue([1.0] * 3)
+    curve.setLinSideOffsetValue([0.0] * 3)
+    curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    return ocio_ops.group([curve, _matrix_to_reference("ACEScg")])

@@ -1,0 +1,74 @@
+"""Small factories: one OCIO object from one dict of :func:`ocio_thinfilm.config.data.config_data`
+(as OpenColorIO-Config-ACES builds its configs)."""
+
+from __future__ import annotations
+
+__all__ = ["colorspace_factory", "view_transform_factory", "named_transform_factory",
+           "file_transform"]
+
+
+def file_transform(filename):
+    """A ``FileTransform`` to ``filename`` (found on the config's search path)."""
+    import PyOpenColorIO as ocio
+
+    t = ocio.FileTransform(filename)
+    t.setInterpolation(ocio.INTERP_DEFAULT)
+    return t
+
+
+def colorspace_factory(name, family="", encoding="", categories=(), description="",
+                       to_reference=None, from_reference=None, is_data=False, aliases=(),
+                       reference_space="scene"):
+    """One ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES)."""
+    import PyOpenColorIO as ocio
+
+    kind = (ocio.REFERENCE_SPACE_DISPLAY if reference_space == "display"
+            else ocio.REFERENCE_SPACE_SCENE)
+    cs = ocio.ColorSpace(kind)
+    cs.setName(name)
+    cs.setFamily(family)
+    cs.setEncoding(encoding)
+    cs.setDescription(description)
+    cs.setIsData(bool(is_data))
+    cs.setBitDepth(ocio.BIT_DEPTH_F32)
+    for category in categories:
+        cs.addCategory(category)
+    for alias in aliases:
+        cs.addAlias(alias)
+    if to_reference is not None:
+        cs.setTransform(to_reference, ocio.COLORSPACE_DIR_TO_REFERENCE)
+    if from_reference is not None:
+        cs.setTransform(from_reference, ocio.COLORSPACE_DIR_FROM_REFERENCE)
+    return cs
+
+
+def view_transform_factory(name, family="", description="", from_reference=None,
+                           reference_space="scene"):
+    """One ``PyOpenColorIO.ViewTransform`` from data."""
+    import PyOpenColorIO as ocio
+
+    kind = (ocio.REFERENCE_SPACE_DISPLAY if reference_space == "display"
+            else ocio.REFERENCE_SPACE_SCENE)
+    vt = ocio.ViewTransform(kind)
+    vt.setName(name)
+    vt.setFamily(family)
+    vt.setDescription(description)
+    if from_reference is not None:
+        vt.setTransform(from_reference, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    return vt
+
+
+def named_transform_factory(name, transform, family="", description="", categories=(),
+                            encoding=""):
+    """One ``PyOpenColorIO.NamedTransform`` (forward direction) from data."""
+    import PyOpenColorIO as ocio
+
+    nt = ocio.NamedTransform()
+    nt.setName(name)
+    nt.setFamily(family)
+    nt.setDescription(description)
+    nt.setEncoding(encoding)
+    for category in categories:
+        nt.addCategory(category)
+    nt.setTransform(transform, ocio.TRANSFORM_DIR_FORWARD)
+    return nt
