@@ -20,6 +20,12 @@ the next call compute again.
 
 ``functools.lru_cache`` would do the memoising but hides its keys; this store shows
 them. It imports nothing from the package, so any module may use it.
+
+>>> @memoize(maxsize=2)
+... def square(x):
+...     return x * x
+>>> square(3), square(3), square.keys(), square.cache_info().misses
+(9, 9, ((3,),), 1)
 """
 
 from __future__ import annotations

@@ -1,13 +1,13 @@
 """One registry of the displays, views and thin-film input spaces the package ships.
 
 Every other module derives its lists from here: ``clip.DISPLAYS``,
-``config.DISPLAY_SPACES`` / ``config.THIN_FILM_SPACES``, ``display_transforms.DISPLAY_ENCODINGS`` /
-``registry.VIEWS``, the LUT file names of the config and of ``export``, and the
-renderer's display checks and PNG tags. Adding a display is one :class:`Display`
+``config.DISPLAY_SPACES``, ``display_transforms.DISPLAY_ENCODINGS``, the config's
+thin-film spaces and views, the LUT file names of the config and of ``export``, and the
+renderer's display choices and PNG tags. Adding a display is one :class:`Display`
 entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm bake``).
 
 The registry is plain data (frozen dataclasses) and imports nothing but
-:mod:`.colorimetry`; it is validated once, at import (:func:`validate`).
+:mod:`ocio_thinfilm.colour.colorimetry`; it is validated once, at import (:func:`validate`).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from ocio_thinfilm.colour import colorimetry
 
 __all__ = ["Display", "View", "ThinFilmSpace", "DISPLAY_LIST", "VIEW_LIST",
            "THIN_FILM_LIST", "DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display",
-           "thin_film_space_for_kind", "clip_lut_stem", "validate"]
+           "thin_film_space_for_kind", "CLIP_FILE_STEM", "clip_lut_stem", "validate"]
 
 
 @dataclass(frozen=True)
@@ -56,14 +56,16 @@ class View:
 @dataclass(frozen=True)
 class ThinFilmSpace:
     """A thin-film input colour space (pixel value -> CIE-XYZ-D65): ``name``,
-    ``table`` (``"film"`` or ``"morpho"``: :func:`.tables.film_table` /
-    :func:`.tables.morpho_table`), ``args`` for that factory and ``lut_stem`` (its CLF
-    file in the config)."""
+    ``table`` (``"film"`` or ``"morpho"``: :func:`ocio_thinfilm.lut.tables.film_table` /
+    :func:`ocio_thinfilm.lut.tables.morpho_table`), ``args`` for that factory,
+    ``lut_stem`` (its CLF file in the config) and ``file_stem`` (the standalone LUT
+    files of its table, ``ocio-thinfilm export``)."""
 
     name: str
     table: str
     args: tuple
     lut_stem: str
+    file_stem: str
 
     @property
     def kind(self) -> str:
@@ -100,10 +102,11 @@ VIEW_LIST = (
 
 THIN_FILM_LIST = (
     ThinFilmSpace("Thin Film Phase-Change Thickness", "film", ("phase-change",),
-                  "ThinFilm_PhaseChange_Thickness"),
+                  "ThinFilm_PhaseChange_Thickness", "ThinFilm_PhaseChange"),
     ThinFilmSpace("Thin Film No-Phase-Change Thickness", "film", ("no-phase-change",),
-                  "ThinFilm_NoPhaseChange_Thickness"),
-    ThinFilmSpace("Thin Film Morpho Iridescence", "morpho", (), "ThinFilm_Morpho_Iridescence"),
+                  "ThinFilm_NoPhaseChange_Thickness", "ThinFilm_NoPhaseChange"),
+    ThinFilmSpace("Thin Film Morpho Iridescence", "morpho", (), "ThinFilm_Morpho_Iridescence",
+                  "ThinFilm_Morpho"),
 )
 
 #: Names, in order.
@@ -130,10 +133,18 @@ def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
     raise ValueError(f"no thin-film colour space for table kind {kind!r}")
 
 
+#: File stem of the clip's LUT files (the config's passes and ``export clip``).
+CLIP_FILE_STEM = "ConstantLightnessClip"
+
+
 def clip_lut_stem(name: str, white: bool = False) -> str:
     """File stem of a display's clip LUT: the pass against the faces through black
-    (``white=False``) or through white."""
-    return (f"ConstantLightnessClip_{display(name).lut_stem}"
+    (``white=False``) or through white.
+
+    >>> clip_lut_stem("Display P3", white=True)
+    'ConstantLightnessClip_DisplayP3_WhiteFaces'
+    """
+    return (f"{CLIP_FILE_STEM}_{display(name).lut_stem}"
             + ("_WhiteFaces" if white else "_BlackFaces"))
 
 
@@ -148,7 +159,8 @@ def validate() -> None:
                         ("thin-film space", THIN_FILM_SPACES)):
         if len(set(names)) != len(names) or not all(names):
             raise ValueError(f"registry: {kind} names must be unique and non-empty: {names}")
-    stems = [d.lut_stem for d in DISPLAY_LIST] + [s.lut_stem for s in THIN_FILM_LIST]
+    stems = ([d.lut_stem for d in DISPLAY_LIST] + [s.lut_stem for s in THIN_FILM_LIST]
+             + [s.file_stem for s in THIN_FILM_LIST])
     if len(set(stems)) != len(stems):
         raise ValueError(f"registry: LUT file stems must be unique: {stems}")
     for stem in stems:

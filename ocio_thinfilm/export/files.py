@@ -113,14 +113,12 @@ def _validate(table, kind, display, index, value_range, size, fmt):
 # LUT contents
 # --------------------------------------------------------------------------- #
 def _stem(table, kind, display, index):
-    if table == "film":
-        stem = "ThinFilm_" + ("PhaseChange" if kind == "phase-change" else "NoPhaseChange")
+    if table == "clip":
+        stem = registry.CLIP_FILE_STEM
+    else:
+        stem = registry.thin_film_space_for_kind(kind if table == "film" else "morpho").file_stem
         if index is not None:
             stem += f"_n{index:g}"
-    elif table == "morpho":
-        stem = "ThinFilm_Morpho"
-    else:
-        stem = "ConstantLightnessClip"
     if display is not None:
         stem += "_" + registry.display(display).lut_stem
     return stem

@@ -394,7 +394,44 @@ def working_decoding_transform():
 def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
     """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
     clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
-    white-faces pass, which ends in display code values), then the display's EOTF."""
+    white-faces pass, which ends in display code values), then the display's EOTF.
+
+    Parameters
+    ----------
+    display : str
+        A display of the registry (``"sRGB"``, ``"Display P3"``, ``"Rec.2020"``).
+    size : int
+        Edge of both 3D LUTs, in [9, 129].
+
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2: the clip moves an out-of-gamut colour at
+    constant luminance Y towards the grey of that Y until it is inside the display's
+    RGB parallelepiped.
+
+    Examples
+    --------
+    An 18 % grey of the display white passes through (to the LUTs' accuracy); the
+    spectral colour at 520 nm, far outside sRGB, comes out in gamut with its Y = 0.3
+    (Y = 0.2126 R + 0.7152 G + 0.0722 B in sRGB):
+
+    >>> import numpy as np
+    >>> from ocio_thinfilm.colour import colorimetry
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> grey = 0.18 * np.array([0.95047, 1.0, 1.08883])
+    >>> green = colorimetry.spectral_locus_XYZ(0.3, np.array([520.0]))[0]
+    >>> grey_rgb, green_rgb = apply(clip_transform("sRGB"), [grey, green])
+    >>> [round(float(v), 2) for v in grey_rgb]
+    [0.18, 0.18, 0.18]
+    >>> bool(green_rgb.min() >= 0.0 and green_rgb.max() <= 1.0)
+    True
+    >>> round(float(green_rgb @ [0.2126, 0.7152, 0.0722]), 3)
+    0.3
+    """
     lut = clip_lut(display, size)
     # the clamp only removes float32 round-off of the EOTF (1.0 -> 1.00002 through
     # OCIO's fast pow): the code values are in [0, 1] already

@@ -48,7 +48,12 @@ def module():
 
 
 def transform_id(kind: str, name: str) -> str:
-    """Transform ID in the style of the ACES OCIO configs."""
+    """Transform ID in the style of the ACES OCIO configs
+    (``urn:aswf:ocio:transformId:1.0:<Vendor>:<Type>:<Name>:1.0``).
+
+    >>> transform_id("Gamut_Map", "Constant-Lightness Clip sRGB")
+    'urn:aswf:ocio:transformId:1.0:OCIO-ThinFilm:Gamut_Map:Constant_Lightness_Clip_sRGB:1.0'
+    """
     safe = "".join(c if c.isalnum() else "_" for c in name).strip("_")
     return f"urn:aswf:ocio:transformId:1.0:{VENDOR}:{kind}:{safe}:1.0"
 
