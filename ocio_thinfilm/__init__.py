@@ -1,16 +1,21 @@
 """ocio-thinfilm: Smits & Meyer's "Newton's Colors" (1990) as a colour-managed tool.
 
-Pipeline stages, one module each:
+The sub-packages are the pipeline's stages, in order; each imports only from the
+ones before it and from the shared leaves (:mod:`.registry`, :mod:`.cache`,
+:mod:`.io`):
 
-- :mod:`.spectra`      thin-film reflectance spectra (paper Section 2, Eq. 5-14)
-- :mod:`.colorimetry`  spectra -> CIE XYZ -> linear RGB (Section 2.1)
-- :mod:`.clip`         constant-lightness parallelepiped clip (Section 3.2)
-- :mod:`.tables`       1D tables and the 3D clip LUT as OCIO transforms
-- :mod:`.config`       the drop-in OpenColorIO config
-- :mod:`.export`       the ``bake`` and ``export`` commands
-- :mod:`.render`       the paper's example scenes (Section 4)
-- :mod:`.report`       error against run time, and stability
-- :mod:`.cli`          the ``ocio-thinfilm`` command
+- :mod:`.physics`     thin-film reflectance spectra (paper Section 2, Eq. 5-14)
+- :mod:`.colour`      spectra -> CIE XYZ -> linear RGB (Section 2.1) and the
+  constant-lightness parallelepiped clip (Section 3.2)
+- :mod:`.lut`         the 1D tables, the clip's 3D LUTs and every view as OCIO transforms
+- :mod:`.config`      the drop-in OpenColorIO config (data -> factories -> validated
+  config), and its merge into existing configs
+- :mod:`.export`      the files users load: ``bake`` (config folder, ``luts/`` set) and
+  standalone LUTs
+- :mod:`.render`      the paper's example scenes through a config's processors (Section 4)
+- :mod:`.cli`         the ``ocio-thinfilm`` command (options, errors, signals)
+- :mod:`.evaluation`  what the tests, benchmarks and report measure against (not shipped
+  path: nothing above imports it)
 """
 
 __version__ = "0.1.0"
