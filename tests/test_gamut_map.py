@@ -179,8 +179,9 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
 
 
 def test_documented_numbers_come_from_the_benchmark():
-    """docs/gamut_map.md's measured tables are what benchmarks/bench_gamut_map.py
-    renders from reports/bench_gamut_map.json (no figure typed by hand)."""
+    """docs/gamut_map.md's measured tables and the README's status line of the clip
+    views are what benchmarks/bench_gamut_map.py renders from
+    reports/bench_gamut_map.json (no figure typed by hand)."""
     import importlib.util
     import json
 
@@ -193,3 +194,6 @@ def test_documented_numbers_come_from_the_benchmark():
     doc = (root / "docs" / "gamut_map.md").read_text()
     section = doc.split(bench.BEGIN, 1)[1].split(bench.END, 1)[0].strip()
     assert section == bench.numbers_markdown(result)
+    readme = (root / "README.md").read_text()
+    status = readme.split(bench.STATUS_BEGIN, 1)[1].split(bench.STATUS_END, 1)[0].strip()
+    assert status == bench.status_markdown(result)
