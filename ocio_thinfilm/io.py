@@ -235,6 +235,8 @@ def deferred_signals():
 
 
 def check_xml(path, name=None) -> None:
+    """OSError naming ``name`` (default ``path``) unless ``path`` parses as XML to its
+    end: a CLF truncated by a full disk is caught before it is renamed into place."""
     import xml.etree.ElementTree as ET
 
     try:

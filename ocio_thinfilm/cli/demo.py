@@ -43,6 +43,7 @@ def soap_strip(width: int = 1024, height: int = 96, max_thickness_nm: float = 20
 
 
 def run(args) -> int:
+    """``ocio-thinfilm demo``: print one film's colour at every stage, write the strip."""
     out = check_output_file(args.out)
     text = sys.stderr if is_stdout(out) else sys.stdout  # keep a PNG on stdout clean
     result = soap_film_colour(args.thickness)
@@ -60,6 +61,7 @@ def run(args) -> int:
 
 
 def register(sub) -> None:
+    """Add the ``demo`` command to the ``sub`` parsers."""
     p = sub.add_parser("demo", help="print a soap film's colour and write a strip of "
                                     "Newton's colours")
     p.add_argument("--thickness", type=float, default=300.0,

@@ -61,6 +61,7 @@ def _run_export(args) -> int:
 
 
 def register(sub) -> None:
+    """Add the ``bake`` and ``export`` commands to the ``sub`` parsers."""
     p = sub.add_parser("bake", help="write the OpenColorIO config folder "
                                     "(config.ocio + luts/*.clf)",
                        description="Write the drop-in OCIO config and its CLF LUTs, atomically.")

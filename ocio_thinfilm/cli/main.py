@@ -122,6 +122,7 @@ def _explain(parser, message: str) -> str:
 
 
 def build_parser():
+    """The ``ocio-thinfilm`` parser with every command module's sub-command."""
     import argparse
     import importlib
 
@@ -151,6 +152,8 @@ def _error(command, message) -> None:
 
 
 def main(argv=None) -> int:
+    """Run ``ocio-thinfilm`` with ``argv`` (default: the process's arguments); returns
+    the exit code: 0, 1 for an unexpected failure, 2 for bad input, 128 + n for signal n."""
     as_program = argv is None
     _state.update(interrupted=None, late=None, command=None)
     previous = _install_handlers()

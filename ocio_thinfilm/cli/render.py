@@ -69,6 +69,8 @@ def integer_argument(lo: int, hi: int):
 
 
 def run(args) -> int:
+    """``ocio-thinfilm render``: every frame of the chosen scenes through the config, the
+    outputs checked first and committed together (or one child process per frame)."""
     names = list(scene_module.SCENES) if args.scene == "all" else [args.scene]
     size, frames = args.size, args.frames
     out_dir = check_writable(args.out)
@@ -144,6 +146,7 @@ def _render_frames_in_children(args, frames) -> int:
 
 
 def register(sub) -> None:
+    """Add the ``render`` command to the ``sub`` parsers."""
     p = sub.add_parser(
         "render",
         help="render the paper's example scenes (Figures 4-7) through the LUTs",

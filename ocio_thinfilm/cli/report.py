@@ -13,6 +13,7 @@ def _run(args) -> int:
 
 
 def register(subparsers) -> None:
+    """Add the ``report`` command to the parsers."""
     p = subparsers.add_parser(
         "report", help="measure error against run time, peers, stability and throughput",
         description="Measure everything on this machine and write <out>/report.md with PNG plots.")

@@ -139,6 +139,10 @@ def _grey(Y):
 # Figure 4: the spectrum and Newton's colours through three views.
 # --------------------------------------------------------------------------- #
 class SpectrumScene(Scene):
+    """Figure 4: the visible spectrum, Newton's colours of a soap film against
+    thickness and the Morpho colours against angle, each strip through the three
+    views side by side (the clip keeps luminance, the clamp and ACES do not)."""
+
     name = "spectrum"
     figure = "Figure 4"
     title = ("The visible spectrum (380 nm at the top to 700 nm) and two rows of "
@@ -224,6 +228,11 @@ class SpectrumScene(Scene):
 # Figure 5: an oil slick on wet asphalt.
 # --------------------------------------------------------------------------- #
 class OilScene(Scene):
+    """Figure 5: an oil slick (n = 1.5; air|oil inverts, oil|water does not: a phase
+    change) on wet asphalt, thickness t = T exp(-k1 r^2) made irregular by turbulence
+    (Eq. 12-13), seen by a camera looking down at the road: each pixel's view angle
+    gives its optical thickness (Eq. 10 form)."""
+
     name = "oil"
     figure = "Figure 5"
     title = "An oil slick on wet asphalt (Eq. 12-13), seen from above at an angle"
@@ -325,6 +334,9 @@ class OilScene(Scene):
 # Figure 6: a soap bubble.
 # --------------------------------------------------------------------------- #
 class SoapScene(Scene):
+    """Figure 6: a soap bubble (n = 1.33, phase change), thickness proportional to the
+    normalised height plus turbulence: black at the thin, drained top."""
+
     name = "soap"
     figure = "Figure 6"
     title = "A soap bubble: thickness proportional to height plus turbulence, black at the top"
@@ -399,6 +411,9 @@ class SoapScene(Scene):
 # Figure 7: the Morpho butterfly's iridescent blue.
 # --------------------------------------------------------------------------- #
 class MorphoScene(Scene):
+    """Figure 7: a wavy surface coloured by the Morpho multilayer (Eq. 9 + 14) through
+    the angle table, blue-violet face on and darker towards grazing."""
+
     name = "morpho"
     figure = "Figure 7"
     title = ("A wavy iridescent surface coloured by the Morpho multilayer table "
@@ -464,6 +479,8 @@ SCENES = {s.name: s for s in (SpectrumScene(), OilScene(), SoapScene(), MorphoSc
 
 
 def get_scene(name: str) -> Scene:
+    """The scene called ``name`` (a key of :data:`SCENES`), else ValueError naming the
+    choices."""
     try:
         return SCENES[name]
     except KeyError:
