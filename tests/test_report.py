@@ -1,5 +1,5 @@
 """The ``report`` sub-command: ``report --quick`` into a temporary folder, end to end,
-plus the peers implemented in ``report.py`` checked against independent facts."""
+plus the peers implemented in ``report/peers.py`` checked against independent facts."""
 
 from __future__ import annotations
 
@@ -78,6 +78,20 @@ def test_quick_report_stability_rows_are_backed_by_tests(quick_report):
     for row in r["stability"]:
         assert row["test"] in names, row
         assert row["case"] and row["expected"] and row["observed"]
+
+
+def test_quick_report_headline_is_built_from_its_json_facts(quick_report):
+    """The headline is the formatting of ``report.json["headline"]`` (facts stored by
+    each section under explicit ids), nothing else."""
+    from ocio_thinfilm.evaluation.report.headline import LINES, headline_lines
+
+    r = json.loads((quick_report / "report.json").read_text())
+    md = (quick_report / "report.md").read_text(encoding="utf-8")
+    headline = md.split("## Headline\n\n", 1)[1].split("\n\n", 1)[0].split("\n")
+    assert set(r["headline"]) == set(LINES)
+    assert all(r["headline"].values())  # every section has its facts in quick mode
+    assert headline_lines(r["headline"]) == headline
+    assert len(headline) == len(LINES) + 1  # the gamut section gives two lines
 
 
 def test_report_bad_out_is_a_usage_error(tmp_path, capsys):

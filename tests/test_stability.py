@@ -1,7 +1,10 @@
 """Stability on stiff and extreme cases: one test per row of the report's table
-(``ocio_thinfilm.evaluation.report.stability_rows``; the row names its test). The clip's extreme
-XYZ cases are defined once, in ``ocio_thinfilm.evaluation.stability``: the report
-lists them and ``test_xyz_stability_case`` runs each one.
+(``ocio_thinfilm.evaluation.report.stability_rows``; the row names its test). The rows
+are defined once, in ``ocio_thinfilm.evaluation.stability`` (the physics and OCIO rows
+as ``Row``, the clip's extreme XYZ inputs as ``Case``): the report lists them,
+``test_stability_row`` and ``test_xyz_stability_case`` run each one, and the
+``..._checks_can_fail`` tests show that each check rejects a wrong value. The detailed
+tests named by the rows assert the same behaviour independently, more widely.
 
 Every expectation here is independent of the code under test: physical limits
 (incoherent average = half the illuminant, total internal reflection R = 1, the
@@ -11,6 +14,7 @@ transfer-matrix method, mpmath at 50 digits, or the geometry of the unit RGB cub
 
 from __future__ import annotations
 
+import functools
 import warnings
 
 import numpy as np
@@ -317,6 +321,49 @@ def test_xyz_stability_case_checks_can_fail():
         wrong = np.full_like(case.inputs, 0.123)
         ok, _ = case.check(wrong)
         assert not ok, case.name
+
+
+# --------------------------------------------------------------------------- #
+# The shared physics and OCIO rows (the report's table)
+# --------------------------------------------------------------------------- #
+ROWS = stability.physics_rows() + stability.ocio_clip_rows()
+
+
+@functools.lru_cache(maxsize=None)
+def _measured(index):
+    """``ROWS[index].measure()``, once per session (the check-can-fail test reuses it)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return ROWS[index].measure()
+
+
+@pytest.mark.parametrize("index", range(len(ROWS)), ids=[r.name for r in ROWS])
+def test_stability_row(index):
+    """Each shared row: the code under test meets the row's expectation."""
+    row = ROWS[index]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ok, observed = row.check(_measured(index))
+    assert ok, f"{row.name}: expected {row.expected}; observed {observed}"
+
+
+def test_stability_rows_name_their_tests():
+    """Every shared row names a detailed test of this module; names are unique."""
+    assert len(ROWS) >= 17
+    assert len({r.name for r in ROWS}) == len(ROWS)
+    for row in ROWS:
+        assert callable(globals().get(row.test)), row.test
+
+
+@pytest.mark.parametrize("index", range(len(ROWS)), ids=[r.name for r in ROWS])
+def test_stability_row_checks_can_fail(index):
+    """The checks reject a wrong measurement (every value NaN, same shapes and dtypes):
+    a check that always passed would be no test."""
+    row = ROWS[index]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ok, observed = row.check(stability.poisoned(_measured(index)))
+    assert not ok, f"{row.name}: passed on NaN ({observed})"
 
 
 # --------------------------------------------------------------------------- #

@@ -3,6 +3,12 @@
 Not part of the shipped path (tables, LUTs, config, export, render never import it).
 
 - :mod:`.colours`: the test-colour sets (object and monochromatic colours).
-- :mod:`.stability`: the clip's extreme XYZ cases (input, expected behaviour, check),
-  run by tests/test_stability.py and listed in the report's stability table.
+- :mod:`.stability`: the stability cases, defined once (the films, the clip's extreme
+  XYZ inputs, the shipped OCIO clip transform: input, expected behaviour, a check that
+  can fail, the covering test), run by tests/test_stability.py and listed in the
+  report's stability table.
+- :mod:`.formatting`: the number format of the report and of the stability cases.
+- :mod:`.report`: the ``report`` sub-command (a package: driver, sections, peers,
+  measurement helpers, headline).
+- :mod:`.gpu`: the headless GPU renderer used by tests/test_gpu.py.
 """

@@ -1,41 +1,54 @@
-"""The stability cases of the analytic clip, defined once (tests and report share them).
+"""The stability cases, defined once: the tests and the report's stability table share them.
 
-Each :class:`Case` is an extreme CIE-XYZ-D65 input to :func:`ocio_thinfilm.colour.clip.clip_XYZ`
-(sRGB) with the behaviour expected of it and a check of the output. The expectations
-are geometric facts of the unit RGB cube (black, white, the boundary point along a
-direction from grey), not outputs copied from the code under test.
-``tests/test_stability.py`` runs every case (next to its more detailed tests, named
-by ``Case.test``); the report's stability table lists them (``report.stability_rows``).
+Two kinds of case, each with the behaviour expected of it, a check that can fail, and
+the test in ``tests/test_stability.py`` that covers it in detail:
+
+- :class:`Case` (:func:`xyz_cases`): an extreme CIE-XYZ-D65 input to
+  :func:`ocio_thinfilm.colour.clip.clip_XYZ` (sRGB); the check looks at the clip's output.
+- :class:`Row` (:func:`physics_rows`, :func:`ocio_clip_rows`): a measurement of the
+  films (thick films, t = 0, grazing incidence, total internal reflection, Eq. 9 near
+  its singular points, float32) or of the shipped OCIO clip transform; ``measure()``
+  runs the code under test, ``check(measured)`` compares it with the expectation.
+
+The expectations are physical or geometric facts (the incoherent limit, Fresnel, total
+internal reflection, colour-science's own integration and transfer-matrix method,
+mpmath at 50 digits, the unit RGB cube), not outputs copied from the code under test.
+``tests/test_stability.py`` runs every case and checks that each check rejects a wrong
+value; the report lists them in its table (``report.stability_rows``), in the order
+physics rows, XYZ cases, OCIO rows.
 """
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
+from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.evaluation.formatting import fmt  # re-exported for existing users
+from ocio_thinfilm.lut import clip_lut, ocio_ops
+from ocio_thinfilm.physics import spectra
 
-__all__ = ["Case", "fmt", "limit_along", "xyz_cases"]
+__all__ = ["Case", "Row", "fmt", "limit_along", "xyz_cases", "physics_rows", "ocio_clip_rows",
+           "poisoned", "spectral_white_XYZ"]
 
 
-def fmt(x, digits: int = 3) -> str:
-    """A number as the report prints it (``digits`` significant, exponent outside
-    [1e-3, 1e4)); strings pass through, None is a dash."""
-    if x is None:
-        return "–"
-    if isinstance(x, str):
-        return x
-    if isinstance(x, (int, np.integer)) and not isinstance(x, bool):
-        return str(x)
-    if not np.isfinite(x):
-        return str(x)
-    if x == 0:
-        return "0"
-    if abs(x) >= 1e4 or abs(x) < 1e-3:
-        return f"{x:.{digits - 1}e}"
-    return f"{x:.{digits}g}"
+@dataclass(frozen=True)
+class Row:
+    """One measured stability case: ``name`` (the report's row), ``expected`` (the
+    behaviour, in words), ``measure() -> dict`` (runs the code under test; arrays by
+    name), ``check(measured) -> (ok, observed)`` (the expectation, computed
+    independently, against the measurement; ``observed`` is the report's text),
+    ``test`` (the test in tests/test_stability.py that covers it in detail)."""
+
+    name: str
+    expected: str
+    measure: Callable[[], dict]
+    check: Callable[[dict], tuple[bool, str]]
+    test: str
 
 
 @dataclass(frozen=True)
@@ -157,3 +170,339 @@ def xyz_cases(W=None) -> list[Case]:
     ]
     return [Case(name, np.asarray(xyz, dtype=np.float64), expected, check, test)
             for name, xyz, expected, check, test in cases]
+
+
+# --------------------------------------------------------------------------- #
+# Rows measured on the films and on the shipped OCIO clip transform
+# --------------------------------------------------------------------------- #
+def poisoned(measured: dict) -> dict:
+    """A wrong measurement of the same structure: every value NaN, floating dtypes kept.
+
+    Parameters
+    ----------
+    measured : dict
+        What a :attr:`Row.measure` returned.
+
+    Returns
+    -------
+    dict
+        The same keys, each value an array of NaN of the same shape.
+    """
+    out = {}
+    for key, value in measured.items():
+        a = np.asarray(value)
+        dtype = a.dtype if np.issubdtype(a.dtype, np.floating) else np.float64
+        out[key] = np.full(a.shape, np.nan, dtype=dtype)
+    return out
+
+
+@cache.memoize(maxsize=1)
+def _spectral_white_XYZ():
+    import colour
+
+    cmfs = colour.MSDS_CMFS[colorimetry.DEFAULT_OBSERVER]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        xyz = colour.sd_to_XYZ(colour.sd_ones(), cmfs,
+                               illuminant=colour.SDS_ILLUMINANTS[colorimetry.DEFAULT_ILLUMINANT])
+    return np.asarray(xyz) / xyz[1]
+
+
+def spectral_white_XYZ():
+    """The perfect reflector under D65, integrated by colour-science's own ``sd_to_XYZ``.
+
+    An expectation independent of this package's spectral weights (1 nm, colour's
+    tabulation method).
+
+    Returns
+    -------
+    numpy.ndarray
+        XYZ with Y = 1, shape ``(3,)`` (a fresh copy).
+    """
+    return _spectral_white_XYZ().copy()
+
+
+def _dE_from_half_white(xyz):
+    return float(colorimetry.delta_E2000(xyz, 0.5 * spectral_white_XYZ()))
+
+
+_THICK = (1e4, 3e4, 1e5)
+_GRAZING_D = np.array([100.0, 300.0, 3000.0])
+_TIR_D = np.array([100.0, 300.0, 3000.0])
+_GAPS = np.array([10.0, 300.0, 3000.0])
+
+
+def _wl():
+    return spectra.wavelength_grid()
+
+
+def _thick_check(m):
+    de = [_dE_from_half_white(x) for x in m["XYZ"]]
+    return bool(max(de) < 0.5) and bool(np.all(np.isfinite(de))), \
+        "ΔE2000 " + ", ".join(fmt(v) for v in de)
+
+
+def _sweep_check(m):
+    dd = colorimetry.delta_E2000(m["XYZ"], 0.5 * spectral_white_XYZ())
+    return bool(dd.max() < 0.5), f"max ΔE2000 {fmt(float(dd.max()))}"
+
+
+def _aliasing_check(m):
+    pd = _dE_from_half_white(m["XYZ"])
+    return bool(pd > 1.0), f"ΔE2000 {fmt(pd)}"
+
+
+def _zero_check(m):
+    z7 = m["Eq7"]
+    dz = float(colorimetry.delta_E2000(m["Eq8"], spectral_white_XYZ()))
+    return bool(np.all(z7 == 0) and dz < 0.02), f"{np.round(z7, 12).tolist()} / ΔE {fmt(dz)}"
+
+
+def _zero_exact_check(m):
+    a0, ag = m["air"], m["glass"]
+    ok = np.all(a0 < 1e-15) and abs(ag.mean() - 0.04) < 1e-12  # ((1.5 - 1) / 2.5)^2
+    return bool(ok), f"max R {fmt(float(a0.max()))}, R {fmt(float(ag.mean()), 6)}"
+
+
+def _grazing_tmm_check(m):
+    from colour.phenomena import thin_film_tmm
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        R, _ = thin_film_tmm([1.0, 1.33, 1.0], _GRAZING_D, _wl(), 89.9)
+    ra = m["R"]
+    diff = float(np.abs(ra - R.mean(-1)[:, 0, :].T).max())
+    ok = np.all(np.isfinite(ra)) and ra.min() >= 0 and ra.max() <= 1 and diff < 1e-9
+    return bool(ok), (f"R in [{fmt(float(ra.min()), 6)}, {fmt(float(ra.max()), 6)}], "
+                      f"|ΔR| {fmt(diff)}")
+
+
+def _grazing_band_check(m):
+    rb = m["R"]
+    return (bool(rb.min() >= -1e-9 and rb.max() <= 1 + 1e-9),
+            f"R in [{fmt(float(rb.min()), 4)}, {fmt(float(rb.max()), 4)}]")
+
+
+def _ninety_check(m):
+    r90 = m["R"]
+    return (bool(np.allclose(r90, 1.0, atol=1e-12)),
+            f"R in [{fmt(float(r90.min()))}, {fmt(float(r90.max()))}]")
+
+
+def _ninety_tm_check(m):
+    t90 = m["R"]
+    return (bool(np.allclose(t90, 1.0, atol=1e-9)),
+            f"{'NaN' if np.isnan(t90).any() else 'R ' + fmt(float(np.nanmin(t90)))}")
+
+
+def _tir_check(m):
+    worst = float(np.max([np.abs(m[k] - 1).max() for k in ("airy", "airy_band_limited",
+                                                            "transfer_matrix")]))
+    return bool(worst < 1e-12), f"max |R−1| {fmt(worst)}"
+
+
+def _frustrated_check(m):
+    fa, ft = m["airy"], m["transfer_matrix"]
+    ok = (np.all(np.diff(fa.mean(1)) > 0) and abs(fa[-1].mean() - 1) < 1e-6
+          and np.abs(fa - ft).max() < 1e-9)
+    return bool(ok), (f"mean R {', '.join(fmt(float(v), 4) for v in fa.mean(1))}; "
+                      f"|Δ| {fmt(float(np.abs(fa - ft).max()))}")
+
+
+_EQ9_T = 226.5
+_EQ9_OFFSETS = [0.0, 1e-15, -1e-15, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3]
+
+
+def _eq9_points():
+    """(layers, wavelengths) at and near the singular points sin(2 pi t / lambda) = 0."""
+    for layers in (1, 2, 12, 50, 100):
+        for k in (1, 2, 3):
+            lam0 = 2.0 * _EQ9_T / k  # sin(2 pi t / lambda) = 0 at lambda = 2t/k
+            yield layers, np.unique(np.array(sorted(lam0 * (1 + o) for o in _EQ9_OFFSETS)))
+
+
+def _eq9_measure():
+    return {"R": np.concatenate([spectra.multilayer_reflectance(_EQ9_T, lams, layers)
+                                 for layers, lams in _eq9_points()])}
+
+
+def _eq9_check(m):
+    import mpmath
+
+    mpmath.mp.dps = 50
+    exact = []
+    for layers, lams in _eq9_points():
+        for lam in lams:
+            x = 2 * mpmath.pi * mpmath.mpf(_EQ9_T) / mpmath.mpf(float(lam))
+            s = mpmath.sin(x)
+            if abs(s) < mpmath.mpf(10) ** -40:  # at the 0/0 point: the limit (l+1)^2
+                exact.append(1.0)
+            else:
+                exact.append(float((mpmath.sin((layers + 1) * x) / s) ** 2 / (layers + 1) ** 2))
+    worst = float(np.max(np.abs(np.asarray(m["R"], dtype=np.float64) - np.array(exact))))
+    return bool(worst < 1e-9), f"max |Δ| {fmt(worst)}"
+
+
+def _float32_measure():
+    rgb64 = np.random.default_rng(5).uniform(-2, 3, (10000, 3))
+    t = np.linspace(0, 1500, 64)
+    return {"clip64": clip.clip_RGB(rgb64), "clip32": clip.clip_RGB(rgb64.astype(np.float32)),
+            "film64": colorimetry.film_XYZ(t), "film32": colorimetry.film_XYZ(t.astype(np.float32))}
+
+
+def _float32_check(m):
+    o32 = m["clip32"]
+    dd32 = float(np.abs(o32.astype(np.float64) - m["clip64"]).max())
+    dfilm = float(np.abs(m["film32"] - m["film64"]).max())
+    ok = o32.dtype == np.float32 and dd32 < 1e-6 and dfilm < 1e-6
+    return bool(ok), f"dtype {o32.dtype}, clip |Δ| {fmt(dd32)}, film |Δ| {fmt(dfilm)}"
+
+
+def physics_rows() -> list[Row]:
+    """The measured cases of the films, in the report's order.
+
+    Returns
+    -------
+    list of Row
+        Thick films (incoherent limit, and the aliasing of point sampling), zero
+        thickness, grazing incidence and 90°, total internal reflection (plain and
+        frustrated), Eq. 9 near its singular points, float32 against float64.
+    """
+    wl = _wl()
+    return [
+        Row("thick film t' = 10, 30, 100 µm (default band-limited 5 nm)",
+            "incoherent limit ½·white, ΔE2000 < 0.5",
+            lambda: {"XYZ": np.stack([colorimetry.film_XYZ(x) for x in _THICK])},
+            _thick_check, "test_thick_film_tends_to_half_white"),
+        Row("thick films, 401 t' in 20–100 µm, band-limited", "all ΔE2000 < 0.5 from ½·white",
+            lambda: {"XYZ": colorimetry.film_XYZ(np.linspace(2e4, 1e5, 401))},
+            _sweep_check, "test_thick_film_sweep_no_false_colour"),
+        Row("thick film 100 µm, point-sampled 5 nm (contrast)",
+            "aliasing: false colour (why band-limiting is the default)",
+            lambda: {"XYZ": colorimetry.film_XYZ(1e5, band_limited=False)},
+            _aliasing_check, "test_point_sampling_aliases_thick_film"),
+        Row("t = 0, Eq. 7 / Eq. 8", "black (0, 0, 0) / the perfect reflector (ΔE2000 < 0.02 "
+            "from colour's `sd_to_XYZ` of D65)",
+            lambda: {"Eq7": colorimetry.film_XYZ(0.0),
+                     "Eq8": colorimetry.film_XYZ(0.0, kind="no-phase-change")},
+            _zero_check, "test_zero_thickness"),
+        Row("t = 0, exact film air|1.33|air and on glass 1.5",
+            "R = 0 and bare-glass Fresnel ((1.5−1)/2.5)² = 0.04",
+            lambda: {"air": spectra.airy_reflectance(0.0, wl, 1.33),
+                     "glass": spectra.airy_reflectance(0.0, wl, 1.33, n_substrate=1.5)},
+            _zero_exact_check, "test_zero_thickness_exact_film"),
+        Row("grazing 89.9°, film 1.33, 100/300/3000 nm", "finite, in [0, 1], = colour TMM",
+            lambda: {"R": spectra.airy_reflectance(_GRAZING_D, wl, 1.33, 89.9)},
+            _grazing_tmm_check, "test_grazing_matches_colour_tmm"),
+        Row("grazing 80/89/89.9°, exact film, band-limited", "bin averages of R stay in [0, 1]",
+            lambda: {"R": np.concatenate([
+                spectra.airy_reflectance(_GRAZING_D, wl, 1.33, th, band_limited=True).ravel()
+                for th in (80.0, 89.0, 89.9)])},
+            _grazing_band_check, "test_grazing_band_limited_airy_within_0_1"),
+        Row("exactly 90°, exact film", "R = 1 (grazing limit)",
+            lambda: {"R": spectra.airy_reflectance(_GRAZING_D, wl, 1.33, 90.0)},
+            _ninety_check, "test_grazing_limit_90"),
+        Row("exactly 90°, transfer_matrix_reflectance", "R = 1 (grazing limit)",
+            lambda: {"R": spectra.transfer_matrix_reflectance([1.33], [300.0], wl, 90.0)},
+            _ninety_tm_check, "test_transfer_matrix_at_90_degrees"),
+        Row("TIR: glass 1.5 → film 1.0 → 1.0 at 60° (> 41.8°)", "R = 1 exactly (all three paths)",
+            lambda: {"airy": spectra.airy_reflectance(_TIR_D, wl, 1.0, 60.0, n_incident=1.5),
+                     "airy_band_limited": spectra.airy_reflectance(
+                         _TIR_D, wl, 1.0, 60.0, n_incident=1.5, band_limited=True),
+                     "transfer_matrix": spectra.transfer_matrix_reflectance(
+                         [1.0], [300.0], wl, 60.0, n_incident=1.5)},
+            _tir_check, "test_total_internal_reflection"),
+        Row("frustrated TIR: 1.5 | gap 1.0 | 1.5 at 60°, gaps 10/300/3000 nm",
+            "R rises to 1 with the gap; Airy = transfer matrix",
+            lambda: {"airy": spectra.airy_reflectance(_GAPS, wl, 1.0, 60.0, n_incident=1.5,
+                                                      n_substrate=1.5),
+                     "transfer_matrix": np.stack([spectra.transfer_matrix_reflectance(
+                         [1.0], [g], wl, 60.0, n_incident=1.5, n_substrate=1.5) for g in _GAPS])},
+            _frustrated_check, "test_frustrated_tir"),
+        Row("Eq. 9, l = 1…100 layers, λ at and 1e-15…1e-3 (relative) off sin(2πt/λ) = 0",
+            "= (sin((l+1)x)/sin x)²/(l+1)² to 1e-9 (mpmath, 50 digits); peak 1",
+            _eq9_measure, _eq9_check, "test_eq9_near_singular_points"),
+        Row("float32 vs float64 (clip_RGB on 10⁴ colours; film_XYZ)",
+            "float32 out for float32 in; |Δ| ≤ 1e-6 (float32 rounding)",
+            _float32_measure, _float32_check, "test_float32_vs_float64"),
+    ]
+
+
+@cache.memoize(maxsize=1)
+def _shipped_clip_transform():
+    return clip_lut.clip_transform("sRGB")
+
+
+def _through_ocio(x):
+    """XYZ through the shipped OCIO clip transform (sRGB), as float64 display RGB."""
+    return ocio_ops.apply(_shipped_clip_transform(),
+                          np.asarray(x, dtype=np.float64)).astype(np.float64)
+
+
+def _ocio_limit_inputs(sign):
+    return np.array([[sign * 1e30, 0.5, 0.5], [sign * np.inf, 0.5, 0.5]])
+
+
+def _ocio_limit_check(sign, hue):
+    """Finite, in gamut, and either near the analytic clip's limit (``hue``) or with
+    Y kept (outside the black pass's chart, where only Y is held)."""
+    Minv = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("sRGB"))
+
+    def check(m):
+        out = m["RGB"]
+        xyz = out @ Minv.T
+        de = colorimetry.delta_E2000(xyz, clip.clip_XYZ(_ocio_limit_inputs(sign)))
+        dY = np.abs(xyz[:, 1] - 0.5).max()
+        ok = bool(np.all(np.isfinite(out)) and out.min() >= 0 and out.max() <= 1
+                  and (de.max() < 5 if hue else dY <= 1e-3))
+        return ok, f"ΔE2000 {', '.join(fmt(float(v)) for v in de)}, |ΔY| {fmt(float(dY))}"
+    return check
+
+
+def ocio_clip_rows(W=None) -> list[Row]:
+    """The extreme XYZ inputs through the shipped OCIO clip transform (the 3D LUT path).
+
+    Parameters
+    ----------
+    W : array_like, optional
+        The display white in XYZ (default ``colorimetry.white_XYZ("sRGB")``).
+
+    Returns
+    -------
+    list of Row
+        Black and white, +X and −X at 1e30 and infinity, NaN components.
+    """
+    W = colorimetry.white_XYZ("sRGB") if W is None else np.asarray(W, dtype=np.float64)
+    bw_in = np.array([[-0.1, -0.2, -0.1], [0.0, 0.0, 0.0], 2 * W, [0.5, 1.5, 0.5],
+                      [0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]])
+    bw_expected = np.array([[0, 0, 0], [0, 0, 0], [1, 1, 1], [1, 1, 1], [1, 1, 1], [0, 0, 0]],
+                           float)
+
+    def bw_check(m):
+        err = float(np.abs(m["RGB"] - bw_expected).max())
+        return bool(err <= 1e-5), f"max |Δ| {fmt(err)}"
+
+    def nan_check(m):
+        out = m["RGB"]
+        return (bool(np.all(np.isfinite(out)) and out.min() >= 0 and out.max() <= 1),
+                f"{np.round(out, 3).tolist()}")
+
+    rows = [Row("OCIO clip_transform (shipped LUT): negative, zero, 2·white, Y > 1, Y = ±Inf",
+                "RGB black, black, white, white, white, black (|Δ| ≤ 1e-5)",
+                lambda: {"RGB": _through_ocio(bw_in)}, bw_check, "test_ocio_clip_black_and_white")]
+    # +X: an imaginary colour redder than AP0, outside the black pass's chart (clamped to
+    # its edge: Y kept, hue approximate); -X: clamped to X = 0 first
+    for sign, test, hue in ((1.0, "test_ocio_clip_huge_components", False),
+                            (-1.0, "test_ocio_clip_negative_infinite_component", True)):
+        s = "+" if sign > 0 else "−"
+        rows.append(Row(
+            f"OCIO clip_transform: X = {s}1e30, {s}Inf (Y = 0.5)",
+            "finite, in gamut, " + ("ΔE2000 < 5 from the analytic clip's limit" if hue
+                                    else "Y kept within 1e-3 (outside the chart: hue approximate)"),
+            (lambda sign: lambda: {"RGB": _through_ocio(_ocio_limit_inputs(sign))})(sign),
+            _ocio_limit_check(sign, hue), test))
+    rows.append(Row("OCIO clip_transform: NaN components",
+                    "finite and in gamut (the transform's documented policy: NaN → finite)",
+                    lambda: {"RGB": _through_ocio([[np.nan, 0.5, 0.5], [0.5, np.nan, 0.5]])},
+                    nan_check, "test_ocio_clip_nan_is_finite"))
+    return rows
