@@ -16,15 +16,22 @@ def file_transform(filename):
     return t
 
 
+def _reference_space(name):
+    """``"scene"`` or ``"display"`` -> OCIO's ReferenceSpaceType."""
+    import PyOpenColorIO as ocio
+
+    if name not in ("scene", "display"):
+        raise ValueError(f"reference_space must be 'scene' or 'display', got {name!r}")
+    return ocio.REFERENCE_SPACE_DISPLAY if name == "display" else ocio.REFERENCE_SPACE_SCENE
+
+
 def colorspace_factory(name, family="", encoding="", categories=(), description="",
                        to_reference=None, from_reference=None, is_data=False, aliases=(),
                        reference_space="scene"):
     """One ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES)."""
     import PyOpenColorIO as ocio
 
-    kind = (ocio.REFERENCE_SPACE_DISPLAY if reference_space == "display"
-            else ocio.REFERENCE_SPACE_SCENE)
-    cs = ocio.ColorSpace(kind)
+    cs = ocio.ColorSpace(_reference_space(reference_space))
     cs.setName(name)
     cs.setFamily(family)
     cs.setEncoding(encoding)
@@ -47,9 +54,7 @@ def view_transform_factory(name, family="", description="", from_reference=None,
     """One ``PyOpenColorIO.ViewTransform`` from data."""
     import PyOpenColorIO as ocio
 
-    kind = (ocio.REFERENCE_SPACE_DISPLAY if reference_space == "display"
-            else ocio.REFERENCE_SPACE_SCENE)
-    vt = ocio.ViewTransform(kind)
+    vt = ocio.ViewTransform(_reference_space(reference_space))
     vt.setName(name)
     vt.setFamily(family)
     vt.setDescription(description)
