@@ -6,11 +6,11 @@ indexed with (optical thickness t' in micrometres for a film, the facing ratio
 cos(theta) for the Morpho multilayer) and composites the table's colour with the
 rest of the picture in scene-linear CIE XYZ. Colours of interference come *only*
 from the tables, through a ``lookup(spec, encoded)`` callable supplied by the
-renderer (:mod:`.render` applies the tables' OCIO transforms), so the pictures
-exercise the LUTs end to end.
+renderer (:func:`ocio_thinfilm.render.processors.make_lookup` applies the config's
+thin-film colour spaces), so the pictures exercise the shipped LUT files end to end.
 
 Each scene *declares* the tables it needs (:class:`TableSpec`: kind, encoding
-range, entries); the renderer builds those and nothing else.
+range, entries); the renderer creates processors for those and nothing else.
 
 Scenes
 ------
