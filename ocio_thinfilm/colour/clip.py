@@ -199,20 +199,115 @@ def clip_XYZ(XYZ, display: str = "sRGB"):
 
 
 def in_gamut(RGB, tolerance: float = 0.0):
-    """True where all channels lie in [-tolerance, 1 + tolerance]."""
+    """True where all channels lie in [-tolerance, 1 + tolerance].
+
+    The paper's first step of the clip (Smits & Meyer 1990, Section 3.2) in the
+    display's RGB: a colour is inside the parallelepiped when it lies between both
+    planes of every pair, i.e. inside the unit cube. Points on a face are inside.
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB (RGB = 1 is the display white), last axis 3.
+    tolerance : float, optional
+        Allowance outside [0, 1] on every channel (default 0: exact).
+
+    Returns
+    -------
+    numpy.ndarray or numpy.bool_
+        bool, the shape of ``RGB`` without its last axis. A NaN channel is never
+        inside (every comparison with NaN is False).
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    >>> bool(in_gamut([0.5, 0.5, 0.5])), bool(in_gamut([1.2, 0.0, 0.0]))
+    (True, False)
+    >>> in_gamut([[0.0, 1.0, 0.5], [1.0005, 0.0, 0.0]]).tolist()
+    [True, False]
+    >>> bool(in_gamut([1.0005, 0.0, 0.0], tolerance=1e-3))
+    True
+    """
     a = np.asarray(RGB)
     return np.all((a >= -tolerance) & (a <= 1.0 + tolerance), axis=-1)
 
 
 def clamp_RGB(RGB):
-    """Baseline: the per-channel clamp to [0, 1] (NaN stays NaN)."""
+    """Baseline: the per-channel clamp to [0, 1] (NaN stays NaN).
+
+    Each channel is clamped on its own, so an out-of-gamut colour changes luminance
+    and hue; the comparison for the constant-lightness clip (:func:`clip_RGB`).
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB, any shape (usually last axis 3).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``numpy.clip(RGB, 0, 1)``: same shape and dtype as the input array (float64
+        for lists of Python floats).
+
+    Examples
+    --------
+    >>> clamp_RGB([1.2, 0.5, -0.1]).tolist()
+    [1.0, 0.5, 0.0]
+    >>> clamp_RGB([float("nan"), 0.5, 2.0]).tolist()
+    [nan, 0.5, 1.0]
+    """
     return np.clip(np.asarray(RGB), 0.0, 1.0)
 
 
 def aces_gamut_compress_RGB(RGB):
     """Baseline: OCIO's ACES 1.3 reference gamut compression (``ACES_GamutComp13``)
     applied to display-linear RGB, then a clamp to [0, 1]. Runs through an OCIO CPU
-    processor; returns float32."""
+    processor; returns float32.
+
+    Per pixel, the achromatic value ``ach = max(R, G, B)`` is kept and each channel's
+    distance ``d = (ach - c) / |ach|`` above its threshold ``thr`` is compressed by
+    ``thr + (d - thr) / (1 + ((d - thr) / s) ** p) ** (1 / p)``, with the scale ``s``
+    chosen so that the limit distance ``lim`` maps to 1 (the gamut boundary, c = 0).
+    Parameters :data:`ACES_GAMUT_COMP13_PARAMS`: limits (1.147, 1.264, 1.312) and
+    thresholds (0.815, 0.803, 0.880) for R, G, B (cyan, magenta, yellow distances),
+    power p = 1.2. It holds max(RGB), not luminance, so unlike :func:`clip_RGB` it
+    changes Y.
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB, last axis 3. Not modified. +-Inf are taken as +-3e38;
+        huge negative components are handled by scaling (see the code's comments).
+
+    Returns
+    -------
+    numpy.ndarray
+        float32, shape of ``RGB``, in [0, 1]; a pixel with a NaN channel gives NaN.
+
+    References
+    ----------
+    Academy of Motion Picture Arts and Sciences (2021). ACES Reference Gamut
+    Compression Specification, ACES 1.3 (from the ACES Gamut Mapping Virtual Working
+    Group); OpenColorIO ``FIXED_FUNCTION_ACES_GAMUT_COMP_13``.
+
+    Examples
+    --------
+    Distances below every threshold are unchanged; a channel at its limit distance
+    (G = 1 - 1.264, B = 1 - 1.312 for max = 1) lands on 0; the blue distance 1.1
+    (B = -0.1) compresses to 0.97845 by the formula above, B = 0.0216:
+
+    >>> [round(float(v), 4) for v in aces_gamut_compress_RGB([0.5, 0.4, 0.3])]
+    [0.5, 0.4, 0.3]
+    >>> [round(float(v), 4) + 0.0 for v in aces_gamut_compress_RGB([1.0, -0.264, -0.312])]
+    [1.0, 0.0, 0.0]
+    >>> [round(float(v), 4) for v in aces_gamut_compress_RGB([1.0, 0.5, -0.1])]
+    [1.0, 0.5, 0.0216]
+    >>> str(aces_gamut_compress_RGB([0.5, 0.4, 0.3]).dtype)
+    'float32'
+    """
     import PyOpenColorIO as ocio
 
     transform = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,

@@ -90,6 +90,32 @@ def persistent(function=None, *, modules=()):
     version, so changed code or a changed library never returns a stale array. A
     cache that cannot be read or written is ignored. Use as ``@persistent`` or
     ``@persistent(modules=("ocio_thinfilm.lut.tables",))``.
+
+    Parameters
+    ----------
+    function : callable, optional
+        The function to memoise. Its positional arguments must be hashable and have a
+        stable ``repr`` (tuples of floats, strings); keyword arguments are not
+        supported. Its result must be convertible by :func:`numpy.asarray`. ``None``
+        when used as ``@persistent(modules=...)``.
+    modules : tuple of str, optional
+        Importable module names whose full source also enters the key (for functions
+        whose result depends on code outside their own body).
+
+    Returns
+    -------
+    callable
+        The memoised function (or, with ``function=None``, a decorator making one).
+        It returns :class:`numpy.ndarray` (the value as saved with :func:`numpy.save`),
+        the same array object for repeated in-process calls (an in-memory
+        :func:`ocio_thinfilm.cache.memoize` of 64 entries): callers that hand the
+        array out should copy it.
+
+    Notes
+    -----
+    The on-disk store is ``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables it), else
+    ``$XDG_CACHE_HOME/ocio-thinfilm`` or ``~/.cache/ocio-thinfilm``; each entry is one
+    ``<name>-<sha256 prefix>.npy`` file written atomically.
     """
     if function is None:
         return lambda f: persistent(f, modules=modules)
@@ -166,6 +192,53 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     of :func:`ocio_thinfilm.physics.spectra.bin_edges`: the trapezoid rule on the grid; for a
     band-limited (hat-averaged) spectrum, the exact integral of ``R`` against the
     linearly interpolated weights.
+
+    This is the discrete form of the tristimulus integrals
+    ``X = k sum R(l) S(l) xbar(l) dl`` (and Y, Z alike) with ``k = 1 / sum S ybar dl``
+    (CIE 15:2004, Section 7), the conversion of Smits & Meyer (1990), Section 2.1.
+
+    Parameters
+    ----------
+    wavelengths : array_like
+        Sample wavelengths in nm, 1-D, finite and strictly increasing (checked by
+        :func:`ocio_thinfilm.physics.spectra.check_wavelengths`). Matching functions and
+        illuminant are interpolated by colour-science and held constant outside their
+        tabulated range. A single wavelength is a point evaluation (bin width 1 nm).
+    observer : str, optional
+        A key of ``colour.MSDS_CMFS`` (default CIE 1931 2 degree standard observer).
+    illuminant : str, optional
+        A key of ``colour.SDS_ILLUMINANTS`` (default D65).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(len(wavelengths), 3)``, columns (X, Y, Z); the Y column sums
+        to 1. A new array on every call.
+
+    Raises
+    ------
+    ValueError
+        For an unknown observer or illuminant, or a grid on which ``ybar S`` is 0
+        (no luminance to normalise by).
+
+    References
+    ----------
+    CIE 15:2004 Colorimetry, 3rd ed., Section 7.
+    Smits, B. E., & Meyer, G. W. (1990). Newton's Colors: Simulating Interference
+    Phenomena in Realistic Image Synthesis. Section 2.1.
+
+    Examples
+    --------
+    The perfect reflector has Y = 1 by construction, and its XYZ, the column sums, is
+    the D65 white of CIE 15:2004, (0.95047, 1, 1.08883), to the grid's accuracy:
+
+    >>> W = spectral_weights(np.arange(360.0, 781.0, 5.0))
+    >>> W.shape
+    (85, 3)
+    >>> round(float(W[:, 1].sum()), 12)
+    1.0
+    >>> W.sum(axis=0).round(2).tolist()
+    [0.95, 1.0, 1.09]
     """
     wl = spectra.check_wavelengths(wavelengths)
     return _weights_cached(tuple(wl.tolist()), observer, illuminant).copy()
@@ -326,27 +399,186 @@ def _matrix_cached(space: str) -> np.ndarray:
 
 
 def matrix_XYZ_to_RGB(space: str = "sRGB") -> np.ndarray:
-    """3x3 matrix from D65-relative XYZ to the linear RGB of ``space``."""
+    """3x3 matrix from D65-relative XYZ to the linear RGB of ``space``.
+
+    The inverse of the normalised primary matrix of the space's primaries and white
+    (so RGB = (1, 1, 1) is the space's white, SMPTE RP 177), preceded by a Bradford
+    chromatic adaptation from D65 to the space's white for spaces whose white is not
+    D65 (ACEScg, ACES2065-1). The RGB of the monitor in Smits & Meyer (1990),
+    Section 2.1.
+
+    Parameters
+    ----------
+    space : str, optional
+        A key of :data:`RGB_SPACES` (default ``"sRGB"``), or ``"CIE-XYZ-D65"`` for the
+        identity.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape (3, 3): ``RGB = M @ XYZ`` for column vectors, XYZ with the D65
+        perfect reflector at Y = 1. A new array on every call.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``space``.
+
+    References
+    ----------
+    IEC 61966-2-1:1999 (sRGB); SMPTE RP 177-1993 (normalised primary matrix).
+
+    Examples
+    --------
+    The D65 white (0.95047, 1, 1.08883) is RGB = 1, and the matrix agrees with the
+    one printed in IEC 61966-2-1 (first row 3.2406, -1.5372, -0.4986; derived there
+    from a slightly different white) to about 5e-4:
+
+    >>> M = matrix_XYZ_to_RGB("sRGB")
+    >>> (M @ [0.95047, 1.0, 1.08883]).round(3).tolist()
+    [1.0, 1.0, 1.0]
+    >>> M[0].round(1).tolist()
+    [3.2, -1.5, -0.5]
+    """
     return _matrix_cached(space).copy()
 
 
 def XYZ_to_RGB(XYZ, space: str = "sRGB") -> np.ndarray:
-    """Linear RGB of ``space`` from D65-relative XYZ (last axis 3)."""
+    """Linear RGB of ``space`` from D65-relative XYZ (last axis 3).
+
+    Parameters
+    ----------
+    XYZ : array_like
+        CIE XYZ (D65 perfect reflector at Y = 1), last axis 3, any leading shape.
+    space : str, optional
+        A key of :data:`RGB_SPACES` (default ``"sRGB"``) or ``"CIE-XYZ-D65"``.
+
+    Returns
+    -------
+    numpy.ndarray
+        Linear RGB, float64, shape of ``XYZ``. Out-of-gamut colours give channels
+        below 0 or above 1 (not clipped; see :mod:`ocio_thinfilm.colour.clip`).
+
+    See Also
+    --------
+    matrix_XYZ_to_RGB, RGB_to_XYZ
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 2.1 (XYZ to the monitor's RGB).
+
+    Examples
+    --------
+    The D65 white is RGB = 1 in every space (the ACES spaces through their Bradford
+    adaptation):
+
+    >>> XYZ_to_RGB([0.95047, 1.0, 1.08883]).round(3).tolist()
+    [1.0, 1.0, 1.0]
+    >>> XYZ_to_RGB([0.95047, 1.0, 1.08883], "ACEScg").round(3).tolist()
+    [1.0, 1.0, 1.0]
+    """
     return np.asarray(XYZ) @ _matrix_cached(space).T
 
 
 def RGB_to_XYZ(RGB, space: str = "sRGB") -> np.ndarray:
-    """D65-relative XYZ from linear RGB of ``space`` (last axis 3)."""
+    """D65-relative XYZ from linear RGB of ``space`` (last axis 3).
+
+    Parameters
+    ----------
+    RGB : array_like
+        Linear RGB of ``space``, last axis 3, any leading shape.
+    space : str, optional
+        A key of :data:`RGB_SPACES` (default ``"sRGB"``) or ``"CIE-XYZ-D65"``.
+
+    Returns
+    -------
+    numpy.ndarray
+        CIE XYZ (D65 perfect reflector at Y = 1), float64, shape of ``RGB``.
+
+    See Also
+    --------
+    matrix_XYZ_to_RGB, XYZ_to_RGB
+
+    Examples
+    --------
+    The Y of the sRGB primaries are the Rec.709 luminance weights
+    Y = 0.2126 R + 0.7152 G + 0.0722 B (ITU-R BT.709-6):
+
+    >>> RGB_to_XYZ(np.eye(3), "sRGB")[:, 1].round(4).tolist()
+    [0.2126, 0.7152, 0.0722]
+    """
     return np.asarray(RGB) @ np.linalg.inv(_matrix_cached(space)).T
 
 
 def white_XYZ(space: str = "sRGB") -> np.ndarray:
-    """XYZ of the colourspace's white, RGB = (1, 1, 1)."""
+    """XYZ of the colourspace's white, RGB = (1, 1, 1).
+
+    The end of the neutral diagonal of Smits & Meyer (1990), Section 3.2 (the white
+    the clip pulls towards is the display's, not x = y = z).
+
+    Parameters
+    ----------
+    space : str, optional
+        A key of :data:`RGB_SPACES` (default ``"sRGB"``) or ``"CIE-XYZ-D65"``.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape (3,): D65-relative XYZ. For every space this is the D65 white,
+        since spaces with another white are adapted from D65.
+
+    Examples
+    --------
+    The D65 white of CIE 15:2004, (0.95047, 1, 1.08883):
+
+    >>> white_XYZ("sRGB").round(3).tolist()
+    [0.95, 1.0, 1.089]
+    >>> white_XYZ("ACEScg").round(3).tolist()
+    [0.95, 1.0, 1.089]
+    """
     return RGB_to_XYZ(np.ones(3), space)
 
 
 def delta_E2000(XYZ_a, XYZ_b) -> np.ndarray:
-    """CIE Delta E 2000 between two D65-relative XYZ arrays (via CIELAB, D65 white)."""
+    """CIE Delta E 2000 between two D65-relative XYZ arrays (via CIELAB, D65 white).
+
+    Both colours go to CIE 1976 L*a*b* with the D65 white (CIE 15:2004, Section 8.2.1)
+    and are compared with colour-science's CIEDE2000 (``colour.delta_E(...,
+    method="CIE 2000")``, k_L = k_C = k_H = 1).
+
+    Parameters
+    ----------
+    XYZ_a, XYZ_b : array_like
+        CIE XYZ (D65 perfect reflector at Y = 1), last axis 3, broadcasting together.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, the broadcast shape without the last axis (a NumPy float64 scalar
+        for single colours). Symmetric and 0 for identical colours; about 1 is a just
+        noticeable difference.
+
+    References
+    ----------
+    CIE 15:2004 Colorimetry, 3rd ed., Section 8.3.
+    Sharma, G., Wu, W., & Dalal, E. N. (2005). The CIEDE2000 color-difference formula:
+    Implementation notes, supplementary test data, and mathematical observations.
+    Color Research & Application, 30(1), 21-30.
+
+    Examples
+    --------
+    Identical colours differ by 0; the first test pair of Sharma, Wu & Dalal (2005),
+    L*a*b* (50, 2.6772, -79.7751) and (50, 0, -82.7485), differs by 2.0425:
+
+    >>> round(float(delta_E2000([0.2, 0.3, 0.4], [0.2, 0.3, 0.4])), 12)
+    0.0
+    >>> import colour
+    >>> d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
+    >>> a = colour.Lab_to_XYZ([50.0, 2.6772, -79.7751], d65)
+    >>> b = colour.Lab_to_XYZ([50.0, 0.0, -82.7485], d65)
+    >>> round(float(delta_E2000(a, b)), 4)
+    2.0425
+    """
     import colour
 
     d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
@@ -368,14 +600,89 @@ def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
 
 def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
     """Colour matching functions (x-bar, y-bar, z-bar) at ``wavelengths`` (nm),
-    interpolated by colour-science; shape (len(wavelengths), 3)."""
+    interpolated by colour-science; shape (len(wavelengths), 3).
+
+    Parameters
+    ----------
+    wavelengths : array_like
+        Wavelengths in nm, 1-D, finite and strictly increasing (checked by
+        :func:`ocio_thinfilm.physics.spectra.check_wavelengths`).
+    observer : str, optional
+        A key of ``colour.MSDS_CMFS`` (default CIE 1931 2 degree standard observer).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(len(wavelengths), 3)``, columns (x-bar, y-bar, z-bar);
+        the tabulated values at tabulated wavelengths. A new array on every call.
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``observer``.
+
+    References
+    ----------
+    CIE 15:2004 Colorimetry, 3rd ed., tables of the CIE 1931 standard colorimetric
+    observer.
+
+    Examples
+    --------
+    The CIE 1931 table: (0.5121, 1.0000, 0.0057) at 555 nm and (1.0622, 0.6310,
+    0.0008) at 600 nm:
+
+    >>> cmfs_at([555.0, 600.0]).round(3).tolist()
+    [[0.512, 1.0, 0.006], [1.062, 0.631, 0.001]]
+    """
     wl = spectra.check_wavelengths(wavelengths)
     return _cmfs_cached(tuple(wl.tolist()), observer).copy()
 
 
 def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
     """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs
-    (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm."""
+    (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm.
+
+    The worst case of Smits & Meyer (1990), Section 3.2: "every color in the spectrum
+    is monochromatic and as far out of the gamut of the monitor as possible".
+
+    Parameters
+    ----------
+    Y : float, optional
+        Luminance of every colour, finite and >= 0 (D65 perfect reflector at Y = 1).
+    wavelengths : array_like, optional
+        Wavelengths in nm (1-D, increasing); default ``np.arange(380.0, 701.0)``.
+        Each must have y-bar > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape ``(len(wavelengths), 3)``: ``Y * cmf(l) / ybar(l)``, so the Y
+        column is ``Y`` everywhere and the chromaticities are those of the spectral
+        locus.
+
+    Raises
+    ------
+    ValueError
+        For a ``Y`` that is not a finite number >= 0, or a wavelength where y-bar is 0.
+
+    References
+    ----------
+    CIE 15:2004 Colorimetry, 3rd ed. (CIE 1931 standard colorimetric observer);
+    Smits & Meyer (1990), Section 3.2 and Figure 4.
+
+    Examples
+    --------
+    321 colours by default; at 555 nm (y-bar = 1) the CMFs times Y; at 520 nm the
+    spectral locus chromaticity (x, y) = (0.0743, 0.8338) of the CIE 1931 table:
+
+    >>> spectral_locus_XYZ().shape
+    (321, 3)
+    >>> spectral_locus_XYZ(0.3, [555.0]).round(3).tolist()
+    [[0.154, 0.3, 0.002]]
+    >>> X, Y, Z = spectral_locus_XYZ(1.0, [520.0])[0]
+    >>> [round(float(X / (X + Y + Z)), 4), round(float(Y / (X + Y + Z)), 4)]
+    [0.0743, 0.8338]
+    """
     try:
         Y = float(Y)
     except (TypeError, ValueError):

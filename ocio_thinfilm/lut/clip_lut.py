@@ -103,11 +103,49 @@ def xyz_limit_transform():
     non-negative), so this changes only non-physical inputs; it keeps the chart's
     normaliser positive and makes +-Inf finite (Y <= 0 gives black, as in the
     analytic clip).
+
+    Returns
+    -------
+    PyOpenColorIO.RangeTransform
+        A clamp (no scaling) of every channel to [0, 1e6]; the first op of
+        :meth:`ClipLUT.transforms`.
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2 (the clip's defined behaviour at Y <= 0).
+
+    Examples
+    --------
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> apply(xyz_limit_transform(), [[-0.1, 0.5, 2e6]]).tolist()
+    [[0.0, 0.5, 1000000.0]]
     """
     return ocio_ops.range_(0.0, ocio_ops.LIMIT)
 
 
 def xyY_forward_transform():
+    """OCIO's analytic CIE XYZ -> xyY (``FIXED_FUNCTION_XYZ_TO_xyY``).
+
+    ``x = X / (X + Y + Z)``, ``y = Y / (X + Y + Z)``, Y unchanged (CIE 15:2004,
+    Section 7.3). After the chart matrix of :func:`_black_plan` it gives the black
+    pass's Lut3D coordinates (u_a, u_b) and Y directly.
+
+    Returns
+    -------
+    PyOpenColorIO.FixedFunctionTransform
+
+    References
+    ----------
+    CIE 15:2004 Colorimetry, 3rd ed., Section 7.3 (chromaticity coordinates).
+
+    Examples
+    --------
+    The D65 white (0.95047, 1, 1.08883) has the chromaticity (0.3127, 0.3290):
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> [round(float(v), 4) for v in apply(xyY_forward_transform(), [0.95047, 1.0, 1.08883])]
+    [0.3127, 0.329, 1.0]
+    """
     ocio = ocio_ops.module()
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
 
@@ -122,6 +160,43 @@ def clip_black_faces_RGB(RGB, display):
 
     ``Y <= 0`` gives black; otherwise the colour moves towards the grey of its Y until
     its smallest channel is 0 (unchanged when no channel is negative).
+
+    The ray of Smits & Meyer (1990), Section 3.2, against the three faces through
+    black: with ``Y = w . RGB`` (``w`` the display's luminance row) and
+    ``lo = min(R, G, B) < 0`` the result is ``Y + t (RGB - Y)`` with
+    ``t = Y / (Y - lo)``, so its smallest channel is 0 and its luminance is Y.
+    Channels may still exceed 1 (that is :func:`clip_white_faces_RGB`'s part).
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display`` (RGB = 1 its white), last axis 3.
+    display : str
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS`.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape of ``RGB``. Non-finite inputs give non-finite rows (no
+        warning).
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    In-gamut colours are unchanged; (1.2, 0.5, -0.1) (Y = 0.6055 with the Rec.709
+    weights) moves with t = 0.6055 / 0.7055 to (1.116, 0.515, 0), keeping Y; a colour
+    with Y <= 0 is black:
+
+    >>> out = clip_black_faces_RGB([[0.5, 0.4, 0.3], [1.2, 0.5, -0.1],
+    ...                             [-0.1, -0.2, 0.3]], "sRGB")
+    >>> out.round(2).tolist()
+    [[0.5, 0.4, 0.3], [1.12, 0.51, 0.0], [0.0, 0.0, 0.0]]
+    >>> w = colorimetry.RGB_to_XYZ(np.eye(3), "sRGB")[:, 1]  # luminance weights
+    >>> bool(np.isclose(out[1] @ w, np.dot([1.2, 0.5, -0.1], w)))
+    True
     """
     rgb = np.asarray(RGB, dtype=np.float64)
     with np.errstate(all="ignore"):  # non-finite inputs give non-finite rows, no warning
@@ -134,7 +209,41 @@ def clip_black_faces_RGB(RGB, display):
 
 
 def clip_white_faces_RGB(RGB, display):
-    """U = C o L o C with C(c) = 1 - c: the clip against R, G, B <= 1 only."""
+    """U = C o L o C with C(c) = 1 - c: the clip against R, G, B <= 1 only.
+
+    C maps the display white to black and the faces R, G, B = 1 to the faces through
+    black, and Y(C(c)) = Y_W - Y(c): the ray of :func:`clip_black_faces_RGB` in the
+    complement is the paper's ray towards the same grey (Smits & Meyer 1990,
+    Section 3.2), so U keeps Y, brings the largest channel of an out-of-gamut colour
+    to 1 and gives white for Y >= Y_W. Applied after L, the composition is
+    :func:`ocio_thinfilm.colour.clip.clip_RGB`.
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display``, last axis 3.
+    display : str
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS` (its white has Y = 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape of ``RGB``.
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    In-gamut colours are unchanged; (1.2, 0.5, 0.1) keeps Y = 0.62 with R = 1
+    (the complement (-0.2, 0.5, 0.9) has Y = 0.38, t = 0.38 / 0.58); a colour brighter
+    than white is white:
+
+    >>> clip_white_faces_RGB([[0.5, 0.4, 0.3], [1.2, 0.5, 0.1],
+    ...                       [1.1, 1.2, 0.9]], "sRGB").round(2).tolist()
+    [[0.5, 0.4, 0.3], [1.0, 0.54, 0.28], [1.0, 1.0, 1.0]]
+    """
     return 1.0 - clip_black_faces_RGB(1.0 - np.asarray(RGB, dtype=np.float64), display)
 
 
@@ -258,7 +367,23 @@ def y_shaper_transform():
     """The black pass's third axis: Y^(1/3) (uniform in lightness), chromaticity axes
     unchanged -- an analytic op, exact in float on every GPU (a Lut1D shaper here
     would be stored in half floats by some hosts, placing colours only to 1/30 of a
-    cell)."""
+    cell).
+
+    CIE L* is an affine function of Y^(1/3) above Y = 0.008856 (CIE 15:2004,
+    Section 8.2.1), so the Lut3D's nodes are about uniform in lightness.
+
+    Returns
+    -------
+    PyOpenColorIO.ExponentTransform
+        The inverse of the exponents (1, 1, 3, 1), negative values clamped to 0.
+
+    Examples
+    --------
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> out = apply(y_shaper_transform(), [[0.3, 0.6, 0.125], [0.3, 0.6, -0.1]])
+    >>> (out.astype(float).round(4) + 0.0).tolist()
+    [[0.3, 0.6, 0.5], [0.3, 0.6, 0.0]]
+    """
     ocio = ocio_ops.module()
     t = ocio.ExponentTransform([1.0, 1.0, Y_POWER, 1.0])
     t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
@@ -282,6 +407,40 @@ class ClipLUT:
     rounded to half floats. ``white``: the same shape, display code values of U(c)
     over display RGB (:func:`_white_nodes`), rounded to 16 bits; ``white_shaper``:
     (SHAPER_LENGTH, 3) Lut1D entries (grid coordinates) in front of it;
+
+    The clip of Smits & Meyer (1990), Section 3.2, factored as U o L
+    (:func:`clip_black_faces_RGB`, :func:`clip_white_faces_RGB`). Frozen; its arrays
+    are read-only. Instances come from :func:`clip_lut`.
+
+    Attributes
+    ----------
+    display : str
+        The display (a key of :data:`ocio_thinfilm.registry.DISPLAYS`).
+    size : int
+        Edge length of both Lut3Ds, in [9, 129].
+    black : numpy.ndarray
+        float64, (size, size, size, 3), index [u_a][u_b][Y^(1/3)]: L(X) / ``top`` in
+        display-linear RGB, values on the half-float grid in [0, 1].
+    white : numpy.ndarray
+        float64, (size, size, size, 3), index [R][G][B]: sRGB-encoded code values of
+        U(c), on the 16-bit grid in [0, 1].
+    white_shaper : numpy.ndarray
+        float64, (:data:`SHAPER_LENGTH`, 3): the Lut1D over display-linear RGB / top
+        in front of ``white``, grid coordinates on the 16-bit grid.
+    chart : numpy.ndarray
+        float64, (3, 3): the matrix taking CIE XYZ (D65 white at Y = 1) to the
+        black pass's chart before ``XYZ_TO_xyY``.
+    top : float
+        Largest display-linear channel the white pass covers: the power of two at or
+        above 1 / (the display's smallest luminance weight).
+
+    Examples
+    --------
+    The chain has six ops: the XYZ limit, the chart matrix, XYZ_TO_xyY, the Y shaper
+    and the two CLF-writable cores:
+
+    >>> len(clip_lut("sRGB").transforms())
+    6
     """
 
     display: str
@@ -381,13 +540,74 @@ def _clip_lut(display, size):
 def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
     """The baked clip LUTs for ``display`` (cached): both passes, from
     :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
-    is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly."""
+    is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly.
+
+    Parameters
+    ----------
+    display : str, optional
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS` (default ``"sRGB"``).
+    size : int, optional
+        Edge length of both Lut3Ds, an integer in [9, 129] (default
+        :data:`CLIP_SIZE`, 65).
+
+    Returns
+    -------
+    ClipLUT
+        Read-only arrays; the same object for repeated calls in a process.
+
+    Raises
+    ------
+    ValueError
+        For an unknown display or a size outside [9, 129].
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    For sRGB the smallest luminance weight is 0.0722 (Rec.709 blue), so the white
+    pass covers channels up to 16, the power of two above 1 / 0.0722 = 13.9:
+
+    >>> lut = clip_lut("sRGB")
+    >>> lut.size, lut.black.shape, lut.white.shape, lut.white_shaper.shape
+    (65, (65, 65, 65, 3), (65, 65, 65, 3), (32768, 3))
+    >>> lut.top
+    16.0
+    >>> lut.black.flags.writeable
+    False
+    """
     check_display(display)
     return _clip_lut(display, check_size(size, 9, 129, "clip LUT size"))
 
 
 def working_decoding_transform():
-    """sRGB code values (the white pass's output) -> display-linear RGB."""
+    """sRGB code values (the white pass's output) -> display-linear RGB.
+
+    The inverse of :func:`ocio_thinfilm.lut.display_transforms.display_encoding_transform`
+    for :data:`WORKING_ENCODING`: the IEC 61966-2-1 sRGB EOTF, ``V / 12.92`` up to
+    V = 0.04045 and ``((V + 0.055) / 1.055) ** 2.4`` above.
+
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
+        An inverse-direction group holding the sRGB encoding.
+
+    References
+    ----------
+    IEC 61966-2-1:1999, Multimedia systems and equipment -- Colour measurement and
+    management -- Default RGB colour space -- sRGB.
+
+    Examples
+    --------
+    Code 0.5 decodes to (0.555 / 1.055) ** 2.4 = 0.2140, code 0.04045 (the end of
+    the linear segment) to 0.04045 / 12.92 = 0.00313:
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> out = apply(working_decoding_transform(), [[0.0, 0.5, 1.0], [0.04045, 0.04045, 0.04045]])
+    >>> out[0].astype(float).round(3).tolist(), round(float(out[1, 0]), 5)
+    ([0.0, 0.214, 1.0], 0.00313)
+    """
     return ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)])
 
 

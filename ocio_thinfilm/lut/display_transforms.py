@@ -25,14 +25,73 @@ __all__ = [
 
 
 def check_display(display: str) -> str:
-    """``display`` if the registry has it, else ValueError naming the choices."""
+    """``display`` if the registry has it, else ValueError naming the choices.
+
+    Parameters
+    ----------
+    display : str
+        A display name of :data:`ocio_thinfilm.registry.DISPLAYS`.
+
+    Returns
+    -------
+    str
+        ``display``, unchanged.
+
+    Raises
+    ------
+    ValueError
+        For a name the registry does not have.
+
+    Examples
+    --------
+    >>> check_display("sRGB")
+    'sRGB'
+    >>> check_display("CRT")
+    Traceback (most recent call last):
+    ...
+    ValueError: display must be one of (...), got 'CRT'
+    """
     if display not in registry.DISPLAYS:
         raise ValueError(f"display must be one of {registry.DISPLAYS}, got {display!r}")
     return display
 
 
 def display_matrix_transform(display: str, inverse: bool = False):
-    """CIE-XYZ-D65 -> display-linear RGB (or back) as an OCIO MatrixTransform."""
+    """CIE-XYZ-D65 -> display-linear RGB (or back) as an OCIO MatrixTransform.
+
+    The matrix of :func:`ocio_thinfilm.colour.colorimetry.matrix_XYZ_to_RGB` (the
+    inverse normalised primary matrix, RGB = 1 at the display white), rounded to 12
+    decimals; the XYZ -> monitor RGB step of Smits & Meyer (1990), Section 2.1.
+
+    Parameters
+    ----------
+    display : str
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS`.
+    inverse : bool, optional
+        Return display-linear RGB -> CIE XYZ instead.
+
+    Returns
+    -------
+    PyOpenColorIO.MatrixTransform
+        XYZ with the D65 perfect reflector at Y = 1 on the XYZ side; no offset.
+
+    Raises
+    ------
+    ValueError
+        For an unknown display.
+
+    Examples
+    --------
+    The D65 white (0.95047, 1, 1.08883) is RGB = 1, and back:
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> rgb = apply(display_matrix_transform("sRGB"), [0.95047, 1.0, 1.08883])
+    >>> rgb.astype(float).round(3).tolist()
+    [1.0, 1.0, 1.0]
+    >>> xyz = apply(display_matrix_transform("sRGB", inverse=True), [1.0, 1.0, 1.0])
+    >>> xyz.astype(float).round(3).tolist()
+    [0.95, 1.0, 1.089]
+    """
     M = colorimetry.matrix_XYZ_to_RGB(check_display(display))
     return ocio_ops.matrix(np.linalg.inv(M) if inverse else M)
 
@@ -44,7 +103,47 @@ DISPLAY_ENCODINGS = {d.name: d.encoding for d in registry.DISPLAY_LIST}
 
 
 def display_encoding_transform(display: str):
-    """Display-linear RGB -> display code values (the display's inverse EOTF)."""
+    """Display-linear RGB -> display code values (the display's inverse EOTF).
+
+    For the sRGB-encoded displays (sRGB, Display P3) the IEC 61966-2-1 piecewise
+    curve, ``12.92 L`` up to L = 0.0031308 and ``1.055 L ** (1 / 2.4) - 0.055`` above
+    (OCIO ``ExponentWithLinearTransform``, gamma 2.4, offset 0.055, inverse); for
+    Rec.2020 the BT.1886 pure power ``L ** (1 / 2.4)``, negative values clamped to 0
+    (OCIO ``ExponentTransform``, inverse), as in the ACES OCIO configs' display spaces.
+
+    Parameters
+    ----------
+    display : str
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS`
+        (:data:`DISPLAY_ENCODINGS` gives its curve).
+
+    Returns
+    -------
+    PyOpenColorIO.ExponentWithLinearTransform or PyOpenColorIO.ExponentTransform
+        In the inverse direction (linear -> code values).
+
+    Raises
+    ------
+    ValueError
+        For an unknown display.
+
+    References
+    ----------
+    IEC 61966-2-1:1999 (sRGB); ITU-R BT.1886 (2011), Reference electro-optical
+    transfer function for flat panel displays.
+
+    Examples
+    --------
+    Linear 0.18 is sRGB code 1.055 * 0.18 ** (1 / 2.4) - 0.055 = 0.4614 and BT.1886
+    code 0.18 ** (1 / 2.4) = 0.4894:
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> px = [0.0, 0.18, 1.0]
+    >>> apply(display_encoding_transform("sRGB"), px).astype(float).round(3).tolist()
+    [0.0, 0.461, 1.0]
+    >>> apply(display_encoding_transform("Rec.2020"), px).astype(float).round(3).tolist()
+    [0.0, 0.489, 1.0]
+    """
     ocio = ocio_ops.module()
     _, gamma, offset = DISPLAY_ENCODINGS[check_display(display)]
     if offset is None:
@@ -57,6 +156,41 @@ def display_encoding_transform(display: str):
 
 
 def aces_gamut_compression_transform():
+    """OCIO's ACES 1.3 reference gamut compression, the baseline view's core.
+
+    ``FixedFunctionTransform(FIXED_FUNCTION_ACES_GAMUT_COMP_13)`` with
+    :data:`ocio_thinfilm.colour.clip.ACES_GAMUT_COMP13_PARAMS` (limits 1.147, 1.264,
+    1.312; thresholds 0.815, 0.803, 0.880; power 1.2), applied here to display-linear
+    RGB. Per pixel it keeps max(R, G, B) and compresses each channel's distance
+    ``(max - c) / |max|`` beyond its threshold so that the limit distance lands on
+    the gamut boundary (c = 0); no clamp (the views add one). Needs
+    ``ocio_profile_version`` 2.1.
+
+    Returns
+    -------
+    PyOpenColorIO.FixedFunctionTransform
+
+    References
+    ----------
+    Academy of Motion Picture Arts and Sciences (2021). ACES Reference Gamut
+    Compression Specification, ACES 1.3.
+
+    See Also
+    --------
+    ocio_thinfilm.colour.clip.aces_gamut_compress_RGB : the same with a clamp, in
+        NumPy.
+
+    Examples
+    --------
+    Distances below the thresholds are unchanged; channels at their limit distances
+    (G = 1 - 1.264, B = 1 - 1.312 for max = 1) land on 0:
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> out = apply(aces_gamut_compression_transform(),
+    ...             [[0.5, 0.4, 0.3], [1.0, -0.264, -0.312]])
+    >>> (out.astype(float).round(4) + 0.0).tolist()
+    [[0.5, 0.4, 0.3], [1.0, 0.0, 0.0]]
+    """
     ocio = ocio_ops.module()
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
                                        list(clip.ACES_GAMUT_COMP13_PARAMS))
