@@ -21,24 +21,20 @@ __all__ = ["register"]
 
 def _run_bake(args) -> int:
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
-        from ocio_thinfilm.config import (
-            merge,  # --into CONFIG and/or an .ocioz archive (issue 10)
-        )
+        # --into CONFIG and/or an .ocioz archive (issue 10)
+        from ocio_thinfilm.config import merge
 
         if args.into and args.out == bake_module.DEFAULT_CONFIG_DIR:
             raise UsageError("--into needs --out DIR (or FILE.ocioz)")
         if args.luts is not None:
             raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
-        clip_size = args.clip_size
-        lo, hi = bake_module.CLIP_SIZES
-        if not lo <= clip_size <= hi:
-            raise UsageError(f"--clip-size must be in [{lo}, {hi}], got {clip_size}")
+        clip_size = bake_module.check_clip_size(args.clip_size)
         path = (merge.bake_into(args.into, args.out, clip_size=clip_size) if args.into
                 else merge.bake_archive(args.out, clip_size=clip_size))
         print(f"wrote {path}")
         return 0
-    path = bake_module.bake(args.out, clip_size=args.clip_size,
-                show_progress=not args.quiet, luts=args.luts)
+    path = bake_module.bake(args.out, clip_size=args.clip_size, show_progress=not args.quiet,
+                            luts=args.luts)
     print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
     return 0
 

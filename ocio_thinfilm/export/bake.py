@@ -8,6 +8,7 @@ set (:func:`ocio_thinfilm.export.files.export_set`), into directories it owns
 
 from __future__ import annotations
 
+import numbers
 import re
 import shutil
 from pathlib import Path
@@ -17,12 +18,22 @@ from ocio_thinfilm.export.files import FORMATS, export_set, progress_bar
 from ocio_thinfilm.io import UsageError, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut
 
-__all__ = ["DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "CLIP_SIZES", "bake"]
+__all__ = ["DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "CLIP_SIZES", "check_clip_size", "bake"]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
 DEFAULT_LUTS_DIR = "luts"
 #: Edge lengths the clip LUTs may have.
 CLIP_SIZES = (9, 129)
+
+
+def check_clip_size(clip_size) -> int:
+    """``clip_size`` as an int in :data:`CLIP_SIZES`, else a UsageError naming
+    ``--clip-size``."""
+    lo, hi = CLIP_SIZES
+    if isinstance(clip_size, bool) or not isinstance(clip_size, numbers.Integral) or \
+            not lo <= clip_size <= hi:
+        raise UsageError(f"--clip-size must be an integer in [{lo}, {hi}], got {clip_size!r}")
+    return int(clip_size)
 
 
 def _legacy_config(directory):
@@ -80,9 +91,7 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=
     Ctrl-C) leaves both directories as they were, and a kill leaves each a complete,
     loadable set of files.
     """
-    lo, hi = CLIP_SIZES
-    if isinstance(clip_size, bool) or not lo <= int(clip_size) <= hi:
-        raise UsageError(f"--clip-size must be in [{lo}, {hi}], got {clip_size}")
+    clip_size = check_clip_size(clip_size)
     claim = claim_directory(out, option="--out", legacy=_legacy_config, last=("config.ocio",))
     luts_claim = None
     if luts is not None:

@@ -22,18 +22,18 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm import registry
+from ocio_thinfilm.config.data import REFERENCE
 from ocio_thinfilm.io import UsageError
 from ocio_thinfilm.lut import tables
 
 __all__ = ["DEFAULT_CONFIG", "REFERENCE_SPACE", "table_colorspace", "load_config",
            "ConfigProcessors", "make_lookup", "display_image", "build_table"]
 
-# --------------------------------------------------------------------------- #
 #: The config a render goes through by default: the package's baked config (baked
 #: with ``ocio-thinfilm bake`` first when it is missing).
 DEFAULT_CONFIG = Path(__file__).resolve().parents[2] / "configs" / "thinfilm" / "config.ocio"
 #: The config's reference, the EXR's colour space: tables go to it, views start at it.
-REFERENCE_SPACE = "CIE-XYZ-D65"
+REFERENCE_SPACE = REFERENCE
 
 
 def table_colorspace(spec) -> str:
