@@ -10,9 +10,10 @@ the next call compute again.
 
 - :func:`memoize` -- decorator: a :class:`Memo` (least-recently-used, ``maxsize``
   entries, one computation at a time), registered in the store;
-- :func:`clear` -- empty every memo (in memory: the on-disk cache of
-  :func:`ocio_thinfilm.colour.colorimetry.persistent` is keyed by the code and stays
-  valid);
+- :func:`clear` -- empty every memo; with ``persistent=True`` also the memos' own
+  on-disk entries (those of :func:`ocio_thinfilm.colour.colorimetry.persistent`, which
+  are keyed by the code and colour-science's version, so they never go stale: clearing
+  them only costs the next process the computation);
 - :func:`info` -- ``{name: CacheInfo(hits, misses, maxsize, currsize)}``;
 - :func:`entries` -- ``{name: (key, ...)}``: what each memo holds now, e.g. which
   tables this process has computed (the tests' proof that a scene builds only what it
@@ -50,9 +51,12 @@ class Memo:
     per argument tuple (positional, hashable) while fewer than ``maxsize`` newer keys
     have been used; calls are serialised while a value is computed."""
 
-    def __init__(self, function, maxsize: int, name: str):
+    def __init__(self, function, maxsize: int, name: str, forget=None):
         functools.update_wrapper(self, function)
         self.function, self.maxsize, self.name = function, int(maxsize), name
+        #: Called by :func:`clear` with ``persistent=True``: removes what the function
+        #: keeps outside this process (its on-disk entries), if anything.
+        self.forget = forget
         self._values: OrderedDict = OrderedDict()
         self._lock = threading.RLock()
         self._hits = self._misses = 0
@@ -88,12 +92,15 @@ class Memo:
         return f"<Memo {self.name} ({len(self._values)}/{self.maxsize})>"
 
 
-def memoize(maxsize: int = 128):
+def memoize(maxsize: int = 128, *, forget=None):
     """Decorator: the function as a :class:`Memo` of ``maxsize`` entries, registered
     in the store by its qualified name (a new memo of the same name replaces the old).
+    ``forget``: a callable that removes the function's persistent entries (see
+    :func:`clear`).
     """
     def decorate(function):
-        memo = Memo(function, maxsize, f"{function.__module__}.{function.__qualname__}")
+        memo = Memo(function, maxsize, f"{function.__module__}.{function.__qualname__}",
+                    forget)
         with _STORE_LOCK:
             _STORE[memo.name] = memo
         return memo
@@ -106,10 +113,13 @@ def _memos() -> dict:
         return dict(sorted(_STORE.items()))  # strong references while in use
 
 
-def clear() -> None:
-    """Empty every memo of the store."""
+def clear(*, persistent: bool = False) -> None:
+    """Empty every memo of the store; with ``persistent``, also remove their on-disk
+    entries (each memo's ``forget``)."""
     for memo in _memos().values():
         memo.cache_clear()
+        if persistent and memo.forget is not None:
+            memo.forget()
 
 
 def info() -> dict:

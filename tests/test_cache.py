@@ -80,3 +80,27 @@ def test_a_memo_holds_at_most_maxsize_values_newest_kept():
     assert square.cache_info() == cache.CacheInfo(hits=2, misses=4, maxsize=2, currsize=2)
     assert "test_cache.test_a_memo_holds_at_most_maxsize_values_newest_kept.<locals>.square" \
         in " ".join(cache.names())
+
+
+def test_clear_persistent_removes_the_disk_entries_too(tmp_path, monkeypatch):
+    """``cache.clear(persistent=True)`` empties the memos and removes the on-disk entries
+    of :func:`colorimetry.persistent` functions (only theirs: other files stay)."""
+    monkeypatch.setenv("OCIO_THINFILM_CACHE", str(tmp_path))
+    calls = []
+
+    def cubed(x):
+        calls.append(x)
+        return np.arange(3.0) * x ** 3
+
+    memo = colorimetry.persistent(cubed)
+    memo(2.0)
+    other = tmp_path / "notes.txt"
+    other.write_text("mine")
+    assert len(list(tmp_path.glob("cubed-*.npy"))) == 1
+    cache.clear()
+    memo(2.0)
+    assert calls == [2.0]  # memory emptied, the disk entry read back
+    cache.clear(persistent=True)
+    assert list(tmp_path.glob("cubed-*.npy")) == [] and other.read_text() == "mine"
+    np.testing.assert_array_equal(memo(2.0), np.arange(3.0) * 8.0)
+    assert calls == [2.0, 2.0]  # computed again

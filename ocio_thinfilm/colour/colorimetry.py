@@ -115,13 +115,21 @@ def persistent(function=None, *, modules=()):
     -----
     The on-disk store is ``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables it), else
     ``$XDG_CACHE_HOME/ocio-thinfilm`` or ``~/.cache/ocio-thinfilm``; each entry is one
-    ``<name>-<sha256 prefix>.npy`` file written atomically.
+    ``<name>-<sha256 prefix>.npy`` file written atomically;
+    ``ocio_thinfilm.cache.clear(persistent=True)`` removes them.
     """
     if function is None:
         return lambda f: persistent(f, modules=modules)
     source = inspect.getsource(function)
 
-    @cache.memoize(maxsize=64)
+    def forget():
+        """Remove this function's entries from the on-disk store."""
+        directory = _cache_dir()
+        if directory is not None and directory.is_dir():
+            for path in directory.glob(f"{function.__name__}-{'?' * 32}.npy"):
+                path.unlink(missing_ok=True)
+
+    @cache.memoize(maxsize=64, forget=forget)
     @wraps(function)
     def wrapper(*args):
         directory = _cache_dir()
