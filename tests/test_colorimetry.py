@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.physics import exact, sampling, spectra
 
 OBS = "CIE 1931 2 Degree Standard Observer"
 D65_XY = np.array([0.3127, 0.3290])
@@ -34,7 +34,7 @@ def test_perfect_reflector_is_the_illuminant_white(colour, step, tol):
     """Reference: colour.sd_to_XYZ of R = 1 with the same CMFs and D65 (Y = 1 by
     construction; X and Z within 1e-4 of colour's independent 1 nm integration, a
     little more on 5 / 10 nm grids where the trapezoid rule itself is coarser)."""
-    wl = spectra.wavelength_grid(step=step)
+    wl = sampling.wavelength_grid(step=step)
     XYZ = colorimetry.reflectance_to_XYZ(np.ones(wl.size), wl)
     assert XYZ[1] == pytest.approx(1.0, abs=1e-12)
     np.testing.assert_allclose(XYZ, colour_XYZ(colour, np.ones(wl.size), wl), atol=tol)
@@ -47,7 +47,7 @@ def test_film_spectra_match_colour_sd_to_XYZ(colour, t_opt, phase_change):
     """Reference: colour.sd_to_XYZ ("Integration" at 1 nm; "ASTM E308" at 5 nm) on
     exactly the same film spectrum, so only the integrators differ."""
     for step, method, tol in ((1.0, "Integration", 2e-5), (5.0, "ASTM E308", 2e-5)):
-        wl = spectra.wavelength_grid(step=step)
+        wl = sampling.wavelength_grid(step=step)
         R = spectra.two_beam_reflectance(t_opt, wl, phase_change=phase_change)
         got = colorimetry.reflectance_to_XYZ(R, wl)
         np.testing.assert_allclose(got, colour_XYZ(colour, R, wl, method=method), atol=tol)
@@ -56,7 +56,7 @@ def test_film_spectra_match_colour_sd_to_XYZ(colour, t_opt, phase_change):
 def test_film_XYZ_is_the_integral_of_the_model(colour):
     """Reference: colour.sd_to_XYZ of Eq. 7 evaluated with numpy on a 1 nm grid,
     for film_XYZ's pointwise (band_limited=False) path over many thicknesses."""
-    wl = spectra.wavelength_grid(step=1.0)
+    wl = sampling.wavelength_grid(step=1.0)
     t = np.array([0.0, 100.0, 250.0, 532.0, 1000.0])
     got = colorimetry.film_XYZ(t, wavelengths=wl, band_limited=False)
     for i, ti in enumerate(t):
@@ -72,7 +72,7 @@ def test_film_XYZ_is_the_integral_of_the_model(colour):
 ])
 def test_other_observers_and_illuminants(colour, observer, illuminant):
     """Reference: colour.sd_to_XYZ with the same observer and illuminant."""
-    wl = spectra.wavelength_grid(step=1.0)
+    wl = sampling.wavelength_grid(step=1.0)
     white = colorimetry.reflectance_to_XYZ(np.ones(wl.size), wl, observer, illuminant)
     assert white[1] == pytest.approx(1.0, abs=1e-12)
     np.testing.assert_allclose(white, colour_XYZ(colour, np.ones(wl.size), wl, observer,
@@ -86,9 +86,9 @@ def test_other_observers_and_illuminants(colour, observer, illuminant):
 
 
 @pytest.mark.parametrize("call,name", [
-    (lambda: colorimetry.spectral_weights(spectra.wavelength_grid(), observer="Martian"),
+    (lambda: colorimetry.spectral_weights(sampling.wavelength_grid(), observer="Martian"),
      "observer"),
-    (lambda: colorimetry.spectral_weights(spectra.wavelength_grid(), illuminant="D66"),
+    (lambda: colorimetry.spectral_weights(sampling.wavelength_grid(), illuminant="D66"),
      "illuminant"),
     (lambda: colorimetry.matrix_XYZ_to_RGB("sRGBish"), "space"),
     (lambda: colorimetry.XYZ_to_RGB([0.2, 0.3, 0.4], "Adobe RGB 9000"), "space"),
@@ -168,7 +168,7 @@ def test_spectral_locus(colour):
 # --------------------------------------------------------------------------- #
 # Band-limited integration (thick films)
 # --------------------------------------------------------------------------- #
-REF_WL = spectra.wavelength_grid(step=0.1)
+REF_WL = sampling.wavelength_grid(step=0.1)
 
 
 @pytest.fixture(scope="module")
@@ -208,7 +208,7 @@ def test_naive_5nm_sampling_fails_on_thick_films(thick_scan, kind):
 def test_reference_grid_has_converged():
     """Reference: 0.05 nm sampling; the 0.1 nm reference is converged at 100 um."""
     t = np.array([60_000.0, 99_000.0, 100_000.0])
-    fine = colorimetry.film_XYZ(t, wavelengths=spectra.wavelength_grid(step=0.05),
+    fine = colorimetry.film_XYZ(t, wavelengths=sampling.wavelength_grid(step=0.05),
                                 band_limited=False)
     ref = colorimetry.film_XYZ(t, wavelengths=REF_WL, band_limited=False)
     assert colorimetry.delta_E2000(fine, ref).max() < 0.01
@@ -226,7 +226,7 @@ def test_thick_two_beam_film_is_neutral_grey(colour):
 
 def test_band_limited_multilayer_tends_to_incoherent_average():
     """Reference: the mean of the normalised Fejer kernel, 1/(l+1) of the white."""
-    wl = spectra.wavelength_grid(step=5.0)
+    wl = sampling.wavelength_grid(step=5.0)
     white = colorimetry.reflectance_to_XYZ(np.ones(wl.size), wl)
     for layers in (1, 5, 12):
         R = spectra.multilayer_reflectance(np.array([1e5, 3e5]), wl, layers, band_limited=True)
@@ -257,9 +257,9 @@ def _incoherent_airy(n1, n2, theta):
 @pytest.mark.parametrize("n1,n2,theta", [(1.5, 1.0, 0.0), (1.33, 1.0, 45.0), (2.0, 1.5, 30.0)])
 def test_band_limited_airy_thick_film_is_incoherent(n1, n2, theta):
     """Reference: the textbook incoherent sum of intensities (no phases at all)."""
-    wl = spectra.wavelength_grid(step=5.0)
+    wl = sampling.wavelength_grid(step=5.0)
     white = colorimetry.reflectance_to_XYZ(np.ones(wl.size), wl)
-    R = spectra.airy_reflectance(np.array([2e5, 5e5]), wl, n1, theta, n_substrate=n2,
+    R = exact.airy_reflectance(np.array([2e5, 5e5]), wl, n1, theta, n_substrate=n2,
                                  band_limited=True)
     XYZ = colorimetry.reflectance_to_XYZ(R, wl)
     expected = _incoherent_airy(n1, n2, theta) * white
@@ -270,11 +270,11 @@ def test_band_limited_airy_thick_film_is_incoherent(n1, n2, theta):
 def test_band_limited_airy_matches_dense_reference():
     """Reference: pointwise Airy on the 0.1 nm grid (brute force), t up to 30 um."""
     d = np.array([100.0, 1000.0, 5000.0, 12_345.0, 30_000.0])
-    wl5 = spectra.wavelength_grid(step=5.0)
-    dense = colorimetry.reflectance_to_XYZ(spectra.airy_reflectance(d, REF_WL, 1.4), REF_WL)
+    wl5 = sampling.wavelength_grid(step=5.0)
+    dense = colorimetry.reflectance_to_XYZ(exact.airy_reflectance(d, REF_WL, 1.4), REF_WL)
     band = colorimetry.reflectance_to_XYZ(
-        spectra.airy_reflectance(d, wl5, 1.4, band_limited=True), wl5)
-    naive = colorimetry.reflectance_to_XYZ(spectra.airy_reflectance(d, wl5, 1.4), wl5)
+        exact.airy_reflectance(d, wl5, 1.4, band_limited=True), wl5)
+    naive = colorimetry.reflectance_to_XYZ(exact.airy_reflectance(d, wl5, 1.4), wl5)
     assert colorimetry.delta_E2000(band, dense).max() <= 0.5
     assert colorimetry.delta_E2000(naive, dense).max() > 1.0
 
@@ -286,7 +286,7 @@ def test_morpho_colour_is_blue_and_matches_colour(colour):
     """Reference: colour.sd_to_XYZ of Eq. 9 with the Eq. 14 thickness evaluated with
     numpy (closed form, 1 nm, its analytic limit at the pole); at normal incidence
     the colour is blue (x, y small)."""
-    wl = spectra.wavelength_grid(step=1.0)
+    wl = sampling.wavelength_grid(step=1.0)
     got = colorimetry.morpho_XYZ(np.array([0.0, 20.0]), wavelengths=wl, band_limited=False)
     for i, theta in enumerate((0.0, 20.0)):
         th = np.deg2rad(theta)

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import colour_multilayer_R, colour_thin_film_R, mp_airy_R
 from hypothesis import given
 from hypothesis import strategies as st
 
-from ocio_thinfilm.physics import spectra
+from conftest import colour_multilayer_R, colour_thin_film_R, mp_airy_R
+from ocio_thinfilm.physics import exact, sampling, spectra
 
 WL_10 = np.arange(380.0, 781.0, 10.0)
 
@@ -27,7 +27,7 @@ WL_10 = np.arange(380.0, 781.0, 10.0)
 def test_two_beam_is_sin2_cos2(phase_change):
     """Reference: Eq. 7 / 8 evaluated directly, sin^2(2 pi t'/l) and cos^2(2 pi t'/l)."""
     t = np.linspace(0.0, 5000.0, 257)
-    wl = spectra.wavelength_grid(step=1.0)
+    wl = sampling.wavelength_grid(step=1.0)
     x = 2.0 * np.pi * t[:, None] / wl[None, :]
     expected = np.sin(x) ** 2 if phase_change else np.cos(x) ** 2
     got = spectra.two_beam_reflectance(t, wl, phase_change=phase_change)
@@ -170,7 +170,7 @@ def test_morpho_eq14_and_peak_wavelength():
     t = spectra.morpho_layer_thickness(theta)
     np.testing.assert_allclose(t, eq14, rtol=1e-14)
     assert t[0] == pytest.approx(226.5, abs=1e-12)
-    wl = spectra.wavelength_grid(360.0, 780.0, 0.1)
+    wl = sampling.wavelength_grid(360.0, 780.0, 0.1)
     R = spectra.multilayer_reflectance(t, wl, spectra.MORPHO["layers"])
     peaks = wl[np.argmax(R, axis=-1)]
     assert peaks[0] == pytest.approx(453.0, abs=0.1)
@@ -192,19 +192,19 @@ def test_airy_and_tmm_match_colour_thin_film_tmm(n_film, n_substrate):
     """Reference: colour.phenomena.thin_film_tmm (Byrnes-style TMM), (R_s+R_p)/2,
     over thickness x angle (to 89.9 degrees) x wavelength. max |dR| <= 1e-9."""
     ref = colour_thin_film_R([1.0, n_film, n_substrate], THICKNESSES, WL_10, ANGLES)
-    airy = spectra.airy_reflectance(THICKNESSES[None, :], WL_10, n_film, ANGLES[:, None],
+    airy = exact.airy_reflectance(THICKNESSES[None, :], WL_10, n_film, ANGLES[:, None],
                                     n_substrate=n_substrate)
     assert airy.shape == ref.shape
     assert np.abs(airy - ref).max() <= 1e-9
     for i, d in enumerate(THICKNESSES):
-        tmm = spectra.transfer_matrix_reflectance([n_film], [d], WL_10, ANGLES,
+        tmm = exact.transfer_matrix_reflectance([n_film], [d], WL_10, ANGLES,
                                                   n_substrate=n_substrate)
         assert np.abs(tmm - ref[:, i, :]).max() <= 1e-9
 
 
 def test_airy_matches_colour_doctest_value():
     """Reference: colour's own doctest, R = 0.1215919 for air|1.5|air, 250 nm, 555 nm."""
-    R = spectra.airy_reflectance(250.0, np.array([555.0]), 1.5)
+    R = exact.airy_reflectance(250.0, np.array([555.0]), 1.5)
     assert R[0] == pytest.approx(0.1215919, abs=1e-7)
 
 
@@ -213,9 +213,9 @@ def test_complex_substrate_normal_incidence_matches_colour(n_substrate):
     """Reference: colour's thin_film_tmm with an absorbing substrate at normal
     incidence (where colour's real-angle Snell law is exact)."""
     ref = colour_thin_film_R([1.0, 1.38, n_substrate], THICKNESSES, WL_10, [0.0])
-    airy = spectra.airy_reflectance(THICKNESSES, WL_10, 1.38, 0.0, n_substrate=n_substrate)
+    airy = exact.airy_reflectance(THICKNESSES, WL_10, 1.38, 0.0, n_substrate=n_substrate)
     assert np.abs(airy - ref[0]).max() <= 1e-9
-    tmm = np.stack([spectra.transfer_matrix_reflectance([1.38], [d], WL_10, 0.0,
+    tmm = np.stack([exact.transfer_matrix_reflectance([1.38], [d], WL_10, 0.0,
                                                         n_substrate=n_substrate)
                     for d in THICKNESSES])
     assert np.abs(tmm - ref[0]).max() <= 1e-9
@@ -247,8 +247,8 @@ def test_airy_and_tmm_match_mpmath_textbook(n0, n1, n2, theta):
     d = np.array([0.0, 5.0, 50.0, 200.0, 1000.0])
     wl = np.array([380.0, 450.0, 555.0, 700.0])
     expected = np.array([[mp_airy_R(n0, n1, n2, di, w, theta) for w in wl] for di in d])
-    airy = spectra.airy_reflectance(d, wl, n1, theta, n_incident=n0, n_substrate=n2)
-    tmm = np.stack([spectra.transfer_matrix_reflectance([n1], [di], wl, theta,
+    airy = exact.airy_reflectance(d, wl, n1, theta, n_incident=n0, n_substrate=n2)
+    tmm = np.stack([exact.transfer_matrix_reflectance([n1], [di], wl, theta,
                                                         n_incident=n0, n_substrate=n2)
                     for di in d])
     np.testing.assert_allclose(airy, expected, rtol=0, atol=1e-9)
@@ -263,10 +263,10 @@ def test_lossless_total_internal_reflection_is_total(n0, n1, n2, theta):
     R = 1 exactly, for every thickness and wavelength."""
     assert n2 <= n0 * np.sin(np.deg2rad(theta))
     d = np.array([0.0, 3.0, 80.0, 400.0, 5000.0])
-    airy = spectra.airy_reflectance(d, WL_10, n1, theta, n_incident=n0, n_substrate=n2)
+    airy = exact.airy_reflectance(d, WL_10, n1, theta, n_incident=n0, n_substrate=n2)
     np.testing.assert_allclose(airy, 1.0, rtol=0, atol=1e-12)
     for di in d:
-        tmm = spectra.transfer_matrix_reflectance([n1], [di], WL_10, theta, n_incident=n0,
+        tmm = exact.transfer_matrix_reflectance([n1], [di], WL_10, theta, n_incident=n0,
                                                   n_substrate=n2)
         np.testing.assert_allclose(tmm, 1.0, rtol=0, atol=1e-12)
 
@@ -276,7 +276,7 @@ def test_frustrated_tir_limits():
     no gap -> no interface (R = 0); a gap many decay lengths thick -> R -> 1;
     in between R rises monotonically."""
     d = np.array([0.0, 10.0, 50.0, 100.0, 200.0, 400.0, 2000.0])
-    R = spectra.airy_reflectance(d, np.array([550.0]), 1.0, 60.0, n_incident=1.5,
+    R = exact.airy_reflectance(d, np.array([550.0]), 1.0, 60.0, n_incident=1.5,
                                  n_substrate=1.5)[:, 0]
     assert R[0] == pytest.approx(0.0, abs=1e-15)
     assert R[-1] == pytest.approx(1.0, abs=1e-9)
@@ -292,7 +292,7 @@ def test_tmm_multilayer_matches_colour(stack):
     """Reference: colour.phenomena.multilayer_tmm for 3-5 layer stacks, all angles."""
     n_layers, d, ns = stack
     ref = colour_multilayer_R([1.0, *n_layers, ns], d, WL_10, ANGLES)
-    got = spectra.transfer_matrix_reflectance(n_layers, d, WL_10, ANGLES, n_substrate=ns)
+    got = exact.transfer_matrix_reflectance(n_layers, d, WL_10, ANGLES, n_substrate=ns)
     assert got.shape == ref.shape
     assert np.abs(got - ref).max() <= 1e-9
 
@@ -307,7 +307,7 @@ def test_tmm_periodic_stack_matches_eq9_peak_position():
     for pairs in (2, 4, 8):
         n_layers = [nh, nl] * pairs
         d = [design / (4 * nh), design / (4 * nl)] * pairs
-        R = spectra.transfer_matrix_reflectance(n_layers, d, wl, 0.0, n_substrate=1.52)
+        R = exact.transfer_matrix_reflectance(n_layers, d, wl, 0.0, n_substrate=1.52)
         assert R[1] == R.max()
         Rs.append(R[1])
     assert Rs[0] < Rs[1] < Rs[2] and Rs[2] > 0.99
@@ -330,9 +330,9 @@ BAD_CALLS = [
     ("wavelengths", lambda: spectra.two_beam_reflectance(100.0, [500.0, 400.0])),
     ("wavelengths", lambda: spectra.two_beam_reflectance(100.0, [400.0, 400.0, 500.0])),
     ("wavelengths", lambda: spectra.two_beam_reflectance(100.0, [-400.0, 500.0])),
-    ("wavelengths", lambda: spectra.check_wavelengths(np.ones((2, 2)))),
-    ("step", lambda: spectra.wavelength_grid(step=0.0)),
-    ("wavelength range", lambda: spectra.wavelength_grid(700.0, 400.0)),
+    ("wavelengths", lambda: sampling.check_wavelengths(np.ones((2, 2)))),
+    ("step", lambda: sampling.wavelength_grid(step=0.0)),
+    ("wavelength range", lambda: sampling.wavelength_grid(700.0, 400.0)),
     ("theta", lambda: spectra.morpho_layer_thickness(91.0)),
     ("d1", lambda: spectra.morpho_layer_thickness(0.0, d1=-1.0)),
     ("d2", lambda: spectra.morpho_layer_thickness(0.0, d2=-1.0)),
@@ -342,22 +342,22 @@ BAD_CALLS = [
     ("layers", lambda: spectra.multilayer_reflectance(100.0, WL, -3)),
     ("layers", lambda: spectra.multilayer_reflectance(100.0, WL, 2.5)),
     ("wavelengths", lambda: spectra.multilayer_reflectance(100.0, [600.0, 500.0], 12)),
-    ("thickness", lambda: spectra.airy_reflectance(-1.0, WL, 1.5)),
-    ("n_film", lambda: spectra.airy_reflectance(100.0, WL, 0.0)),
-    ("n_film", lambda: spectra.airy_reflectance(100.0, WL, -0.5 + 1j)),
-    ("n_incident", lambda: spectra.airy_reflectance(100.0, WL, 1.5, n_incident=-1.0)),
-    ("n_substrate", lambda: spectra.airy_reflectance(100.0, WL, 1.5, n_substrate=0.0)),
-    ("theta", lambda: spectra.airy_reflectance(100.0, WL, 1.5, 100.0)),
-    ("wavelengths", lambda: spectra.airy_reflectance(100.0, [], 1.5)),
-    ("harmonics", lambda: spectra.airy_reflectance(100.0, WL, 1.5, band_limited=True,
+    ("thickness", lambda: exact.airy_reflectance(-1.0, WL, 1.5)),
+    ("n_film", lambda: exact.airy_reflectance(100.0, WL, 0.0)),
+    ("n_film", lambda: exact.airy_reflectance(100.0, WL, -0.5 + 1j)),
+    ("n_incident", lambda: exact.airy_reflectance(100.0, WL, 1.5, n_incident=-1.0)),
+    ("n_substrate", lambda: exact.airy_reflectance(100.0, WL, 1.5, n_substrate=0.0)),
+    ("theta", lambda: exact.airy_reflectance(100.0, WL, 1.5, 100.0)),
+    ("wavelengths", lambda: exact.airy_reflectance(100.0, [], 1.5)),
+    ("harmonics", lambda: exact.airy_reflectance(100.0, WL, 1.5, band_limited=True,
                                                    harmonics=0)),
-    ("thicknesses", lambda: spectra.transfer_matrix_reflectance([1.5], [-1.0], WL)),
-    ("n_layers", lambda: spectra.transfer_matrix_reflectance([0.0], [10.0], WL)),
-    ("n_substrate", lambda: spectra.transfer_matrix_reflectance([1.5], [10.0], WL,
+    ("thicknesses", lambda: exact.transfer_matrix_reflectance([1.5], [-1.0], WL)),
+    ("n_layers", lambda: exact.transfer_matrix_reflectance([0.0], [10.0], WL)),
+    ("n_substrate", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], WL,
                                                                 n_substrate=-2.0)),
-    ("theta", lambda: spectra.transfer_matrix_reflectance([1.5], [10.0], WL, -5.0)),
-    ("wavelengths", lambda: spectra.transfer_matrix_reflectance([1.5], [10.0], [5.0, 4.0])),
-    ("n_layers", lambda: spectra.transfer_matrix_reflectance([1.5, 2.0], [10.0], WL)),
+    ("theta", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], WL, -5.0)),
+    ("wavelengths", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], [5.0, 4.0])),
+    ("n_layers", lambda: exact.transfer_matrix_reflectance([1.5, 2.0], [10.0], WL)),
 ]
 
 
@@ -400,7 +400,7 @@ def test_valid_input_never_nan(seed, t_scale, n, n_sub, n_inc, theta, band_limit
     rng = np.random.default_rng(seed)
     t = rng.uniform(0.0, 1.0, 64) * t_scale
     t[0] = 0.0
-    wl = spectra.wavelength_grid(360.0, 780.0, step)
+    wl = sampling.wavelength_grid(360.0, 780.0, step)
     results = [
         spectra.optical_thickness(t, n, theta),
         spectra.optical_thickness(t, n, theta, mode="literal"),
@@ -409,9 +409,9 @@ def test_valid_input_never_nan(seed, t_scale, n, n_sub, n_inc, theta, band_limit
         spectra.multilayer_reflectance(t, wl, 12, band_limited=band_limited),
         spectra.multilayer_reflectance(spectra.morpho_layer_thickness(theta), wl, 100,
                                        band_limited=band_limited),
-        spectra.airy_reflectance(t[:8], wl, n, theta, n_incident=n_inc, n_substrate=n_sub,
+        exact.airy_reflectance(t[:8], wl, n, theta, n_incident=n_inc, n_substrate=n_sub,
                                  band_limited=band_limited),
-        spectra.transfer_matrix_reflectance([n, n_sub], t[1:3], wl, theta, n_incident=n_inc,
+        exact.transfer_matrix_reflectance([n, n_sub], t[1:3], wl, theta, n_incident=n_inc,
                                             n_substrate=n_inc),
     ]
     for k, r in enumerate(results):
@@ -428,8 +428,8 @@ def test_exact_grazing_incidence_is_the_limit(n1, n2):
     d = np.array([0.0, 5.0, 100.0, 1000.0])
     wl = np.array([400.0, 600.0])
     expected = np.array([[mp_airy_R(1.0, n1, n2, di, w, 90.0 - 1e-7) for w in wl] for di in d])
-    airy = spectra.airy_reflectance(d, wl, n1, 90.0, n_substrate=n2)
-    tmm = np.stack([spectra.transfer_matrix_reflectance([n1], [di], wl, 90.0, n_substrate=n2)
+    airy = exact.airy_reflectance(d, wl, n1, 90.0, n_substrate=n2)
+    tmm = np.stack([exact.transfer_matrix_reflectance([n1], [di], wl, 90.0, n_substrate=n2)
                     for di in d])
     np.testing.assert_allclose(airy, expected, atol=1e-5)
     np.testing.assert_allclose(tmm, expected, atol=1e-5)

@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm import cache
-from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.physics import sampling, spectra
 
 __all__ = [
     "DEFAULT_OBSERVER",
@@ -179,7 +179,7 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
     shape = colour.SpectralShape(wl.min(), max(wl.max(), wl.min() + 1.0), 1)
     cmf = np.asarray(cmfs.copy().extrapolate(shape)[wl]).reshape(-1, 3)
     s = np.asarray(sd.copy().extrapolate(shape)[wl]).reshape(-1)
-    lower, upper = spectra.bin_edges(wl)
+    lower, upper = sampling.bin_edges(wl)
     # bin widths: the trapezoid rule; one sample is a point evaluation (width 1)
     width = (upper - lower) if wl.size > 1 else np.ones(1)
     w = cmf * (s * width)[:, None]
@@ -197,7 +197,7 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     ``XYZ = R @ W`` and the perfect reflector has Y = 1.
 
     ``W[i] = cmf(l_i) S(l_i) (upper_i - lower_i) / sum(ybar S dl)`` with the bins
-    of :func:`ocio_thinfilm.physics.spectra.bin_edges`: the trapezoid rule on the grid; for a
+    of :func:`ocio_thinfilm.physics.sampling.bin_edges`: the trapezoid rule on the grid; for a
     band-limited (hat-averaged) spectrum, the exact integral of ``R`` against the
     linearly interpolated weights.
 
@@ -209,7 +209,7 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     ----------
     wavelengths : array_like
         Sample wavelengths in nm, 1-D, finite and strictly increasing (checked by
-        :func:`ocio_thinfilm.physics.spectra.check_wavelengths`). Matching functions and
+        :func:`ocio_thinfilm.physics.sampling.check_wavelengths`). Matching functions and
         illuminant are interpolated by colour-science and held constant outside their
         tabulated range. A single wavelength is a point evaluation (bin width 1 nm).
     observer : str, optional
@@ -248,7 +248,7 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     >>> W.sum(axis=0).round(2).tolist()
     [0.95, 1.0, 1.09]
     """
-    wl = spectra.check_wavelengths(wavelengths)
+    wl = sampling.check_wavelengths(wavelengths)
     return _weights_cached(tuple(wl.tolist()), observer, illuminant).copy()
 
 
@@ -334,7 +334,7 @@ def film_XYZ(optical_thickness_nm, kind: str = "phase-change", *, step: float = 
     """
     if kind not in FILM_KINDS:
         raise ValueError(f"kind must be one of {FILM_KINDS}, got {kind!r}")
-    wl = spectra.wavelength_grid(step=step) if wavelengths is None else wavelengths
+    wl = sampling.wavelength_grid(step=step) if wavelengths is None else wavelengths
 
     def model(t):
         return spectra.two_beam_reflectance(t, wl, phase_change=kind == "phase-change",
@@ -378,7 +378,7 @@ def morpho_XYZ(theta_degrees, *, layers: int = spectra.MORPHO["layers"], d1=spec
     >>> bool(Z > X > Y)
     True
     """
-    wl = spectra.wavelength_grid(step=step) if wavelengths is None else wavelengths
+    wl = sampling.wavelength_grid(step=step) if wavelengths is None else wavelengths
 
     def model(theta):
         t = spectra.morpho_layer_thickness(theta, d1, d2, n)
@@ -614,7 +614,7 @@ def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
     ----------
     wavelengths : array_like
         Wavelengths in nm, 1-D, finite and strictly increasing (checked by
-        :func:`ocio_thinfilm.physics.spectra.check_wavelengths`).
+        :func:`ocio_thinfilm.physics.sampling.check_wavelengths`).
     observer : str, optional
         A key of ``colour.MSDS_CMFS`` (default CIE 1931 2 degree standard observer).
 
@@ -642,7 +642,7 @@ def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
     >>> cmfs_at([555.0, 600.0]).round(3).tolist()
     [[0.512, 1.0, 0.006], [1.062, 0.631, 0.001]]
     """
-    wl = spectra.check_wavelengths(wavelengths)
+    wl = sampling.check_wavelengths(wavelengths)
     return _cmfs_cached(tuple(wl.tolist()), observer).copy()
 
 

@@ -30,7 +30,7 @@ from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.evaluation.formatting import fmt  # re-exported for existing users
 from ocio_thinfilm.lut import clip_lut, ocio_ops
-from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.physics import exact, sampling, spectra
 
 __all__ = ["Case", "Row", "fmt", "limit_along", "xyz_cases", "physics_rows", "ocio_clip_rows",
            "poisoned", "spectral_white_XYZ"]
@@ -233,7 +233,7 @@ _GAPS = np.array([10.0, 300.0, 3000.0])
 
 
 def _wl():
-    return spectra.wavelength_grid()
+    return sampling.wavelength_grid()
 
 
 def _thick_check(m):
@@ -388,35 +388,35 @@ def physics_rows() -> list[Row]:
             _zero_check, "test_zero_thickness"),
         Row("t = 0, exact film air|1.33|air and on glass 1.5",
             "R = 0 and bare-glass Fresnel ((1.5−1)/2.5)² = 0.04",
-            lambda: {"air": spectra.airy_reflectance(0.0, wl, 1.33),
-                     "glass": spectra.airy_reflectance(0.0, wl, 1.33, n_substrate=1.5)},
+            lambda: {"air": exact.airy_reflectance(0.0, wl, 1.33),
+                     "glass": exact.airy_reflectance(0.0, wl, 1.33, n_substrate=1.5)},
             _zero_exact_check, "test_zero_thickness_exact_film"),
         Row("grazing 89.9°, film 1.33, 100/300/3000 nm", "finite, in [0, 1], = colour TMM",
-            lambda: {"R": spectra.airy_reflectance(_GRAZING_D, wl, 1.33, 89.9)},
+            lambda: {"R": exact.airy_reflectance(_GRAZING_D, wl, 1.33, 89.9)},
             _grazing_tmm_check, "test_grazing_matches_colour_tmm"),
         Row("grazing 80/89/89.9°, exact film, band-limited", "bin averages of R stay in [0, 1]",
             lambda: {"R": np.concatenate([
-                spectra.airy_reflectance(_GRAZING_D, wl, 1.33, th, band_limited=True).ravel()
+                exact.airy_reflectance(_GRAZING_D, wl, 1.33, th, band_limited=True).ravel()
                 for th in (80.0, 89.0, 89.9)])},
             _grazing_band_check, "test_grazing_band_limited_airy_within_0_1"),
         Row("exactly 90°, exact film", "R = 1 (grazing limit)",
-            lambda: {"R": spectra.airy_reflectance(_GRAZING_D, wl, 1.33, 90.0)},
+            lambda: {"R": exact.airy_reflectance(_GRAZING_D, wl, 1.33, 90.0)},
             _ninety_check, "test_grazing_limit_90"),
         Row("exactly 90°, transfer_matrix_reflectance", "R = 1 (grazing limit)",
-            lambda: {"R": spectra.transfer_matrix_reflectance([1.33], [300.0], wl, 90.0)},
+            lambda: {"R": exact.transfer_matrix_reflectance([1.33], [300.0], wl, 90.0)},
             _ninety_tm_check, "test_transfer_matrix_at_90_degrees"),
         Row("TIR: glass 1.5 → film 1.0 → 1.0 at 60° (> 41.8°)", "R = 1 exactly (all three paths)",
-            lambda: {"airy": spectra.airy_reflectance(_TIR_D, wl, 1.0, 60.0, n_incident=1.5),
-                     "airy_band_limited": spectra.airy_reflectance(
+            lambda: {"airy": exact.airy_reflectance(_TIR_D, wl, 1.0, 60.0, n_incident=1.5),
+                     "airy_band_limited": exact.airy_reflectance(
                          _TIR_D, wl, 1.0, 60.0, n_incident=1.5, band_limited=True),
-                     "transfer_matrix": spectra.transfer_matrix_reflectance(
+                     "transfer_matrix": exact.transfer_matrix_reflectance(
                          [1.0], [300.0], wl, 60.0, n_incident=1.5)},
             _tir_check, "test_total_internal_reflection"),
         Row("frustrated TIR: 1.5 | gap 1.0 | 1.5 at 60°, gaps 10/300/3000 nm",
             "R rises to 1 with the gap; Airy = transfer matrix",
-            lambda: {"airy": spectra.airy_reflectance(_GAPS, wl, 1.0, 60.0, n_incident=1.5,
+            lambda: {"airy": exact.airy_reflectance(_GAPS, wl, 1.0, 60.0, n_incident=1.5,
                                                       n_substrate=1.5),
-                     "transfer_matrix": np.stack([spectra.transfer_matrix_reflectance(
+                     "transfer_matrix": np.stack([exact.transfer_matrix_reflectance(
                          [1.0], [g], wl, 60.0, n_incident=1.5, n_substrate=1.5) for g in _GAPS])},
             _frustrated_check, "test_frustrated_tir"),
         Row("Eq. 9, l = 1…100 layers, λ at and 1e-15…1e-3 (relative) off sin(2πt/λ) = 0",

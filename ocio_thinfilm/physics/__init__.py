@@ -1,1 +1,9 @@
-"""Stage 1: thin-film reflectance spectra (Smits & Meyer 1990, Section 2, Eq. 5-14): :mod:`.spectra`."""
+"""Stage 1: thin-film reflectance spectra (Smits & Meyer 1990, Section 2).
+
+- :mod:`.spectra` -- the paper's models: two-beam films (Eq. 5-8), optical thickness
+  (Eq. 10/11), the multilayer of Eq. 9 and the Morpho geometry of Eq. 14;
+- :mod:`.exact` -- exact optics used as references: the Airy sum with Fresnel
+  amplitudes, transfer matrices;
+- :mod:`.sampling` -- wavelength grids, argument checks and the band-limited
+  integration every model shares.
+"""

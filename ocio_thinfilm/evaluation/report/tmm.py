@@ -9,7 +9,7 @@ import numpy as np
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.evaluation.report.context import Section
 from ocio_thinfilm.evaluation.report.measure import best_time, fmt, stats, table
-from ocio_thinfilm.physics import spectra
+from ocio_thinfilm.physics import exact, sampling, spectra
 
 
 def section(ctx) -> Section:
@@ -17,7 +17,7 @@ def section(ctx) -> Section:
     from colour.phenomena import multilayer_tmm, thin_film_tmm
 
     q = ctx.quick
-    wl = spectra.wavelength_grid(360.0, 780.0, 1.0)
+    wl = sampling.wavelength_grid(360.0, 780.0, 1.0)
     nt = 128 if q else 512
     d = np.linspace(0.0, 3000.0, nt)
     n_film = 1.33
@@ -28,17 +28,17 @@ def section(ctx) -> Section:
             warnings.simplefilter("ignore")
             R, _ = thin_film_tmm([1.0, n_film, 1.0], d, wl, theta)
         r_colour = R.mean(axis=-1)[:, 0, :].T  # (T, W)
-        r_airy = spectra.airy_reflectance(d, wl, n_film, theta)
+        r_airy = exact.airy_reflectance(d, wl, n_film, theta)
         w = colorimetry.spectral_weights(wl)
         de = colorimetry.delta_E2000(r_airy @ w, r_colour @ w)
         diff = float(np.abs(r_airy - r_colour).max())
         rows.append([f"{theta:g}°", diff, stats(de)["max"]])
         raw["single_film"].append({"theta": theta, "max_abs_dR": diff, "dE_max": stats(de)["max"]})
     sec_colour = best_time(lambda: thin_film_tmm([1.0, n_film, 1.0], d, wl, 0.0), repeat=2)
-    sec_airy = best_time(lambda: spectra.airy_reflectance(d, wl, n_film, 0.0), repeat=2)
+    sec_airy = best_time(lambda: exact.airy_reflectance(d, wl, n_film, 0.0), repeat=2)
     sec_two = best_time(lambda: spectra.two_beam_reflectance(d * n_film, wl), repeat=2)
     sec_ours_tmm = best_time(
-        lambda: [spectra.transfer_matrix_reflectance([n_film], [x], wl, 0.0) for x in d[:64]],
+        lambda: [exact.transfer_matrix_reflectance([n_film], [x], wl, 0.0) for x in d[:64]],
         repeat=2) * nt / 64
     # Morpho-like multilayer: 12 x (mullion n = 1.53, 50 nm; air 150 nm).
     layers = spectra.MORPHO["layers"]
@@ -49,10 +49,10 @@ def section(ctx) -> Section:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             R, _ = multilayer_tmm([1.0] + n_stack + [1.0], d_stack, wl, theta)
-        ours = spectra.transfer_matrix_reflectance(n_stack, d_stack, wl, theta)
+        ours = exact.transfer_matrix_reflectance(n_stack, d_stack, wl, theta)
         diffs.append(float(np.abs(R.mean(axis=-1)[:, 0, 0] - ours).max()))
     sec_ml_colour = best_time(lambda: multilayer_tmm([1.0] + n_stack + [1.0], d_stack, wl, 0.0))
-    sec_ml_ours = best_time(lambda: spectra.transfer_matrix_reflectance(n_stack, d_stack, wl, 0.0))
+    sec_ml_ours = best_time(lambda: exact.transfer_matrix_reflectance(n_stack, d_stack, wl, 0.0))
     raw["multilayer"] = {"max_abs_dR": max(diffs), "sec_colour": sec_ml_colour, "sec_ours": sec_ml_ours}
     raw["speed_single_film_sec"] = {"colour thin_film_tmm": sec_colour, "airy_reflectance": sec_airy,
                                     "two_beam_reflectance": sec_two,

@@ -1,0 +1,261 @@
+"""Wavelength grids, argument checks and band-limited integration, shared by every model.
+
+- :func:`wavelength_grid`, :func:`check_wavelengths`, :func:`bin_edges` -- the
+  wavelength samples (nm) and their trapezoid-rule bins;
+- :func:`phase`, :func:`cosine_series` -- the round-trip phase of an optical path and
+  the band-limited sum of a cosine series in it (below);
+- :func:`as_array`, :func:`as_count`, :func:`as_angle`, :func:`as_index` -- argument
+  checks: one place that words every error message.
+
+Band-limited integration
+------------------------
+The interference models are cosine series in a round-trip phase
+``phi(lambda) = 2*pi*P/lambda`` (``P`` the optical path difference). A fixed
+wavelength sampling aliases once ``phi`` turns by more than ~pi within one bin
+(thick films). With ``band_limited=True`` each sample returns the *exact average*
+of ``R`` under the trapezoid rule's hat function of that sample (the triangle from
+the previous to the next sample), taken in wavenumber (``phi`` is linear in
+``1/lambda``): every harmonic ``cos(k*phi)`` becomes
+``cos(k*phi_c) * sinc(k*dphi/2)**2`` (a triangle is a box convolved with itself).
+The colorimetry stage's trapezoid sum then equals the exact integral of ``R``
+against the linearly interpolated matching-function weights. (A plain box average
+over one bin, ``sinc`` instead of ``sinc**2``, leaves a residual oscillation of up
+to 22 % that aliases: Delta E2000 1.4 at t' = 33 um with 5 nm sampling, against
+0.16 with the hat.) One implementation, :func:`cosine_series`, serves every
+interference model (:mod:`ocio_thinfilm.physics.spectra`, :mod:`ocio_thinfilm.physics.exact`), so thick films tend to their incoherent average instead of
+false colours.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "MAX_SAMPLES",
+    "MAX_LAYERS",
+    "as_array",
+    "as_count",
+    "as_angle",
+    "as_index",
+    "check_wavelengths",
+    "wavelength_grid",
+    "bin_edges",
+    "phase",
+    "cosine_series",
+]
+
+
+# --------------------------------------------------------------------------- #
+# Argument checks: one place that words every error message.
+# --------------------------------------------------------------------------- #
+def as_array(name, value, *, minimum=None, maximum=None, strict=False, unit=""):
+    """``value`` as a float64 (or complex) array, finite and within the bounds, else a
+    ValueError naming ``name``, the bounds and the first offending value."""
+    a = np.asarray(value)
+    if a.dtype.kind == "c":
+        check = a.real
+    else:
+        a = a.astype(np.float64, copy=False)
+        check = a
+    if check.size and not np.all(np.isfinite(check)):
+        raise ValueError(f"{name} must be finite{_range_text(minimum, maximum, strict, unit)}")
+    if minimum is not None and check.size:
+        bad = check <= minimum if strict else check < minimum
+        if np.any(bad):
+            raise ValueError(
+                f"{name} must be {'>' if strict else '>='} {minimum:g}{unit}"
+                f"{'' if maximum is None else f' and <= {maximum:g}{unit}'}, "
+                f"got {check[bad].flat[0]:g}"
+            )
+    if maximum is not None and check.size and np.any(check > maximum):
+        raise ValueError(
+            f"{name} must be in [{minimum:g}, {maximum:g}]{unit}, got {check[check > maximum].flat[0]:g}"
+        )
+    return a
+
+
+def _range_text(minimum, maximum, strict, unit):
+    if minimum is None:
+        return ""
+    if maximum is None:
+        return f" and {'>' if strict else '>='} {minimum:g}{unit}"
+    return f" and in [{minimum:g}, {maximum:g}]{unit}"
+
+
+def as_count(name, value, minimum=1, maximum=None):
+    """An integer parameter (layers, harmonics): a ValueError naming it otherwise."""
+    if isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
+    try:
+        f = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}") from None
+    if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):
+        limit = f" and <= {maximum}" if maximum is not None else ""
+        raise ValueError(f"{name} must be an integer >= {minimum}{limit}, got {value!r}")
+    return int(f)
+
+
+#: Largest wavelength grid :func:`wavelength_grid` makes, and most Eq. 9 layers.
+MAX_SAMPLES = 10_000_000
+MAX_LAYERS = 100_000
+
+
+def as_angle(theta):
+    """An angle of incidence in degrees, in [0, 90]."""
+    return as_array("theta", theta, minimum=0.0, maximum=90.0, unit=" degrees")
+
+
+def as_index(name, n):
+    """A real refractive index: finite and > 0."""
+    return as_array(name, n, minimum=0.0, strict=True)
+
+
+def check_wavelengths(wavelengths) -> np.ndarray:
+    """Validate a wavelength grid.
+
+    Parameters
+    ----------
+    wavelengths : array_like
+        Wavelengths in nm: 1-D, non-empty, finite, positive, strictly increasing.
+
+    Returns
+    -------
+    numpy.ndarray
+        The wavelengths as float64.
+
+    Raises
+    ------
+    ValueError
+        Naming what is wrong.
+
+    Examples
+    --------
+    >>> check_wavelengths([400, 500]).tolist()
+    [400.0, 500.0]
+    >>> check_wavelengths([500, 400])
+    Traceback (most recent call last):
+    ...
+    ValueError: wavelengths must be strictly increasing
+    """
+    wl = np.asarray(wavelengths, dtype=np.float64)
+    if wl.ndim != 1 or wl.size == 0:
+        raise ValueError("wavelengths must be a non-empty 1-D array of nm values")
+    if not np.all(np.isfinite(wl)) or np.any(wl <= 0):
+        raise ValueError("wavelengths must be finite and > 0 nm")
+    if wl.size > 1 and np.any(np.diff(wl) <= 0):
+        raise ValueError("wavelengths must be strictly increasing")
+    return wl
+
+
+def wavelength_grid(start: float = 360.0, stop: float = 780.0, step: float = 5.0) -> np.ndarray:
+    """Uniform wavelength grid, ``start`` and ``stop`` included.
+
+    Parameters
+    ----------
+    start, stop, step : float
+        In nm; ``0 < start < stop``, ``0 < step <= stop - start``.
+
+    Returns
+    -------
+    numpy.ndarray
+        The wavelengths (nm).
+
+    Examples
+    --------
+    >>> wavelength_grid(400, 700, 100).tolist()
+    [400.0, 500.0, 600.0, 700.0]
+    """
+    for name, value in (("start", start), ("stop", stop), ("step", step)):
+        try:
+            value = float(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name} must be a number of nm, got {value!r}") from None
+        if not np.isfinite(value):
+            raise ValueError(f"{name} must be finite, got {value}")
+    start, stop, step = float(start), float(stop), float(step)
+    if not step > 0:
+        raise ValueError(f"step must be > 0 nm, got {step}")
+    if not (0 < start < stop):
+        raise ValueError(f"wavelength range must satisfy 0 < start < stop, got {start}..{stop}")
+    if step > stop - start:
+        raise ValueError(f"step must be at most stop - start ({stop - start:g} nm), got {step:g}")
+    count = int(round((stop - start) / step)) + 1
+    if count > MAX_SAMPLES:
+        raise ValueError(f"step {step:g} nm gives {count} samples; at most {MAX_SAMPLES}")
+    return check_wavelengths(start + step * np.arange(count))
+
+
+def bin_edges(wavelengths) -> tuple[np.ndarray, np.ndarray]:
+    """Lower and upper edge of each sample's bin: the midpoints between samples.
+
+    The outer bins are half bins, so a sum over bins is the trapezoid rule. A
+    single sample gets a zero-width bin (point evaluation).
+
+    Parameters
+    ----------
+    wavelengths : array_like
+        The samples (nm), see :func:`check_wavelengths`.
+
+    Returns
+    -------
+    lower, upper : numpy.ndarray
+        Bin edges in nm.
+
+    Examples
+    --------
+    >>> [edges.tolist() for edges in bin_edges([400, 500, 700])]
+    [[400.0, 450.0, 600.0], [450.0, 600.0, 700.0]]
+    """
+    wl = check_wavelengths(wavelengths)
+    mid = 0.5 * (wl[1:] + wl[:-1])
+    lower = np.concatenate([wl[:1], mid])
+    upper = np.concatenate([mid, wl[-1:]])
+    return lower, upper
+
+
+# --------------------------------------------------------------------------- #
+# Phase and the band-limited cosine series (shared by every interference model).
+# --------------------------------------------------------------------------- #
+def phase(path, wl, band_limited):
+    """Round-trip phase 2*pi*P/lambda at the samples and its spread over each bin.
+
+    Returns ``(phi_c, dphi)`` broadcast to ``path.shape + wl.shape``. With
+    ``band_limited`` the phase is taken at the bin edges (exact in wavenumber);
+    otherwise ``dphi`` is 0 and ``phi_c`` the point phase.
+    """
+    path = np.asarray(path, dtype=np.float64)[..., None]
+    if not band_limited:
+        return path * (2.0 * np.pi / wl), None  # one pass over the output
+    lower, upper = bin_edges(wl)
+    phi_hi = 2.0 * np.pi * path / lower  # phase at the short-wavelength edge
+    phi_lo = 2.0 * np.pi * path / upper
+    return 0.5 * (phi_hi + phi_lo), phi_hi - phi_lo
+
+
+def cosine_series(coefficients, phi_c, dphi):
+    """Sum ``c_0 + sum_k Re(c_k exp(i k phi))``, each harmonic hat-averaged.
+
+    ``coefficients`` is a list; entry k is a (broadcastable) array of the k-th
+    harmonic's coefficient, complex allowed. The average of ``exp(i k phi)``
+    under the triangle of half-width ``dphi`` centred on ``phi_c`` (the trapezoid
+    rule's hat function: ``dphi`` is the phase step between neighbouring samples) is
+    ``exp(i k phi_c) * sinc(k dphi / 2)**2`` (np.sinc is the normalised sinc).
+    """
+    coefficients = [np.asarray(c)[..., None] for c in coefficients]
+    shape = np.broadcast_shapes(np.shape(phi_c), *(c.shape for c in coefficients))
+    total = np.zeros(shape)
+    for k, c in enumerate(coefficients[1:], start=1):
+        arg = phi_c if k == 1 else k * phi_c
+        # Built in place in a full-size buffer: the cosine is the only costly pass.
+        term = np.empty(shape)
+        if np.iscomplexobj(c):
+            np.multiply(np.cos(arg), c.real, out=term)
+            term -= c.imag * np.sin(arg)
+        else:
+            np.multiply(np.cos(arg), c, out=term)
+        if dphi is not None:
+            term *= np.sinc(k * dphi / (2.0 * np.pi)) ** 2
+        total += term
+    total += np.real(coefficients[0])
+    return total
