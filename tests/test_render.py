@@ -15,6 +15,7 @@ views. Regenerate after an intended change with ``python tests/test_render.py``.
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
@@ -470,3 +471,26 @@ def _regenerate() -> None:
 
 if __name__ == "__main__":
     _regenerate()
+
+
+def test_documented_render_timings_come_from_the_benchmark():
+    """docs/render.md's timing table is what benchmarks/bench_render.py renders from
+    reports/bench_render.json (no figure typed by hand), and that run created only the
+    processors each scene shows and computed no table."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("bench_render",
+                                                  ROOT / "benchmarks" / "bench_render.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    result = json.loads((ROOT / "reports" / "bench_render.json").read_text())
+    doc = (ROOT / "docs" / "render.md").read_text()
+    table = doc.split(bench.BEGIN, 1)[1].split(bench.END, 1)[0].strip()
+    assert table == bench.timings_markdown(result)
+    assert [r["scene"] for r in result["scenes"]] == list(scenes.SCENES)
+    for r in result["scenes"]:
+        assert r["computed"] == []
+        spaces = {f"colorspace:{processors.table_colorspace(t)}"
+                  for t in scenes.get_scene(r["scene"]).tables}
+        assert spaces <= set(r["processors"])
+        assert "view:sRGB/Constant-Lightness Clip" in r["processors"]
