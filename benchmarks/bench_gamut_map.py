@@ -162,6 +162,34 @@ def numbers_markdown(result):
     return "\n".join(out)
 
 
+TARGETS_BEGIN, TARGETS_END = ("<!-- bench_gamut_map:targets:begin -->",
+                               "<!-- bench_gamut_map:targets:end -->")
+#: Issue 8's targets for the clip views against the analytic clip.
+TARGETS = {"p99": 0.5, "max": 1.5, "dY_max": 1e-3, "in_gamut_max": 0.1, "speed": 1.0}
+
+
+def targets_markdown(result):
+    """docs/gamut_map.md's account of issue 8's targets: what the JSON meets and misses."""
+    acc = result["accuracy"]
+    met, missed = [], []
+    for name in next(iter(acc.values())):
+        rows = [acc[d][name] for d in acc]
+        for key, label, fmt in (("p99", "p99", ".2f"), ("max", "max", ".2f"),
+                                ("dY_max", "|ΔY|", ".1e")):
+            worst = max(m[key] for m in rows)
+            line = f"{name} {label} ≤ {format(worst, fmt)} (target {TARGETS[key]:g})"
+            (met if worst <= TARGETS[key] else missed).append(line)
+    worst = max(m["in_gamut_max"] for by_set in acc.values() for m in by_set.values()
+                if m["in_gamut_n"])
+    line = f"in-gamut colours move by ≤ {worst:.2f} ΔE2000 (target {TARGETS['in_gamut_max']:g})"
+    (met if worst <= TARGETS["in_gamut_max"] else missed).append(line)
+    for r in result.get("speed") or []:
+        line = f"speed on {r['dataset']}: {r['clip_over_aces']:.2f}× the ACES view"
+        (met if r["clip_over_aces"] >= TARGETS["speed"] else missed).append(line)
+    return "\n".join([f"- **Met** (worst display): {'; '.join(met)}.",
+                      f"- **Not met** (worst display): {'; '.join(missed) or 'none'}."])
+
+
 STATUS_BEGIN, STATUS_END = ("<!-- bench_gamut_map:status:begin -->",
                              "<!-- bench_gamut_map:status:end -->")
 
@@ -203,6 +231,8 @@ def update_markdown(path, result):
     """Replace the text between BEGIN and END in ``path`` by :func:`numbers_markdown`,
     and the README's status line by :func:`status_markdown`."""
     _replace_between(path, BEGIN, END, numbers_markdown(result))
+    if TARGETS_BEGIN in Path(path).read_text():
+        _replace_between(path, TARGETS_BEGIN, TARGETS_END, targets_markdown(result))
     readme = ROOT / "README.md"
     if STATUS_BEGIN in readme.read_text():
         _replace_between(readme, STATUS_BEGIN, STATUS_END, status_markdown(result))

@@ -194,6 +194,8 @@ def test_documented_numbers_come_from_the_benchmark():
     doc = (root / "docs" / "gamut_map.md").read_text()
     section = doc.split(bench.BEGIN, 1)[1].split(bench.END, 1)[0].strip()
     assert section == bench.numbers_markdown(result)
+    targets = doc.split(bench.TARGETS_BEGIN, 1)[1].split(bench.TARGETS_END, 1)[0].strip()
+    assert targets == bench.targets_markdown(result)
     readme = (root / "README.md").read_text()
     status = readme.split(bench.STATUS_BEGIN, 1)[1].split(bench.STATUS_END, 1)[0].strip()
     assert status == bench.status_markdown(result)
