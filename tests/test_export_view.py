@@ -16,8 +16,8 @@ Thresholds. The issue's target for ACEScct -> sRGB / Constant-Lightness Clip at 
 (measured: p99 0.61-0.68, max 2.0-2.2, in-gamut p99 0.25-0.36; the in-gamut max,
 ≈ 2, is colours within one grid cell of the gamut boundary near white, where every
 view bends towards white). The other displays, consumers and input spaces are
-held to their measured values with a margin of about 1.5x (they are printed by
-``benchmarks/bench_export_view.py``), so a regression of the shaper or the
+held to their measured values with a margin of about 1.5x (these tests print them:
+``pytest -s tests/test_export_view.py``), so a regression of the shaper or the
 writers fails.
 """
 
