@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import shutil
 import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -167,6 +168,9 @@ def test_acescct_srgb_cube_meets_target_in_colour_science(acescct_luts, inside_A
           f"max {dE[inside].max():.3f}")
     assert p99 <= 1.0 and worst <= 3.0
     assert np.percentile(dE[inside], 99) <= 0.5
+    # docs/gamut_map.md quotes these figures: they are what this test measures
+    assert _quoted(r"applied by colour-science,\s+is within ΔE2000 p99 ([\d.]+) / max ([\d.]+)") \
+        == pytest.approx((p99, worst), abs=0.006)
     # grey ramp: neutral in, neutral out (the old files took 0.18 to black)
     g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 0.9, 1.0])
     grey = _colour_apply([path], np.repeat(colour_acescct(g)[:, None], 3, axis=1))
@@ -205,6 +209,19 @@ def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, di
     print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
           f"max {worst:.3f}")
     assert p99 <= TARGET_P99 and worst <= TARGET_MAX
+    if (display, fmt, consumer) == ("sRGB", "cube", "ocio"):  # quoted in docs/gamut_map.md
+        assert _quoted(r"\(through OCIO ([\d.]+) / ([\d.]+);") == \
+            pytest.approx((p99, worst), abs=0.006)
+
+
+def _quoted(pattern):
+    """The two numbers docs/gamut_map.md quotes where ``pattern`` matches."""
+    import re
+
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "gamut_map.md").read_text()
+    match = re.search(pattern, doc)
+    assert match, pattern
+    return tuple(float(v) for v in match.groups())
 
 
 @pytest.mark.skipif(FFMPEG is None, reason="ffmpeg not installed (Debian package ffmpeg)")
