@@ -494,3 +494,32 @@ def test_documented_render_timings_come_from_the_benchmark():
                   for t in scenes.get_scene(r["scene"]).tables}
         assert spaces <= set(r["processors"])
         assert "view:sRGB/Constant-Lightness Clip" in r["processors"]
+
+
+@pytest.mark.parametrize("base", ["ocio://studio-config-v1.0.0_aces-v1.3_ocio-v2.1",
+                                  "ocio://studio-config-latest"], ids=["aces1.3", "latest"])
+def test_render_through_a_merged_aces_config(tmp_path, capsys, base):
+    """``--config`` takes a studio's ACES config merged with ``bake --into``: it has no
+    CIE-XYZ-D65 colour space, so the render reaches XYZ through its
+    cie_xyz_d65_interchange role. The EXR equals the package config's render, the PNG
+    through the merged sRGB display's clip view is within one code value of it (and
+    untagged: that display is not the registry's), and a view the merged display lacks
+    is one line naming it."""
+    from ocio_thinfilm.config import merge
+
+    config = merge.bake_into(base, tmp_path / "studio")
+    ours, theirs = tmp_path / "ours", tmp_path / "theirs"
+    assert cli.main(["render", "oil", "--size", "64", "--out", str(ours), "--quiet"]) == 0
+    assert cli.main(["render", "oil", "--size", "64", "--config", str(config), "--display",
+                     "sRGB - Display", "--out", str(theirs), "--quiet"]) == 0
+    a, b = _channels(ours / "oil.exr"), _channels(theirs / "oil.exr")
+    for c in "RGB":
+        np.testing.assert_allclose(b[c], a[c], rtol=2e-3, atol=1e-5)
+    png_a, png_b = read_image(ours / "oil.png"), read_image(theirs / "oil.png")
+    assert np.abs(png_a - png_b).max() <= 1.0 / 255 + 1e-6
+    head_a, head_b = ((d / "oil.png").read_bytes()[:256] for d in (ours, theirs))
+    assert b"sRGB" in head_a and b"sRGB" not in head_b  # PNG's sRGB chunk
+    capsys.readouterr()
+    code, _, err = _cli(capsys, "spectrum", "--size", "32", "--config", str(config),
+                        "--display", "sRGB - Display", "--out", str(theirs))
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "Channel Clamp" in err

@@ -162,17 +162,17 @@ def register(sub) -> None:
     p.add_argument("--out", default="renders", help="output directory (default ./renders)")
     p.add_argument("--seed", type=integer_argument(0, 2**31 - 1), default=0,
                    help="noise seed, an integer >= 0 (default 0)")
-    p.add_argument("--display", default=render.DEFAULT_DISPLAY, choices=registry.DISPLAYS,
-                   help=f"display of the PNG: {', '.join(registry.DISPLAYS)} "
-                        f"(default {render.DEFAULT_DISPLAY})")
-    p.add_argument("--view", default=render.DEFAULT_VIEW, choices=registry.VIEWS,
-                   help=f"view of the PNG: {', '.join(registry.VIEWS)} (default "
-                        f"{render.DEFAULT_VIEW}); the spectrum scene shows the first three "
-                        "side by side")
+    p.add_argument("--display", default=render.DEFAULT_DISPLAY,
+                   help=f"display of the PNG, one of the config's (the package's: "
+                        f"{', '.join(registry.DISPLAYS)}; default {render.DEFAULT_DISPLAY})")
+    p.add_argument("--view", default=render.DEFAULT_VIEW,
+                   help=f"view of the PNG, one of the display's (the package's: "
+                        f"{', '.join(registry.VIEWS)}; default {render.DEFAULT_VIEW}); the "
+                        "spectrum scene shows the first three side by side")
     p.add_argument("--config", default=None,
                    help="OCIO config whose thin-film input spaces and display views the "
-                        "render applies (default: the package's configs/thinfilm/"
-                        "config.ocio, baked first when missing)")
+                        "render applies: the package's (default: configs/thinfilm/"
+                        "config.ocio, baked first when missing) or one made by bake --into")
     p.add_argument("--frames", type=frames_argument, default=None,
                    help="A-B: render frames A..B as NAME.####.exr/png with the scene's "
                         "animation, one process per frame")

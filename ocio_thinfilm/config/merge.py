@@ -50,8 +50,8 @@ from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import UsageError, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
-__all__ = ["load_base", "match_displays", "merge_config", "bake_into", "write_archive",
-           "bake_archive", "MERGED_VIEWS"]
+__all__ = ["load_base", "interchange", "colorspace_transform", "match_displays", "merge_config",
+           "bake_into", "write_archive", "bake_archive", "MERGED_VIEWS"]
 
 #: Views added to every matched display (Channel Clamp only where no Un-tone-mapped).
 MERGED_VIEWS = ("Constant-Lightness Clip", "ACES Gamut Compression", "Channel Clamp")
@@ -75,8 +75,9 @@ def load_base(source):
         raise UsageError(f"--into {text}: {str(error).splitlines()[0]}") from None
 
 
-def _cs_transform(cs, to_reference):
-    """A colour space's transform to (or from) its reference, None for an identity."""
+def colorspace_transform(cs, to_reference):
+    """A colour space's transform to (or from) its reference, None for an identity
+    (``cs``: a ``PyOpenColorIO.ColorSpace``)."""
     ocio = ocio_ops.module()
     want, other = ((ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)
                    if to_reference else
@@ -121,15 +122,15 @@ def interchange(cfg):
             raise UsageError(f"the cie_xyz_d65_interchange space {name!r} is "
                              "display-referred and the config has no scene-referred "
                              "default view transform to reach it")
-        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt), _cs_transform(cs, to_reference=False)])
-        xyz_to_display = ocio_ops.group([_cs_transform(cs, to_reference=True)])
+        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt), colorspace_transform(cs, to_reference=False)])
+        xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True)])
     else:
-        scene_to_xyz = ocio_ops.group([_cs_transform(cs, to_reference=False)])
+        scene_to_xyz = ocio_ops.group([colorspace_transform(cs, to_reference=False)])
         vt_name = cfg.getDefaultViewTransformName() or (
             next(iter(cfg.getViewTransformNames()), None))
         if not vt_name:
             raise UsageError("the config has no view transform: no display reference")
-        xyz_to_display = ocio_ops.group([_cs_transform(cs, to_reference=True),
+        xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True),
                                          _vt_from_scene(cfg.getViewTransform(vt_name))])
     # it must be a colorimetric (linear) conversion, not a tone scale
     rng = np.random.default_rng(1)
@@ -164,7 +165,7 @@ def _match_gamut(cfg, xyz_to_display, cs):
     curve, and every colour must come out as that curve applied per channel."""
     if cs.getEncoding() in ("hdr-video", "edr-video"):
         return None
-    transform = ocio_ops.group([xyz_to_display, _cs_transform(cs, to_reference=False)])
+    transform = ocio_ops.group([xyz_to_display, colorspace_transform(cs, to_reference=False)])
     ramp = np.linspace(0.0, 1.0, 257)
     rng = np.random.default_rng(7)
     # colours whose channels sit on the ramp's nodes: primaries, secondaries, random

@@ -39,8 +39,9 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
 
 
 #: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
-#: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4) and the Raw view no tag --
-#: never a wrong sRGB one.
+#: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4), the Raw view and the displays
+#: of other configs (an ACES config merged with ``bake --into``) no tag -- never a wrong
+#: sRGB one.
 PNG_COLORSPACE = {d.name: d.png_colorspace for d in registry.DISPLAY_LIST}
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
@@ -153,7 +154,7 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
                               channel_names=channels, dtype="half", attributes=attrs, tx=tx)
         raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
         raw = all((region[2] or view) in raw_views for region in picture.regions)
-        png_tag = "data" if raw else PNG_COLORSPACE[display]
+        png_tag = "data" if raw else PNG_COLORSPACE.get(display, "data")
         png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
                               attributes={"png:compressionLevel": 3,
                                           "oiio:ColorSpace": png_tag}, tx=tx)

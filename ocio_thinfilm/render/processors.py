@@ -83,6 +83,35 @@ class ConfigProcessors:
         #: The processors created so far, in order: ``"colorspace:<name>"`` and
         #: ``"view:<display>/<view>"`` (a scene builds only what it shows).
         self.created: list[str] = []
+        self._bridge = None  # (scene-linear space, its transform to CIE-XYZ-D65)
+
+    def _xyz_bridge(self):
+        """For a config without a ``CIE-XYZ-D65`` colour space (an ACES config the
+        thin-film spaces were merged into with ``bake --into``): its ``scene_linear``
+        colour space S and the transform S -> CIE-XYZ-D65, through the config's
+        ``cie_xyz_d65_interchange`` role (:func:`ocio_thinfilm.config.merge.interchange`)."""
+        if self._bridge is None:
+            from ocio_thinfilm.config import merge
+            from ocio_thinfilm.lut import ocio_ops
+
+            name = dict(self.config.getRoles()).get("scene_linear")
+            cs = self.config.getColorSpace(name) if name else None
+            if cs is None:
+                raise UsageError(f"config: no {REFERENCE_SPACE} colour space and no "
+                                 "scene_linear role to reach it")
+            scene_to_xyz, _ = merge.interchange(self.config)
+            self._bridge = (cs.getName(), ocio_ops.group(
+                [merge.colorspace_transform(cs, to_reference=True), scene_to_xyz]))
+        return self._bridge
+
+    def _xyz_transform(self, source):
+        """A processor-ready transform ``source`` colour space -> CIE-XYZ-D65."""
+        import PyOpenColorIO as ocio
+
+        if self.config.getColorSpace(REFERENCE_SPACE) is not None:
+            return ocio.ColorSpaceTransform(source, REFERENCE_SPACE)
+        linear, to_xyz = self._xyz_bridge()
+        return ocio.GroupTransform([ocio.ColorSpaceTransform(source, linear), to_xyz])
 
     def _processor(self, key, make):
         if key not in self._cpu:
@@ -97,15 +126,22 @@ class ConfigProcessors:
     def table(self, spec):
         space = table_colorspace(spec)
         return self._processor(f"colorspace:{space}",
-                               lambda: self.config.getProcessor(space, REFERENCE_SPACE))
+                               lambda: self.config.getProcessor(self._xyz_transform(space)))
 
     def view(self, display: str, view: str):
         import PyOpenColorIO as ocio
 
-        return self._processor(
-            f"view:{display}/{view}",
-            lambda: self.config.getProcessor(REFERENCE_SPACE, display, view,
-                                             ocio.TRANSFORM_DIR_FORWARD))
+        def make():
+            if self.config.getColorSpace(REFERENCE_SPACE) is not None:
+                return self.config.getProcessor(REFERENCE_SPACE, display, view,
+                                                ocio.TRANSFORM_DIR_FORWARD)
+            linear, to_xyz = self._xyz_bridge()
+            from_xyz = ocio.GroupTransform([to_xyz])
+            from_xyz.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+            return self.config.getProcessor(ocio.GroupTransform(
+                [from_xyz, ocio.DisplayViewTransform(linear, display, view)]))
+
+        return self._processor(f"view:{display}/{view}", make)
 
     def check_display_view(self, display: str, view: str) -> None:
         """UsageError unless the config has ``display`` with ``view``."""
