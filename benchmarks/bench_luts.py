@@ -121,9 +121,10 @@ def uvY_uniform(display, size):
     inv = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv.setDirection(ocio.TRANSFORM_DIR_INVERSE)
     return ocio_ops.group([clip_lut.xyz_limit_transform(), fwd,
-                         ocio_ops.matrix(np.diag(1 / hi)), ocio_ops.lut3d_transform(uvY / hi),
-                         ocio_ops.matrix(np.diag(hi)), inv,
-                         display_transforms.display_matrix_transform(display), ocio_ops.range_(0, 1)])
+                           ocio_ops.matrix(np.diag(1 / hi)), ocio_ops.lut3d_transform(uvY / hi),
+                           ocio_ops.matrix(np.diag(hi)), inv,
+                           display_transforms.display_matrix_transform(display),
+                           ocio_ops.range_(0, 1)])
 
 
 def options(quick):
@@ -153,7 +154,7 @@ def clf_size(transform):
     import PyOpenColorIO as ocio
 
     writable = ocio_ops.group([t for t in _flatten(transform)
-                             if not isinstance(t, ocio.FixedFunctionTransform)])
+                               if not isinstance(t, ocio.FixedFunctionTransform)])
     with tempfile.TemporaryDirectory() as d:
         path = Path(d) / "x.clf"
         writable.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())

@@ -170,8 +170,8 @@ def test_exr_is_scene_linear_xyz_with_aovs_and_documented(stills):
 def test_png_is_the_exr_through_the_chosen_view(stills):
     exr = read_image(stills / "oil.exr")
     png = read_image(stills / "oil.png")
-    expected = np.clip(ocio_ops.apply(view_transforms.view_transform("sRGB", render.DEFAULT_VIEW),
-                                    exr[..., :3]), 0, 1)
+    view = view_transforms.view_transform("sRGB", render.DEFAULT_VIEW)
+    expected = np.clip(ocio_ops.apply(view, exr[..., :3]), 0, 1)
     # Half-float EXR and 8-bit PNG: within a couple of code values.
     assert np.abs(expected - png).max() < 3 / 255
 

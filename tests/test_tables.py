@@ -27,9 +27,9 @@ def grey_input(x):
 # --------------------------------------------------------------------------- #
 # Contract
 # --------------------------------------------------------------------------- #
-def test_contract_names():
+def test_views_and_default_tables():
     assert registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
-                            "ACES Gamut Compression", "Raw")
+                              "ACES Gamut Compression", "Raw")
     table = tables.film_table("phase-change")
     assert table.kind == "phase-change"
     assert table.values.shape == (tables.FILM_SIZE, 3)
@@ -205,7 +205,7 @@ def test_clip_lut_size_is_an_option():
     lut = clip_lut.clip_lut("sRGB", 33)
     assert lut.black.shape == lut.white.shape == (33, 33, 33, 3)
     out = ocio_ops.apply(clip_lut.clip_transform("sRGB", 33),
-                       colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"))
+                         colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"))
     np.testing.assert_allclose(out, [[0.5, 0.4, 0.3]], atol=3e-3)
 
 

@@ -39,8 +39,8 @@ def size_argument(text: str) -> tuple[int, int]:
     h = int(m.group(2)) if m.group(2) is not None else w
     for side in (w, h):
         if side < MIN_SIDE or side > MAX_SIDE:
-            raise argparse.ArgumentTypeError(f"{text}: each side must be between {MIN_SIDE} and "
-                             f"{MAX_SIDE} pixels")
+            raise argparse.ArgumentTypeError(
+                f"{text}: each side must be between {MIN_SIDE} and {MAX_SIDE} pixels")
     if w * h > MAX_PIXELS:
         raise argparse.ArgumentTypeError(f"{text}: at most {MAX_PIXELS} pixels (4096x4096) per image")
     return w, h
@@ -94,8 +94,8 @@ def run(args) -> int:
         for name in names:
             start = time.perf_counter()
             paths = render.write_frame(name, out_dir, size, seed=args.seed, frame=frame,
-                                display=args.display, view=args.view, lookup=lookup,
-                                config=processors, tx=tx)
+                                       display=args.display, view=args.view, lookup=lookup,
+                                       config=processors, tx=tx)
             messages.append(f"{name}: wrote {', '.join(str(p) for p in paths)} "
                             f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)")
     if not args.quiet:

@@ -111,6 +111,7 @@ class ConfigData:
 
 
 def named_lut(stem: str) -> str:
+    """The config's file name of the LUT ``stem`` (CLF, in :data:`LUT_DIRECTORY`)."""
     return f"{stem}.clf"
 
 

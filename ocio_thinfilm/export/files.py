@@ -246,8 +246,8 @@ def write_lut(path, fmt, values, lut, meta):
                 ops.append(ocio_ops.matrix(np.eye(3) / span, [-lo / span] * 3))
             ops.append(lut)
             g = ocio_ops.group(ops, name=meta["name"], id=meta["id"],
-                             description=meta["description"],
-                             input_descriptor=meta["input"], output_descriptor=meta["output"])
+                               description=meta["description"],
+                               input_descriptor=meta["input"], output_descriptor=meta["output"])
             g.write(writer, str(tmp), ocio.Config.CreateRaw())
         else:
             baker = ocio.Baker()

@@ -282,7 +282,7 @@ def _write_group(path, fmt, transforms, meta, description):
     import PyOpenColorIO as ocio
 
     g = ocio_ops.group(transforms, name=meta["name"], id=meta["id"], description=description,
-                     input_descriptor=meta["input"], output_descriptor=meta["output"])
+                       input_descriptor=meta["input"], output_descriptor=meta["output"])
     with atomic_file(path) as tmp:
         g.write(VIEW_FORMATS[fmt], str(tmp), ocio.Config.CreateRaw())
     return Path(path)

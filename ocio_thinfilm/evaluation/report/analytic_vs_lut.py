@@ -38,8 +38,8 @@ def section(ctx) -> Section:
     ocio_paths = {
         f"Lut1D + {d_size}³ clip LUT, OCIO (shipped)":
             ocio_ops.group([film.transform(), clip_lut.clip_transform(display)]),
-        f"Lut1D + {big}³ clip LUT, OCIO": ocio_ops.group([film.transform(),
-                                                        clip_lut.clip_transform(display, big)]),
+        f"Lut1D + {big}³ clip LUT, OCIO": ocio_ops.group(
+            [film.transform(), clip_lut.clip_transform(display, big)]),
     }
     lut1d_tf = film.transform()
     paths = {
