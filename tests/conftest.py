@@ -23,6 +23,34 @@ settings.load_profile("core")
 
 
 @pytest.fixture(scope="session")
+def load_benchmark():
+    """``load_benchmark("bench_render")``: that script of benchmarks/ as a module, so a
+    test can render the markdown it writes from the committed JSON."""
+    import importlib.util
+    from pathlib import Path
+
+    def load(name):
+        path = Path(__file__).resolve().parents[1] / "benchmarks" / f"{name}.py"
+        spec = importlib.util.spec_from_file_location(name, path)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        return module
+
+    return load
+
+
+def between(text: str, begin: str, end: str) -> str:
+    """The stripped text between the markers ``begin`` and ``end`` of a document."""
+    return text.split(begin, 1)[1].split(end, 1)[0].strip()
+
+
+@pytest.fixture(scope="session")
+def marked():
+    """:func:`between` for the tests that compare a document's generated block."""
+    return between
+
+
+@pytest.fixture(scope="session")
 def colour():
     import colour as colour_module
 

@@ -178,24 +178,17 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
     assert not bad, bad[:10]
 
 
-def test_documented_numbers_come_from_the_benchmark():
+def test_documented_numbers_come_from_the_benchmark(load_benchmark, marked):
     """docs/gamut_map.md's measured tables and the README's status line of the clip
     views are what benchmarks/bench_gamut_map.py renders from
     reports/bench_gamut_map.json (no figure typed by hand)."""
-    import importlib.util
     import json
 
     root = Path(__file__).resolve().parents[1]
-    spec = importlib.util.spec_from_file_location("bench_gamut_map",
-                                                  root / "benchmarks" / "bench_gamut_map.py")
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
+    bench = load_benchmark("bench_gamut_map")
     result = json.loads((root / "reports" / "bench_gamut_map.json").read_text())
     doc = (root / "docs" / "gamut_map.md").read_text()
-    section = doc.split(bench.BEGIN, 1)[1].split(bench.END, 1)[0].strip()
-    assert section == bench.numbers_markdown(result)
-    targets = doc.split(bench.TARGETS_BEGIN, 1)[1].split(bench.TARGETS_END, 1)[0].strip()
-    assert targets == bench.targets_markdown(result)
+    assert marked(doc, bench.BEGIN, bench.END) == bench.numbers_markdown(result)
+    assert marked(doc, bench.TARGETS_BEGIN, bench.TARGETS_END) == bench.targets_markdown(result)
     readme = (root / "README.md").read_text()
-    status = readme.split(bench.STATUS_BEGIN, 1)[1].split(bench.STATUS_END, 1)[0].strip()
-    assert status == bench.status_markdown(result)
+    assert marked(readme, bench.STATUS_BEGIN, bench.STATUS_END) == bench.status_markdown(result)

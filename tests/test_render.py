@@ -473,19 +473,14 @@ if __name__ == "__main__":
     _regenerate()
 
 
-def test_documented_render_timings_come_from_the_benchmark():
+def test_documented_render_timings_come_from_the_benchmark(load_benchmark, marked):
     """docs/render.md's timing table is what benchmarks/bench_render.py renders from
     reports/bench_render.json (no figure typed by hand), and that run created only the
     processors each scene shows and computed no table."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("bench_render",
-                                                  ROOT / "benchmarks" / "bench_render.py")
-    bench = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(bench)
+    bench = load_benchmark("bench_render")
     result = json.loads((ROOT / "reports" / "bench_render.json").read_text())
     doc = (ROOT / "docs" / "render.md").read_text()
-    table = doc.split(bench.BEGIN, 1)[1].split(bench.END, 1)[0].strip()
+    table = marked(doc, bench.BEGIN, bench.END)
     assert table == bench.timings_markdown(result)
     assert [r["scene"] for r in result["scenes"]] == list(scenes.SCENES)
     for r in result["scenes"]:
