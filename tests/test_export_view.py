@@ -147,18 +147,22 @@ def acescct_luts(tmp_path_factory):
         for fmt in ("cube", "csp", "clf", "spi3d"):
             files[display, fmt] = export_view.export_view(
                 "ACEScct", display, CLC, d / f"{display.replace(' ', '')}.{fmt}")
+        files[display, "cube-resolve"] = export_view.export_view(
+            "ACEScct", display, CLC, d / f"{display.replace(' ', '')}-resolve.cube",
+            shaper=True)
     return files
 
 
 # --------------------------------------------------------------------------- #
 # The issue's target: ACEScct -> sRGB / Constant-Lightness Clip, 65^3 .cube
 # --------------------------------------------------------------------------- #
-def test_acescct_srgb_cube_meets_target_in_colour_science(acescct_luts, inside_AP1):
+def test_acescct_srgb_resolve_cube_meets_target_in_colour_science(acescct_luts, inside_AP1):
     XYZ, cct = inside_AP1
     assert len(XYZ) > 10000
-    (path,) = acescct_luts["sRGB", "cube"]
+    (path,) = acescct_luts["sRGB", "cube-resolve"]
     text = path.read_text()
     assert "LUT_3D_SIZE 65" in text and "LUT_1D_INPUT_RANGE" in text
+    assert text.startswith("# ACEScct to sRGB") and "Resolve form" in text.splitlines()[0]
     code = _colour_apply([path], cct)
     dE = _dE(code, XYZ, "sRGB")
     mean, p99, worst = _stats(dE)
@@ -190,10 +194,10 @@ def colour_acescct(linear):
 #: max <= 3.0 (measured p99 0.12-0.61, max 1.8-2.5).
 TARGET_P99, TARGET_MAX = 1.0, 3.0
 CASES = [("sRGB", fmt, consumer) for fmt, consumer in
-         (("cube", "ocio"), ("csp", "colour"), ("csp", "ocio"), ("clf", "ocio"),
+         (("cube-resolve", "ocio"), ("csp", "colour"), ("csp", "ocio"), ("clf", "ocio"),
           ("spi3d", "colour"), ("spi3d", "ocio"))]
 CASES += [(display, fmt, consumer) for display in ("Display P3", "Rec.2020")
-          for fmt, consumer in (("cube", "colour"), ("csp", "ocio"), ("clf", "ocio"))]
+          for fmt, consumer in (("cube-resolve", "colour"), ("csp", "ocio"), ("clf", "ocio"))]
 
 
 @pytest.mark.parametrize("display,fmt,consumer", CASES, ids=lambda v: str(v))
@@ -209,7 +213,7 @@ def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, di
     print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
           f"max {worst:.3f}")
     assert p99 <= TARGET_P99 and worst <= TARGET_MAX
-    if (display, fmt, consumer) == ("sRGB", "cube", "ocio"):  # quoted in docs/gamut_map.md
+    if (display, fmt, consumer) == ("sRGB", "cube-resolve", "ocio"):  # quoted in docs
         assert _quoted(r"\(through OCIO ([\d.]+) / ([\d.]+);") == \
             pytest.approx((p99, worst), abs=0.006)
 
@@ -232,6 +236,77 @@ def test_acescct_csp_in_ffmpeg(acescct_luts, inside_AP1, display):
     (path,) = acescct_luts[display, "csp"]
     mean, p99, worst = _stats(_dE(ffmpeg_apply(path, cct), XYZ, display))
     print(f"ACEScct->{display} .csp (ffmpeg): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
+    assert p99 <= 1.0 and worst <= 3.0
+
+
+# --------------------------------------------------------------------------- #
+# The plain .cube: what every reader applies alike
+# --------------------------------------------------------------------------- #
+def _colour_tetrahedral(path, values):
+    """colour-science's own .cube reader and its tetrahedral table interpolation."""
+    import colour
+
+    lut = colour.read_LUT(str(path))
+    return lut.apply(np.asarray(values, dtype=np.float64),
+                     interpolator=colour.algebra.table_interpolation_tetrahedral)
+
+
+@pytest.mark.parametrize("display", clip.DISPLAYS)
+def test_plain_cube_is_one_3d_table_every_reader_applies_alike(acescct_luts, inside_AP1,
+                                                               display):
+    """The default ACEScct .cube: LUT_3D_SIZE and the table only (no 1D shaper, no
+    DOMAIN lines, which ffmpeg, OpenShot and three.js ignore), its TITLE saying so;
+    OCIO, colour-science and ffmpeg (where installed) give the same code values on
+    object colours and on the whole grid's cells (tetrahedral in all three; the
+    file's 6 decimals are the common source)."""
+    (path,) = acescct_luts[display, "cube"]
+    text = path.read_text()
+    head = [line for line in text.splitlines()[:6]]
+    assert head[0].startswith('TITLE "') and "plain 3D LUT over 0..1" in head[0]
+    assert "LUT_3D_SIZE 65" in text
+    assert not any(k in text for k in ("LUT_1D_SIZE", "LUT_1D_INPUT_RANGE", "DOMAIN_"))
+    _, cct = inside_AP1
+    rng = np.random.default_rng(3)
+    values = np.concatenate([cct, rng.uniform(0.0, 1.0, (20000, 3))])
+    by_ocio = _ocio_apply([path], values)
+    by_colour = _colour_tetrahedral(path, values)
+    gap = {"colour": float(np.abs(by_colour - by_ocio).max())}
+    if FFMPEG is not None:
+        gap["ffmpeg"] = float(np.abs(ffmpeg_apply(path, values) - by_ocio).max())
+    print(f"ACEScct->{display} plain .cube, largest difference from OCIO: {gap}")
+    # float32 arithmetic of the same table: far below one 16-bit code value
+    assert max(gap.values()) <= 1e-5
+
+
+#: Measured for the plain ACEScct .cube at 65^3 on object colours inside AP1 (OCIO,
+#: tetrahedral), p99 / max: sRGB 4.17 / 8.64, Display P3 4.53 / 8.69, Rec.2020
+#: 4.70 / 10.02; held with a margin. The issue's target, p99 1.0 / max 3.0, is not reached by a grid uniform in
+#: ACEScct (cells 0.27 stops wide at the white, where the clip bends every colour
+#: towards white): the xfail below states it.
+PLAIN_LIMITS = {"sRGB": (5.0, 10.0), "Display P3": (5.5, 10.5), "Rec.2020": (5.5, 12.0)}
+
+
+def _plain_stats(acescct_luts, inside_AP1, display):
+    XYZ, cct = inside_AP1
+    (path,) = acescct_luts[display, "cube"]
+    dE = _dE(_ocio_apply([path], cct), XYZ, display)
+    inside = clip.in_gamut(colorimetry.XYZ_to_RGB(XYZ, display))
+    return _stats(dE) + (np.percentile(dE[inside], 99), dE[inside].max())
+
+
+@pytest.mark.parametrize("display", clip.DISPLAYS)
+def test_plain_cube_accuracy(acescct_luts, inside_AP1, display):
+    mean, p99, worst, in_p99, in_max = _plain_stats(acescct_luts, inside_AP1, display)
+    print(f"ACEScct->{display} plain .cube (OCIO): mean {mean:.3f} p99 {p99:.3f} "
+          f"max {worst:.3f}; inside {display}: p99 {in_p99:.3f} max {in_max:.3f}")
+    assert p99 <= PLAIN_LIMITS[display][0] and worst <= PLAIN_LIMITS[display][1]
+
+
+@pytest.mark.xfail(strict=True, reason="issue 15's target for the plain .cube (p99 1.0, "
+                   "max 3.0 on object colours inside AP1) is not reached by a 65^3 grid "
+                   "uniform in ACEScct; the Resolve form and .csp reach it")
+def test_plain_cube_meets_issue_target(acescct_luts, inside_AP1):
+    _, p99, worst, _, _ = _plain_stats(acescct_luts, inside_AP1, "sRGB")
     assert p99 <= 1.0 and worst <= 3.0
 
 

@@ -192,3 +192,20 @@ def test_documented_numbers_come_from_the_benchmark(load_benchmark, marked):
     assert marked(doc, bench.TARGETS_BEGIN, bench.TARGETS_END) == bench.targets_markdown(result)
     readme = (root / "README.md").read_text()
     assert marked(readme, bench.STATUS_BEGIN, bench.STATUS_END) == bench.status_markdown(result)
+
+
+def test_load_benchmark_table_comes_from_its_json(load_benchmark, marked):
+    """docs/gamut_map.md's whole-job costs (clip view against the ACES view, oiiotool
+    processes) are what benchmarks/bench_load.py renders from reports/bench_load.json,
+    and its ratios are the JSON's timings (not typed by hand)."""
+    import json
+
+    root = Path(__file__).resolve().parents[1]
+    bench = load_benchmark("bench_load")
+    result = json.loads((root / "reports" / "bench_load.json").read_text())
+    doc = (root / "docs" / "gamut_map.md").read_text()
+    assert marked(doc, bench.BEGIN, bench.END) == bench.markdown(result)
+    for row in result["rows"]:
+        med = row["median_s"]
+        assert row["clip_over_aces"] == pytest.approx(
+            med["Constant-Lightness Clip"] / med["ACES Gamut Compression"])

@@ -44,10 +44,13 @@ def _run_export(args) -> int:
         from ocio_thinfilm.export.view import export_view
 
         paths = export_view(args.source, args.display, args.view, args.out, fmt=args.format,
-                            size=args.size, value_range=args.range)
+                            size=args.size, value_range=args.range,
+                            shaper=True if args.resolve_shaper else None)
         for path in paths:
             print(f"wrote {path}")
         return 0
+    if args.resolve_shaper:
+        raise UsageError(f"--resolve-shaper applies to 'export view', not {args.table!r}")
     path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
                       display=args.display, index=args.index,
                       value_range=args.range, size=args.size,
@@ -112,5 +115,10 @@ def register(sub) -> None:
                         "'Linear Rec.709 (sRGB)', a thin-film space)")
     e.add_argument("--view", default=None,
                    help="view: the display's view (e.g. 'Constant-Lightness Clip')")
+    e.add_argument("--resolve-shaper", action="store_true",
+                   help="view, .cube: DaVinci Resolve's form, a 1D shaper and the 3D LUT in "
+                        "one file (most other readers ignore the shaper); the default for "
+                        "ACEScct input is a plain 3D LUT over 0..1 that every reader applies "
+                        "alike")
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)

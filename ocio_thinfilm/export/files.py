@@ -294,7 +294,8 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
     """The standalone set shipped in ``luts/``: every table in every format that can
     hold it with its domain, plus the common display LUTs
     (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
-    a 65^3 .cube), into ``directory``, which must exist."""
+    a plain 65^3 .cube over [0, 1], which every reader applies alike), into
+    ``directory``, which must exist."""
     from ocio_thinfilm.export import view as export_view
 
     jobs = []

@@ -11,11 +11,23 @@ A 3D LUT samples [0, 1]^3, so inputs that are not already in [0, 1] (scene-linea
 RGB, XYZ, and ACEScct too, see below) go through a *shaper* first, a per-channel
 curve onto [0, 1] that is part of the file:
 
-- ``.cube`` (OCIO's ``resolve_cube`` writer): a 1D shaper (``LUT_1D_SIZE``,
-  ``LUT_1D_INPUT_RANGE``) and the 3D LUT in one file (DaVinci Resolve's form; read by
-  Resolve, OCIO, colour-science, Nuke's OCIOFileTransform). ffmpeg's ``lut3d`` reads
-  only the 3D part of a .cube and takes the shaper's lines for LUT entries: use
-  ``.csp`` with ffmpeg.
+- ``.cube`` (OCIO's ``resolve_cube`` writer), two forms, each saying which in its first line:
+
+  - *plain* (the default for inputs whose code values in [0, 1] already cover what the
+    view needs, :data:`PLAIN_INPUTS`: ACEScct): nothing but ``LUT_3D_SIZE`` and the
+    table over the default [0, 1] domain, which every reader applies alike (ffmpeg's
+    ``lut3d``, OBS, OpenShot, three.js, Photoshop, Resolve, OCIO, colour-science:
+    several of them ignore ``LUT_1D_*`` and ``DOMAIN_*`` lines);
+  - *Resolve* (``shaper=True``, ``--resolve-shaper``; always for the other inputs): a
+    1D shaper (``LUT_1D_SIZE``, ``LUT_1D_INPUT_RANGE``) and the 3D LUT in one file,
+    read by Resolve, OCIO, colour-science and Nuke's OCIOFileTransform. ffmpeg's
+    ``lut3d`` reads only the 3D part of such a file and takes the shaper's lines for
+    LUT entries (ΔE2000 mean 18).
+
+  The plain grid is uniform in ACEScct, whose cells near the display white are about
+  0.27 stops wide, where the clip bends every colour towards white: it is the
+  portable form, not the exact one (measured in ``tests/test_export_view.py``); the
+  Resolve form and ``.csp`` spend the grid where the view bends.
 - ``.csp`` (``cinespace``): the shaper as a prelut (knots placed uniformly in the
   shaper, so dense where the curve is steep), then the 3D LUT. ffmpeg reads it.
 - ``.spi3d``: no domain and no shaper. For inputs that need one, a companion
@@ -61,7 +73,7 @@ from ocio_thinfilm.io import UsageError, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
-           "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view"]
+           "PLAIN_INPUTS", "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view"]
 
 #: Format -> OCIO writer name. ``.spi1d`` only for the 1D (thin-film) inputs.
 VIEW_FORMATS = {
@@ -89,6 +101,11 @@ LINEAR_SIBLING = {
     "Linear P3-D65": "Linear P3-D65",
     "Linear Rec.2020": "Linear Rec.2020",
 }
+#: Inputs whose code values in [0, 1] cover every value the views need (ACEScct 1.0
+#: is linear 222.9, far above the display white that every view maps brighter
+#: colours to): their ``.cube`` is a plain 3D LUT over [0, 1] unless the Resolve form
+#: is asked for.
+PLAIN_INPUTS = ("ACEScct",)
 #: colorimetry name of each linear sibling.
 _COLORIMETRY = {"CIE-XYZ-D65": "CIE-XYZ-D65", "ACES2065-1": "ACES2065-1", "ACEScg": "ACEScg",
                 "Linear Rec.709 (sRGB)": "Rec.709", "Linear P3-D65": "Display P3",
@@ -172,6 +189,19 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
 # --------------------------------------------------------------------------- #
 # Validation
 # --------------------------------------------------------------------------- #
+def _cube_shaper(source, fmt, shaper):
+    """Whether a 3D ``.cube`` of ``source`` carries the 1D shaper (the Resolve form)."""
+    if shaper is None:
+        return source not in PLAIN_INPUTS
+    if fmt != "cube":
+        raise UsageError(f"--resolve-shaper applies to .cube files, not .{fmt} (its "
+                         "shaper is part of the format)")
+    if not shaper and source not in PLAIN_INPUTS:
+        raise UsageError(f"a plain .cube needs an input whose values lie in [0, 1] "
+                         f"({', '.join(PLAIN_INPUTS)}); {source} takes the Resolve form")
+    return bool(shaper)
+
+
 def _validate(source, display, view, size, fmt, value_range):
     from ocio_thinfilm import config as config_module
 
@@ -242,6 +272,24 @@ def _description(source, display, view, size, shaper, baked):
     if baked:
         text += f" 3D LUT {size}^3, tetrahedral."
     return text
+
+
+def _cube_title(source, display, view, size, shaper):
+    """The first line of a .cube, saying which form the file is (OCIO's writer has no
+    title). The plain form gets the format's ``TITLE`` keyword; the Resolve form a
+    comment, because OCIO's Resolve .cube parser refuses ``TITLE`` ("Unsupported tag",
+    OCIO 2.6) and that parser is the only one of OCIO's that reads the shaper."""
+    if shaper:
+        return (f"# {source} to {display} {view}, {size}^3: Resolve form, a 1D shaper + "
+                "3D LUT (ffmpeg, OBS and other readers that ignore the shaper need the "
+                "plain form)")
+    return (f'TITLE "{source} to {display} {view}, {size}^3 (plain 3D LUT over 0..1, '
+            'read alike by every .cube reader)"')
+
+
+def _with_title(text, title):
+    """``text`` (a baked .cube) with ``title`` as its first line."""
+    return title + "\n" + text
 
 
 def _metadata(source, display, view):
@@ -335,9 +383,13 @@ def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, de
 
 
 def export_view(source, display, view, out=None, *, fmt=None, size=None,
-                value_range=None) -> list[Path]:
+                value_range=None, shaper=None) -> list[Path]:
     """Write the display LUT ``source`` -> ``display`` / ``view``; returns the paths
-    written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``)."""
+    written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``).
+
+    ``shaper`` (``.cube`` only): None -- the plain 3D form for :data:`PLAIN_INPUTS`,
+    the Resolve form (1D shaper + 3D) for the others; True -- the Resolve form;
+    False -- the plain form (only for :data:`PLAIN_INPUTS`)."""
     import PyOpenColorIO as ocio
 
     if fmt is None:
@@ -346,6 +398,12 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
             raise UsageError(f"cannot tell the format from {out!r}; pass --format "
                              f"({', '.join(VIEW_FORMATS)})")
     size, value_range = _validate(source, display, view, size, fmt, value_range)
+    cube_shaper = None
+    if source in THIN_FILM_INPUTS:
+        if shaper is not None:
+            raise UsageError(f"--resolve-shaper applies to 3D LUTs; {source} gives a 1D LUT")
+    elif fmt == "cube" or shaper is not None:
+        cube_shaper = _cube_shaper(source, fmt, shaper)
     if out is None:
         out = Path(_stem(source, display, view) + "." + fmt)
     out = Path(out)
@@ -379,5 +437,12 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
         text1d = _bake_text(cfg, "spi1d", source, shaper, display, view, size, description,
                             target=shaper)
         return [_write_text(out, text3d), _write_text(companion, text1d)]
+    if fmt == "cube":
+        if not cube_shaper:
+            shaper = None
+        description = _description(source, display, view, size, shaper, True)
+        text = _bake_text(cfg, fmt, source, shaper, display, view, size, description)
+        return [_write_text(out, _with_title(text, _cube_title(source, display, view, size,
+                                                              bool(shaper))))]
     return [_write_text(out, _bake_text(cfg, fmt, source, shaper, display, view, size,
                                         description))]
