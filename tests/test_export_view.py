@@ -280,9 +280,9 @@ def test_plain_cube_is_one_3d_table_every_reader_applies_alike(acescct_luts, ins
 
 #: Measured for the plain ACEScct .cube at 65^3 on object colours inside AP1 (OCIO,
 #: tetrahedral), p99 / max: sRGB 4.17 / 8.64, Display P3 4.53 / 8.69, Rec.2020
-#: 4.70 / 10.02; held with a margin. The issue's target, p99 1.0 / max 3.0, is not reached by a grid uniform in
-#: ACEScct (cells 0.27 stops wide at the white, where the clip bends every colour
-#: towards white): the xfail below states it.
+#: 4.70 / 10.02; held with a margin. The issue's target, p99 1.0 / max 3.0, is not
+#: reached by a grid uniform in ACEScct (cells 0.27 stops wide at the white, where the
+#: clip bends every colour towards white): the xfail below states it.
 PLAIN_LIMITS = {"sRGB": (5.0, 10.0), "Display P3": (5.5, 10.5), "Rec.2020": (5.5, 12.0)}
 
 
