@@ -261,8 +261,8 @@ def test_plain_cube_is_one_3d_table_every_reader_applies_alike(acescct_luts, ins
     file's 6 decimals are the common source)."""
     (path,) = acescct_luts[display, "cube"]
     text = path.read_text()
-    head = [line for line in text.splitlines()[:6]]
-    assert head[0].startswith('TITLE "') and "plain 3D LUT over 0..1" in head[0]
+    first = text.splitlines()[0]
+    assert first.startswith('TITLE "') and "plain 3D LUT over 0..1" in first
     assert "LUT_3D_SIZE 65" in text
     assert not any(k in text for k in ("LUT_1D_SIZE", "LUT_1D_INPUT_RANGE", "DOMAIN_"))
     _, cct = inside_AP1

@@ -287,10 +287,6 @@ def _cube_title(source, display, view, size, shaper):
             'read alike by every .cube reader)"')
 
 
-def _with_title(text, title):
-    """``text`` (a baked .cube) with ``title`` as its first line."""
-    return title + "\n" + text
-
 
 def _metadata(source, display, view):
     stem = _stem(source, display, view)
@@ -430,6 +426,8 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
         return [_write_group(out, fmt, _baked_3d_transforms(cfg, source, shaper, display,
                                                             view, size),
                              meta, _description(source, display, view, size, shaper, True))]
+    if fmt == "cube" and not cube_shaper:
+        shaper = None  # the plain form: the grid over ACEScct itself
     description = _description(source, display, view, size, shaper, True)
     if fmt == "spi3d" and shaper:
         companion = out.with_name(out.stem + ".shaper.spi1d")
@@ -437,12 +435,7 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
         text1d = _bake_text(cfg, "spi1d", source, shaper, display, view, size, description,
                             target=shaper)
         return [_write_text(out, text3d), _write_text(companion, text1d)]
-    if fmt == "cube":
-        if not cube_shaper:
-            shaper = None
-        description = _description(source, display, view, size, shaper, True)
-        text = _bake_text(cfg, fmt, source, shaper, display, view, size, description)
-        return [_write_text(out, _with_title(text, _cube_title(source, display, view, size,
-                                                              bool(shaper))))]
-    return [_write_text(out, _bake_text(cfg, fmt, source, shaper, display, view, size,
-                                        description))]
+    text = _bake_text(cfg, fmt, source, shaper, display, view, size, description)
+    if fmt == "cube":  # OCIO's writer has no title line: say which form the file is
+        text = _cube_title(source, display, view, size, bool(shaper)) + "\n" + text
+    return [_write_text(out, text)]
