@@ -5,20 +5,28 @@ inside all six faces: t = min(t_black, t_white). It therefore factors exactly as
 clip = U o L, L clipping only against R, G, B >= 0 and U only against R, G, B <= 1,
 both along the same ray (paper, Section 3.2; :mod:`ocio_thinfilm.colour.clip`).
 
-Pass 1, L, is homogeneous of degree 1: over a projective chart of the
-chromaticities and Y it is exactly linear along Y, so dark colours keep their
-chromaticity however dark they are, and far-out saturated colours (Y a small
-difference of large RGB values) keep an exact Y axis. The primaries' triangle sits
-on grid and tetrahedral split planes. It outputs display-linear RGB of L(X), which
-has no negative channel any more.
+Pass 1, L, is homogeneous of degree 1 (L(kX) = k L(X)): it moves the chromaticity
+radially from the white point onto the primaries' triangle and keeps Y. Its Lut3D
+therefore maps chromaticity to chromaticity: over the projective chart (u_a, u_b, Y)
+of :func:`_black_plan` (``XYZ_TO_xyY`` of a matrix, the primaries' triangle on grid
+and tetrahedral split planes) it outputs the chart coordinates of L(X) and Y itself,
+constant along the Y axis and exactly linear in Y, so tetrahedral interpolation is
+exact along Y, dark colours keep their chromaticity however dark they are, and
+in-gamut chromaticities are nodes' identity. OCIO's analytic xyY -> XYZ and one matrix
+give display RGB. Before the LUT, Y is limited to 1 (the pre-clip: a colour at or
+above white becomes white in pass 2).
 
-Pass 2, U, works on that RGB directly: every face, the white point and the planes
-R = G, G = B, R = B where the binding face changes are grid or split planes; below
-1 the grid nodes sit at sRGB-encoded values and the LUT stores sRGB code values, so
-the identity (every in-gamut colour) is reproduced exactly and the display encoding
-costs nothing (sRGB, Display P3) or one analytic op (Rec.2020). No gain follows a
-LUT, so the LUTs' rounding (16-bit files, half-float GPU textures) is never
-amplified. Design notes and measurements: docs/gamut_map.md.
+Pass 2, U, works on that RGB (no negative channel, Y <= 1) directly: every face, the
+white point and the planes R = G, G = B, R = B where the binding face changes are grid
+or split planes; below 1 the grid nodes sit at sRGB-encoded values and the LUT stores
+sRGB code values, so the identity (every in-gamut colour) is reproduced exactly and the
+display encoding costs nothing (sRGB, Display P3) or one analytic op (Rec.2020). Above
+1 each channel's nodes run up to its own largest value, 1 / (its luminance weight).
+Nodes brighter than white hold U's analytic continuation (:func:`_white_continuation`)
+rather than white, so the cells that straddle Y = 1 interpolate a smooth function:
+colours just below white, far outside the gamut, keep their Y. The LUT stores code
+values / :data:`WHITE_SCALE`; the one gain after a LUT is that 1.25. Design notes and
+measurements: docs/gamut_map.md.
 
 - :func:`clip_lut` / :class:`ClipLUT` -- the baked LUT data of one display and their
   CLF-writable cores; :meth:`ClipLUT.transforms` -- the whole chain;
@@ -26,8 +34,9 @@ amplified. Design notes and measurements: docs/gamut_map.md.
   factors, whose composition is :func:`ocio_thinfilm.colour.clip.clip_RGB`;
 - :func:`clip_transform` -- CIE-XYZ-D65 -> display-linear RGB, clipped.
 
-Accuracy against the analytic clip, speed and the rejected designs:
-``benchmarks/bench_gamut_map.py``, ``benchmarks/bench_luts.py`` and docs/gamut_map.md.
+Accuracy against the analytic clip, size, load time, speed and the rejected designs:
+``benchmarks/bench_gamut_map.py``, ``benchmarks/bench_clip_size.py``,
+``benchmarks/bench_load.py`` and docs/gamut_map.md.
 """
 
 from __future__ import annotations
@@ -54,6 +63,7 @@ from ocio_thinfilm.lut.tables import check_size
 
 __all__ = [
     "CLIP_SIZE",
+    "WHITE_SIZE",
     "WORKING_ENCODING",
     "ClipLUT",
     "clip_lut",
@@ -62,30 +72,34 @@ __all__ = [
     "clip_white_faces_RGB",
     "xyz_limit_transform",
     "xyY_forward_transform",
-    "y_shaper_transform",
+    "xyY_inverse_transform",
     "working_decoding_transform",
 ]
 
-#: Default edge length of both clip LUTs.
+#: Default edge length of the black-faces Lut3D (the chromaticity chart).
 CLIP_SIZE = 65
+#: Default edge length of the white-faces Lut3D (with the default CLIP_SIZE; other
+#: sizes scale it in proportion, :func:`white_size`). Chosen by
+#: ``benchmarks/bench_clip_size.py``: the config's size budget against accuracy.
+WHITE_SIZE = 53
 #: The black pass's chart covers these colours (with a uniform grid): the spectral
 #: locus 360-780 nm, the ACES AP0 gamut with Y >= 0 and the Z axis (anything else is
 #: clamped to the grid's edge and still lands in gamut with its Y).
 CHART_COVERS = "spectral locus 360-780 nm, ACES AP0 (Y >= 0) and pure Z"
 #: Largest ratio of u_b = Y / S across the primaries' triangle (the chart's bend).
 CHART_BEND = 6.0
-#: The black pass's Y nodes are Y_top (k / (size - 1)) ** Y_POWER: uniform in
-#: Y^(1/3) ~ L*, with node size - 2 at Y = 1 (see :func:`_y_top`).
-Y_POWER = 3.0
 #: Share of each axis of the white pass spent on [0, 1] (grid nodes at encoded
 #: values 1 - (1 - k/n)^WHITE_POWER: denser towards white), the rest growing
-#: geometrically from WHITE_FIRST_STEP above 1 up to the brightest black-clipped
-#: channel, 1 / min(luminance weight).
-WHITE_INSIDE = 32 / 64
+#: geometrically from WHITE_FIRST_STEP above 1 up to the channel's largest value,
+#: 1 / (its luminance weight).
+WHITE_INSIDE = 0.42
 WHITE_POWER = 2.0
 WHITE_FIRST_STEP = 0.002
-#: Entries of the Lut1D shapers in front of each Lut3D.
-SHAPER_LENGTH = 32768
+#: The white pass's Lut3D holds code values / WHITE_SCALE: its nodes brighter than
+#: white hold U's continuation (code values above 1), capped at WHITE_SCALE.
+WHITE_SCALE = 1.25
+#: Entries of the Lut1D shaper in front of the white pass's Lut3D.
+SHAPER_LENGTH = 16384
 #: The white pass works in (and its LUT outputs) the sRGB piecewise encoding: its
 #: linear toe keeps the grid and the shaper accurate near black. Displays with
 #: another encoding (Rec.2020: BT.1886, a pure power with infinite slope at black)
@@ -94,6 +108,18 @@ SHAPER_LENGTH = 32768
 WORKING_ENCODING = "sRGB"
 #: 16-bit LUT files: values are stored as codes of this maximum.
 LUT_CODE_MAX = 65535
+
+
+def white_size(size: int) -> int:
+    """Edge of the white pass's Lut3D for a black pass of edge ``size``:
+    :data:`WHITE_SIZE` at :data:`CLIP_SIZE`, in proportion otherwise (at least 7).
+
+    Examples
+    --------
+    >>> white_size(65), white_size(33), white_size(9)
+    (53, 27, 7)
+    """
+    return max(7, int(round(size * WHITE_SIZE / CLIP_SIZE)))
 
 
 def xyz_limit_transform():
@@ -148,6 +174,28 @@ def xyY_forward_transform():
     """
     ocio = ocio_ops.module()
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
+
+
+def xyY_inverse_transform():
+    """OCIO's analytic xyY -> CIE XYZ (``FIXED_FUNCTION_XYZ_TO_xyY``, inverse).
+
+    ``X = x Y / y``, ``Z = (1 - x - y) Y / y`` (CIE 15:2004, Section 7.3). After the
+    black pass's Lut3D (chart coordinates of L(X) and Y) it gives L(X) in the chart's
+    coordinates; the black pass's outputs keep ``y`` (u_b) away from 0.
+
+    Returns
+    -------
+    PyOpenColorIO.FixedFunctionTransform
+
+    Examples
+    --------
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> [round(float(v), 4) for v in apply(xyY_inverse_transform(), [0.3127, 0.3290, 1.0])]
+    [0.9505, 1.0, 1.0891]
+    """
+    ocio = ocio_ops.module()
+    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY,
+                                       direction=ocio.TRANSFORM_DIR_INVERSE)
 
 
 def _luminance(display):
@@ -245,6 +293,34 @@ def clip_white_faces_RGB(RGB, display):
     [[0.5, 0.4, 0.3], [1.0, 0.54, 0.28], [1.0, 1.0, 1.0]]
     """
     return 1.0 - clip_black_faces_RGB(1.0 - np.asarray(RGB, dtype=np.float64), display)
+
+
+def _white_continuation(RGB, display):
+    """U of :func:`clip_white_faces_RGB` for Y <= 1, continued analytically above.
+
+    For c >= 0 with Y = w . c <= 1, U(c) = Y + t (c - Y) with t = (1 - Y) / (max c - Y)
+    where max c > 1 (else c): the paper's ray (Section 3.2) brought to the face
+    through white. The same formula for Y > 1 (t < 0) is its smooth continuation past
+    white, which the white pass stores at its nodes brighter than white: the cells that
+    straddle Y = 1 then interpolate a smooth function instead of a kink towards white
+    (the pre-clip keeps the pass's inputs at Y <= 1). At Y = 1 both give white.
+
+    Examples
+    --------
+    >>> rgb = np.array([[0.5, 0.4, 0.3], [1.2, 0.5, 0.1], [2.0, 1.0, 0.5]])
+    >>> bool(np.allclose(_white_continuation(rgb[:2], "sRGB"),
+    ...                  clip_white_faces_RGB(rgb[:2], "sRGB")))
+    True
+    >>> out = _white_continuation(rgb[2:], "sRGB")  # Y = 1.18: past white
+    >>> bool(out[0, 0] == 1.0 and np.all(out[0, 1:] > 1.0))
+    True
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    Y = rgb @ _luminance(display)
+    top = rgb.max(axis=-1)
+    with np.errstate(all="ignore"):
+        t = np.where((top > 1.0) & (top > Y), (1.0 - Y) / (top - Y), 1.0)
+    return Y[..., None] + t[..., None] * (rgb - Y[..., None])
 
 
 def _grow(first, length, cells):
@@ -348,65 +424,28 @@ def _encode(values, display):
 
 
 def _white_nodes(size, display):
-    """Node values of every axis of the white pass (display-linear; grid nodes below 1
-    at working-encoding code values 1 - (1 - k/n)^WHITE_POWER)."""
+    """Node values of each axis of the white pass, (3, size) display-linear: below 1
+    at working-encoding code values 1 - (1 - k/n)^WHITE_POWER (shared), above 1
+    growing geometrically up to the channel's largest value 1 / w_i (w: the
+    display's luminance row; a colour with Y <= 1 and no negative channel has
+    c_i <= 1 / w_i). Returns (nodes, tops), tops[i] the last node of axis i."""
     cells = size - 1
     inside = max(2, int(round(cells * WHITE_INSIDE)))
-    # the brightest black-clipped channel is 1 / (smallest luminance weight); a power
-    # of two above it, so that white (1 / top) is exact in half floats
-    top = 2.0 ** np.ceil(np.log2(1.0 / _luminance(display).min()))
     code = 1.0 - (1.0 - np.linspace(0.0, 1.0, inside + 1)) ** WHITE_POWER
     below = apply(ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
                   np.repeat(code[:, None], 3, axis=1))[:, 0].astype(np.float64)
     below[0], below[-1] = 0.0, 1.0
-    above = 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0, cells - inside))
-    return np.concatenate([below, above]), top
-
-
-def y_shaper_transform():
-    """The black pass's third axis: Y^(1/3) (uniform in lightness), chromaticity axes
-    unchanged -- an analytic op, exact in float on every GPU (a Lut1D shaper here
-    would be stored in half floats by some hosts, placing colours only to 1/30 of a
-    cell).
-
-    CIE L* is an affine function of Y^(1/3) above Y = 0.008856 (CIE 15:2004,
-    Section 8.2.1), so the Lut3D's nodes are about uniform in lightness.
-
-    Returns
-    -------
-    PyOpenColorIO.ExponentTransform
-        The inverse of the exponents (1, 1, 3, 1), negative values clamped to 0.
-
-    Examples
-    --------
-    >>> from ocio_thinfilm.lut.ocio_ops import apply
-    >>> out = apply(y_shaper_transform(), [[0.3, 0.6, 0.125], [0.3, 0.6, -0.1]])
-    >>> (out.astype(float).round(4) + 0.0).tolist()
-    [[0.3, 0.6, 0.5], [0.3, 0.6, 0.0]]
-    """
-    ocio = ocio_ops.module()
-    t = ocio.ExponentTransform([1.0, 1.0, Y_POWER, 1.0])
-    t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
-    t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return t
-
-
-def _y_top(size):
-    """Y of the black pass's last layer: the layer below it is Y = 1 exactly, the last
-    holds white, so every colour brighter than the display white by 5 % or more is
-    white exactly (Section 3.2: Y >= Y_W gives white)."""
-    return ((size - 1) / (size - 2)) ** Y_POWER
+    # a little above 1 / w_i: float32 round-off of the matrix in front stays inside
+    tops = 1.001 / _luminance(display)
+    nodes = np.array([np.concatenate([below, 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0,
+                                                                   cells - inside))])
+                      for top in tops])
+    return nodes, tops
 
 
 @dataclass(frozen=True, eq=False)
 class ClipLUT:
     """The baked constant-lightness clip for one display (see :func:`clip_lut`).
-
-    ``black``: (size, size, size, 3) display-linear RGB of L(X) / ``top``, over the
-    chart (u_a, u_b, Y^(1/3)) of :func:`_black_plan` (``chart``: its 3x3 matrix),
-    rounded to half floats. ``white``: the same shape, display code values of U(c)
-    over display RGB (:func:`_white_nodes`), rounded to 16 bits; ``white_shaper``:
-    (SHAPER_LENGTH, 3) Lut1D entries (grid coordinates) in front of it;
 
     The clip of Smits & Meyer (1990), Section 3.2, factored as U o L
     (:func:`clip_black_faces_RGB`, :func:`clip_white_faces_RGB`). Frozen; its arrays
@@ -417,30 +456,33 @@ class ClipLUT:
     display : str
         The display (a key of :data:`ocio_thinfilm.registry.DISPLAYS`).
     size : int
-        Edge length of both Lut3Ds, in [9, 129].
+        Edge length of the black pass's Lut3D, in [9, 129].
     black : numpy.ndarray
-        float64, (size, size, size, 3), index [u_a][u_b][Y^(1/3)]: L(X) / ``top`` in
-        display-linear RGB, values on the half-float grid in [0, 1].
+        float64, (size, size, size, 3), index [u_a][u_b][Y]: the chart coordinates
+        (u_a, u_b) of L(X) and Y (constant along the Y axis; the identity on Y), on the
+        16-bit grid in [0, 1].
     white : numpy.ndarray
-        float64, (size, size, size, 3), index [R][G][B]: sRGB-encoded code values of
-        U(c), on the 16-bit grid in [0, 1].
+        float64, (n, n, n, 3) with n = :func:`white_size` (size), index [R][G][B] over
+        the nodes of :func:`_white_nodes`: sRGB-encoded code values of U(c) (above
+        white: its continuation) / :data:`WHITE_SCALE`, on the 16-bit grid in [0, 1].
     white_shaper : numpy.ndarray
-        float64, (:data:`SHAPER_LENGTH`, 3): the Lut1D over display-linear RGB / top
-        in front of ``white``, grid coordinates on the 16-bit grid.
+        float64, (:data:`SHAPER_LENGTH`, 3): the Lut1D over c_i / tops[i] in front of
+        ``white``, grid coordinates on the 16-bit grid.
     chart : numpy.ndarray
         float64, (3, 3): the matrix taking CIE XYZ (D65 white at Y = 1) to the
         black pass's chart before ``XYZ_TO_xyY``.
-    top : float
-        Largest display-linear channel the white pass covers: the power of two at or
-        above 1 / (the display's smallest luminance weight).
+    tops : numpy.ndarray
+        float64, (3,): largest display-linear value of each channel the white pass
+        covers, just above 1 / (the channel's luminance weight).
 
     Examples
     --------
-    The chain has six ops: the XYZ limit, the chart matrix, XYZ_TO_xyY, the Y shaper
-    and the two CLF-writable cores:
+    The chain has eight ops: the XYZ limit, the chart matrix, XYZ_TO_xyY, the
+    pre-clip (Y <= 1), the black core, xyY -> XYZ, the matrix to display RGB and the
+    white core:
 
     >>> len(clip_lut("sRGB").transforms())
-    6
+    8
     """
 
     display: str
@@ -449,45 +491,51 @@ class ClipLUT:
     white: np.ndarray
     white_shaper: np.ndarray
     chart: np.ndarray
-    top: float
+    tops: np.ndarray
 
     @property
     def name(self) -> str:
         return f"Constant-Lightness Clip {self.display}"
 
     def black_core(self):
-        """CLF-writable black pass: the Lut3D; chart in, display-linear RGB / top out."""
+        """CLF-writable black pass: the Lut3D; chart (u_a, u_b, Y) in, the chart
+        coordinates of L(X) and Y out."""
         name = f"{self.name} Black Faces"
-        return group([lut3d_transform(self.black, bitdepth="half")],
+        return group([lut3d_transform(self.black, bitdepth="uint16")],
                      name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into "
                                   f"{self.display} (Section 3.2), the part against the "
                                   "gamut faces through black (R, G, B >= 0): a "
                                   f"{self.size}^3 tetrahedral Lut3D over a projective "
                                   "chart of the chromaticity (the primaries' triangle on "
-                                  "grid and split planes) and Y^(1/3), exactly linear "
-                                  "along Y. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
-                     input_descriptor=("(u_a, u_b, Y^(1/3)): XYZ_TO_xyY of a matrix of "
-                                       "CIE-XYZ-D65, then the cube root of Y"),
-                     output_descriptor=(f"{self.display} display-linear RGB of the "
-                                        f"black-faces clip, divided by {self.top:g}"))
+                                  "grid and split planes) and Y; the map is homogeneous, "
+                                  "so it moves the chromaticity and keeps Y. See "
+                                  "ocio_thinfilm.lut.clip_lut.ClipLUT."),
+                     input_descriptor=("(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
+                                       "CIE-XYZ-D65, Y limited to [0, 1]"),
+                     output_descriptor=("(u_a, u_b, Y) of the black-faces clip: its "
+                                        "chart coordinates and Y, for xyY_TO_XYZ"))
 
     def white_core(self):
-        """CLF-writable white pass: per-channel shaper and Lut3D; display-linear RGB /
-        top in (no negative channel), display code values out."""
+        """CLF-writable white pass: per-channel shaper, Lut3D, its scale and a clamp;
+        display-linear c_i / tops[i] in (no negative channel), display code values out."""
         name = f"{self.name} White Faces"
+        n = self.white.shape[0]
         ops = [lut1d_transform(self.white_shaper, bitdepth="uint16"),
-               lut3d_transform(self.white, bitdepth="uint16")]
+               lut3d_transform(self.white, bitdepth="uint16"),
+               ocio_ops.matrix(np.eye(3) * WHITE_SCALE), ocio_ops.range_(0.0, 1.0)]
         return group(ops, name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into "
                                   f"{self.display} (Section 3.2), the part against the "
                                   "gamut faces through white (R, G, B <= 1), followed "
-                                  f"by the sRGB encoding: a {self.size}^3 tetrahedral "
+                                  f"by the sRGB encoding: a {n}^3 tetrahedral "
                                   "Lut3D over display RGB whose nodes below 1 sit at "
                                   "sRGB-encoded values, so in-gamut colours are "
-                                  "reproduced exactly. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
-                     input_descriptor=f"{self.display} display-linear RGB divided by "
-                                      f"{self.top:g}, no negative channel",
+                                  "reproduced exactly; nodes above white hold the "
+                                  "clip's continuation. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
+                     input_descriptor=f"{self.display} display-linear RGB, each channel "
+                                      "divided by 1.001 / its luminance weight, no "
+                                      "negative channel, Y <= 1",
                      output_descriptor=f"{self.display} display RGB, clipped, sRGB-encoded "
                                        "(IEC 61966-2-1 piecewise curve)")
 
@@ -495,44 +543,49 @@ class ClipLUT:
         """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
         [0, 1], sRGB-encoded (:data:`WORKING_ENCODING`); ``black`` / ``white`` replace
         the CLF-writable cores (e.g. by FileTransforms in the config)."""
-        return [xyz_limit_transform(), ocio_ops.matrix(self.chart / _y_top(self.size)),
+        M = colorimetry.matrix_XYZ_to_RGB(self.display)
+        to_white = np.diag(1.0 / self.tops) @ M @ np.linalg.inv(self.chart)
+        return [xyz_limit_transform(), ocio_ops.matrix(self.chart),
                 xyY_forward_transform(),
-                y_shaper_transform(),
+                ocio_ops.range_(0.0, 1.0),  # the pre-clip: Y <= 1 (the chart is in [0, 1]^2)
                 self.black_core() if black is None else black,
+                xyY_inverse_transform(), ocio_ops.matrix(to_white),
                 self.white_core() if white is None else white]
+
+
+def _q16(values):
+    """``values`` clipped to [0, 1] and rounded to the 16-bit grid."""
+    return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
 
 
 @cache.memoize(maxsize=16)
 def _clip_lut(display, size):
     P, _ = _black_plan(display, size)
-    top_nodes, top = _white_nodes(size, display)
     M = colorimetry.matrix_XYZ_to_RGB(display)
-    # black pass: the chart's nodes -> XYZ -> L(X) in display RGB, / top, half floats
+    # black pass: the chart's (u_a, u_b) nodes -> XYZ (Y = 1) -> L(X) -> its chart
+    # coordinates; constant along Y, whose output is Y itself
     g = np.linspace(0.0, 1.0, size)
-    U = np.stack(np.meshgrid(g, g, _y_top(size) * g ** Y_POWER, indexing="ij"),
-                 axis=-1).reshape(-1, 3)
-    u_b = np.maximum(U[:, 1], 1e-9)  # u_b = Y / S -> 0: the limit of ever larger chroma
-    S = U[:, 2] / u_b
-    p = np.c_[U[:, 0] * S, U[:, 2], S - U[:, 0] * S - U[:, 2]]
-    XYZ = p @ np.linalg.inv(P).T
+    ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    S = 1.0 / np.maximum(ub, 1e-9)  # u_b = Y / S -> 0: the limit of ever larger chroma
+    XYZ = np.c_[ua * S, np.ones_like(S), S - ua * S - 1.0] @ np.linalg.inv(P).T
     with np.errstate(all="ignore"):
-        black = clip_black_faces_RGB(XYZ @ M.T, display)
-    black = np.where(np.isfinite(black), black, 0.0)
-    black[np.arange(len(U)) % size == size - 1] = 1.0  # the layer above white: white
-    black = (np.clip(black, 0.0, top) / top).astype(np.float16).astype(np.float64)
-    # white pass: RGB nodes -> U(c), clipped, sRGB-encoded, 16-bit
-    Uw = np.stack(np.meshgrid(top_nodes, top_nodes, top_nodes, indexing="ij"),
-                  axis=-1).reshape(-1, 3)
-    white = np.clip(clip_white_faces_RGB(Uw, display), 0.0, 1.0)
-    white = np.round(_encode(white, WORKING_ENCODING).clip(0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
-    w = _shaper_values(top_nodes, 0.0, top, along=lambda v: _encode(v, WORKING_ENCODING))
-    q16 = lambda v: np.round(np.clip(v, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX  # noqa: E731
-    lut = ClipLUT(display=display, size=size,
-                  black=black.reshape(size, size, size, 3),
-                  white=white.reshape(size, size, size, 3),
-                  white_shaper=q16(np.repeat(w[:, None], 3, axis=1)),
-                  chart=P, top=float(top))
-    for array in (lut.black, lut.white, lut.white_shaper, lut.chart):
+        chart = clip_black_faces_RGB(XYZ @ M.T, display) @ np.linalg.inv(M).T @ P.T
+        uv = chart[:, :2] / chart.sum(axis=1, keepdims=True)
+    black = np.empty((size, size, size, 3))
+    black[..., :2] = uv.reshape(size, size, 1, 2)
+    black[..., 2] = g
+    # white pass: RGB nodes -> U(c) (continued above white), sRGB-encoded / scale
+    nodes, tops = _white_nodes(white_size(size), display)
+    n = nodes.shape[1]
+    C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
+    code = _encode(np.clip(_white_continuation(C, display), 0.0, None), WORKING_ENCODING)
+    shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i],
+                                      along=lambda v: _encode(v, WORKING_ENCODING))
+                       for i in range(3)], axis=1)
+    lut = ClipLUT(display=display, size=size, black=_q16(black),
+                  white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
+                  white_shaper=_q16(shaper), chart=P, tops=tops)
+    for array in (lut.black, lut.white, lut.white_shaper, lut.chart, lut.tops):
         array.setflags(write=False)
     return lut
 
@@ -547,8 +600,8 @@ def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
     display : str, optional
         A display of :data:`ocio_thinfilm.registry.DISPLAYS` (default ``"sRGB"``).
     size : int, optional
-        Edge length of both Lut3Ds, an integer in [9, 129] (default
-        :data:`CLIP_SIZE`, 65).
+        Edge length of the black pass's Lut3D, an integer in [9, 129] (default
+        :data:`CLIP_SIZE`, 65); the white pass's is :func:`white_size` of it.
 
     Returns
     -------
@@ -567,13 +620,13 @@ def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
     Examples
     --------
     For sRGB the smallest luminance weight is 0.0722 (Rec.709 blue), so the white
-    pass covers channels up to 16, the power of two above 1 / 0.0722 = 13.9:
+    pass's blue axis runs to 1.001 / 0.07219 = 13.87:
 
     >>> lut = clip_lut("sRGB")
     >>> lut.size, lut.black.shape, lut.white.shape, lut.white_shaper.shape
-    (65, (65, 65, 65, 3), (65, 65, 65, 3), (32768, 3))
-    >>> lut.top
-    16.0
+    (65, (65, 65, 65, 3), (53, 53, 53, 3), (16384, 3))
+    >>> lut.tops.round(2).tolist()
+    [4.71, 1.4, 13.87]
     >>> lut.black.flags.writeable
     False
     """
