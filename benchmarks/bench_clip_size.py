@@ -1,27 +1,29 @@
-"""Benchmark: accuracy / size / load time of the clip's black-faces pass, the shipped
-design against a candidate (issue 15's size curve).
+"""Benchmark: accuracy / size / load time of the Constant-Lightness Clip LUTs against
+their edge lengths (issue 15's size curve: the config's budget against accuracy).
 
-- ``shipped``: :class:`ocio_thinfilm.lut.clip_lut.ClipLUT` as the config bakes it, a
-  Lut3D over (u_a, u_b, Y^(1/3)) holding L(X) / top in half floats.
-- ``chroma``: the candidate. L is homogeneous of degree 1 (L(kX) = k L(X)): it moves
-  the chromaticity radially from the white point onto the primaries' triangle and
-  keeps Y. So the Lut3D over (u_a, u_b, Y / Y_top) outputs the *chart coordinates* of
-  L(X) and Y unchanged -- constant along the Y axis but for the last layer (above
-  white: white), exactly linear there, so tetrahedral interpolation is exact along Y
-  and in-gamut chromaticities are reproduced exactly -- and OCIO's analytic
-  ``xyY -> XYZ`` (XYZ_TO_xyY, inverse) and one matrix give display RGB / top. 16-bit
-  integers in the file. Both are followed by the shipped white-faces pass.
+For each display and each (black-pass edge, white-pass edge) pair the shipped design
+(:class:`ocio_thinfilm.lut.clip_lut.ClipLUT`) is built, both passes are written as CLF
+files exactly as the config bakes them, and the whole view chain is read back from
+those files:
 
-Accuracy: the issue's sets (object, monochromatic, AP0) through OCIO's CPU processor
-against the analytic clip, dE2000 p99 / max and in-gamut max. Size: the black pass's
-CLF text. Load: building a processor from that CLF in a fresh OCIO config (best of 3).
+- MB: the two CLFs' text (what a host parses before the first pixel);
+- load ms: building a CPU processor of the chain from the files in a fresh OCIO
+  config (best of 3, OCIO's caches cleared);
+- accuracy: the chain through OCIO's CPU processor against the analytic clip
+  (``colour.clip.clip_XYZ``) on the test sets of ``tests/test_gamut_map.py`` (object,
+  monochromatic, random AP0, spectral-line mixtures), dE2000 p99 / max, the largest
+  |dY|, and the largest dE2000 of in-gamut colours.
 
-Usage: python benchmarks/bench_clip_size.py [--sizes 33 49 57 65]
+Config size: three displays' clip LUTs plus the thin-film tables (about 0.7 MB); the
+budget is 25 MB. Writes reports/bench_clip_size.md and reports/bench_clip_size.json.
+
+Usage: python benchmarks/bench_clip_size.py [--pairs 49:41 57:45 65:53 65:57 73:53]
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import tempfile
 import time
@@ -30,108 +32,126 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+DEFAULT_PAIRS = ("49:41", "57:45", "65:49", "65:53", "65:57", "73:53")
 
 
-def chroma_black_pass(display, size):
-    """(ops before the Lut3D, Lut3D values, ops after) of the candidate black pass,
-    ending in display-linear RGB / top (the white pass's input)."""
-    from ocio_thinfilm.colour import colorimetry
+def chain_from_files(lut, directory):
+    """The view's clip chain with both passes read from CLF files in ``directory``
+    (as the config references them); returns (transform, bytes of the two files)."""
+    import PyOpenColorIO as ocio
+
     from ocio_thinfilm.lut import clip_lut as CL
     from ocio_thinfilm.lut import ocio_ops
 
-    ocio = ocio_ops.module()
-    P, _ = CL._black_plan(display, size)
-    M = colorimetry.matrix_XYZ_to_RGB(display)
-    top = CL.clip_lut(display, size).top
-    y_top = (size - 1) / (size - 2)  # node size - 2 is Y = 1
-    g = np.linspace(0.0, 1.0, size)
-    ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
-    S = 1.0 / np.maximum(ub, 1e-9)  # u_b -> 0: ever larger chroma
-    XYZ = np.c_[ua * S, np.ones_like(S), S - ua * S - 1.0] @ np.linalg.inv(P).T
-    with np.errstate(all="ignore"):
-        L = CL.clip_black_faces_RGB(XYZ @ M.T, display) @ np.linalg.inv(M).T @ P.T
-    white = P @ np.linalg.inv(M) @ np.ones(3)
-    lut = np.zeros((size, size, size, 3))
-    lut[..., 0] = (L[:, 0] / L.sum(1)).reshape(size, size)[:, :, None]
-    lut[..., 1] = (L[:, 1] / L.sum(1)).reshape(size, size)[:, :, None]
-    lut[..., 2] = g
-    lut[:, :, -1] = [white[0] / white.sum(), white[1] / white.sum(), g[-2]]
-    lut = np.round(np.clip(lut, 0.0, 1.0) * 65535) / 65535
-    before = [CL.xyz_limit_transform(), ocio_ops.matrix(P / y_top), CL.xyY_forward_transform()]
-    after = [ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY,
-                                         direction=ocio.TRANSFORM_DIR_INVERSE),
-             ocio_ops.matrix(M @ np.linalg.inv(P) * y_top / top)]
-    return before, lut, after
+    paths = []
+    for kind, core in (("black", lut.black_core()), ("white", lut.white_core())):
+        path = Path(directory) / f"{kind}.clf"
+        core.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+        paths.append(path)
+    cores = [ocio.FileTransform(str(p), interpolation=ocio.INTERP_BEST) for p in paths]
+    chain = ocio_ops.group(lut.transforms(*cores) + [CL.working_decoding_transform()])
+    return chain, sum(p.stat().st_size for p in paths)
 
 
-def variant(display, size, kind):
-    """(whole clip chain CIE-XYZ-D65 -> display-linear RGB, CLF-writable black core)."""
-    from ocio_thinfilm.lut import clip_lut as CL
-    from ocio_thinfilm.lut import ocio_ops
+def load_ms(chain):
+    import PyOpenColorIO as ocio
 
-    shipped = CL.clip_lut(display, size)
-    if kind == "shipped":
-        core = shipped.black_core()
-        ops = shipped.transforms()
-    else:
-        before, lut, after = chroma_black_pass(display, size)
-        core = ocio_ops.group([ocio_ops.lut3d_transform(lut, bitdepth="uint16"),
-                               ocio_ops.matrix()])
-        ops = before + [core] + after + [shipped.white_core()]
-    return ocio_ops.group(ops + [CL.working_decoding_transform()]), core
+    best = np.inf
+    for _ in range(3):
+        ocio.ClearAllCaches()
+        t0 = time.perf_counter()
+        ocio.Config.CreateRaw().getProcessor(chain).getDefaultCPUProcessor()
+        best = min(best, time.perf_counter() - t0)
+    return best * 1e3
 
 
-def accuracy(display, chain):
-    sys.path.insert(0, str(ROOT / "tests"))
-    from test_gamut_map import _sets
-
+def accuracy(display, chain, sets):
     from ocio_thinfilm.colour import clip, colorimetry
     from ocio_thinfilm.lut.ocio_ops import apply
 
     M = colorimetry.matrix_XYZ_to_RGB(display)
     out = {}
-    for name, XYZ in _sets().items():
+    for name, XYZ in sets.items():
         got = colorimetry.RGB_to_XYZ(np.asarray(apply(chain, XYZ), float), display)
-        de = colorimetry.delta_E2000(clip.clip_XYZ(XYZ, display), got)
+        truth = clip.clip_XYZ(XYZ, display)
+        de = colorimetry.delta_E2000(truth, got)
         inside = clip.in_gamut(XYZ @ M.T)
-        out[name] = (float(np.percentile(de, 99)), float(de.max()),
-                     float(de[inside].max()) if inside.any() else 0.0)
+        out[name] = dict(p99=float(np.percentile(de, 99)), max=float(de.max()),
+                         dY=float(np.abs(got[:, 1] - truth[:, 1]).max()),
+                         inside_max=float(de[inside].max()) if inside.any() else 0.0)
     return out
 
 
-def load(core):
-    import PyOpenColorIO as ocio
+def measure(pairs, displays):
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_gamut_map import _sets
 
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "black.clf"
-        core.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
-        best = np.inf
-        for _ in range(3):
-            ocio.ClearAllCaches()
-            t0 = time.perf_counter()
-            ocio.Config.CreateRaw().getProcessor(ocio.FileTransform(str(path))) \
-                .getDefaultCPUProcessor()
-            best = min(best, time.perf_counter() - t0)
-        return path.stat().st_size / 1e6, best * 1e3
+    from ocio_thinfilm.lut import clip_lut as CL
+
+    sets = _sets()
+    rows = []
+    for black, white in pairs:
+        for display in displays:
+            lut = CL.clip_lut(display, black, white)
+            with tempfile.TemporaryDirectory() as tmp:
+                chain, size = chain_from_files(lut, tmp)
+                rows.append(dict(display=display, black=black, white=white, MB=size / 1e6,
+                                 load_ms=load_ms(chain),
+                                 accuracy=accuracy(display, chain, sets)))
+            print(markdown_row(rows[-1]), flush=True)
+    return rows
+
+
+def markdown_row(r):
+    cells = " | ".join(f"{m['p99']:.2f} / {m['max']:.2f}" for m in r["accuracy"].values())
+    dY = max(m["dY"] for m in r["accuracy"].values())
+    inside = max(m["inside_max"] for m in r["accuracy"].values())
+    return (f"| {r['display']} | {r['black']}³ + {r['white']}³ | {r['MB']:.1f} | "
+            f"{r['load_ms']:.0f} | {cells} | {dY:.1e} | {inside:.3f} |")
+
+
+def markdown(rows, sets, ocio_version):
+    head = ("| display | black + white | MB | load ms | "
+            + " | ".join(f"{s} p99 / max" for s in sets) + " | max \\|dY\\| | in-gamut max |")
+    lines = ["# bench_clip_size: the clip LUTs' accuracy, size and load time by edge length",
+             "",
+             f"Written by `python benchmarks/bench_clip_size.py` (OCIO {ocio_version}). "
+             "MB: both passes' CLF text for one display (the config holds three, plus "
+             "0.7 MB of thin-film tables; budget 25 MB); load ms: a CPU processor of the "
+             "chain built from those files; accuracy: dE2000 against the analytic clip.",
+             "", head, "|" + "---|" * (head.count("|") - 1)]
+    lines += [markdown_row(r) for r in rows]
+    config_mb = {}
+    for r in rows:
+        config_mb.setdefault((r["black"], r["white"]), 0.0)
+        config_mb[r["black"], r["white"]] += r["MB"]
+    lines += ["", "Config size (three displays' clip LUTs + 0.7 MB of tables): "
+              + "; ".join(f"{b}³ + {w}³: {mb + 0.7:.1f} MB" for (b, w), mb in config_mb.items())
+              + "."]
+    return "\n".join(lines) + "\n"
 
 
 def main(argv=None):
+    import PyOpenColorIO as ocio
+
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--sizes", type=int, nargs="+", default=[33, 49, 57, 65])
+    p.add_argument("--pairs", nargs="+", default=list(DEFAULT_PAIRS),
+                   help="BLACK:WHITE edge pairs (default: %(default)s)")
     p.add_argument("--displays", nargs="+", default=["sRGB", "Display P3", "Rec.2020"])
     args = p.parse_args(argv)
-    print("| display | black pass | size | MB | load ms | object p99 / max | "
-          "monochromatic p99 / max | ap0 p99 / max | in-gamut max |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for display in args.displays:
-        for size in args.sizes:
-            for kind in ("shipped", "chroma"):
-                chain, core = variant(display, size, kind)
-                acc = accuracy(display, chain)
-                mb, ms = load(core)
-                cells = " | ".join(f"{v[0]:.3f} / {v[1]:.3f}" for v in acc.values())
-                print(f"| {display} | {kind} | {size} | {mb:.1f} | {ms:.0f} | {cells} | "
-                      f"{max(v[2] for v in acc.values()):.3f} |", flush=True)
+    pairs = []
+    for pair in args.pairs:
+        try:
+            black, white = (int(v) for v in pair.split(":"))
+        except ValueError:
+            p.error(f"--pairs: expected BLACK:WHITE integers, got {pair!r}")
+        pairs.append((black, white))
+    rows = measure(pairs, args.displays)
+    sets = list(rows[0]["accuracy"])
+    (ROOT / "reports" / "bench_clip_size.json").write_text(
+        json.dumps({"ocio": ocio.__version__, "rows": rows}, indent=1) + "\n")
+    (ROOT / "reports" / "bench_clip_size.md").write_text(markdown(rows, sets, ocio.__version__))
+    print(f"wrote {ROOT / 'reports' / 'bench_clip_size.md'}")
 
 
 if __name__ == "__main__":

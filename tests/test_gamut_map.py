@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours
+from ocio_thinfilm.evaluation.colours import object_colours, spectral_mixtures
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -60,7 +60,8 @@ def _sets():
     ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
     locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
                             for Y in (0.02, 0.1, 0.3, 0.6)])
-    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0}
+    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
+            "mixtures": spectral_mixtures()}
 
 
 @pytest.fixture(scope="module")

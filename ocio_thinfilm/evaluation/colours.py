@@ -7,6 +7,8 @@ that builds a table, a LUT or the config imports this module.
   the ColorCheckers, the real Munsell colours, the two film kinds and the Morpho
   multilayer), CIE-XYZ-D65 with Y <= 1.
 - :func:`spectral_colours`: monochromatic colours at a range of luminances.
+- :func:`spectral_mixtures`: mixtures of one to three spectral lines up to Y = 0.99
+  (saturated emissive colours: lasers, neon, LEDs), a quarter of them at Y >= 0.95.
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
 
-__all__ = ["object_colours", "spectral_colours"]
+__all__ = ["object_colours", "spectral_colours", "spectral_mixtures"]
 
 
 def object_colours(seed: int = 0, n_random: int = 4000) -> np.ndarray:
@@ -60,3 +62,19 @@ def spectral_colours(max_Y: float = 0.6, levels: int = 60) -> np.ndarray:
     """Monochromatic colours 380-700 nm at ``levels`` luminances in (0, max_Y]."""
     Ys = np.linspace(max_Y / levels, max_Y, levels)
     return np.concatenate([colorimetry.spectral_locus_XYZ(Y) for Y in Ys])
+
+
+def spectral_mixtures(n: int = 20000, seed: int = 3, max_Y: float = 0.99) -> np.ndarray:
+    """``n`` mixtures of one to three monochromatic lines (380-700 nm, random
+    weights), CIE-XYZ-D65 scaled to a random Y in (0, max_Y]; a quarter of them at
+    Y in [0.95, max_Y], where the clip bends every colour towards white."""
+    rng = np.random.default_rng(seed)
+    locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(380.0, 701.0))
+    lines = rng.integers(1, 4, n)
+    XYZ = np.zeros((n, 3))
+    for k in range(3):
+        weight = rng.uniform(0.0, 1.0, n) * (k < lines)
+        XYZ += weight[:, None] * locus[rng.integers(0, len(locus), n)]
+    Y = max_Y * rng.uniform(0.0, 1.0, n) ** 0.5
+    Y[: n // 4] = rng.uniform(0.95, max_Y, n // 4)
+    return XYZ / XYZ[:, 1:2] * Y[:, None]

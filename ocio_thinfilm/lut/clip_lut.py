@@ -459,8 +459,8 @@ class ClipLUT:
         Edge length of the black pass's Lut3D, in [9, 129].
     black : numpy.ndarray
         float64, (size, size, size, 3), index [u_a][u_b][Y]: the chart coordinates
-        (u_a, u_b) of L(X) and Y (constant along the Y axis; the identity on Y), on the
-        16-bit grid in [0, 1].
+        (u_a, u_b) of L(X) and Y (constant along the Y axis; the identity on Y), half
+        floats rounded to the 16-bit grid in [0, 1].
     white : numpy.ndarray
         float64, (n, n, n, 3) with n = :func:`white_size` (size), index [R][G][B] over
         the nodes of :func:`_white_nodes`: sRGB-encoded code values of U(c) (above
@@ -559,7 +559,7 @@ def _q16(values):
 
 
 @cache.memoize(maxsize=16)
-def _clip_lut(display, size):
+def _clip_lut(display, size, white_edge):
     P, _ = _black_plan(display, size)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     # black pass: the chart's (u_a, u_b) nodes -> XYZ (Y = 1) -> L(X) -> its chart
@@ -575,14 +575,19 @@ def _clip_lut(display, size):
     black[..., :2] = uv.reshape(size, size, 1, 2)
     black[..., 2] = g
     # white pass: RGB nodes -> U(c) (continued above white), sRGB-encoded / scale
-    nodes, tops = _white_nodes(white_size(size), display)
+    nodes, tops = _white_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
     code = _encode(np.clip(_white_continuation(C, display), 0.0, None), WORKING_ENCODING)
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i],
                                       along=lambda v: _encode(v, WORKING_ENCODING))
                        for i in range(3)], axis=1)
-    lut = ClipLUT(display=display, size=size, black=_q16(black),
+    # half floats first, then the 16-bit grid: the file holds 16-bit codes within
+    # 7.6e-6 of half floats, so hosts that upload the texture as half floats
+    # (Blender's viewport) get nearly the CPU's values instead of rounding them a
+    # second time (measured on Mesa: 0.9/255 against 2.8/255 for sRGB)
+    lut = ClipLUT(display=display, size=size,
+                  black=_q16(black.astype(np.float16).astype(np.float64)),
                   white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
                   white_shaper=_q16(shaper), chart=P, tops=tops)
     for array in (lut.black, lut.white, lut.white_shaper, lut.chart, lut.tops):
@@ -590,7 +595,8 @@ def _clip_lut(display, size):
     return lut
 
 
-def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
+def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE,
+             white_edge: int | None = None) -> ClipLUT:
     """The baked clip LUTs for ``display`` (cached): both passes, from
     :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
     is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly.
@@ -601,7 +607,10 @@ def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
         A display of :data:`ocio_thinfilm.registry.DISPLAYS` (default ``"sRGB"``).
     size : int, optional
         Edge length of the black pass's Lut3D, an integer in [9, 129] (default
-        :data:`CLIP_SIZE`, 65); the white pass's is :func:`white_size` of it.
+        :data:`CLIP_SIZE`, 65).
+    white_edge : int, optional
+        Edge length of the white pass's Lut3D, an integer in [7, 129] (default
+        :func:`white_size` of ``size``).
 
     Returns
     -------
@@ -611,7 +620,8 @@ def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
     Raises
     ------
     ValueError
-        For an unknown display or a size outside [9, 129].
+        For an unknown display, a size outside [9, 129] or a white_edge outside
+        [7, 129].
 
     References
     ----------
@@ -631,7 +641,9 @@ def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE) -> ClipLUT:
     False
     """
     check_display(display)
-    return _clip_lut(display, check_size(size, 9, 129, "clip LUT size"))
+    size = check_size(size, 9, 129, "size")
+    white_edge = white_size(size) if white_edge is None else white_edge
+    return _clip_lut(display, size, check_size(white_edge, 7, 129, "white_edge"))
 
 
 def working_decoding_transform():
