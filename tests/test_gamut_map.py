@@ -5,8 +5,10 @@ against the analytic clip (``clip.clip_XYZ``, the paper's Section 3.2 form).
 Sets: (a) object and interference colours (``evaluation.colours.object_colours``: random smooth
 reflectances, ColorCheckers, Munsell, thin films, Morpho), (b) monochromatic stimuli
 380-700 nm at Y in {0.02, 0.1, 0.3, 0.6}, (c) random XYZ inside ACES AP0 with
-0 <= Y <= 1, (d) extremes. The issue's targets for (a)-(c): dE2000 p99 <= 0.5 and
-max <= 1.5, |dY| <= 1e-3, output in gamut, in-gamut colours unchanged (dE2000 <= 0.1).
+0 <= Y <= 1, (e) spectral-line mixtures up to Y = 0.99
+(``evaluation.colours.spectral_mixtures``), (d) extremes. The issue's targets for
+(a)-(c) and (e): dE2000 p99 <= 0.5 and max <= 1.5, |dY| <= 1e-3, output in gamut,
+in-gamut colours unchanged (dE2000 <= 0.1).
 Where a target is not reached the test asserts what is reached and a strict xfail
 states the target, so it shows in every run (and turns into a failure once met).
 """
@@ -88,20 +90,28 @@ def measured(cfg):
 #: fast pow at 1.0 gives 1.0000165 through BT.1886; every view, the baselines too).
 TOL = 1e-4
 
-#: What the design reaches, per set (dE2000 p99, max, |dY|, in-gamut colours' max),
-#: measured on these sets: all three displays are within these numbers.
-REACHED = {"object": (0.5, 1.5, 1e-3, 0.25),
-           "monochromatic": (0.5, 1.5, 1e-3, 0.1),
-           "ap0": (0.5, 3.0, 5e-3, 0.25)}
+#: The issue's targets for every set: dE2000 p99, max, |dY|, in-gamut colours' max.
+TARGET = (0.5, 1.5, 1e-3, 0.1)
+#: What the design reaches, per set (same order), measured on these sets: all three
+#: displays are within these numbers.
+REACHED = {"object": (0.5, 1.5, 1e-3, 0.1),
+           "monochromatic": (0.5, 1.5, 1.1e-3, 0.1),
+           "ap0": (0.5, 2.1, 1e-3, 0.1),
+           "mixtures": (0.5, 1.6, 1.5e-3, 0.1)}
+#: (display, set) pairs that miss TARGET (a strict xfail each, so it turns into a
+#: failure once met): the dark violet beyond the blue primary (AP0 at Y ~ 0.05, where
+#: interpolating between points on two faces cuts the triangle's corner), and |dY| of
+#: bright spectral mixtures just below white (the white-faces pass at Y > 0.95).
+MISSES = {("sRGB", "ap0"): "max dE2000 2.0 (dark violet beyond the blue primary)",
+          ("Display P3", "ap0"): "max dE2000 1.96 (dark violet beyond the blue primary)",
+          ("sRGB", "mixtures"): "max dE2000 1.55, |dY| 1.3e-3 (bright mixtures below white)",
+          ("Display P3", "mixtures"): "|dY| 1.2e-3 (bright mixtures below white)",
+          ("Rec.2020", "mixtures"): "|dY| 1.4e-3 (bright mixtures below white)",
+          ("Display P3", "monochromatic"): "|dY| 1.01e-3"}
 
 
-@pytest.mark.parametrize("display", DISPLAYS)
-@pytest.mark.parametrize("name", list(REACHED))
-def test_view_against_the_analytic_clip(measured, display, name):
-    m = measured[display, name]
-    p99, worst, dY, inside = REACHED[name]
-    print(f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
-          f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}")
+def _check(m, limits):
+    p99, worst, dY, inside = limits
     assert m["in_gamut"]
     assert m["p99"] <= p99
     assert m["max"] <= worst
@@ -110,20 +120,20 @@ def test_view_against_the_analytic_clip(measured, display, name):
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
-@pytest.mark.xfail(strict=True, reason="issue 8 target not reached: max dE2000 1.8-2.6 on "
-                                       "AP0 colours at Y > 0.99 far outside the gamut (the "
-                                       "white-faces pass is steep there), |dY| up to 3.7e-3")
-def test_ap0_target(measured, display):
-    m = measured[display, "ap0"]
-    assert m["max"] <= 1.5 and m["dY"] <= 1e-3
+@pytest.mark.parametrize("name", list(REACHED))
+def test_view_against_the_analytic_clip(measured, display, name):
+    m = measured[display, name]
+    print(f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
+          f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}")
+    _check(m, REACHED[name])
 
 
-@pytest.mark.parametrize("display", DISPLAYS)
-@pytest.mark.xfail(strict=True, reason="issue 8 target not reached: in-gamut colours move "
-                                       "by dE2000 0.15-0.20 at most (p99 far lower): the "
-                                       "black-faces pass interpolates over a projective chart")
-def test_in_gamut_target(measured, display):
-    assert max(measured[display, name]["inside_max"] for name in REACHED) <= 0.1
+@pytest.mark.parametrize("display, name", [
+    pytest.param(d, n, marks=[pytest.mark.xfail(strict=True, reason=f"target not reached: "
+                                                f"{MISSES[d, n]}")] if (d, n) in MISSES else [])
+    for d in DISPLAYS for n in REACHED])
+def test_view_target(measured, display, name):
+    _check(measured[display, name], TARGET)
 
 
 # --------------------------------------------------------------------------- #
@@ -145,7 +155,9 @@ def test_extremes_finite_and_in_gamut(cfg, display, level):
     out = _apply_view(cfg, display, EXTREMES, getattr(ocio, LEVELS[level]))
     assert np.all(np.isfinite(out)) and out.min() >= -TOL and out.max() <= 1.0 + TOL
     np.testing.assert_allclose(out[0], 0.0, atol=1e-6)  # black
-    np.testing.assert_allclose(out[[6, 7, 8]], 1.0, atol=1e-4)  # above white: white
+    # above white: white, to 3e-4 (0.08/255): the pre-clip brings them to Y = 1, and the
+    # white pass interpolates the clip's smooth continuation across Y = 1 there
+    np.testing.assert_allclose(out[[6, 7, 8]], 1.0, atol=3e-4)
 
 
 def _finite_probe():
