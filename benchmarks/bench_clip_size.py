@@ -119,7 +119,7 @@ def markdown(rows, sets, ocio_version):
              "MB: both passes' CLF text for one display (the config holds three, plus "
              "0.7 MB of thin-film tables; budget 25 MB); load ms: a CPU processor of the "
              "chain built from those files; accuracy: dE2000 against the analytic clip.",
-             "", head, "|" + "---|" * (head.count("|") - 1)]
+             "", head, "|" + "---|" * (6 + len(sets))]
     lines += [markdown_row(r) for r in rows]
     config_mb = {}
     for r in rows:
