@@ -93,8 +93,8 @@ CHART_BEND = 6.0
 #: geometrically from WHITE_FIRST_STEP above 1 up to the channel's largest value,
 #: 1 / (its luminance weight).
 WHITE_INSIDE = 0.42
-WHITE_POWER = 2.0
-WHITE_FIRST_STEP = 0.002
+WHITE_POWER = 1.5
+WHITE_FIRST_STEP = 0.004
 #: The white pass's Lut3D holds code values / WHITE_SCALE: its nodes brighter than
 #: white hold U's continuation (code values above 1), capped at WHITE_SCALE.
 WHITE_SCALE = 1.25
