@@ -577,15 +577,28 @@ def _black_map(display, P, ua, ub):
     return uv, rgb.min(axis=1) >= -1e-9 * np.abs(rgb).max(axis=1)
 
 
+def _cross(a, b):
+    """z component of the cross product of 2D vectors (last axis 2)."""
+    a, b = np.asarray(a), np.asarray(b)
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def _chart_triangle(display, P):
+    """The display's primaries in the chart of ``P``: the triangle's vertices (3, 2)."""
+    primaries = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display)).T @ P.T
+    return primaries[:, :2] / primaries.sum(axis=1, keepdims=True)
+
+
 def _convex_hull(points):
-    """Vertices of the convex hull of 2D ``points``, counter-clockwise (monotone chain)."""
+    """Vertices of the convex hull of 2D ``points``, counter-clockwise (Andrew's
+    monotone chain)."""
     pts = sorted(map(tuple, np.asarray(points, dtype=np.float64)))
 
     def half(seq):
         out = []
         for p in seq:
-            while len(out) >= 2 and np.cross(np.subtract(out[-1], out[-2]),
-                                             np.subtract(p, out[-2])) <= 0:
+            while len(out) >= 2 and _cross(np.subtract(out[-1], out[-2]),
+                                           np.subtract(p, out[-2])) <= 0:
                 out.pop()
             out.append(p)
         return out[:-1]
@@ -597,7 +610,7 @@ def _inside_convex(points, hull):
     """Whether each of ``points`` (N, 2) lies inside the counter-clockwise ``hull``."""
     inside = np.ones(len(points), dtype=bool)
     for a, b in zip(hull, np.roll(hull, -1, axis=0)):
-        inside &= np.cross(b - a, points - a) >= 0.0
+        inside &= _cross(b - a, points - a) >= 0.0
     return inside
 
 
@@ -631,11 +644,14 @@ def _fit_outside_nodes(display, P, size, exact, inside):
     constrained to the triangle, so the output stays in gamut and Y exact. Solved by
     projected accelerated gradient descent (FISTA, :data:`FIT_ITERATIONS` steps) from
     the sampled values.
+
+    References
+    ----------
+    Beck, A. & Teboulle, M. (2009). A fast iterative shrinkage-thresholding algorithm
+    for linear inverse problems. SIAM J. Imaging Sciences 2(1), 183-202.
     """
     n = size
-    M = colorimetry.matrix_XYZ_to_RGB(display)
-    primaries = np.linalg.inv(M).T @ P.T
-    V = primaries[:, :2] / primaries.sum(axis=1, keepdims=True)
+    V = _chart_triangle(display, P)
     cover = _chart_cover() @ P.T
     hull = _convex_hull(cover[:, :2] / cover.sum(axis=1, keepdims=True))
     m = (n - 1) * FIT_DENSITY
@@ -651,12 +667,14 @@ def _fit_outside_nodes(display, P, size, exact, inside):
     up = fx >= fy
     corner = np.c_[i * n + j, np.where(up, (i + 1) * n + j, i * n + j + 1), (i + 1) * n + j + 1]
     weight = np.c_[np.where(up, 1 - fx, 1 - fy), np.abs(fx - fy), np.where(up, fy, fx)]
-    # u'v' metric of each sample's error: J^T J of chart -> u'v', normalised
-    Pinv_uv = lambda a, b: _uv(_chart_to_XYZ(P, a, b))  # noqa: E731
+    # u'v' metric of each sample's error: J^T J of chart -> u'v' (central differences),
+    # normalised by its median trace
+    def uv(a, b):
+        return _uv(_chart_to_XYZ(P, a, b))
+
     h = 1e-6
-    J = np.stack([(Pinv_uv(target[:, 0] + h, target[:, 1]) - Pinv_uv(target[:, 0] - h, target[:, 1])),
-                  (Pinv_uv(target[:, 0], target[:, 1] + h) - Pinv_uv(target[:, 0], target[:, 1] - h))],
-                 axis=-1) / (2 * h)
+    a, b = target[:, 0], target[:, 1]
+    J = np.stack([uv(a + h, b) - uv(a - h, b), uv(a, b + h) - uv(a, b - h)], axis=-1) / (2 * h)
     metric = np.einsum("nki,nkj->nij", J, J)
     metric /= np.median(np.trace(metric, axis1=1, axis2=2))
     free = ~inside
