@@ -101,7 +101,7 @@ WHITE_SCALE = 1.25
 #: The fit of the black pass's outside nodes (:func:`_fit_outside_nodes`): samples per
 #: cell and axis, weight of the distance to the sampled value, gradient steps.
 FIT_DENSITY = 5
-FIT_DAMPING = 2.0
+FIT_DAMPING = 3.0
 FIT_ITERATIONS = 1500
 #: Entries of the Lut1D shaper in front of the white pass's Lut3D.
 SHAPER_LENGTH = 16384
@@ -464,8 +464,9 @@ class ClipLUT:
         Edge length of the black pass's Lut3D, in [9, 129].
     black : numpy.ndarray
         float64, (size, size, size, 3), index [u_a][u_b][Y]: the chart coordinates
-        (u_a, u_b) of L(X) and Y (constant along the Y axis; the identity on Y), half
-        floats rounded to the 16-bit grid in [0, 1].
+        (u_a, u_b) of L(X), stored as z = sign (u - origin) (``frame``), and Y (constant
+        along the Y axis; the identity on Y); half floats rounded to the 16-bit grid in
+        [0, 1].
     white : numpy.ndarray
         float64, (n, n, n, 3) with n = :func:`white_size` (size), index [R][G][B] over
         the nodes of :func:`_white_nodes`: sRGB-encoded code values of U(c) (above
@@ -479,6 +480,10 @@ class ClipLUT:
     tops : numpy.ndarray
         float64, (3,): largest display-linear value of each channel the white pass
         covers, just above 1 / (the channel's luminance weight).
+    frame : numpy.ndarray
+        float64, (2, 2): ``[origin, sign]`` of the stored coordinates
+        z = sign (u - origin) (:func:`_face_frame`); the black core's matrix maps them
+        back to (u_a, u_b).
 
     Examples
     --------
@@ -497,6 +502,7 @@ class ClipLUT:
     white_shaper: np.ndarray
     chart: np.ndarray
     tops: np.ndarray
+    frame: np.ndarray
 
     @property
     def name(self) -> str:
@@ -506,7 +512,9 @@ class ClipLUT:
         """CLF-writable black pass: the Lut3D; chart (u_a, u_b, Y) in, the chart
         coordinates of L(X) and Y out."""
         name = f"{self.name} Black Faces"
-        return group([lut3d_transform(self.black, bitdepth="uint16")],
+        origin, sign = self.frame
+        back = ocio_ops.matrix(np.diag([sign[0], sign[1], 1.0]), offset=(origin[0], origin[1], 0.0))
+        return group([lut3d_transform(self.black, bitdepth="uint16"), back],
                      name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Smits & Meyer 1990 constant-lightness clip into "
                                   f"{self.display} (Section 3.2), the part against the "
@@ -639,7 +647,7 @@ def _fit_outside_nodes(display, P, size, exact, inside):
     up to 1.3 for dark violet beyond sRGB's blue). Instead the outside nodes' values
     minimise the squared error of the interpolant (2D: tetrahedral interpolation of a
     map constant along Y) at :data:`FIT_DENSITY`² points per cell outside the triangle
-    and inside the chart's cover, each error weighted by the CIE 1976 u'v' metric, plus
+    and inside the spectral locus, each error weighted by the CIE 1976 u'v' metric, plus
     :data:`FIT_DAMPING` times the squared distance to the sampled value; every value
     constrained to the triangle, so the output stays in gamut and Y exact. Solved by
     projected accelerated gradient descent (FISTA, :data:`FIT_ITERATIONS` steps) from
@@ -652,8 +660,10 @@ def _fit_outside_nodes(display, P, size, exact, inside):
     """
     n = size
     V = _chart_triangle(display, P)
-    cover = _chart_cover() @ P.T
-    hull = _convex_hull(cover[:, :2] / cover.sum(axis=1, keepdims=True))
+    # real colours only: inside the spectral locus (imaginary ones, e.g. AP0's corners,
+    # would pull the nodes away from the monochromatic colours on the locus)
+    real = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0)) @ P.T
+    hull = _convex_hull(real[:, :2] / real.sum(axis=1, keepdims=True))
     m = (n - 1) * FIT_DENSITY
     s = (np.arange(m) + 0.5) / m
     sa, sb = (a.ravel() for a in np.meshgrid(s, s, indexing="ij"))
@@ -713,6 +723,54 @@ def _uv(XYZ):
     return np.c_[4.0 * XYZ[:, 0] / d, 9.0 * XYZ[:, 1] / d]
 
 
+def _face_frame(V):
+    """The black pass's stored coordinates z = sign * (u - origin) per chart axis: 0 on
+    the face lying on u_a = const (resp. u_b = const) and >= 0 on the triangle, so a
+    point of those faces is stored as 0 exactly, in 16-bit codes and half floats alike.
+    Returns (origin (2,), sign (2,))."""
+    origin, sign = np.zeros(2), np.ones(2)
+    for axis in (0, 1):
+        for a, b in ((0, 1), (1, 2), (2, 0)):
+            if abs(V[a, axis] - V[b, axis]) < 1e-12:
+                origin[axis] = V[a, axis]
+                sign[axis] = 1.0 if V[:, axis].max() > origin[axis] + 1e-12 else -1.0
+    return origin, sign
+
+
+def _halves_inside(z, Vz, margin=2.0 * 0.5 / LUT_CODE_MAX):
+    """Points ``z`` (N, 2) of the triangle ``Vz`` (3, 2), in the stored coordinates of
+    :func:`_face_frame`, as the nearest pairs of half floats that stay in it: on the two
+    faces z = 0 exactly, and ``margin`` inside the third (its points are not half
+    floats; the 16-bit codes of the file sit within 7.6e-6 of the half floats).
+
+    So the CPU (16-bit values) and a host that uploads half floats (Blender's viewport)
+    see the same points of the faces, and none outside the gamut, whose negative
+    channel the white pass would clamp (changing Y).
+    """
+    h = z.astype(np.float16)
+    steps = [h]
+    for direction in (np.inf, -np.inf):
+        x = h
+        for _ in range(2):
+            x = np.nextafter(x, np.float16(direction))
+            steps.append(x)
+    steps = np.stack([s.astype(np.float64) for s in steps], axis=1)  # (N, 5, 2)
+    cand = np.stack(np.broadcast_arrays(steps[:, :, None, 0], steps[:, None, :, 1]), axis=-1)
+    cand = cand.reshape(len(z), -1, 2)
+    ok = (cand >= 0.0).all(axis=-1)
+    # the third face: the edge of Vz that lies on neither axis
+    for a, b, c in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
+        e = Vz[b] - Vz[a]
+        if abs(e[0]) > 1e-12 and abs(e[1]) > 1e-12:
+            normal = np.array([-e[1], e[0]]) / np.hypot(*e)
+            normal *= np.sign(normal @ (Vz[c] - Vz[a]))
+            ok &= (cand - Vz[a]) @ normal >= margin
+    dist = ((cand - z[:, None]) ** 2).sum(axis=-1)
+    dist[~ok] = np.inf
+    best = cand[np.arange(len(z)), dist.argmin(axis=1)]
+    return np.where(np.isfinite(dist.min(axis=1))[:, None], best, h.astype(np.float64))
+
+
 def _q16(values):
     """``values`` clipped to [0, 1] and rounded to the 16-bit grid."""
     return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
@@ -728,8 +786,16 @@ def _clip_lut(display, size, white_edge):
     ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     uv, inside = _black_map(display, P, ua, ub)
     uv = _fit_outside_nodes(display, P, size, uv, inside)
+    # stored as z = sign (u - origin): the faces on u_a / u_b = const at 0 exactly; the
+    # outside nodes (on the faces) rounded to half floats inside the triangle, the
+    # others (in-gamut identity nodes, on the grid) are half floats already
+    V = _chart_triangle(display, P)
+    origin, sign = _face_frame(V)
+    origin = np.round(origin * (size - 1)) / (size - 1)  # on node lines by construction
+    z = (uv - origin) * sign
+    z[~inside] = _halves_inside(z[~inside], (V - origin) * sign)
     black = np.empty((size, size, size, 3))
-    black[..., :2] = uv.reshape(size, size, 1, 2)
+    black[..., :2] = z.reshape(size, size, 1, 2)
     black[..., 2] = g
     # white pass: RGB nodes -> U(c) (continued above white), sRGB-encoded / scale
     nodes, tops = _white_nodes(white_edge, display)
@@ -746,8 +812,9 @@ def _clip_lut(display, size, white_edge):
     lut = ClipLUT(display=display, size=size,
                   black=_q16(black.astype(np.float16).astype(np.float64)),
                   white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
-                  white_shaper=_q16(shaper), chart=P, tops=tops)
-    for array in (lut.black, lut.white, lut.white_shaper, lut.chart, lut.tops):
+                  white_shaper=_q16(shaper), chart=P, tops=tops,
+                  frame=np.array([origin, sign]))
+    for array in (lut.black, lut.white, lut.white_shaper, lut.chart, lut.tops, lut.frame):
         array.setflags(write=False)
     return lut
 
