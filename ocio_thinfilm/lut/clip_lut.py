@@ -12,9 +12,13 @@ of :func:`_black_plan` (``XYZ_TO_xyY`` of a matrix, the primaries' triangle on g
 and tetrahedral split planes) it outputs the chart coordinates of L(X) and Y itself,
 constant along the Y axis and exactly linear in Y, so tetrahedral interpolation is
 exact along Y, dark colours keep their chromaticity however dark they are, and
-in-gamut chromaticities are nodes' identity. OCIO's analytic xyY -> XYZ and one matrix
-give display RGB. Before the LUT, Y is limited to 1 (the pre-clip: a colour at or
-above white becomes white in pass 2).
+in-gamut chromaticities are nodes' identity. The nodes outside the triangle are not
+sampled but fitted to L (:func:`_fit_outside_nodes`), so the interpolant does not cut
+the triangle's corners, and stored so that two faces are exactly 0 and none of them
+leaves the triangle in 16-bit files or half-float textures (:func:`_face_frame`,
+:func:`_halves_inside`). OCIO's analytic xyY -> XYZ and one matrix give display RGB.
+Before the LUT, Y is limited to 1 (the pre-clip: a colour at or above white becomes
+white in pass 2).
 
 Pass 2, U, works on that RGB (no negative channel, Y <= 1) directly: every face, the
 white point and the planes R = G, G = B, R = B where the binding face changes are grid
@@ -92,7 +96,7 @@ CHART_BEND = 6.0
 #: values 1 - (1 - k/n)^WHITE_POWER: denser towards white), the rest growing
 #: geometrically from WHITE_FIRST_STEP above 1 up to the channel's largest value,
 #: 1 / (its luminance weight).
-WHITE_INSIDE = 0.42
+WHITE_INSIDE = 0.45
 WHITE_POWER = 1.5
 WHITE_FIRST_STEP = 0.004
 #: The white pass's Lut3D holds code values / WHITE_SCALE: its nodes brighter than
