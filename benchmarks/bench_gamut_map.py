@@ -19,7 +19,8 @@ Processors (CIE-XYZ-D65 -> sRGB display code values):
 
 Data sets (1024 x 1024 pixels each): uniform XYZ in [0, 1]^3; the rendered oil scene
 (Fig. 5, scene-linear XYZ); object colours + monochromatic stimuli (the test sets,
-tiled). Prints a table and writes ``reports/bench_gamut_map.json``.
+tiled); random XYZ inside ACES AP0 with 0 <= Y <= 1. Prints a table and writes
+``reports/bench_gamut_map.json``.
 
 Also measures the views' accuracy against the analytic clip (issue 8's sets: object
 and interference colours, monochromatic stimuli 380-700 nm at Y 0.02/0.1/0.3/0.6,
@@ -53,7 +54,13 @@ def datasets(n):
     oil = picture.xyz.reshape(-1, 3)
     colours = np.concatenate([object_colours(), spectral_colours(0.6)])
     colours = np.resize(colours, (n, 3))
-    return {"uniform XYZ": uniform, "oil scene": oil, "object + spectral": colours}
+    from ocio_thinfilm.colour import colorimetry
+
+    ap0 = rng.uniform(0.0, 1.0, (2 * n, 3)) @ np.linalg.inv(
+        colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
+    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:n]
+    return {"uniform XYZ": uniform, "oil scene": oil, "object + spectral": colours,
+            "random AP0": np.resize(ap0, (n, 3))}
 
 
 def processors():
