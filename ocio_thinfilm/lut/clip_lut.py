@@ -783,7 +783,6 @@ def _q16(values):
 @cache.memoize(maxsize=16)
 def _clip_lut(display, size, white_edge):
     P, _ = _black_plan(display, size)
-    M = colorimetry.matrix_XYZ_to_RGB(display)
     # black pass: L in the chart at its (u_a, u_b) nodes, the outside nodes fitted;
     # constant along Y, whose output is Y itself
     g = np.linspace(0.0, 1.0, size)
@@ -809,10 +808,7 @@ def _clip_lut(display, size, white_edge):
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i],
                                       along=lambda v: _encode(v, WORKING_ENCODING))
                        for i in range(3)], axis=1)
-    # half floats first, then the 16-bit grid: the file holds 16-bit codes within
-    # 7.6e-6 of half floats, so hosts that upload the texture as half floats
-    # (Blender's viewport) get nearly the CPU's values instead of rounding them a
-    # second time (measured on Mesa: 0.9/255 against 2.8/255 for sRGB)
+    # the black pass: half floats first, then the 16-bit grid (see _halves_inside)
     lut = ClipLUT(display=display, size=size,
                   black=_q16(black.astype(np.float16).astype(np.float64)),
                   white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
