@@ -50,6 +50,7 @@ def test_each_table_is_computed_once_and_the_store_shows_it():
             ("no-phase-change", 1000, tables.FILM_TMAX_UM, tables.FILM_T0_UM, step),),
         "ocio_thinfilm.lut.tables._morpho_table": ((300, step),),
         "ocio_thinfilm.lut.clip_lut._black_plan": (("Rec.2020", 11),),
+        "ocio_thinfilm.lut.clip_lut._black_nodes": (("Rec.2020", 11),),
         "ocio_thinfilm.lut.clip_lut._clip_lut": (("Rec.2020", 11, 9),),
     }
     infos = cache.info()

@@ -780,11 +780,14 @@ def _q16(values):
     return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
 
 
-@cache.memoize(maxsize=16)
-def _clip_lut(display, size, white_edge):
+@colorimetry.persistent(modules=("ocio_thinfilm.lut.clip_lut", "ocio_thinfilm.colour.colorimetry"))
+def _black_nodes(display, size):
+    """The black pass's (u_a, u_b) node values as stored, (size * size + 2, 2): the
+    nodes' z = sign (u - origin) (L at the nodes, the outside ones fitted and rounded
+    to half floats inside the triangle), then the rows origin and sign of
+    :func:`_face_frame`. Memoised on disk (the fit takes seconds per display; the key
+    covers this module's and the colorimetry's source and colour-science's version)."""
     P, _ = _black_plan(display, size)
-    # black pass: L in the chart at its (u_a, u_b) nodes, the outside nodes fitted;
-    # constant along Y, whose output is Y itself
     g = np.linspace(0.0, 1.0, size)
     ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     uv, inside = _black_map(display, P, ua, ub)
@@ -797,6 +800,16 @@ def _clip_lut(display, size, white_edge):
     origin = np.round(origin * (size - 1)) / (size - 1)  # on node lines by construction
     z = (uv - origin) * sign
     z[~inside] = _halves_inside(z[~inside], (V - origin) * sign)
+    return np.concatenate([z, [origin], [sign]])
+
+
+@cache.memoize(maxsize=16)
+def _clip_lut(display, size, white_edge):
+    P, _ = _black_plan(display, size)
+    # black pass: constant along Y, whose output is Y itself
+    stored = _black_nodes(display, size)
+    z, origin, sign = stored[:-2], stored[-2], stored[-1]
+    g = np.linspace(0.0, 1.0, size)
     black = np.empty((size, size, size, 3))
     black[..., :2] = z.reshape(size, size, 1, 2)
     black[..., 2] = g
