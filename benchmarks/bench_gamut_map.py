@@ -44,6 +44,7 @@ CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
+    from ocio_thinfilm.colour import colorimetry
     from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
     from ocio_thinfilm.render import frames as render
 
@@ -54,8 +55,6 @@ def datasets(n):
     oil = picture.xyz.reshape(-1, 3)
     colours = np.concatenate([object_colours(), spectral_colours(0.6)])
     colours = np.resize(colours, (n, 3))
-    from ocio_thinfilm.colour import colorimetry
-
     ap0 = rng.uniform(0.0, 1.0, (2 * n, 3)) @ np.linalg.inv(
         colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
     ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:n]
