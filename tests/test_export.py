@@ -336,9 +336,46 @@ def test_export_cli_writes_named_file(tmp_path, capsys):
     assert "LUT_1D_SIZE 64" in out.read_text()
 
 
-def test_progress_bar_on_stderr(tmp_path):
-    result = subprocess.run([sys.executable, "-m", "ocio_thinfilm", "export", "film",
-                             "--size", "20000", "--out", str(tmp_path / "f.spi1d")],
-                            capture_output=True, text=True, timeout=120, cwd=ROOT)
-    assert result.returncode == 0, result.stderr
-    assert "export f.spi1d:" in result.stderr and "%|" in result.stderr
+def test_progress_bar_on_a_terminal_only(tmp_path):
+    """A progress bar on a terminal's stderr; a log (a pipe) gets none, so a failure
+    after the work began is still the one-line error."""
+    import fcntl
+    import os
+    import pty
+    import select
+    import struct
+    import termios
+
+    cmd = [sys.executable, "-m", "ocio_thinfilm", "export", "film", "--size", "20000"]
+    leader, follower = pty.openpty()
+    # a terminal 100 columns wide (a new pty has 0: tqdm would draw nothing)
+    fcntl.ioctl(follower, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 100, 0, 0))
+    chunks = []
+    try:
+        proc = subprocess.Popen(cmd + ["--out", str(tmp_path / "f.spi1d")],
+                                stdout=subprocess.PIPE, stderr=follower, cwd=ROOT)
+        # read while it runs (the follower stays open here, so the leader never hits
+        # EOF and drops what is buffered); then drain what is left
+        while True:
+            ready, _, _ = select.select([leader], [], [], 0.2)
+            if ready:
+                chunks.append(os.read(leader, 65536))
+            elif proc.poll() is not None:
+                break
+        proc.stdout.close()
+        returncode = proc.wait(timeout=120)
+    finally:
+        os.close(follower)
+        os.close(leader)
+    terminal = b"".join(chunks).decode(errors="replace")
+    assert returncode == 0
+    assert "export f.spi1d:" in terminal and "%|" in terminal
+    piped = subprocess.run(cmd + ["--out", str(tmp_path / "g.spi1d")],
+                           capture_output=True, text=True, timeout=120, cwd=ROOT)
+    assert piped.returncode == 0, piped.stderr
+    assert piped.stderr == "" and (tmp_path / "g.spi1d").exists()
+    full = subprocess.run(cmd + ["--format", "spi1d", "--out", "/dev/full"],
+                          capture_output=True, text=True, timeout=120, cwd=ROOT)
+    assert full.returncode == 2
+    assert full.stderr.splitlines() == [
+        "ocio-thinfilm export: error: cannot write /dev/full: No space left on device"]

@@ -339,8 +339,9 @@ EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
 
 
 def progress_bar(show, total, desc):
-    """A tqdm progress bar on stderr (None unless ``show``)."""
-    if not show:
+    """A tqdm progress bar on stderr: None unless ``show`` and stderr is a terminal (a
+    log or a pipe gets no carriage-return residue, only the command's own lines)."""
+    if not show or not sys.stderr.isatty():
         return None
     from tqdm import tqdm
 

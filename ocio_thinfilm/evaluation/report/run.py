@@ -92,7 +92,8 @@ def _run_report(ctx, quick, progress) -> Path:
     out = ctx.out
     start = time.perf_counter()
     parts, timings, results, facts = [], {}, {}, {}
-    bar = tqdm(SECTIONS, desc="report", unit="section", disable=not progress, file=sys.stderr)
+    bar = tqdm(SECTIONS, desc="report", unit="section", file=sys.stderr,
+               disable=not progress or not sys.stderr.isatty())  # a log gets no bar
     for name, fn in bar:
         bar.set_postfix_str(name)
         t0 = time.perf_counter()
