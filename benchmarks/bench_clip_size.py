@@ -1,5 +1,5 @@
 """Benchmark: accuracy / size / load time of the Constant-Lightness Clip LUTs against
-their edge lengths (issue 15's size curve: the config's budget against accuracy).
+their edge lengths (the config's size budget against accuracy).
 
 For each display and each (black-pass edge, white-pass edge) pair the shipped design
 (:class:`ocio_thinfilm.lut.clip_lut.ClipLUT`) is built, both passes are written as CLF

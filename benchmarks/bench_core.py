@@ -1,4 +1,4 @@
-"""Benchmark of the numeric core (issue 2): a script that prints numbers.
+"""Benchmark of the numeric core: a script that prints numbers.
 
     python benchmarks/bench_core.py [--repeats N]
 

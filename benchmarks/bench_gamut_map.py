@@ -1,5 +1,5 @@
 """Benchmark: throughput of the Constant-Lightness Clip view against the ACES gamut
-compression view and a single 65^3 Lut3D, side by side in one run (issue 8).
+compression view and a single 65^3 Lut3D, side by side in one run.
 
 Every processor is OCIO's CPU processor at OPTIMIZATION_DEFAULT, one thread,
 ``applyRGB`` on a float32 RGB image; each is timed REPEATS times in interleaved
@@ -22,7 +22,7 @@ Data sets (1024 x 1024 pixels each): uniform XYZ in [0, 1]^3; the rendered oil s
 tiled); random XYZ inside ACES AP0 with 0 <= Y <= 1. Prints a table and writes
 ``reports/bench_gamut_map.json``.
 
-Also measures the views' accuracy against the analytic clip (issue 8's sets: object
+Also measures the views' accuracy against the analytic clip (the accuracy sets: object
 and interference colours, monochromatic stimuli 380-700 nm at Y 0.02/0.1/0.3/0.6,
 random XYZ inside ACES AP0 with 0 <= Y <= 1; dE2000 p99 / max, |dY|, in-gamut
 colours' max) for every display, into the same JSON.
@@ -170,12 +170,12 @@ def numbers_markdown(result):
 
 TARGETS_BEGIN, TARGETS_END = ("<!-- bench_gamut_map:targets:begin -->",
                                "<!-- bench_gamut_map:targets:end -->")
-#: Issue 8's targets for the clip views against the analytic clip.
+#: The targets for the clip views against the analytic clip.
 TARGETS = {"p99": 0.5, "max": 1.5, "dY_max": 1e-3, "in_gamut_max": 0.1, "speed": 1.0}
 
 
 def targets_markdown(result):
-    """docs/gamut_map.md's account of issue 8's targets: what the JSON meets and misses."""
+    """docs/gamut_map.md's account of the targets: what the JSON meets and misses."""
     acc = result["accuracy"]
     met, missed = [], []
     for name in next(iter(acc.values())):

@@ -1,7 +1,7 @@
 """Benchmark: what a view costs a user's whole job, as whole processes, side by side
-(issue 15, decision 1): the Constant-Lightness Clip view against the ACES Gamut
-Compression view of the same display, through ``oiiotool`` (OpenImageIO's, with the
-OCIO it is built against), one process per job.
+(the goals for building a processor and for a frame job): the Constant-Lightness Clip
+view against the ACES Gamut Compression view of the same display, through ``oiiotool``
+(OpenImageIO's, with the OCIO it is built against), one process per job.
 
 - ``small``: a 16 x 16 EXR of CIE-XYZ-D65 -> the display/view -> PNG. Nearly all of it
   is start-up and building the processor (reading the view's LUT files): what a host
@@ -36,7 +36,7 @@ JSON = ROOT / "reports" / "bench_load.json"
 DOC = ROOT / "docs" / "gamut_map.md"
 VIEWS = ("Constant-Lightness Clip", "ACES Gamut Compression")
 BEGIN, END = "<!-- bench_load:begin -->", "<!-- bench_load:end -->"
-#: Issue 15's goals: clip / ACES process time.
+#: The goals: clip / ACES process time.
 GOALS = {"small": 1.5, "frame": 1.05}
 
 

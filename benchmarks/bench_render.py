@@ -11,7 +11,7 @@ starting Python, paid once per process, and are reported separately together wit
 the cold wall time of the whole ``ocio-thinfilm render SCENE`` command.
 
 Usage: python benchmarks/bench_render.py [--size 1024] [--scenes spectrum,oil,...]
-Target (issue 4): <= 3 s per scene on the 2-core CI machine. Writes
+Target: <= 3 s per scene on the 2-core CI machine. Writes
 reports/bench_render.json and the timing table of docs/render.md (between its
 ``bench_render`` markers; a test checks the table against the JSON).
 """

@@ -1,4 +1,4 @@
-"""The Python API at its edges (issue 9): each public function handles the edge or
+"""The Python API at its edges: each public function handles the edge or
 raises a ValueError naming the parameter; inputs are never modified; reflectances
 stay within [0, 1]; the thickness colour spaces give black for negative, -inf and NaN
 thickness through OpenColorIO at every optimisation level.

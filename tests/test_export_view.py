@@ -302,7 +302,7 @@ def test_plain_cube_accuracy(acescct_luts, inside_AP1, display):
     assert p99 <= PLAIN_LIMITS[display][0] and worst <= PLAIN_LIMITS[display][1]
 
 
-@pytest.mark.xfail(strict=True, reason="issue 15's target for the plain .cube (p99 1.0, "
+@pytest.mark.xfail(strict=True, reason="target for the plain .cube (p99 1.0, "
                    "max 3.0 on object colours inside AP1) is not reached by a 65^3 grid "
                    "uniform in ACEScct; the Resolve form and .csp reach it")
 def test_plain_cube_meets_issue_target(acescct_luts, inside_AP1):

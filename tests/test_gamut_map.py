@@ -1,4 +1,4 @@
-"""Issue 8: the constant-lightness clip as a host applies it -- the baked config's
+"""The constant-lightness clip as a host applies it -- the baked config's
 ``Constant-Lightness Clip`` views through OCIO's CPU processor, on every display --
 against the analytic clip (``clip.clip_XYZ``, the paper's Section 3.2 form).
 
@@ -166,7 +166,7 @@ def _finite_probe():
 
 @pytest.mark.parametrize("level", LEVELS)
 def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
-    """Issue 9: finite, in-range output from finite input for every (input space,
+    """Finite, in-range output from finite input for every (input space,
     display, view) of the config, at OCIO's NONE, DRAFT and DEFAULT optimisation."""
     probe = _finite_probe()
     spaces = [cs.getName() for cs in cfg.getColorSpaces()

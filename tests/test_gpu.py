@@ -1,4 +1,4 @@
-"""Issue 8: OpenColorIO's GLSL for every view of the baked config against the CPU path.
+"""OpenColorIO's GLSL for every view of the baked config against the CPU path.
 
 The shader OCIO generates for each (input space, display, view) is run on Mesa's
 software renderer (headless EGL through moderngl, :mod:`ocio_thinfilm.evaluation.gpu`), with

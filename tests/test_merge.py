@@ -1,4 +1,4 @@
-"""Issue 10: ``bake --into`` an ACES built-in config, named transforms, ``.ocioz``.
+"""``bake --into`` an ACES built-in config, named transforms, ``.ocioz``.
 
 Expected values come from outside the merge code: the project's own committed config
 (through oiiotool), colour-science's ACES2065-1 matrix, the analytic clip and the

@@ -131,7 +131,7 @@ def test_xyz_chart_through_constant_lightness_clip(colour_chart, tmp_path, displ
     Y_out = colorimetry.RGB_to_XYZ(linear, display)[:, 1]
     Y_in = np.minimum(xyz[:, 1], 1.0)
     assert np.abs(Y_out - Y_in).max() <= 1e-3
-    # Agreement with the analytic clip (issue 8: p99 <= 0.5, max <= 1.5 per set).
+    # Agreement with the analytic clip (targets: p99 <= 0.5, max <= 1.5 per set).
     want = colorimetry.XYZ_to_RGB(clip.clip_XYZ(xyz, display), display)
     de = colorimetry.delta_E2000(colorimetry.RGB_to_XYZ(linear, display),
                                  colorimetry.RGB_to_XYZ(want, display))

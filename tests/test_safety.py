@@ -1,4 +1,4 @@
-"""Never lose or corrupt a user's files (issue 9): owned directories, special files,
+"""Never lose or corrupt a user's files: owned directories, special files,
 full disks, kills and signals, one-line errors.
 
 References: the file system itself (what is on disk before and after, byte for byte),

@@ -148,7 +148,7 @@ def test_per_display_rgb_variant_is_clipped():
 # --------------------------------------------------------------------------- #
 # 3D clip LUT
 # --------------------------------------------------------------------------- #
-#: Issue 8's targets for object colours (the view, every display): p99 <= 0.5, max <= 1.5
+#: The targets for object colours (the view, every display): p99 <= 0.5, max <= 1.5
 #: dE2000 vs the analytic clip (measured: reports/bench_gamut_map.json;
 #: tests/test_gamut_map.py covers the other sets).
 OBJECT_P99 = 0.5
@@ -177,7 +177,7 @@ def test_clip_lut_reproduces_interior_colours(display):
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_clip_lut_keeps_Y_of_spectral_colours_and_lands_in_gamut(display):
-    # Issue 8's target |dY| <= 1e-3 (both passes keep Y exactly at their nodes: the
+    # The target |dY| <= 1e-3 (both passes keep Y exactly at their nodes: the
     # first is the identity on Y, the second moves along constant Y).
     locus = spectral_colours(0.6)
     out = ocio_ops.apply(clip_lut.clip_transform(display), locus).astype(np.float64)

@@ -21,7 +21,7 @@ __all__ = ["register"]
 
 def _run_bake(args) -> int:
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
-        # --into CONFIG and/or an .ocioz archive (issue 10)
+        # --into CONFIG (merge into a studio config) and/or an .ocioz archive
         from ocio_thinfilm.config import merge
 
         if args.into and args.out == bake_module.DEFAULT_CONFIG_DIR:

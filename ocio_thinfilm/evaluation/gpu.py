@@ -1,4 +1,4 @@
-"""Run OpenColorIO's GLSL on a headless OpenGL context (issue 8's GPU test path).
+"""Run OpenColorIO's GLSL on a headless OpenGL context (the GPU path the tests check).
 
 OpenColorIO evaluates a processor on the GPU by generating a GLSL function
 (``OCIOMain``) plus the textures (LUTs) and uniforms it reads.  Hosts such as

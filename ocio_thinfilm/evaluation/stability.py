@@ -28,11 +28,11 @@ import numpy as np
 
 from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.formatting import fmt  # re-exported for existing users
+from ocio_thinfilm.evaluation.formatting import fmt
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 
-__all__ = ["Case", "Row", "fmt", "limit_along", "xyz_cases", "physics_rows", "ocio_clip_rows",
+__all__ = ["Case", "Row", "limit_along", "xyz_cases", "physics_rows", "ocio_clip_rows",
            "poisoned", "spectral_white_XYZ"]
 
 
