@@ -45,10 +45,20 @@ SAME_ENCODING = {BASE21: [("sRGB - Display", "sRGB"), ("Rec.1886 Rec.2020 - Disp
                                                           "Display P3")]}
 
 
+#: What ``bake --into`` printed, per base config (filled by the ``merged`` fixture).
+PRINTED = {}
+
+
 @pytest.fixture(scope="module", params=[BASE21, LATEST], ids=["aces1.3-ocio2.1", "latest"])
 def merged(request, tmp_path_factory):
+    import contextlib
+    import io
+
     out = tmp_path_factory.mktemp("merged") / "config"
-    assert main(["bake", "--into", request.param, "--out", str(out), "--quiet"]) == 0
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        assert main(["bake", "--into", request.param, "--out", str(out), "--quiet"]) == 0
+    PRINTED[request.param] = printed.getvalue()
     path = out / "config.ocio"
     return request.param, path, ocio.Config.CreateFromFile(str(path))
 
@@ -318,3 +328,52 @@ def test_into_refuses_config_without_interchange_or_display(tmp_path, capsys):
     err = capsys.readouterr().err
     assert code == 2 and "no SDR display" in err and len(err.splitlines()) == 1, err
     assert not any((tmp_path / d).exists() for d in "abc")
+
+
+def test_bake_into_says_which_ocio_reads_the_result(merged, tmp_path):
+    """``bake --into`` prints the merged config's profile and the oldest OCIO that reads
+    it; OpenImageIO 3.2's oiiotool (OCIO 2.5) refuses the config exactly when the line
+    says so."""
+    base, path, cfg = merged
+    major, minor = cfg.getMajorVersion(), cfg.getMinorVersion()
+    line = PRINTED[base].splitlines()[-1]
+    assert line == merge.profile_readers(cfg)
+    assert line.startswith(f"profile {major}.{minor}: read by OCIO {major}.{minor} and newer")
+    oiiotool = shutil.which("oiiotool")
+    if oiiotool is None:
+        pytest.skip("oiiotool not installed")
+    version = subprocess.run([oiiotool, "--version"], capture_output=True, text=True).stdout
+    if not version.startswith("3.2."):
+        pytest.skip(f"oiiotool {version.strip()} is not OpenImageIO 3.2 (OCIO 2.5)")
+    run = subprocess.run([oiiotool, "--pattern", "constant:color=0.5,0.5,0.5", "4x4", "3",
+                          "--colorconfig", str(path), "--colorconvert", "sRGB - Display",
+                          "sRGB - Display", "-o", str(tmp_path / "o.exr")],
+                         capture_output=True, text=True, timeout=60)
+    refused = "not able to load that config version" in run.stdout + run.stderr
+    assert refused == ("OpenImageIO 3.2's oiiotool" in line)
+    assert refused == ((major, minor) > (2, 5))
+
+
+def test_docs_table_of_builtin_configs_matches_ocio():
+    """docs/studio.md's table of the built-in ACES configs: each studio config with its
+    profile as OCIO reports it, and the hosts of ``merge.HOST_OCIO`` that read it."""
+    text = (Path(__file__).resolve().parents[1] / "docs" / "studio.md").read_text()
+    block = text.split("<!-- builtin-configs:begin -->", 1)[1]
+    rows = block.split("<!-- builtin-configs:end -->")[0].strip().splitlines()[2:]
+    studio = [item[0] for item in ocio.BuiltinConfigRegistry().getBuiltinConfigs()
+              if item[0].startswith("studio-config-")]
+    assert len(rows) == len(studio)
+    for row, name in zip(rows, sorted(studio)):
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        assert cells[0].startswith(f"`{name}`")
+        cfg = ocio.Config.CreateFromFile("ocio://" + name)
+        profile = (cfg.getMajorVersion(), cfg.getMinorVersion())
+        assert cells[1] == f"{profile[0]}.{profile[1]}"
+        readers = [host for host, v in merge.HOST_OCIO if v >= profile]
+        if len(readers) == len(merge.HOST_OCIO):
+            assert cells[2] == "every host below"
+        elif not readers:
+            assert cells[2] == f"OCIO {profile[0]}.{profile[1]} only"
+        else:
+            for host, v in merge.HOST_OCIO:
+                assert (f"(OCIO {v[0]}.{v[1]})" in cells[2]) == (v >= profile), (name, host)

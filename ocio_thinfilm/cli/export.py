@@ -32,6 +32,10 @@ def _run_bake(args) -> int:
         path = (merge.bake_into(args.into, args.out, clip_size=clip_size) if args.into
                 else merge.bake_archive(args.out, clip_size=clip_size))
         print(f"wrote {path}")
+        if args.into:  # a merged config has the base config's profile: say who reads it
+            import PyOpenColorIO as ocio
+
+            print(merge.profile_readers(ocio.Config.CreateFromFile(str(path))))
         return 0
     path = bake_module.bake(args.out, clip_size=args.clip_size, show_progress=not args.quiet,
                             luts=args.luts)

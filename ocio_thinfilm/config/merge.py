@@ -51,7 +51,33 @@ from ocio_thinfilm.io import UsageError, atomic_directory, atomic_file, check_wr
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["load_base", "interchange", "colorspace_transform", "match_displays", "merge_config",
-           "bake_into", "write_archive", "bake_archive", "MERGED_VIEWS"]
+           "bake_into", "write_archive", "bake_archive", "MERGED_VIEWS", "HOST_OCIO",
+           "profile_readers"]
+
+#: Hosts and the newest config profile their OCIO reads (an older OCIO refuses a newer
+#: profile outright): Debian's Blender 3.4 and OCIO tools, and Blender 3.x, are OCIO 2.1;
+#: PyPI's bpy 5.0 (Blender 5.0) is 2.4; OpenImageIO 3.2's oiiotool is 2.5; the VFX
+#: Reference Platform specifies OCIO 2.4 for CY2025 and 2.5 for CY2026.
+HOST_OCIO = (("Blender 3.x / Debian's OCIO 2.1 tools", (2, 1)),
+             ("VFX Reference Platform CY2025 / Blender 5.0", (2, 4)),
+             ("VFX Reference Platform CY2026 / OpenImageIO 3.2's oiiotool", (2, 5)))
+
+
+def profile_readers(cfg) -> str:
+    """One line on who reads the config ``cfg``: its profile, the oldest OCIO that reads
+    it (the profile's own version) and the hosts of :data:`HOST_OCIO` that refuse it.
+
+    >>> import PyOpenColorIO as ocio
+    >>> cfg = ocio.Config.CreateRaw(); cfg.setMajorVersion(2); cfg.setMinorVersion(1)
+    >>> profile_readers(cfg)
+    'profile 2.1: read by OCIO 2.1 and newer (every host listed in the docs)'
+    """
+    version = (cfg.getMajorVersion(), cfg.getMinorVersion())
+    line = f"profile {version[0]}.{version[1]}: read by OCIO {version[0]}.{version[1]} and newer"
+    refused = [f"{host} (OCIO {v[0]}.{v[1]})" for host, v in HOST_OCIO if v < version]
+    return line + (f"; not by {', '.join(refused)}" if refused
+                   else " (every host listed in the docs)")
+
 
 #: Views added to every matched display (Channel Clamp only where no Un-tone-mapped).
 MERGED_VIEWS = ("Constant-Lightness Clip", "ACES Gamut Compression", "Channel Clamp")
