@@ -52,7 +52,6 @@ def test_single_wavelength_is_a_point_evaluation():
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], 200_000), "layers"),
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], 2.5), "layers"),
     (lambda: spectra.multilayer_reflectance(100.0, [500.0], True), "layers"),
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], "many"), "layers"),
     (lambda: exact.airy_reflectance(100.0, [500.0], 1.33, harmonics=np.inf), "harmonics"),
     (lambda: colorimetry.spectral_locus_XYZ(Y=np.nan), "Y"),
     (lambda: colorimetry.spectral_locus_XYZ(Y=-1.0), "Y"),
@@ -61,6 +60,13 @@ def test_single_wavelength_is_a_point_evaluation():
 def test_bad_parameters_raise_value_error_naming_them(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+@pytest.mark.parametrize("layers", ["3", "many", b"3", None, [3]])
+def test_counts_of_the_wrong_type_raise_type_error_naming_them(layers):
+    # a string is refused, not parsed: layers='3' used to return numbers
+    with pytest.raises(TypeError, match="layers"):
+        spectra.multilayer_reflectance(100.0, [500.0], layers)
 
 
 # --------------------------------------------------------------------------- #

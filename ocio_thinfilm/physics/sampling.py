@@ -83,13 +83,15 @@ def _range_text(minimum, maximum, strict, unit):
 
 
 def as_count(name, value, minimum=1, maximum=None):
-    """An integer parameter (layers, harmonics): a ValueError naming it otherwise."""
+    """An integer parameter (layers, harmonics): a TypeError naming it for a value that
+    is not a number (a string is not parsed: ``layers='3'`` is refused), a ValueError
+    for a number that is not an integer in range."""
     if isinstance(value, (bool, np.bool_)):
         raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
-    try:
-        f = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}") from None
+    if isinstance(value, (str, bytes)) or not isinstance(value, (int, float, np.number)):
+        raise TypeError(f"{name} must be an integer >= {minimum}, got {value!r} "
+                        f"({type(value).__name__})")
+    f = float(value)
     if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):
         limit = f" and <= {maximum}" if maximum is not None else ""
         raise ValueError(f"{name} must be an integer >= {minimum}{limit}, got {value!r}")
