@@ -88,7 +88,7 @@ def as_count(name, value, minimum=1, maximum=None):
     for a number that is not an integer in range."""
     if isinstance(value, (bool, np.bool_)):
         raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
-    if isinstance(value, (str, bytes)) or not isinstance(value, (int, float, np.number)):
+    if not isinstance(value, (int, float, np.number)):  # a string is not parsed
         raise TypeError(f"{name} must be an integer >= {minimum}, got {value!r} "
                         f"({type(value).__name__})")
     f = float(value)
