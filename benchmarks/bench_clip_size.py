@@ -15,7 +15,12 @@ those files:
   |dY|, and the largest dE2000 of in-gamut colours.
 
 Config size: three displays' clip LUTs plus the thin-film tables (about 0.7 MB); the
-budget is 25 MB. Writes reports/bench_clip_size.md and reports/bench_clip_size.json.
+budget is 25 MB. Also measured: what building a processor costs per text format (one
+65³ Lut3D of random values as 8-bit, 16-bit and half-float CLF, each in a fresh
+process), and the plain ACEScct -> sRGB ``.cube`` of ``luts/`` at several edge lengths
+(size against ΔE2000 on object colours inside AP1, applied by OCIO), the budget of
+``luts/`` against accuracy. Writes reports/bench_clip_size.md and
+reports/bench_clip_size.json.
 
 Usage: python benchmarks/bench_clip_size.py [--pairs 49:41 57:45 65:53 65:57 73:53]
 """
@@ -102,12 +107,79 @@ def measure(pairs, displays):
     return rows
 
 
+def parse_cost():
+    """{bit depth: (MB, ms)}: building a processor from one 65³ Lut3D CLF in a fresh
+    process (best of 3), by how the values are written."""
+    import subprocess
+
+    import PyOpenColorIO as ocio
+
+    values = np.random.default_rng(0).integers(0, 256, (65, 65, 65, 3)) / 255.0
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, depth in (("8-bit", ocio.BIT_DEPTH_UINT8), ("16-bit", ocio.BIT_DEPTH_UINT16),
+                            ("half float", ocio.BIT_DEPTH_F16)):
+            lut = ocio.Lut3DTransform()
+            lut.setGridSize(65)
+            lut.setData(np.ascontiguousarray(values, np.float32).ravel())
+            lut.setFileOutputBitDepth(depth)
+            group = ocio.GroupTransform()
+            group.appendTransform(lut)
+            path = Path(tmp) / f"{name}.clf"
+            group.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+            code = ("import time, PyOpenColorIO as o; t = time.perf_counter(); "
+                    f"o.Config.CreateRaw().getProcessor(o.FileTransform({str(path)!r})); "
+                    "print(time.perf_counter() - t)")
+            ms = min(float(subprocess.run([sys.executable, "-c", code], capture_output=True,
+                                          text=True, check=True).stdout) for _ in range(3))
+            out[name] = (path.stat().st_size / 1e6, ms * 1e3)
+    return out
+
+
+def plain_cube_curve(sizes):
+    """{edge: (MB, p99, max)}: the plain ACEScct -> sRGB .cube of ``luts/`` baked at
+    each edge, applied by OCIO, against the analytic clip on object colours inside AP1
+    (as tests/test_export_view.py measures it)."""
+    sys.path.insert(0, str(ROOT / "tests"))
+    import colour
+    from test_export_view import _colour_rgb, _dE, _ocio_apply, _stats
+
+    from ocio_thinfilm.evaluation.colours import object_colours
+    from ocio_thinfilm.export.view import export_view
+
+    XYZ = object_colours()
+    acescg = _colour_rgb(XYZ, "ACEScg")
+    keep = (acescg >= 0).all(axis=1)
+    XYZ, cct = XYZ[keep], colour.models.log_encoding_ACEScct(acescg[keep])
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in sizes:
+            path = Path(tmp) / f"plain{n}.cube"
+            export_view("ACEScct", "sRGB", "Constant-Lightness Clip", path, size=n)
+            _, p99, worst = _stats(_dE(_ocio_apply([path], cct), XYZ, "sRGB"))
+            out[n] = (path.stat().st_size / 1e6, float(p99), float(worst))
+            print(f"plain .cube {n}^3: {out[n][0]:.1f} MB, p99 {p99:.2f} / max {worst:.2f}",
+                  flush=True)
+    return out
+
+
 def markdown_row(r):
     cells = " | ".join(f"{m['p99']:.2f} / {m['max']:.2f}" for m in r["accuracy"].values())
     dY = max(m["dY"] for m in r["accuracy"].values())
     inside = max(m["inside_max"] for m in r["accuracy"].values())
     return (f"| {r['display']} | {r['black']}³ + {r['white']}³ | {r['MB']:.1f} | "
             f"{r['load_ms']:.0f} | {cells} | {dY:.1e} | {inside:.3f} |")
+
+
+def extras_markdown(parse, cubes):
+    lines = ["", "Building a processor from one 65³ Lut3D CLF (random values, fresh process, "
+             "best of 3): " + "; ".join(f"{name} {mb:.1f} MB, {ms:.0f} ms"
+                                      for name, (mb, ms) in parse.items()) + ".",
+             "", "The plain ACEScct → sRGB `.cube` of `luts/` by edge length (object colours "
+             "inside AP1, applied by OCIO, ΔE2000 p99 / max; three displays' files make "
+             "`luts/`): " + "; ".join(f"{n}³ {mb:.1f} MB, {p99:.2f} / {mx:.2f}"
+                                      for n, (mb, p99, mx) in cubes.items()) + "."]
+    return "\n".join(lines) + "\n"
 
 
 def markdown(rows, sets, ocio_version):
@@ -138,6 +210,8 @@ def main(argv=None):
     p.add_argument("--pairs", nargs="+", default=list(DEFAULT_PAIRS),
                    help="BLACK:WHITE edge pairs (default: %(default)s)")
     p.add_argument("--displays", nargs="+", default=["sRGB", "Display P3", "Rec.2020"])
+    p.add_argument("--cube-sizes", type=int, nargs="+", default=[49, 55, 65],
+                   help="edges of the plain display .cube to measure (default: %(default)s)")
     args = p.parse_args(argv)
     pairs = []
     for pair in args.pairs:
@@ -147,10 +221,13 @@ def main(argv=None):
             p.error(f"--pairs: expected BLACK:WHITE integers, got {pair!r}")
         pairs.append((black, white))
     rows = measure(pairs, args.displays)
+    parse, cubes = parse_cost(), plain_cube_curve(args.cube_sizes)
     sets = list(rows[0]["accuracy"])
-    (ROOT / "reports" / "bench_clip_size.json").write_text(
-        json.dumps({"ocio": ocio.__version__, "rows": rows}, indent=1) + "\n")
-    (ROOT / "reports" / "bench_clip_size.md").write_text(markdown(rows, sets, ocio.__version__))
+    (ROOT / "reports" / "bench_clip_size.json").write_text(json.dumps(
+        {"ocio": ocio.__version__, "rows": rows, "parse_cost": parse,
+         "plain_cube": {str(n): v for n, v in cubes.items()}}, indent=1) + "\n")
+    (ROOT / "reports" / "bench_clip_size.md").write_text(
+        markdown(rows, sets, ocio.__version__) + extras_markdown(parse, cubes))
     print(f"wrote {ROOT / 'reports' / 'bench_clip_size.md'}")
 
 
