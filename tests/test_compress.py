@@ -280,12 +280,12 @@ def test_ramps_compress_rises_where_the_clip_is_flat(ramp_distances, display):
     limit, the view follows it to within 0.07 of a boundary distance (the reached bound,
     measured 0.035 on sRGB and 0.065 on the wider gamuts, near the boundary, where a
     small chroma error is a large share of the short ray), and the clip view's output is
-    flat (on the boundary) past it."""
+    flat (on the boundary, to the clip LUT's 0.023) past it."""
     dist, analytic, view, clip_view = ramp_distances[display]
     assert _rising_steps(dist, analytic).min() > 0.0
     rising = dist < compress.LIMIT
     assert np.abs(view - analytic)[rising].max() < 0.07
-    assert np.abs(clip_view[dist > 1.02] - 1.0).max() < 2e-3
+    assert np.abs(clip_view[dist > 1.02] - 1.0).max() < 0.03  # on the boundary (LUT: 0.023)
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
