@@ -45,12 +45,14 @@ from ocio_thinfilm.colour import compress as soft
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.lut.clip_lut import (
     ClipLUT,
-    _black_plan,
+    _chart_cover,
     _chart_to_XYZ,
     _luminance,
     _q16,
     _shaper_values,
     _white_nodes,
+    xyY_forward_transform,
+    xyY_inverse_transform,
 )
 from ocio_thinfilm.lut.display_transforms import check_display
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, lut3d_transform, transform_id
@@ -59,10 +61,12 @@ from ocio_thinfilm.lut.tables import check_size
 __all__ = ["SOFT_SIZE", "SOFT_WHITE_SIZE", "CompressLUT", "compress_lut", "soft_black_RGB",
            "soft_white_RGB"]
 
-#: Edge of S_b's Lut3D (over the clip's black-pass chart).
-SOFT_SIZE = 65
+#: Edge of S_b's Lut3D (over its own chart, :func:`_soft_plan`).
+SOFT_SIZE = 49
 #: Edge of S_w's Lut3D (the clip's white-pass node layout).
 SOFT_WHITE_SIZE = 49
+#: Values of mu tried per sign by :func:`_soft_plan`.
+_PLAN_STEPS = 160
 
 
 def _sigma(d, threshold, limit, power):
@@ -110,6 +114,68 @@ def soft_white_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
     return Y[..., None] + k[..., None] * (rgb - Y[..., None])
 
 
+def _plan_matrix(M, perm, lam_nodes, mu, a_nodes, cells):
+    """The chart matrix for channels ``perm`` = (p, q, r): u_a = alpha (c_p - c_q) / S +
+    a_0, u_b = Y / S with S = lam Y + mu (c_r - c_q), alpha = -mu / lam."""
+    p, q, r = perm
+    lam = cells / lam_nodes
+    Y = np.array([0.0, 1.0, 0.0])
+    S = lam * Y + mu * (M[r] - M[q])
+    v0 = -mu / lam * (M[p] - M[q]) + a_nodes / cells * S
+    return np.array([v0, Y, S - v0 - Y])
+
+
+def _chart_coordinates(P, XYZ):
+    c = XYZ @ P.T
+    with np.errstate(all="ignore"):
+        s = c.sum(axis=1)
+        return c[:, :2] / s[:, None], s
+
+
+@cache.memoize(maxsize=16)
+def _soft_plan(display, size):
+    """S_b's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives its Lut3D's
+    coordinates (u_a, u_b) and Y, with the three rays where S_b has a kink on grid and
+    split lines.
+
+    S_b scales by a function of d_black = (Y - min c) / Y, whose gradient jumps where
+    the two smallest channels swap: on the rays from the white point where c_p = c_q,
+    c_q = c_r and c_p = c_r. With u_a = alpha (c_p - c_q) / S + a_0 and u_b = Y / S,
+    S = lam Y + mu (c_r - c_q), the first is u_a = a_0, the second u_b = 1 / lam and the
+    third, for alpha = -mu / lam, the diagonal u_a - u_b = const (a split plane of
+    tetrahedral interpolation) -- all through the white point's node. Of the charts
+    that hold :func:`ocio_thinfilm.lut.clip_lut._chart_cover` in [0, 1]^2, the one
+    where the display's triangle is largest is taken."""
+    cells = size - 1
+    M = colorimetry.matrix_XYZ_to_RGB(display)
+    cover = _chart_cover()
+    primaries = np.linalg.inv(M).T
+    best = None
+    mus = np.geomspace(1e-2, 3.0, _PLAN_STEPS)
+    for perm in ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)):
+        for lam_nodes in range(2, cells - 1):
+            for mu in np.concatenate([mus, -mus]):
+                P = _plan_matrix(M, perm, lam_nodes, mu, 0.0, cells)
+                uv, s = _chart_coordinates(P, cover)
+                if np.any(s <= 1e-9) or uv[:, 1].min() < 0.0 or uv[:, 1].max() > 1.0:
+                    continue
+                lo, hi = uv[:, 0].min(), uv[:, 0].max()
+                a_nodes = np.ceil(-lo * cells - 1e-9)  # white on a node, the cover inside
+                if hi + a_nodes / cells > 1.0 or a_nodes > cells:
+                    continue
+                tri, _ = _chart_coordinates(P, primaries)
+                area = abs(_cross2(tri[1] - tri[0], tri[2] - tri[0]))
+                if best is None or area > best[0]:
+                    best = (area, _plan_matrix(M, perm, lam_nodes, mu, a_nodes, cells))
+    if best is None:
+        raise ValueError(f"compression LUT size {size} is too small for its chart")
+    return best[1]
+
+
+def _cross2(a, b):
+    return a[0] * b[1] - a[1] * b[0]
+
+
 @dataclass(frozen=True, eq=False)
 class CompressLUT:
     """The baked compression for one display (see :func:`compress_lut`): S_b and S_w,
@@ -121,14 +187,16 @@ class CompressLUT:
     clip : ClipLUT
         The clip's passes (L, U), shared with the Constant-Lightness Clip view.
     black : numpy.ndarray
-        (n, n, n, 3) over the clip's chart (u_a, u_b, Y): the chart coordinates of
-        S_b(X) and Y (constant along Y), half floats rounded to the 16-bit grid.
+        (n, n, n, 3) over S_b's chart (u_a, u_b, Y) of ``chart``: the chart coordinates
+        of S_b(X) and Y (constant along Y), half floats rounded to the 16-bit grid.
     white : numpy.ndarray
         (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.clip_lut._white_nodes`:
         S_w(c) / tops (the clip's white-pass input scale), half floats in [0, 1].
     white_shaper : numpy.ndarray
         (SHAPER_LENGTH, 3): the per-channel Lut1D over c_i / tops[i] in front of
-        ``white``.
+        ``white``, piecewise linear in c between nodes.
+    chart : numpy.ndarray
+        (3, 3): CIE XYZ -> S_b's chart before ``XYZ_TO_xyY`` (:func:`_soft_plan`).
     parameters : tuple
         (threshold, limit, power) of the curve.
     """
@@ -138,6 +206,7 @@ class CompressLUT:
     black: np.ndarray
     white: np.ndarray
     white_shaper: np.ndarray
+    chart: np.ndarray
     parameters: tuple
 
     @property
@@ -156,7 +225,8 @@ class CompressLUT:
                                   f"black pass: a {self.black.shape[0]}^3 tetrahedral "
                                   "Lut3D over the clip's chromaticity chart; keeps Y. See "
                                   "ocio_thinfilm.lut.compress_lut."),
-                     input_descriptor="(u_a, u_b, Y): the clip's black-pass chart",
+                     input_descriptor="(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
+                                      "CIE-XYZ-D65, limited to [0, 1]",
                      output_descriptor="(u_a, u_b, Y) of the squeezed colour")
 
     def white_core(self):
@@ -181,15 +251,19 @@ class CompressLUT:
         before its black pass and S_w before its white pass; the arguments replace the
         CLF-writable cores (e.g. by FileTransforms in the config)."""
         ops = self.clip.transforms(clip_black, clip_white)
-        # clip chain: limit, chart, xyY, pre-clip, L, xyY^-1, matrix, U
-        return (ops[:4] + [self.black_core() if black is None else black, ops[4]]
+        # the clip's chain: limit, chart, xyY, pre-clip, L, xyY^-1, matrix, U
+        to_clip_chart = self.clip.chart @ np.linalg.inv(self.chart)
+        return ([ops[0], ocio_ops.matrix(self.chart), xyY_forward_transform(), ops[3],
+                 self.black_core() if black is None else black,
+                 xyY_inverse_transform(), ocio_ops.matrix(to_clip_chart),
+                 xyY_forward_transform(), ops[4]]
                 + ops[5:7] + [self.white_core() if white is None else white, ops[7]])
 
 
 @cache.memoize(maxsize=16)
 def _compress_lut(display, size, white_edge, parameters, clip_size):
     lut = clip_lut.clip_lut(display, clip_size)
-    P = lut.chart
+    P = _soft_plan(display, size)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     g = np.linspace(0.0, 1.0, size)
     ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
@@ -204,15 +278,18 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     nodes, tops = _white_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
-    white = np.clip(soft_white_RGB(C, display, *parameters) / tops, 0.0, 1.0)
-    # piecewise linear in c itself: within each cell the grid coordinates are affine in
-    # c, so interpolating S_w (which keeps Y, a linear function) keeps Y
+    # stored linear (half floats keep dark colours' precision): with the shaper
+    # piecewise linear in c itself, the grid coordinates are affine in c within each
+    # cell, so interpolating S_w, which keeps Y (a linear function), keeps Y. (Stored
+    # sRGB-encoded on the 16-bit grid, as the clip's white pass, it is 40 % smaller,
+    # but the encoding's curvature costs |dY| up to 1.7e-3.)
+    white = np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
     out = CompressLUT(display=display, clip=lut,
                       black=_q16(black.astype(np.float16).astype(np.float64)),
                       white=white.astype(np.float16).astype(np.float64).reshape(n, n, n, 3),
-                      white_shaper=_q16(shaper), parameters=parameters)
-    for array in (out.black, out.white, out.white_shaper):
+                      white_shaper=_q16(shaper), chart=P, parameters=parameters)
+    for array in (out.black, out.white, out.white_shaper, out.chart):
         array.setflags(write=False)
     return out
 
