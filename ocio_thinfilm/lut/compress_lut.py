@@ -191,7 +191,8 @@ class CompressLUT:
         of S_b(X) and Y (constant along Y), half floats rounded to the 16-bit grid.
     white : numpy.ndarray
         (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.clip_lut._white_nodes`:
-        S_w(c) / tops (the clip's white-pass input scale), half floats in [0, 1].
+        S_w(c) / tops (the clip's white-pass input scale), half floats in [0, 1] rounded
+        to the 16-bit grid.
     white_shaper : numpy.ndarray
         (SHAPER_LENGTH, 3): the per-channel Lut1D over c_i / tops[i] in front of
         ``white``, piecewise linear in c between nodes.
@@ -234,7 +235,7 @@ class CompressLUT:
         name = f"{self.name} White Faces"
         t, lim, _ = self.parameters
         return group([lut1d_transform(self.white_shaper, bitdepth="uint16"),
-                      lut3d_transform(self.white, bitdepth="half")],
+                      lut3d_transform(self.white, bitdepth="uint16")],
                      name=name, id=transform_id("Gamut_Map", name),
                      description=(f"Soft constant-lightness compression into {self.display}"
                                   f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
@@ -260,6 +261,12 @@ class CompressLUT:
                 + ops[5:7] + [self.white_core() if white is None else white, ops[7]])
 
 
+def _half16(values):
+    """``values`` rounded to half floats, then to the 16-bit grid (see
+    :func:`ocio_thinfilm.lut.clip_lut._halves_inside`): what a half-float texture holds."""
+    return _q16(np.asarray(values).astype(np.float16).astype(np.float64))
+
+
 @cache.memoize(maxsize=16)
 def _compress_lut(display, size, white_edge, parameters, clip_size):
     lut = clip_lut.clip_lut(display, clip_size)
@@ -278,16 +285,15 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     nodes, tops = _white_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
-    # stored linear (half floats keep dark colours' precision): with the shaper
-    # piecewise linear in c itself, the grid coordinates are affine in c within each
-    # cell, so interpolating S_w, which keeps Y (a linear function), keeps Y. (Stored
-    # sRGB-encoded on the 16-bit grid, as the clip's white pass, it is 40 % smaller,
-    # but the encoding's curvature costs |dY| up to 1.7e-3.)
+    # stored linear: with the shaper piecewise linear in c itself, the grid coordinates
+    # are affine in c within each cell, so interpolating S_w, which keeps Y (a linear
+    # function), keeps Y (stored sRGB-encoded, as the clip's white pass, the encoding's
+    # curvature costs |dY| up to 1.7e-3). Half floats rounded to the 16-bit grid, as the
+    # black passes: half-float GPU textures see the CPU's values.
     white = np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
     out = CompressLUT(display=display, clip=lut,
-                      black=_q16(black.astype(np.float16).astype(np.float64)),
-                      white=white.astype(np.float16).astype(np.float64).reshape(n, n, n, 3),
+                      black=_half16(black), white=_half16(white).reshape(n, n, n, 3),
                       white_shaper=_q16(shaper), chart=P, parameters=parameters)
     for array in (out.black, out.white, out.white_shaper, out.chart):
         array.setflags(write=False)
