@@ -40,12 +40,13 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
     from ocio_thinfilm.colour import colorimetry
-    from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+    from evaluation.colours import object_colours, spectral_colours
     from ocio_thinfilm.render import frames as render
 
     side = int(np.sqrt(n))

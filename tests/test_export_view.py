@@ -32,7 +32,7 @@ import pytest
 
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours
+from evaluation.colours import object_colours
 from ocio_thinfilm.export import view as export_view
 
 CLC = "Constant-Lightness Clip"

@@ -1,7 +1,7 @@
 """OpenColorIO's GLSL for every view of the baked config against the CPU path.
 
 The shader OCIO generates for each (input space, display, view) is run on Mesa's
-software renderer (headless EGL through moderngl, :mod:`ocio_thinfilm.evaluation.gpu`), with
+software renderer (headless EGL through moderngl, :mod:`evaluation.gpu`), with
 the LUT textures uploaded as float32 (``f4``) and as half float (``f2``, what
 Blender's viewport uploads: ``RGB16F``, 11 significant bits).  Requirements:
 
@@ -53,7 +53,7 @@ def gl():
         import moderngl  # noqa: F401
     except ImportError as exc:
         pytest.skip(f"moderngl is not installed ({exc}): pip install moderngl")
-    from ocio_thinfilm.evaluation import gpu
+    from evaluation import gpu
 
     try:
         ctx = gpu.gl_context()
@@ -68,7 +68,7 @@ def gl():
 # ---------------------------------------------------------------------------------------------
 
 def _run(gl, transform, x, dtype="f4"):
-    from ocio_thinfilm.evaluation import gpu
+    from evaluation import gpu
 
     proc = ocio.Config.CreateRaw().getProcessor(transform)
     prog = gpu.GpuProgram(proc, ctx=gl)
@@ -309,7 +309,7 @@ class Results:
     def get(self, display, view, src):
         key = (display, view, src)
         if key not in self.cache:
-            from ocio_thinfilm.evaluation import gpu
+            from evaluation import gpu
 
             t0 = time.perf_counter()
             if src not in self.inputs:
@@ -405,7 +405,7 @@ def test_gpu_nonfinite_inputs(gl, config, display, view):
     (black for an all-NaN pixel), +Inf as 1e6 (white through the clip when Y
     is large); the Thin Film spaces give their table's first entry (black) for NaN.
     """
-    from ocio_thinfilm.evaluation import gpu
+    from evaluation import gpu
 
     for src in SOURCES:
         proc = config.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)

@@ -19,7 +19,7 @@ from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config import merge
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+from evaluation.colours import object_colours, spectral_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")
 

@@ -18,7 +18,7 @@ import pytest
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.io import read_image, write_image
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -1,6 +1,6 @@
 """Stability on stiff and extreme cases: one test per row of the report's table
-(``ocio_thinfilm.evaluation.report.stability_rows``; the row names its test). The rows
-are defined once, in ``ocio_thinfilm.evaluation.stability`` (the physics and OCIO rows
+(``evaluation.report.stability_rows``; the row names its test). The rows
+are defined once, in ``evaluation.stability`` (the physics and OCIO rows
 as ``Row``, the clip's extreme XYZ inputs as ``Case``): the report lists them,
 ``test_stability_row`` and ``test_xyz_stability_case`` run each one, and the
 ``..._checks_can_fail`` tests show that each check rejects a wrong value. A row whose
@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation import stability
+from evaluation import stability
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 
@@ -166,7 +166,7 @@ def test_xyz_above_white_gives_white():
 
 def _limit_along(direction, Y):
     """The clip's limit for a huge component along ``direction``: the geometry of the
-    unit RGB cube (:func:`ocio_thinfilm.evaluation.stability.limit_along`)."""
+    unit RGB cube (:func:`evaluation.stability.limit_along`)."""
     return stability.limit_along(M, W, np.asarray(direction, float), Y)
 
 

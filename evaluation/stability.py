@@ -28,7 +28,7 @@ import numpy as np
 
 from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.formatting import fmt
+from evaluation.formatting import fmt
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 
