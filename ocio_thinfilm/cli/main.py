@@ -27,6 +27,7 @@ from __future__ import annotations
 import os
 import signal
 import sys
+import warnings
 
 from ocio_thinfilm import __version__
 
@@ -155,6 +156,10 @@ def main(argv=None) -> int:
     """Run ``ocio-thinfilm`` with ``argv`` (default: the process's arguments); returns
     the exit code: 0, 1 for an unexpected failure, 2 for bad input, 128 + n for signal n."""
     as_program = argv is None
+    if as_program:
+        # colour-science warns on import that SciPy is absent; nothing the command calls
+        # needs it (tests/test_dependencies.py), so the program's stderr stays clean
+        warnings.filterwarnings("ignore", message='"SciPy" related API features')
     _state.update(interrupted=None, late=None, command=None)
     previous = _install_handlers()
     code = 1
