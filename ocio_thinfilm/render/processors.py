@@ -1,8 +1,9 @@
 """A render's OCIO processors, created from one config file on first use.
 
-A render goes through an OCIO config -- by default the package's baked
-``configs/thinfilm/config.ocio`` (:data:`DEFAULT_CONFIG`, baked first when missing) --
-so it is an end-to-end test of what users load:
+A render goes through an OCIO config -- by default the package's baked config
+(:data:`DEFAULT_CONFIG`: in a checkout its ``configs/thinfilm/config.ocio``, baked first
+when missing; installed from a wheel, the copy the wheel carries as package data) -- so
+it is an end-to-end test of what users load:
 
 - a scene's table (:class:`ocio_thinfilm.render.scenes.TableSpec`) is the config's
   thin-film input colour space, pixel encoding -> CIE-XYZ-D65
@@ -17,6 +18,7 @@ render time.
 
 from __future__ import annotations
 
+from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -26,12 +28,31 @@ from ocio_thinfilm.config.data import REFERENCE
 from ocio_thinfilm.io import UsageError
 from ocio_thinfilm.lut import tables
 
-__all__ = ["DEFAULT_CONFIG", "REFERENCE_SPACE", "table_colorspace", "load_config",
-           "ConfigProcessors", "make_lookup", "display_image", "build_table"]
+__all__ = ["DEFAULT_CONFIG", "PACKAGE_CONFIG", "REFERENCE_SPACE", "table_colorspace",
+           "load_config", "ConfigProcessors", "make_lookup", "display_image", "build_table"]
 
-#: The config a render goes through by default: the package's baked config (baked
-#: with ``ocio-thinfilm bake`` first when it is missing).
-DEFAULT_CONFIG = Path(__file__).resolve().parents[2] / "configs" / "thinfilm" / "config.ocio"
+#: The baked config a wheel carries as package data (setup.py copies the checkout's
+#: ``configs/thinfilm`` into ``ocio_thinfilm/data/thinfilm``); read-only, never baked.
+PACKAGE_CONFIG = Path(str(resources.files("ocio_thinfilm").joinpath("data", "thinfilm",
+                                                                   "config.ocio")))
+
+
+def _checkout_config() -> Path | None:
+    """``configs/thinfilm/config.ocio`` of the checkout this module runs from (the
+    repository's pyproject.toml beside the package), None when installed."""
+    root = Path(__file__).resolve().parents[2]
+    try:
+        if 'name = "ocio-thinfilm"' in (root / "pyproject.toml").read_text(encoding="utf-8"):
+            return root / "configs" / "thinfilm" / "config.ocio"
+    except OSError:
+        pass
+    return None
+
+
+#: The config a render goes through by default: a checkout's ``configs/thinfilm``
+#: (baked with ``ocio-thinfilm bake`` first when it is missing), else
+#: :data:`PACKAGE_CONFIG`. Nothing is ever written beside the installed code.
+DEFAULT_CONFIG = _checkout_config() or PACKAGE_CONFIG
 #: The config's reference, the EXR's colour space: tables go to it, views start at it.
 REFERENCE_SPACE = REFERENCE
 
@@ -52,12 +73,16 @@ def table_colorspace(spec) -> str:
 
 def load_config(path=None):
     """``PyOpenColorIO.Config`` of ``path`` (default :data:`DEFAULT_CONFIG`, baked with
-    :func:`ocio_thinfilm.export.bake.bake` first when missing)."""
+    :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is the
+    installed :data:`PACKAGE_CONFIG`)."""
     import PyOpenColorIO as ocio
 
     if path is None:
         path = DEFAULT_CONFIG
         if not path.is_file():
+            if path == PACKAGE_CONFIG:
+                raise UsageError(f"the package's config {path} is missing (an install "
+                                 "without its data?): reinstall the wheel, or pass --config")
             from ocio_thinfilm.export import bake
 
             bake.bake(path.parent)
