@@ -74,7 +74,8 @@ def processors():
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
                                       ocio.TRANSFORM_DIR_FORWARD)
     bare = ocio_ops.group([display_transforms.display_matrix_transform("sRGB"),
-                           display_transforms.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
+                           display_transforms.aces_gamut_compression_transform(),
+                           ocio_ops.range_(0.0, 1.0),
                            display_transforms.display_encoding_transform("sRGB")])
     g = np.linspace(0.0, 1.0, 65)
     values = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9

@@ -97,7 +97,8 @@ def naive_xyz(display, size):
     g = np.linspace(0, 1, size)
     P = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) * W
     V = colorimetry.XYZ_to_RGB(clip.clip_XYZ(P, display), display)
-    return ocio_ops.group([ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V), ocio_ops.range_(0, 1)])
+    return ocio_ops.group([ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V),
+                           ocio_ops.range_(0, 1)])
 
 
 def uvY_uniform(display, size):

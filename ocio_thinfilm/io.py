@@ -41,9 +41,11 @@ import sys
 import tempfile
 import threading
 from pathlib import Path
+from typing import Any
 
 __all__ = ["UsageError", "MARKER", "TMP_PREFIX", "Transaction", "transaction", "atomic_file",
-           "atomic_directory", "claim_directory", "check_writable", "check_output_file", "clean_stale", "is_stdout",
+           "atomic_directory", "claim_directory", "check_writable", "check_output_file",
+           "clean_stale", "is_stdout",
            "write_bytes", "write_image", "read_image", "deferred_signals"]
 
 #: Prefix of every temporary file or directory this package creates.
@@ -96,7 +98,7 @@ def _host_key() -> str:
     return hashlib.sha1("|".join(parts).encode()).hexdigest()[:8]
 
 
-_SELF = {"pid": None, "start": "", "host": None}
+_SELF: dict[str, Any] = {"pid": None, "start": "", "host": None}
 #: A temporary from another host (or container) is stale only when older than this.
 FOREIGN_STALE_SECONDS = 24 * 3600
 
@@ -157,7 +159,7 @@ def _remove(path: Path) -> None:
 
 def clean_stale(directory) -> list[Path]:
     """Remove temporaries left in ``directory`` by killed runs; returns what went."""
-    removed = []
+    removed: list[Path] = []
     try:
         names = os.listdir(directory)
     except OSError:
@@ -325,7 +327,7 @@ def _destination(path) -> tuple[str, Path]:
     except FileNotFoundError:
         st = None
     except OSError as error:
-        raise UsageError(f"{p}: {error.strerror.lower()}") from None
+        raise UsageError(f"{p}: {(error.strerror or str(error)).lower()}") from None
     if st is not None:
         if stat.S_ISDIR(st.st_mode):
             raise UsageError(f"{p} is a directory, not a file")
@@ -412,7 +414,7 @@ class Transaction:
             raise _cannot_write(path, error) from None
         return tmp
 
-    def directory(self, claim: "Claim") -> Path:
+    def directory(self, claim: Claim) -> Path:
         """A new, empty staging directory for ``claim`` (on the same filesystem)."""
         with self._lock:
             if claim.exists:
@@ -598,6 +600,7 @@ def claim_directory(path, *, option: str, legacy=None, last=()) -> Claim:
     check_writable(p)
     clean_stale(p)
     names = [n for n in os.listdir(p) if not n.startswith(TMP_PREFIX)]
+    owned: set | None
     if MARKER in names:
         if not (p / MARKER).is_file():
             raise UsageError(f"{option} {p}: {MARKER} is not a file")

@@ -42,7 +42,8 @@ SOURCES = [
 THIN_FILM = {s for s in SOURCES if s.startswith("Thin Film")}
 DTYPES = ("f4", "f2")
 F32_MAX = float(np.finfo(np.float32).max)
-PRECISE = ocio.OptimizationFlags(int(ocio.OPTIMIZATION_DEFAULT) & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW))
+PRECISE = ocio.OptimizationFlags(int(ocio.OPTIMIZATION_DEFAULT)
+                                 & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW))
 
 
 
@@ -158,7 +159,8 @@ def test_harness_lut1d(gl, dtype, size, mono):
     x = np.random.default_rng(3).uniform(0, 1, (3000, 3)).astype(np.float32)
     prog, y = _run(gl, t, x, dtype)
     (tex,) = list(prog.shader_desc.getTextures())
-    channel = ocio.GpuShaderDesc.TEXTURE_RED_CHANNEL if mono else ocio.GpuShaderDesc.TEXTURE_RGB_CHANNEL
+    desc = ocio.GpuShaderDesc
+    channel = desc.TEXTURE_RED_CHANNEL if mono else desc.TEXTURE_RGB_CHANNEL
     assert tex.channel == channel
     assert (tex.height > 1) == (size > prog.shader_desc.getTextureMaxWidth())
     stored = vals.astype(np.float32)

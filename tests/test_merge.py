@@ -363,7 +363,7 @@ def test_docs_table_of_builtin_configs_matches_ocio():
     studio = [item[0] for item in ocio.BuiltinConfigRegistry().getBuiltinConfigs()
               if item[0].startswith("studio-config-")]
     assert len(rows) == len(studio)
-    for row, name in zip(rows, sorted(studio)):
+    for row, name in zip(rows, sorted(studio), strict=True):
         cells = [c.strip() for c in row.strip("|").split("|")]
         assert cells[0].startswith(f"`{name}`")
         cfg = ocio.Config.CreateFromFile("ocio://" + name)

@@ -90,7 +90,8 @@ def test_grazing_matches_colour_tmm():
     """The row compares the exact film with colour's TMM at 89.9°; the optical
     thickness there is the Eq. 10 form t sqrt(n^2 - sin^2 theta)."""
     t = spectra.optical_thickness(300.0, 1.33, 89.9)
-    assert np.isfinite(t) and abs(t - 300.0 * np.sqrt(1.33 ** 2 - np.sin(np.radians(89.9)) ** 2)) < 1e-9
+    expected = 300.0 * np.sqrt(1.33 ** 2 - np.sin(np.radians(89.9)) ** 2)
+    assert np.isfinite(t) and abs(t - expected) < 1e-9
 
 
 @pytest.mark.parametrize("theta", [45.0, 60.0, 89.9])
@@ -269,7 +270,7 @@ def test_xyz_stability_case_checks_can_fail():
 ROWS = stability.physics_rows() + stability.ocio_clip_rows()
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _measured(index):
     """``ROWS[index].measure()``, once per session (the check-can-fail test reuses it)."""
     with warnings.catch_warnings():

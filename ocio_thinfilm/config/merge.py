@@ -148,7 +148,8 @@ def interchange(cfg):
             raise UsageError(f"the cie_xyz_d65_interchange space {name!r} is "
                              "display-referred and the config has no scene-referred "
                              "default view transform to reach it")
-        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt), colorspace_transform(cs, to_reference=False)])
+        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt),
+                                       colorspace_transform(cs, to_reference=False)])
         xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True)])
     else:
         scene_to_xyz = ocio_ops.group([colorspace_transform(cs, to_reference=False)])

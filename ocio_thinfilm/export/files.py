@@ -103,9 +103,10 @@ def _validate(table, kind, display, index, value_range, size, fmt):
     if table == "film" and hi > 1000:
         raise UsageError(f"--range: thickness above 1000 um is the incoherent grey; got {hi:g}")
     if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
+        usable = [f for f in FORMATS if f not in NO_DOMAIN and dims in FORMATS[f][2]]
         raise UsageError(f"format {fmt} has no input domain (it always takes 0..1), so it "
                          f"cannot take {table} input over {lo:g}..{hi:g}; use "
-                         f"{', '.join(f for f in FORMATS if f not in NO_DOMAIN and dims in FORMATS[f][2])}")
+                         f"{', '.join(usable)}")
     return size, (float(lo), float(hi))
 
 
@@ -149,7 +150,7 @@ def _contents(table, kind, display, index, value_range, size, progress):
             if progress:
                 progress(len(chunk) / size)
         values = np.concatenate(parts)
-        what = ("physical thickness t in um (t' = %g t)" % n if index is not None
+        what = (f"physical thickness t in um (t' = {n:g} t)" if index is not None
                 else "optical thickness t' = n t cos(theta_t) in um")
         description = (f"Smits & Meyer 1990 {kind} thin film, {size} entries uniform over "
                        f"{lo:g}-{hi:g} um")

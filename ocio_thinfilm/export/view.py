@@ -253,7 +253,8 @@ def _stem(source, display, view):
 
 
 def set_name(source, display, view):
-    """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``, ``ACEScct_to_Rec2020_ChannelClamp``."""
+    """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``,
+    ``ACEScct_to_Rec2020_ChannelClamp``."""
     def clean(text):
         return "".join(c for c in text if c.isalnum())
     return f"{clean(source)}_to_{clean(display)}_{clean(view)}"

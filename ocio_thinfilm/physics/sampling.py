@@ -22,8 +22,9 @@ against the linearly interpolated matching-function weights. (A plain box averag
 over one bin, ``sinc`` instead of ``sinc**2``, leaves a residual oscillation of up
 to 22 % that aliases: Delta E2000 1.4 at t' = 33 um with 5 nm sampling, against
 0.16 with the hat.) One implementation, :func:`cosine_series`, serves every
-interference model (:mod:`ocio_thinfilm.physics.spectra`, :mod:`ocio_thinfilm.physics.exact`), so thick films tend to their incoherent average instead of
-false colours.
+interference model (:mod:`ocio_thinfilm.physics.spectra`,
+:mod:`ocio_thinfilm.physics.exact`), so thick films tend to their incoherent average
+instead of false colours.
 """
 
 from __future__ import annotations
@@ -69,7 +70,8 @@ def as_array(name, value, *, minimum=None, maximum=None, strict=False, unit=""):
             )
     if maximum is not None and check.size and np.any(check > maximum):
         raise ValueError(
-            f"{name} must be in [{minimum:g}, {maximum:g}]{unit}, got {check[check > maximum].flat[0]:g}"
+            f"{name} must be in [{minimum:g}, {maximum:g}]{unit}, "
+            f"got {check[check > maximum].flat[0]:g}"
         )
     return a
 

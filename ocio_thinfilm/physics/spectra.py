@@ -22,6 +22,8 @@ share are in :mod:`ocio_thinfilm.physics.sampling`; the exact optics used as ref
 
 from __future__ import annotations
 
+from typing import TypedDict
+
 import numpy as np
 
 from ocio_thinfilm.physics.sampling import (
@@ -43,10 +45,19 @@ __all__ = [
     "multilayer_reflectance",
 ]
 
+class MorphoGeometry(TypedDict):
+    """The keys of :data:`MORPHO`."""
+
+    d1: float
+    d2: float
+    n: float
+    layers: int
+
+
 #: Morpho wing scale geometry from the paper (Section 4.3, Eq. 14): spacing d1 and
 #: thickness d2 of the mullions in nm, their index n, and the number of layers l
 #: ("twelve horizontal mullions").
-MORPHO = {"d1": 150.0, "d2": 50.0, "n": 1.53, "layers": 12}
+MORPHO: MorphoGeometry = {"d1": 150.0, "d2": 50.0, "n": 1.53, "layers": 12}
 
 
 # --------------------------------------------------------------------------- #

@@ -108,8 +108,8 @@ def _exr_attributes(scene, picture, *, seed, frame, display, view):
     for channel, doc in picture.aov_docs.items():
         attrs[f"ocio_thinfilm:aov:{channel}"] = doc
     for key, value in picture.attributes.items():
-        attrs[f"ocio_thinfilm:{key}"] = float(value) if isinstance(value, (int, float, np.floating)) \
-            else str(value)
+        number = isinstance(value, (int, float, np.floating))
+        attrs[f"ocio_thinfilm:{key}"] = float(value) if number else str(value)
     return attrs
 
 
