@@ -146,6 +146,23 @@ def build_parser():
     return parser
 
 
+#: Library parameters whose option has another name (``dest`` of the argparse action).
+PARAMETER_DEST = {"value_range": "range", "fmt": "format", "out_dir": "out"}
+
+
+def _option_message(parser, command, error) -> str:
+    """A :class:`~ocio_thinfilm.io.ParameterError`'s message naming ``command``'s option
+    for the parameter (``value_range`` -> ``--range``); the parameter's own name when the
+    command has no such option."""
+    sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
+    dest = PARAMETER_DEST.get(error.parameter, error.parameter)
+    for action in sub._actions if sub is not None else ():
+        if action.dest == dest:
+            longest = max(action.option_strings, key=len, default=None)
+            return error.for_option(longest or str(action.metavar or dest))
+    return str(error)
+
+
 def _error(command, message) -> None:
     where = PROG if command is None else f"{PROG} {command}"
     text = " ".join(str(message).split())  # one line, whatever the message held
@@ -189,7 +206,7 @@ def _set(name):
 
 
 def _main(argv, set_command) -> int:
-    from ocio_thinfilm.io import UsageError
+    from ocio_thinfilm.io import ParameterError, UsageError
 
     parser = build_parser()
     try:
@@ -209,6 +226,9 @@ def _main(argv, set_command) -> int:
         return 2
     try:
         return int(args.func(args) or 0)
+    except ParameterError as error:
+        _error(command, _option_message(parser, command, error))
+        return 2
     except (UsageError, ValueError) as error:
         _error(command, error)
         return 2
