@@ -241,12 +241,13 @@ def test_a_checkout_renders_through_its_configs_thinfilm():
 def test_a_missing_installed_config_is_an_error_not_a_bake(tmp_path, monkeypatch):
     """The installed config is read-only package data: when it is missing (an install
     without its data), nothing is baked beside the code."""
-    from ocio_thinfilm.io import UsageError
+    from ocio_thinfilm.io import ParameterError
     from ocio_thinfilm.render import processors
 
     installed = tmp_path / "site" / "ocio_thinfilm" / "data" / "thinfilm" / "config.ocio"
     monkeypatch.setattr(processors, "PACKAGE_CONFIG", installed)
     monkeypatch.setattr(processors, "DEFAULT_CONFIG", installed)
-    with pytest.raises(UsageError, match="package's config .* is missing"):
+    with pytest.raises(ParameterError, match="^config is needed: the package's config .* is "
+                                             "missing"):
         processors.load_config()
     assert list(tmp_path.iterdir()) == []

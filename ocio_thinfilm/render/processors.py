@@ -25,7 +25,7 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.data import REFERENCE
-from ocio_thinfilm.io import UsageError
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import tables
 
 __all__ = ["DEFAULT_CONFIG", "PACKAGE_CONFIG", "REFERENCE_SPACE", "table_colorspace",
@@ -71,28 +71,29 @@ def table_colorspace(spec) -> str:
     return registry.thin_film_space_for_kind(spec.kind).name
 
 
-def load_config(path=None):
-    """``PyOpenColorIO.Config`` of ``path`` (default :data:`DEFAULT_CONFIG`, baked with
-    :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is the
-    installed :data:`PACKAGE_CONFIG`)."""
+def load_config(config=None):
+    """``PyOpenColorIO.Config`` of the file ``config`` (default :data:`DEFAULT_CONFIG`,
+    baked with :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is
+    the installed :data:`PACKAGE_CONFIG`)."""
     import PyOpenColorIO as ocio
 
-    if path is None:
+    if config is None:
         path = DEFAULT_CONFIG
         if not path.is_file():
             if path == PACKAGE_CONFIG:
-                raise UsageError(f"the package's config {path} is missing (an install "
-                                 "without its data?): reinstall the wheel, or pass --config")
+                raise ParameterError("config", f" is needed: the package's config {path} is "
+                                               "missing (an install without its data? "
+                                               "reinstalling the wheel restores it)")
             from ocio_thinfilm.export import bake
 
             bake.bake(path.parent)
-    path = Path(path)
+    path = DEFAULT_CONFIG if config is None else Path(config)
     if not path.is_file():
-        raise UsageError(f"--config {path}: no such config file")
+        raise ParameterError("config", f" {path}: no such config file")
     try:
         return ocio.Config.CreateFromFile(str(path))
     except Exception as error:  # OCIO's parse errors
-        raise UsageError(f"--config {path}: {str(error).splitlines()[0]}") from None
+        raise ParameterError("config", f" {path}: {str(error).splitlines()[0]}") from None
 
 
 class ConfigProcessors:
@@ -122,8 +123,8 @@ class ConfigProcessors:
             name = dict(self.config.getRoles()).get("scene_linear")
             cs = self.config.getColorSpace(name) if name else None
             if cs is None:
-                raise UsageError(f"config: no {REFERENCE_SPACE} colour space and no "
-                                 "scene_linear role to reach it")
+                raise ParameterError("config", f": no {REFERENCE_SPACE} colour space and no "
+                                               "scene_linear role to reach it")
             scene_to_xyz, _ = merge.interchange(self.config)
             self._bridge = (cs.getName(), ocio_ops.group(
                 [merge.colorspace_transform(cs, to_reference=True), scene_to_xyz]))
@@ -143,8 +144,8 @@ class ConfigProcessors:
             try:
                 self._cpu[key] = make().getDefaultCPUProcessor()
             except Exception as error:  # a missing space / view / LUT file
-                raise UsageError(f"config: cannot build {key}: "
-                                 f"{str(error).splitlines()[0]}") from None
+                raise ParameterError("config", f": cannot build {key}: "
+                                               f"{str(error).splitlines()[0]}") from None
             self.created.append(key)
         return self._cpu[key]
 
@@ -169,14 +170,16 @@ class ConfigProcessors:
         return self._processor(f"view:{display}/{view}", make)
 
     def check_display_view(self, display: str, view: str) -> None:
-        """UsageError unless the config has ``display`` with ``view``."""
+        """A :class:`~ocio_thinfilm.io.ParameterError` naming ``display`` or ``view``
+        unless the config has ``display`` with ``view``."""
         displays = list(self.config.getDisplays())
         if display not in displays:
-            raise UsageError(f"--display {display!r}: the config has {', '.join(displays)}")
+            raise ParameterError("display", f" {display!r}: the config has "
+                                            f"{', '.join(displays)}")
         views = list(self.config.getViews(display))
         if view not in views:
-            raise UsageError(f"--view {view!r}: the config's display {display} has "
-                             f"{', '.join(views)}")
+            raise ParameterError("view", f" {view!r}: the config's display {display} has "
+                                         f"{', '.join(views)}")
 
 
 def _apply(cpu, pixels) -> np.ndarray:
