@@ -147,7 +147,8 @@ def build_parser():
 
 
 #: Library parameters whose option has another name (``dest`` of the argparse action).
-PARAMETER_DEST = {"value_range": "range", "fmt": "format", "out_dir": "out"}
+PARAMETER_DEST = {"value_range": "range", "fmt": "format", "out_dir": "out",
+                  "shaper": "resolve_shaper"}
 
 
 def _option_message(parser, command, error) -> str:
