@@ -146,9 +146,11 @@ def build_parser():
     return parser
 
 
-#: Library parameters whose option has another name (``dest`` of the argparse action).
-PARAMETER_DEST = {"value_range": "range", "fmt": "format", "out_dir": "out",
-                  "shaper": "resolve_shaper"}
+#: Library parameters whose option has another name (``dest`` of the argparse action),
+#: for every command (key None) and for one command.
+PARAMETER_DEST = {None: {"value_range": "range", "fmt": "format", "out_dir": "out",
+                         "shaper": "resolve_shaper"},
+                  "bake": {"source": "into"}}
 
 
 def _option_message(parser, command, error) -> str:
@@ -156,7 +158,8 @@ def _option_message(parser, command, error) -> str:
     for the parameter (``value_range`` -> ``--range``); the parameter's own name when the
     command has no such option."""
     sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
-    dest = PARAMETER_DEST.get(error.parameter, error.parameter)
+    dest = PARAMETER_DEST.get(command, {}).get(error.parameter) \
+        or PARAMETER_DEST[None].get(error.parameter, error.parameter)
     for action in sub._actions if sub is not None else ():
         if action.dest == dest:
             longest = max(action.option_strings, key=len, default=None)
