@@ -373,9 +373,16 @@ def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
     assert [p.name for p in foreign.iterdir()] == ["notes.txt"]
 
 
-def test_a_size_of_the_wrong_type_is_a_type_error_naming_it(tmp_path):
-    with pytest.raises(TypeError, match="size must be an integer, got '64'"):
-        export.export_lut("film", tmp_path / "t.clf", size="64")
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(size="64"), "size must be an integer, got '64'"),
+    (dict(size=64.0), "size must be an integer, got 64.0"),
+    (dict(index="1.33"), "index must be a number, got '1.33'"),
+    (dict(value_range="0 1"), r"value_range must be two numbers \(lo, hi\), got '0 1'"),
+    (dict(value_range=(0, "1")), "value_range must be a number, got '1'"),
+])
+def test_arguments_of_the_wrong_type_are_type_errors_naming_them(kwargs, message, tmp_path):
+    with pytest.raises(TypeError, match=f"^{message}"):
+        export.export_lut("film", tmp_path / "t.clf", **kwargs)
     assert list(tmp_path.iterdir()) == []
 
 

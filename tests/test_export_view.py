@@ -407,12 +407,24 @@ def test_bad_view_arguments(argv, says, tmp_path, capsys):
     (dict(out="v.lut"), "fmt is needed: no format can be told from 'v.lut'"),
 ])
 def test_the_library_names_its_parameters(kwargs, parameter, tmp_path, monkeypatch):
+    """Reference: the parameter names of export_view's signature."""
     monkeypatch.chdir(tmp_path)
     call = dict(source="ACEScct", display="sRGB", view=CLC, out="v.cube") | kwargs
     with pytest.raises(ValueError) as raised:
         export_view.export_view(call.pop("source"), call.pop("display"), call.pop("view"),
                                 call.pop("out"), **call)
     assert str(raised.value).startswith(parameter) and "--" not in str(raised.value)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("kwargs", [dict(size="9"), dict(size=9.0),
+                                    dict(source="Thin Film Phase-Change Thickness",
+                                         value_range=("0", "1"))])
+def test_arguments_of_the_wrong_type_are_type_errors(kwargs, tmp_path):
+    call = dict(source="ACEScct", display="sRGB", view=CLC) | kwargs
+    with pytest.raises(TypeError, match=f"^{'size' if 'size' in kwargs else 'value_range'} "):
+        export_view.export_view(call.pop("source"), call.pop("display"), call.pop("view"),
+                                tmp_path / "v.cube", **call)
     assert list(tmp_path.iterdir()) == []
 
 

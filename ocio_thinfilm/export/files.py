@@ -44,6 +44,7 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import ParameterError, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops, tables
+from ocio_thinfilm.physics.sampling import as_pair, as_real
 
 __all__ = ["FORMATS", "TABLES", "DEFAULT_SIZE", "DEFAULT_RANGE", "lut_contents", "write_lut",
            "export_lut", "export_set", "EXPORT_SET_VIEWS", "progress_bar"]
@@ -85,6 +86,7 @@ def _validate(table, kind, display, index, value_range, size, fmt):
         raise ValueError(f"unknown film kind {kind!r}; choose from "
                          f"{', '.join(colorimetry.FILM_KINDS)}")
     if index is not None:
+        index = as_real("index", index)
         if table != "film":
             raise ParameterError("index", " applies to film tables only")
         if not (math.isfinite(index) and 1.0 <= index <= 10.0):
@@ -94,7 +96,7 @@ def _validate(table, kind, display, index, value_range, size, fmt):
         raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
     if not 2 <= size <= MAX_SIZE[table]:
         raise ParameterError("size", f" must be in [2, {MAX_SIZE[table]}] for {table}, got {size}")
-    lo, hi = DEFAULT_RANGE[table] if value_range is None else value_range
+    lo, hi = DEFAULT_RANGE[table] if value_range is None else as_pair("value_range", value_range)
     if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
         raise ParameterError("value_range", f" must be two finite numbers MIN < MAX, "
                                             f"got {lo:g} {hi:g}")

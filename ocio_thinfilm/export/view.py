@@ -71,6 +71,7 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import ParameterError, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
+from ocio_thinfilm.physics.sampling import as_pair
 
 __all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
            "PLAIN_INPUTS", "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view"]
@@ -221,13 +222,15 @@ def _validate(source, display, view, size, fmt, value_range):
         raise ValueError(f"unknown view {view!r}; choose from {', '.join(registry.VIEWS)}")
     if fmt not in VIEW_FORMATS:
         raise ValueError(f"unknown format {fmt!r}; choose from {', '.join(VIEW_FORMATS)}")
+    if size is not None and (isinstance(size, bool) or not isinstance(size, (int, np.integer))):
+        raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
     one_d = source in THIN_FILM_INPUTS
     if one_d:
         what, default_range, default_size = THIN_FILM_INPUTS[source]
         if fmt in ("csp", "spi3d"):
             raise ValueError(f"{source} takes one value per pixel, a 1D LUT: use cube, "
                              f"spi1d or clf (format {fmt} holds only 3D LUTs)")
-        lo, hi = default_range if value_range is None else value_range
+        lo, hi = default_range if value_range is None else as_pair("value_range", value_range)
         if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
             raise ParameterError("value_range", f" must be two finite numbers MIN < MAX, "
                                                 f"got {lo:g} {hi:g}")

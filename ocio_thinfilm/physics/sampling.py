@@ -36,6 +36,8 @@ __all__ = [
     "MAX_LAYERS",
     "as_array",
     "as_count",
+    "as_real",
+    "as_pair",
     "as_angle",
     "as_index",
     "check_wavelengths",
@@ -51,8 +53,12 @@ __all__ = [
 # --------------------------------------------------------------------------- #
 def as_array(name, value, *, minimum=None, maximum=None, strict=False, unit=""):
     """``value`` as a float64 (or complex) array, finite and within the bounds, else a
-    ValueError naming ``name``, the bounds and the first offending value."""
+    ValueError naming ``name``, the bounds and the first offending value (a TypeError
+    for what is not numbers: a string is not parsed, ``n='1.33'`` is refused)."""
     a = np.asarray(value)
+    if a.dtype.kind not in "biufc":
+        raise TypeError(f"{name} must be a number or an array of numbers, got "
+                        f"{_short(value)} ({type(value).__name__})")
     if a.dtype.kind == "c":
         check = a.real
     else:
@@ -74,6 +80,11 @@ def as_array(name, value, *, minimum=None, maximum=None, strict=False, unit=""):
             f"got {check[check > maximum].flat[0]:g}"
         )
     return a
+
+
+def _short(value) -> str:
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def _range_text(minimum, maximum, strict, unit):
@@ -98,6 +109,24 @@ def as_count(name, value, minimum=1, maximum=None):
         limit = f" and <= {maximum}" if maximum is not None else ""
         raise ValueError(f"{name} must be an integer >= {minimum}{limit}, got {value!r}")
     return int(f)
+
+
+def as_real(name, value) -> float:
+    """A real-number parameter as a float; a TypeError naming it for what is not one
+    (a string is not parsed, a bool is not a number). Ranges are the caller's to check."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer,
+                                                                       np.floating)):
+        raise TypeError(f"{name} must be a number, got {_short(value)} "
+                        f"({type(value).__name__})")
+    return float(value)
+
+
+def as_pair(name, value) -> tuple[float, float]:
+    """Two real numbers ``(lo, hi)`` as floats; a TypeError naming ``name`` otherwise."""
+    if isinstance(value, (str, bytes)) or np.ndim(value) != 1 or len(value) != 2:
+        raise TypeError(f"{name} must be two numbers (lo, hi), got {_short(value)}")
+    lo, hi = value
+    return as_real(name, lo), as_real(name, hi)
 
 
 #: Largest wavelength grid :func:`wavelength_grid` makes, and most Eq. 9 layers.
@@ -131,7 +160,7 @@ def check_wavelengths(wavelengths) -> np.ndarray:
     Raises
     ------
     ValueError
-        Naming what is wrong.
+        Naming what is wrong (a TypeError for what is not numbers).
 
     Examples
     --------
@@ -142,6 +171,9 @@ def check_wavelengths(wavelengths) -> np.ndarray:
     ...
     ValueError: wavelengths must be strictly increasing
     """
+    if np.asarray(wavelengths).dtype.kind not in "biuf":  # a string is not parsed
+        raise TypeError(f"wavelengths must be a number array of nm values, got "
+                        f"{_short(wavelengths)}")
     wl = np.asarray(wavelengths, dtype=np.float64)
     if wl.ndim != 1 or wl.size == 0:
         raise ValueError("wavelengths must be a non-empty 1-D array of nm values")
@@ -171,10 +203,12 @@ def wavelength_grid(start: float = 360.0, stop: float = 780.0, step: float = 5.0
     [400.0, 500.0, 600.0, 700.0]
     """
     for name, value in (("start", start), ("stop", stop), ("step", step)):
+        if isinstance(value, (str, bytes)):  # a string is not parsed
+            raise TypeError(f"{name} must be a number of nm, got {value!r}")
         try:
             value = float(value)
         except (TypeError, ValueError):
-            raise ValueError(f"{name} must be a number of nm, got {value!r}") from None
+            raise TypeError(f"{name} must be a number of nm, got {value!r}") from None
         if not np.isfinite(value):
             raise ValueError(f"{name} must be finite, got {value}")
     start, stop, step = float(start), float(stop), float(step)
