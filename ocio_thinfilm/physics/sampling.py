@@ -29,7 +29,11 @@ instead of false colours.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "MAX_SAMPLES",
@@ -51,7 +55,8 @@ __all__ = [
 # --------------------------------------------------------------------------- #
 # Argument checks: one place that words every error message.
 # --------------------------------------------------------------------------- #
-def as_array(name, value, *, minimum=None, maximum=None, strict=False, unit=""):
+def as_array(name: str, value: npt.ArrayLike, *, minimum: float | None = None,
+             maximum: float | None = None, strict: bool = False, unit: str = "") -> np.ndarray:
     """``value`` as a float64 (or complex) array, finite and within the bounds, else a
     ValueError naming ``name``, the bounds and the first offending value (a TypeError
     for what is not numbers: a string is not parsed, ``n='1.33'`` is refused)."""
@@ -82,12 +87,13 @@ def as_array(name, value, *, minimum=None, maximum=None, strict=False, unit=""):
     return a
 
 
-def _short(value) -> str:
+def _short(value: object) -> str:
     text = repr(value)
     return text if len(text) <= 40 else text[:37] + "..."
 
 
-def _range_text(minimum, maximum, strict, unit):
+def _range_text(minimum: float | None, maximum: float | None, strict: bool,
+                unit: str) -> str:
     if minimum is None:
         return ""
     if maximum is None:
@@ -95,7 +101,7 @@ def _range_text(minimum, maximum, strict, unit):
     return f" and in [{minimum:g}, {maximum:g}]{unit}"
 
 
-def as_count(name, value, minimum=1, maximum=None):
+def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
     """An integer parameter (layers, harmonics): a TypeError naming it for a value that
     is not a number (a string is not parsed: ``layers='3'`` is refused), a ValueError
     for a number that is not an integer in range."""
@@ -111,7 +117,7 @@ def as_count(name, value, minimum=1, maximum=None):
     return int(f)
 
 
-def as_real(name, value) -> float:
+def as_real(name: str, value: object) -> float:
     """A real-number parameter as a float; a TypeError naming it for what is not one
     (a string is not parsed, a bool is not a number). Ranges are the caller's to check."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer,
@@ -121,7 +127,7 @@ def as_real(name, value) -> float:
     return float(value)
 
 
-def as_pair(name, value) -> tuple[float, float]:
+def as_pair(name: str, value: Any) -> tuple[float, float]:
     """Two real numbers ``(lo, hi)`` as floats; a TypeError naming ``name`` otherwise."""
     if isinstance(value, (str, bytes)) or np.ndim(value) != 1 or len(value) != 2:
         raise TypeError(f"{name} must be two numbers (lo, hi), got {_short(value)}")
@@ -134,17 +140,17 @@ MAX_SAMPLES = 10_000_000
 MAX_LAYERS = 100_000
 
 
-def as_angle(theta):
+def as_angle(theta: npt.ArrayLike) -> np.ndarray:
     """An angle of incidence in degrees, in [0, 90]."""
     return as_array("theta", theta, minimum=0.0, maximum=90.0, unit=" degrees")
 
 
-def as_index(name, n):
+def as_index(name: str, n: npt.ArrayLike) -> np.ndarray:
     """A real refractive index: finite and > 0."""
     return as_array(name, n, minimum=0.0, strict=True)
 
 
-def check_wavelengths(wavelengths) -> np.ndarray:
+def check_wavelengths(wavelengths: npt.ArrayLike) -> np.ndarray:
     """Validate a wavelength grid.
 
     Parameters
@@ -224,7 +230,7 @@ def wavelength_grid(start: float = 360.0, stop: float = 780.0, step: float = 5.0
     return check_wavelengths(start + step * np.arange(count))
 
 
-def bin_edges(wavelengths) -> tuple[np.ndarray, np.ndarray]:
+def bin_edges(wavelengths: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Lower and upper edge of each sample's bin: the midpoints between samples.
 
     The outer bins are half bins, so a sum over bins is the trapezoid rule. A
@@ -255,7 +261,8 @@ def bin_edges(wavelengths) -> tuple[np.ndarray, np.ndarray]:
 # --------------------------------------------------------------------------- #
 # Phase and the band-limited cosine series (shared by every interference model).
 # --------------------------------------------------------------------------- #
-def phase(path, wl, band_limited):
+def phase(path: np.ndarray, wl: np.ndarray,
+          band_limited: bool) -> tuple[np.ndarray, np.ndarray | None]:
     """Round-trip phase 2*pi*P/lambda at the samples and its spread over each bin.
 
     Returns ``(phi_c, dphi)`` broadcast to ``path.shape + wl.shape``. With
@@ -271,7 +278,8 @@ def phase(path, wl, band_limited):
     return 0.5 * (phi_hi + phi_lo), phi_hi - phi_lo
 
 
-def cosine_series(coefficients, phi_c, dphi):
+def cosine_series(coefficients: Sequence[Any], phi_c: np.ndarray,
+                  dphi: np.ndarray | None) -> np.ndarray:
     """Sum ``c_0 + sum_k Re(c_k exp(i k phi))``, each harmonic hat-averaged.
 
     ``coefficients`` is a list; entry k is a (broadcastable) array of the k-th
