@@ -37,6 +37,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
 DEFAULT_PAIRS = ("49:41", "57:45", "65:49", "65:53", "65:57", "73:53")
 
 
@@ -144,7 +145,7 @@ def plain_cube_curve(sizes):
     import colour
     from test_export_view import _colour_rgb, _dE, _ocio_apply, _stats
 
-    from ocio_thinfilm.evaluation.colours import object_colours
+    from evaluation.colours import object_colours
     from ocio_thinfilm.export.view import export_view
 
     XYZ = object_colours()

@@ -37,6 +37,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
 DEFAULT_PAIRS = ("33:33", "41:41", "49:41", "49:49", "57:49")
 DOC = ROOT / "docs" / "compress.md"
 BEGIN, END = "<!-- compress-accuracy:begin -->", "<!-- compress-accuracy:end -->"
@@ -45,7 +46,7 @@ CANDIDATES = ((0.75, 1.2), (0.8, 1.2), (0.8, 1.3), (0.85, 1.3), (0.8, 1.5))
 
 def _sets():
     from ocio_thinfilm.colour import colorimetry
-    from ocio_thinfilm.evaluation.colours import object_colours, spectral_mixtures
+    from evaluation.colours import object_colours, spectral_mixtures
 
     rng = np.random.default_rng(7)
     ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ np.linalg.inv(
@@ -294,7 +295,6 @@ def main(argv=None):
                         help="edge pairs S_b:S_w of the squeezes' Lut3Ds")
     parser.add_argument("--plot", default=str(ROOT / "docs" / "compress_ramps.png"))
     args = parser.parse_args(argv)
-    sys.path.insert(0, str(ROOT))
 
     def progress(text):
         print(text, flush=True)

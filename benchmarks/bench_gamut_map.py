@@ -34,18 +34,20 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
     from ocio_thinfilm.colour import colorimetry
-    from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+    from evaluation.colours import object_colours, spectral_colours
     from ocio_thinfilm.render import frames as render
 
     side = int(np.sqrt(n))
@@ -72,7 +74,8 @@ def processors():
     view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
                                       ocio.TRANSFORM_DIR_FORWARD)
     bare = ocio_ops.group([display_transforms.display_matrix_transform("sRGB"),
-                           display_transforms.aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0),
+                           display_transforms.aces_gamut_compression_transform(),
+                           ocio_ops.range_(0.0, 1.0),
                            display_transforms.display_encoding_transform("sRGB")])
     g = np.linspace(0.0, 1.0, 65)
     values = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9

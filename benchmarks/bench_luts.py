@@ -32,7 +32,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours  # noqa: E402
+from evaluation.colours import object_colours, spectral_colours  # noqa: E402
 from ocio_thinfilm.lut import clip_lut, display_transforms, ocio_ops, tables  # noqa: E402
 
 
@@ -97,7 +97,8 @@ def naive_xyz(display, size):
     g = np.linspace(0, 1, size)
     P = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) * W
     V = colorimetry.XYZ_to_RGB(clip.clip_XYZ(P, display), display)
-    return ocio_ops.group([ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V), ocio_ops.range_(0, 1)])
+    return ocio_ops.group([ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V),
+                           ocio_ops.range_(0, 1)])
 
 
 def uvY_uniform(display, size):

@@ -14,8 +14,9 @@ ones before it and from the shared leaves (:mod:`.registry`, :mod:`.cache`,
   standalone LUTs
 - :mod:`.render`      the paper's example scenes through a config's processors (Section 4)
 - :mod:`.cli`         the ``ocio-thinfilm`` command (options, errors, signals)
-- :mod:`.evaluation`  what the tests, benchmarks and report measure against (not shipped
-  path: nothing above imports it)
+
+What the tests, benchmarks and report measure against is not in this package: it is
+the repository's top-level ``evaluation`` package, beside ``benchmarks/``.
 """
 
 __version__ = "0.1.0"

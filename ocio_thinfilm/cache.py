@@ -42,7 +42,7 @@ __all__ = ["Memo", "CacheInfo", "memoize", "clear", "info", "entries", "names"]
 CacheInfo = namedtuple("CacheInfo", "hits misses maxsize currsize")
 
 #: name -> Memo, held weakly (a discarded memo is not kept alive by the store).
-_STORE = weakref.WeakValueDictionary()
+_STORE: weakref.WeakValueDictionary[str, Memo] = weakref.WeakValueDictionary()
 _STORE_LOCK = threading.Lock()
 
 

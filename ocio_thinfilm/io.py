@@ -41,9 +41,12 @@ import sys
 import tempfile
 import threading
 from pathlib import Path
+from typing import Any
 
-__all__ = ["UsageError", "MARKER", "TMP_PREFIX", "Transaction", "transaction", "atomic_file",
-           "atomic_directory", "claim_directory", "check_writable", "check_output_file", "clean_stale", "is_stdout",
+__all__ = ["UsageError", "ParameterError", "MARKER", "TMP_PREFIX", "Transaction", "transaction",
+           "atomic_file",
+           "atomic_directory", "claim_directory", "check_writable", "check_output_file",
+           "clean_stale", "is_stdout",
            "write_bytes", "write_image", "read_image", "deferred_signals"]
 
 #: Prefix of every temporary file or directory this package creates.
@@ -55,6 +58,22 @@ _MARKER_HEADER = "# ocio-thinfilm: files written by the last run (replaced or re
 
 class UsageError(ValueError):
     """A bad command-line argument: the CLI prints it on one line and exits with 2."""
+
+
+class ParameterError(ValueError):
+    """A library function's argument outside what it allows, naming the Python parameter:
+    ``str(error)`` is ``parameter + detail`` (``"index applies to film tables only"``,
+    ``"value_range: thickness must not be negative, got -1"``). The command line
+    names its option instead (:meth:`for_option`; ``--index applies to ...``)."""
+
+    def __init__(self, parameter: str, detail: str) -> None:
+        super().__init__(parameter + detail)
+        self.parameter = parameter
+        self.detail = detail
+
+    def for_option(self, option: str) -> str:
+        """The message with ``option`` (e.g. ``--range``) in place of the parameter."""
+        return option + self.detail
 
 
 # --------------------------------------------------------------------------- #
@@ -96,7 +115,7 @@ def _host_key() -> str:
     return hashlib.sha1("|".join(parts).encode()).hexdigest()[:8]
 
 
-_SELF = {"pid": None, "start": "", "host": None}
+_SELF: dict[str, Any] = {"pid": None, "start": "", "host": None}
 #: A temporary from another host (or container) is stale only when older than this.
 FOREIGN_STALE_SECONDS = 24 * 3600
 
@@ -157,7 +176,7 @@ def _remove(path: Path) -> None:
 
 def clean_stale(directory) -> list[Path]:
     """Remove temporaries left in ``directory`` by killed runs; returns what went."""
-    removed = []
+    removed: list[Path] = []
     try:
         names = os.listdir(directory)
     except OSError:
@@ -318,24 +337,24 @@ def _destination(path) -> tuple[str, Path]:
     ('through', path) for an existing special file to write through."""
     text = os.fspath(path)
     if text == "":
-        raise UsageError("output path is empty")
+        raise ValueError("output path is empty")
     p = Path(text)
     try:
         st = os.stat(p)
     except FileNotFoundError:
         st = None
     except OSError as error:
-        raise UsageError(f"{p}: {error.strerror.lower()}") from None
+        raise ValueError(f"{p}: {(error.strerror or str(error)).lower()}") from None
     if st is not None:
         if stat.S_ISDIR(st.st_mode):
-            raise UsageError(f"{p} is a directory, not a file")
+            raise ValueError(f"{p} is a directory, not a file")
         if not stat.S_ISREG(st.st_mode):
             return "through", p
     if _fd_alias(p) is not None or _via_proc(p):  # /dev/stdout redirected to a file
         return "through", p
     real = Path(os.path.realpath(p))
     if st is None and real.parent.exists() and not real.parent.is_dir():
-        raise UsageError(f"{real.parent} is not a directory")
+        raise ValueError(f"{real.parent} is not a directory")
     return "replace", real if p.is_symlink() else p
 
 
@@ -391,7 +410,7 @@ class Transaction:
         mode, dest = _destination(path)
         with self._lock:
             if any(e.dest == dest for e in self._files):
-                raise UsageError(f"{dest} would be written twice")
+                raise ValueError(f"{dest} would be written twice")
             if mode == "replace":
                 self._mkdirs(dest.parent)
                 self._clean(dest.parent)
@@ -412,7 +431,7 @@ class Transaction:
             raise _cannot_write(path, error) from None
         return tmp
 
-    def directory(self, claim: "Claim") -> Path:
+    def directory(self, claim: Claim) -> Path:
         """A new, empty staging directory for ``claim`` (on the same filesystem)."""
         with self._lock:
             if claim.exists:
@@ -455,10 +474,10 @@ class Transaction:
                     raise _cannot_write(target, error) from None
                 if claim.exists and rel not in claim.owned and (
                         target.exists() or target.is_symlink()):
-                    raise UsageError(f"{claim.option} {claim.path}: {rel} exists and was not "
-                                     f"written by ocio-thinfilm; not replacing it")
+                    raise ParameterError(claim.parameter, f" {claim.path}: {rel} exists and was "
+                                         "not written by ocio-thinfilm; not replacing it")
                 if claim.exists and (target.is_dir() and not target.is_symlink()):
-                    raise UsageError(f"{claim.option} {claim.path}: {rel} is a directory")
+                    raise ParameterError(claim.parameter, f" {claim.path}: {rel} is a directory")
             plans.append((claim, stage, files))
         return plans
 
@@ -556,10 +575,10 @@ def _write_through(tmp: Path, dest: Path) -> None:
 # --------------------------------------------------------------------------- #
 class Claim:
     """A directory this run may write: where, whether it exists, which files in it are
-    ours (relative POSIX paths), and the option that named it (for messages)."""
+    ours (relative POSIX paths), and the parameter that named it (for messages)."""
 
-    def __init__(self, path: Path, exists: bool, owned: set, option: str, last=()):
-        self.path, self.exists, self.owned, self.option = path, exists, owned, option
+    def __init__(self, path: Path, exists: bool, owned: set, parameter: str, last=()):
+        self.path, self.exists, self.owned, self.parameter = path, exists, owned, parameter
         self.last = tuple(last)
 
 
@@ -576,40 +595,43 @@ def _read_marker(path: Path) -> set:
     return owned
 
 
-def claim_directory(path, *, option: str, legacy=None, last=()) -> Claim:
+def claim_directory(path, *, parameter: str = "out", legacy=None, last=()) -> Claim:
     """Check that ``path`` may be (re)written as an output directory of this tool.
 
     Allowed: missing, empty, holding :data:`MARKER`, or ``legacy(path)`` returning the
     set of files a marker-less earlier run wrote there. Anything else is a
-    :class:`UsageError`: the directory holds files this tool did not write.
-    ``last``: relative paths to rename after all others (e.g. ``config.ocio``).
+    :class:`ParameterError` naming ``parameter`` (the caller's name for ``path``): the
+    directory holds files this tool did not write. ``last``: relative paths to rename
+    after all others (e.g. ``config.ocio``).
     """
     text = os.fspath(path)
     if text.strip() == "":
-        raise UsageError(f"{option} must name a directory, got an empty string")
+        raise ParameterError(parameter, " must name a directory, got an empty string")
     p = Path(text)
     if p.is_symlink() and p.exists():
         p = Path(os.path.realpath(p))  # keep the link, write into what it points to
     if p.exists() and not p.is_dir():
-        raise UsageError(f"{option} {p}: exists and is not a directory")
+        raise ParameterError(parameter, f" {p}: exists and is not a directory")
     if not p.exists():
         check_writable(p)
-        return Claim(p, False, set(), option, last)
+        return Claim(p, False, set(), parameter, last)
     check_writable(p)
     clean_stale(p)
     names = [n for n in os.listdir(p) if not n.startswith(TMP_PREFIX)]
+    owned: set | None
     if MARKER in names:
         if not (p / MARKER).is_file():
-            raise UsageError(f"{option} {p}: {MARKER} is not a file")
+            raise ParameterError(parameter, f" {p}: {MARKER} is not a file")
         owned = _read_marker(p / MARKER)
     elif not names:
         owned = set()
     else:
         owned = legacy(p) if legacy else None
         if owned is None:
-            raise UsageError(f"{option} {p}: directory is not empty and was not written by "
-                             f"ocio-thinfilm (no {MARKER}); give a new or empty directory")
-    return Claim(p, True, set(owned), option, last)
+            raise ParameterError(parameter, f" {p}: directory is not empty and was not written "
+                                            f"by ocio-thinfilm (no {MARKER}); give a new or "
+                                            "empty directory")
+    return Claim(p, True, set(owned), parameter, last)
 
 
 def _write_marker(directory: Path, files, umask) -> None:
@@ -639,8 +661,8 @@ def _commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> Non
             claim.exists = True  # created meanwhile: fall back to file-by-file
             names = [n for n in os.listdir(claim.path) if not n.startswith(TMP_PREFIX)]
             if names:
-                raise UsageError(f"{claim.option} {claim.path}: appeared while writing; "
-                                 "nothing replaced") from None
+                raise ParameterError(claim.parameter, f" {claim.path}: appeared while writing; "
+                                                      "nothing replaced") from None
             (stage / MARKER).unlink()
     import fcntl
 
@@ -684,35 +706,36 @@ def check_writable(directory) -> Path:
     while not probe.exists() and not probe.is_symlink():
         probe = probe.parent
     if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
-        raise UsageError(f"{d}: directory is not writable")
+        raise ValueError(f"{d}: directory is not writable")
     try:  # access() says yes to root everywhere (even /proc): try a real file, kept nowhere
         with tempfile.TemporaryFile(dir=probe):
             pass
     except OSError:
-        raise UsageError(f"{d}: directory is not writable") from None
+        raise ValueError(f"{d}: directory is not writable") from None
     return d
 
 
-def check_output_file(path, option="--out") -> Path:
+def check_output_file(path, parameter: str = "out") -> Path:
     """Fail early, with a one-line error, if the file ``path`` cannot be written: a
-    directory in its place, or an unwritable directory. Special files (written
+    directory in its place, or an unwritable directory (a :class:`ParameterError`
+    naming ``parameter``, the caller's name for ``path``). Special files (written
     through) need only exist."""
     try:
         mode, dest = _destination(path)
-    except UsageError as error:
-        raise UsageError(f"{option} {error}") from None
+    except ValueError as error:
+        raise ParameterError(parameter, f" {error}") from None
     if mode == "replace":
         check_writable(dest.parent)
     return Path(path)
 
 
 @contextlib.contextmanager
-def atomic_directory(path, *, option="--out", legacy=None, last=()):
+def atomic_directory(path, *, parameter: str = "out", legacy=None, last=()):
     """Yield a staging directory whose files replace ``path``'s own files on success.
 
     ``path`` must be missing, empty or owned (see :func:`claim_directory`); files in it
     that this tool did not write are never touched."""
-    claim = claim_directory(path, option=option, legacy=legacy, last=last)
+    claim = claim_directory(path, parameter=parameter, legacy=legacy, last=last)
     with transaction() as tx:
         yield tx.directory(claim)
 

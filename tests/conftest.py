@@ -115,6 +115,6 @@ def mp_airy_R(n0, n1, n2, d, wavelength, theta_deg, dps=40):
         beta = 2 * mp.pi * n1 * mp.mpf(d) * c1 / mp.mpf(wavelength)
         z = mp.exp(2j * beta)
         total = mp.mpf(0)
-        for a, b in zip(fresnel(n0, c0, n1, c1), fresnel(n1, c1, n2, c2)):
+        for a, b in zip(fresnel(n0, c0, n1, c1), fresnel(n1, c1, n2, c2), strict=True):
             total += abs((a + b * z) / (1 + a * b * z)) ** 2
         return float(total / 2)

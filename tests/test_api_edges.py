@@ -62,6 +62,22 @@ def test_bad_parameters_raise_value_error_naming_them(call, name):
         call()
 
 
+@pytest.mark.parametrize("call, name", [
+    (lambda: spectra.optical_thickness(300.0, "1.33"), "n"),
+    (lambda: spectra.optical_thickness("300", 1.33), "thickness"),
+    (lambda: spectra.two_beam_reflectance(100.0, ["500"]), "wavelengths"),
+    (lambda: spectra.two_beam_reflectance(None, [500.0]), "optical_thickness"),
+    (lambda: sampling.wavelength_grid(step="5"), "step"),
+    (lambda: sampling.wavelength_grid(start=None), "start"),
+    (lambda: colorimetry.film_XYZ([100.0], step="5"), "step"),
+    (lambda: colorimetry.spectral_locus_XYZ(Y="1"), "Y"),
+])
+def test_numbers_of_the_wrong_type_raise_type_error_naming_them(call, name):
+    """A string is refused, not parsed (``n='1.33'`` used to return numbers)."""
+    with pytest.raises(TypeError, match=rf"^{name} must be a number"):
+        call()
+
+
 @pytest.mark.parametrize("layers", ["3", "many", b"3", None, [3]])
 def test_counts_of_the_wrong_type_raise_type_error_naming_them(layers):
     # a string is refused, not parsed: layers='3' used to return numbers

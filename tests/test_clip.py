@@ -126,8 +126,8 @@ def test_in_gamut_unchanged_bit_for_bit(dtype):
     rng = np.random.default_rng(3)
     rgb = rng.uniform(0.0, 1.0, (5000, 3)).astype(dtype)
     faces = rng.uniform(0.0, 1.0, (600, 3)).astype(dtype)
-    faces[:100, 0] = 0; faces[100:200, 1] = 1; faces[200:300, 2] = 0   # faces
-    faces[300:400, :2] = 1; faces[400:500, 1:] = 0                     # edges
+    faces[:100, 0] = 0; faces[100:200, 1] = 1; faces[200:300, 2] = 0   # faces  # noqa: E702
+    faces[300:400, :2] = 1; faces[400:500, 1:] = 0                     # edges  # noqa: E702
     faces[500:, :] = rng.integers(0, 2, (100, 3))                      # vertices
     rgb = np.concatenate([rgb, faces])
     out = clip.clip_RGB(rgb)

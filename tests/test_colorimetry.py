@@ -82,7 +82,8 @@ def test_other_observers_and_illuminants(colour, observer, illuminant):
                                illuminant=illuminant)
     np.testing.assert_allclose(got, colour_XYZ(colour, R, wl, observer, illuminant), atol=2e-4)
     # ... and it really is different from the default.
-    assert np.abs(got - colorimetry.film_XYZ(420.0, wavelengths=wl, band_limited=False)).max() > 1e-3
+    point = colorimetry.film_XYZ(420.0, wavelengths=wl, band_limited=False)
+    assert np.abs(got - point).max() > 1e-3
 
 
 @pytest.mark.parametrize("call,name", [

@@ -14,8 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation.colours import object_colours, spectral_mixtures
 from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_mixtures
 from ocio_thinfilm.lut import clip_lut, compress_lut
 
 ocio = pytest.importorskip("PyOpenColorIO")

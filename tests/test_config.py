@@ -14,7 +14,7 @@ import pytest
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours
+from evaluation.colours import object_colours
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 ROOT = Path(__file__).resolve().parents[1]

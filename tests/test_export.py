@@ -243,7 +243,7 @@ def test_clip_files_take_display_linear_rgb(clip_files, name, consumer):
 
 
 def test_spi3d_refused_for_clip_off_unit_domain(tmp_path):
-    with pytest.raises(export.UsageError, match="no input domain.*use clf, cube, csp"):
+    with pytest.raises(ValueError, match="no input domain.*use clf, cube, csp"):
         export.export_lut("clip", tmp_path / "c.spi3d", display="sRGB")
     # over exactly 0..1 the format is exact and allowed
     path = export.export_lut("clip", tmp_path / "c.spi3d", display="sRGB", size=5,
@@ -317,6 +317,89 @@ def test_bad_arguments_one_line_exit_2_nothing_written(argv, tmp_path, capsys, m
     assert code == 2
     assert len(err.splitlines()) == 1 and "error" in err, err
     assert list(tmp_path.rglob("*")) == []
+
+
+# The library names its Python parameters; the command line names its options for them.
+NAMED = [
+    (dict(table="film", index=0.5), "index", "--index"),
+    (dict(table="morpho", index=1.3), "index", "--index"),
+    (dict(table="film", size=1), "size", "--size"),
+    (dict(table="film", value_range=(-1.0, 2.0)), "value_range", "--range"),
+    (dict(table="film", value_range=(2.0, 1.0)), "value_range", "--range"),
+    (dict(table="clip"), "display", "--display"),
+    (dict(table="film", out="film.lut"), "fmt", "--format"),
+]
+
+
+def _argv(kwargs):
+    argv = ["export", kwargs["table"]]
+    for key, option in (("index", "--index"), ("size", "--size"), ("display", "--display")):
+        if key in kwargs:
+            argv += [option, str(kwargs[key])]
+    if "value_range" in kwargs:
+        argv += ["--range", *map(str, kwargs["value_range"])]
+    return argv + ["--out", kwargs.get("out", "x.clf")]
+
+
+@pytest.mark.parametrize("kwargs, parameter, option", NAMED,
+                         ids=[f"{k['table']}-{p}" for k, p, _ in NAMED])
+def test_library_errors_name_the_parameter_and_the_cli_its_option(kwargs, parameter, option,
+                                                                tmp_path, capsys,
+                                                                monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    call = dict(kwargs)
+    with pytest.raises(ValueError) as raised:
+        export.export_lut(call.pop("table"), call.pop("out", "x.clf"), **call)
+    message = str(raised.value)
+    assert message.startswith(parameter) and "--" not in message, message
+    assert cli.main(_argv(kwargs) + ["--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith(f"ocio-thinfilm export: error: {option}"), err
+    assert parameter == option.lstrip("-") or parameter not in err, err
+    assert err.endswith(message[len(parameter):]), (err, message)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
+    """``bake(out, luts=..., clip_size=...)`` names its parameters; ``ocio-thinfilm bake``
+    names --out, --luts and --clip-size for the same mistakes."""
+    from ocio_thinfilm.export import bake as bake_module
+
+    foreign = tmp_path / "foreign"
+    foreign.mkdir()
+    (foreign / "notes.txt").write_text("not ours")
+    cases = [
+        (dict(out=tmp_path / "a", clip_size=1), ["--out", str(tmp_path / "a"), "--clip-size", "1"],
+         "clip_size must be an integer in [9, 129], got 1", "--clip-size"),
+        (dict(out=foreign), ["--out", str(foreign)], "out ", "--out"),
+        (dict(out=tmp_path / "b", luts=tmp_path / "b"),
+         ["--out", str(tmp_path / "b"), "--luts", str(tmp_path / "b")], "luts ", "--luts"),
+    ]
+    for kwargs, argv, start, option in cases:
+        with pytest.raises(ValueError) as raised:
+            bake_module.bake(kwargs.pop("out"), **kwargs)
+        message = str(raised.value)
+        assert message.startswith(start) and "--" not in message, message
+        assert cli.main(["bake", *argv, "--quiet"]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err == f"ocio-thinfilm bake: error: {option}{raised.value.detail}", err
+    with pytest.raises(TypeError, match="clip_size"):
+        bake_module.bake(tmp_path / "c", clip_size="65")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["foreign"]
+    assert [p.name for p in foreign.iterdir()] == ["notes.txt"]
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(size="64"), "size must be an integer, got '64'"),
+    (dict(size=64.0), "size must be an integer, got 64.0"),
+    (dict(index="1.33"), "index must be a number, got '1.33'"),
+    (dict(value_range="0 1"), r"value_range must be two numbers \(lo, hi\), got '0 1'"),
+    (dict(value_range=(0, "1")), "value_range must be a number, got '1'"),
+])
+def test_arguments_of_the_wrong_type_are_type_errors_naming_them(kwargs, message, tmp_path):
+    with pytest.raises(TypeError, match=f"^{message}"):
+        export.export_lut("film", tmp_path / "t.clf", **kwargs)
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_unwritable_output_directory(tmp_path, capsys):

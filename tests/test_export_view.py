@@ -30,9 +30,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation.colours import object_colours
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.evaluation.colours import object_colours
 from ocio_thinfilm.export import view as export_view
 
 CLC = "Constant-Lightness Clip"
@@ -394,29 +394,66 @@ def test_ctf_holds_the_exact_constant_lightness_chain(tmp_path, inside_AP1):
 # --------------------------------------------------------------------------- #
 # Errors
 # --------------------------------------------------------------------------- #
-BAD_VIEW = [
-    ["export", "view", "--display", "sRGB", "--view", CLC],
-    ["export", "view", "--from", "Nope", "--display", "sRGB", "--view", CLC],
-    ["export", "view", "--from", "ACEScct", "--view", CLC],
-    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", "Nope"],
-    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
-     "--format", "spi1d"],
-    ["export", "view", "--from", "Thin Film Morpho Iridescence", "--display", "sRGB",
-     "--view", CLC, "--format", "csp"],
-    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
-     "--size", "1000"],
-    ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
-     "--range", "0", "2"],
+BAD_VIEW = [  # (argv, what the one-line error says)
+    (["export", "view", "--display", "sRGB", "--view", CLC], "--from is needed"),
+    (["export", "view", "--from", "Nope", "--display", "sRGB", "--view", CLC],
+     "unknown colour space 'Nope'"),
+    (["export", "view", "--from", "ACEScct", "--view", CLC], "--display is needed"),
+    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", "Nope"],
+     "unknown view 'Nope'"),
+    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
+      "--format", "spi1d"], "needs a 3D LUT"),
+    (["export", "view", "--from", "Thin Film Morpho Iridescence", "--display", "sRGB",
+      "--view", CLC, "--format", "csp"], "a 1D LUT"),
+    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
+      "--size", "1000"], "--size must be in [2, "),
+    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
+      "--range", "0", "2"], "--range applies to the thin-film inputs only"),
+    (["export", "view", "--from", "Thin Film Morpho Iridescence", "--display", "sRGB",
+      "--view", CLC, "--resolve-shaper"], "--resolve-shaper applies to 3D LUTs"),
 ]
 
 
-@pytest.mark.parametrize("argv", BAD_VIEW, ids=lambda a: " ".join(a[2:]))
-def test_bad_view_arguments(argv, tmp_path, capsys):
+@pytest.mark.parametrize("argv, says", BAD_VIEW, ids=lambda a: " ".join(a[2:])
+                         if isinstance(a, list) else "")
+def test_bad_view_arguments(argv, says, tmp_path, capsys):
     out = tmp_path / "out" / ("x" if "--format" in argv else "x.cube")
     assert cli.main(argv + ["--out", str(out), "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "error" in err, err
+    assert len(err.splitlines()) == 1 and err.startswith("ocio-thinfilm export: error: "), err
+    assert says in err, err
     assert list(tmp_path.rglob("*")) == []
+
+
+@pytest.mark.parametrize("kwargs, parameter", [
+    (dict(source=None), "source is needed"),
+    (dict(display=None), "display is needed"),
+    (dict(view=None), "view is needed"),
+    (dict(size=1000), "size must be in [2, "),
+    (dict(value_range=(0.0, 2.0)), "value_range applies to the thin-film inputs only"),
+    (dict(fmt="spi3d", shaper=True), "shaper applies to .cube files"),
+    (dict(out="v.lut"), "fmt is needed: no format can be told from 'v.lut'"),
+])
+def test_the_library_names_its_parameters(kwargs, parameter, tmp_path, monkeypatch):
+    """Reference: the parameter names of export_view's signature."""
+    monkeypatch.chdir(tmp_path)
+    call = dict(source="ACEScct", display="sRGB", view=CLC, out="v.cube") | kwargs
+    with pytest.raises(ValueError) as raised:
+        export_view.export_view(call.pop("source"), call.pop("display"), call.pop("view"),
+                                call.pop("out"), **call)
+    assert str(raised.value).startswith(parameter) and "--" not in str(raised.value)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("kwargs", [dict(size="9"), dict(size=9.0),
+                                    dict(source="Thin Film Phase-Change Thickness",
+                                         value_range=("0", "1"))])
+def test_arguments_of_the_wrong_type_are_type_errors(kwargs, tmp_path):
+    call = dict(source="ACEScct", display="sRGB", view=CLC) | kwargs
+    with pytest.raises(TypeError, match=f"^{'size' if 'size' in kwargs else 'value_range'} "):
+        export_view.export_view(call.pop("source"), call.pop("display"), call.pop("view"),
+                                tmp_path / "v.cube", **call)
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_cli_export_view_writes_file(tmp_path, capsys):

@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_mixtures
+from evaluation.colours import object_colours, spectral_mixtures
 
 ocio = pytest.importorskip("PyOpenColorIO")
 

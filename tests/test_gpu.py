@@ -1,7 +1,7 @@
 """OpenColorIO's GLSL for every view of the baked config against the CPU path.
 
 The shader OCIO generates for each (input space, display, view) is run on Mesa's
-software renderer (headless EGL through moderngl, :mod:`ocio_thinfilm.evaluation.gpu`), with
+software renderer (headless EGL through moderngl, :mod:`evaluation.gpu`), with
 the LUT textures uploaded as float32 (``f4``) and as half float (``f2``, what
 Blender's viewport uploads: ``RGB16F``, 11 significant bits).  Requirements:
 
@@ -49,7 +49,8 @@ SOURCES = [
 THIN_FILM = {s for s in SOURCES if s.startswith("Thin Film")}
 DTYPES = ("f4", "f2")
 F32_MAX = float(np.finfo(np.float32).max)
-PRECISE = ocio.OptimizationFlags(int(ocio.OPTIMIZATION_DEFAULT) & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW))
+PRECISE = ocio.OptimizationFlags(int(ocio.OPTIMIZATION_DEFAULT)
+                                 & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW))
 
 
 
@@ -60,7 +61,7 @@ def gl():
         import moderngl  # noqa: F401
     except ImportError as exc:
         pytest.skip(f"moderngl is not installed ({exc}): pip install moderngl")
-    from ocio_thinfilm.evaluation import gpu
+    from evaluation import gpu
 
     try:
         ctx = gpu.gl_context()
@@ -75,7 +76,7 @@ def gl():
 # ---------------------------------------------------------------------------------------------
 
 def _run(gl, transform, x, dtype="f4"):
-    from ocio_thinfilm.evaluation import gpu
+    from evaluation import gpu
 
     proc = ocio.Config.CreateRaw().getProcessor(transform)
     prog = gpu.GpuProgram(proc, ctx=gl)
@@ -165,7 +166,8 @@ def test_harness_lut1d(gl, dtype, size, mono):
     x = np.random.default_rng(3).uniform(0, 1, (3000, 3)).astype(np.float32)
     prog, y = _run(gl, t, x, dtype)
     (tex,) = list(prog.shader_desc.getTextures())
-    channel = ocio.GpuShaderDesc.TEXTURE_RED_CHANNEL if mono else ocio.GpuShaderDesc.TEXTURE_RGB_CHANNEL
+    desc = ocio.GpuShaderDesc
+    channel = desc.TEXTURE_RED_CHANNEL if mono else desc.TEXTURE_RGB_CHANNEL
     assert tex.channel == channel
     assert (tex.height > 1) == (size > prog.shader_desc.getTextureMaxWidth())
     stored = vals.astype(np.float32)
@@ -316,7 +318,7 @@ class Results:
     def get(self, display, view, src):
         key = (display, view, src)
         if key not in self.cache:
-            from ocio_thinfilm.evaluation import gpu
+            from evaluation import gpu
 
             t0 = time.perf_counter()
             if src not in self.inputs:
@@ -416,7 +418,7 @@ def test_gpu_nonfinite_inputs(gl, config, display, view):
     (black for an all-NaN pixel), +Inf as 1e6 (white through the clip when Y
     is large); the Thin Film spaces give their table's first entry (black) for NaN.
     """
-    from ocio_thinfilm.evaluation import gpu
+    from evaluation import gpu
 
     for src in SOURCES:
         proc = config.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)

@@ -19,7 +19,7 @@ from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.config import merge
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+from evaluation.colours import object_colours, spectral_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -341,6 +341,22 @@ def test_into_refuses_config_without_interchange_or_display(tmp_path, capsys):
     assert not any((tmp_path / d).exists() for d in "abc")
 
 
+def test_a_missing_base_is_named_source_by_the_library_and_into_by_the_cli(tmp_path,
+                                                                           capsys):
+    missing = tmp_path / "no" / "such.ocio"
+    with pytest.raises(ValueError, match=r"^source .*such\.ocio: no such config file"):
+        merge.bake_into(missing, tmp_path / "a")
+    assert main(["bake", "--into", str(missing), "--out", str(tmp_path / "a"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"ocio-thinfilm bake: error: --into {missing}: no such config file " \
+                  "(or ocio:// URI)", err
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    with pytest.raises(ValueError, match=r"^out .*file: not a directory"):
+        merge.bake_into(BASE21, blocker)
+    assert blocker.read_text() == "x" and not (tmp_path / "a").exists()
+
+
 def test_bake_into_says_which_ocio_reads_the_result(merged, tmp_path):
     """``bake --into`` prints the merged config's profile and the oldest OCIO that reads
     it; OpenImageIO 3.2's oiiotool (OCIO 2.5) refuses the config exactly when the line
@@ -374,7 +390,7 @@ def test_docs_table_of_builtin_configs_matches_ocio():
     studio = [item[0] for item in ocio.BuiltinConfigRegistry().getBuiltinConfigs()
               if item[0].startswith("studio-config-")]
     assert len(rows) == len(studio)
-    for row, name in zip(rows, sorted(studio)):
+    for row, name in zip(rows, sorted(studio), strict=True):
         cells = [c.strip() for c in row.strip("|").split("|")]
         assert cells[0].startswith(f"`{name}`")
         cfg = ocio.Config.CreateFromFile("ocio://" + name)

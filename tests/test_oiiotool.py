@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm import registry
+from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.io import read_image, write_image
 
 ROOT = Path(__file__).resolve().parents[1]

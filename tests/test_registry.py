@@ -105,7 +105,8 @@ def test_adding_a_display_is_one_entry(tmp_path):
         "cfg = config.generate_config(data)\n"
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
         "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
-        "    render.PNG_COLORSPACE['Rec.709'], display_transforms.DISPLAY_ENCODINGS['Rec.709'][0]]))\n")
+        "    render.PNG_COLORSPACE['Rec.709'],\n"
+        "    display_transforms.DISPLAY_ENCODINGS['Rec.709'][0]]))\n")
     env = dict(os.environ, PYTHONPATH=str(tmp_path))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env=env, cwd=tmp_path, check=True)

@@ -209,7 +209,7 @@ def test_spectrum_shows_four_views_side_by_side(tmp_path):
     # The same XYZ in each panel, different display colours: the views differ.
     panels = [rgb[60:300, x0:x1] for x0, x1, _ in picture.regions]
     w = min(t.shape[1] for t in panels)
-    for a, b in zip(panels, panels[1:]):
+    for a, b in zip(panels[:-1], panels[1:], strict=True):
         assert not np.allclose(a[:, :w], b[:, :w], atol=0.02)
 
 
@@ -387,8 +387,10 @@ def test_missing_default_config_is_baked_first(tmp_path, monkeypatch):
 
 
 @pytest.mark.parametrize("argv, message", [
-    (["--config", "no/such/config.ocio"], "no such config file"),
-    (["--view", "Channel Clamp", "--config", "{removed}"], "Channel Clamp"),
+    (["--config", "no/such/config.ocio"], "--config no/such/config.ocio: no such config file"),
+    (["--view", "Channel Clamp", "--config", "{removed}"],
+     "--view 'Channel Clamp': the config's display sRGB has Raw"),
+    (["--display", "CRT", "--config", "{removed}"], "--display 'CRT': the config has sRGB"),
 ])
 def test_config_errors_are_one_line_exit_2(capsys, tmp_path, argv, message):
     import PyOpenColorIO as ocio
@@ -403,6 +405,18 @@ def test_config_errors_are_one_line_exit_2(capsys, tmp_path, argv, message):
     code, _, err = _cli(capsys, "oil", "--size", "16", "--out", str(tmp_path / "out"), *argv)
     assert code == 2 and message in err and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "out" / "oil.png").exists()
+
+
+def test_the_library_names_config_display_and_view(tmp_path):
+    """The same mistakes through the library name its parameters, not the options."""
+    with pytest.raises(ValueError, match=r"^config no/such\.ocio: no such config file$"):
+        processors.ConfigProcessors("no/such.ocio")
+    config = _modified_config(tmp_path / "cfg")
+    procs = processors.ConfigProcessors(config)
+    with pytest.raises(ValueError, match=r"^display 'CRT': the config has "):
+        procs.check_display_view("CRT", "Raw")
+    with pytest.raises(ValueError, match=r"^view 'Nope': the config's display sRGB has "):
+        procs.check_display_view("sRGB", "Nope")
 
 
 # --------------------------------------------------------------------------- #

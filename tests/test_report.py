@@ -12,7 +12,7 @@ import pytest
 
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation import report
+from evaluation import report
 
 SECTIONS = [
     "## Machine",
@@ -83,7 +83,7 @@ def test_quick_report_stability_rows_are_backed_by_tests(quick_report):
 def test_quick_report_headline_is_built_from_its_json_facts(quick_report):
     """The headline is the formatting of ``report.json["headline"]`` (facts stored by
     each section under explicit ids), nothing else."""
-    from ocio_thinfilm.evaluation.report.headline import LINES, headline_lines
+    from evaluation.report.headline import LINES, headline_lines
 
     r = json.loads((quick_report / "report.json").read_text())
     md = (quick_report / "report.md").read_text(encoding="utf-8")
@@ -155,3 +155,15 @@ def test_readme_headline_is_the_committed_reports():
     quoted = readme.split("<!-- report:headline:begin -->\n", 1)[1].split(
         "\n<!-- report:headline:end -->", 1)[0].split("\n")
     assert quoted == [line for line in headline if not line.startswith("- Machine:")]
+
+
+def test_report_outside_a_checkout_says_in_one_line_what_to_run(tmp_path, monkeypatch, capsys):
+    """Installed from a wheel, the package has no ``evaluation/`` beside it: the command
+    prints one line saying where the report runs, exit 2 (no ImportError traceback)."""
+    from ocio_thinfilm.cli import report as report_cli
+
+    monkeypatch.setattr(report_cli, "CHECKOUT", tmp_path)
+    assert main(["report", "--quick", "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "checkout" in err[0] and ".[report]" in err[0], err
+    assert not (tmp_path / "out").exists()

@@ -361,7 +361,8 @@ BAD_CALLS = [
 ]
 
 
-@pytest.mark.parametrize("name,call", BAD_CALLS, ids=[f"{i}-{c[0]}" for i, c in enumerate(BAD_CALLS)])
+@pytest.mark.parametrize("name,call", BAD_CALLS,
+                         ids=[f"{i}-{c[0]}" for i, c in enumerate(BAD_CALLS)])
 def test_bad_input_raises_value_error_naming_the_parameter(name, call):
     """Reference: the issue's contract -- ValueError whose message names the parameter."""
     with pytest.raises(ValueError) as info:

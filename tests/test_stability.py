@@ -1,6 +1,6 @@
 """Stability on stiff and extreme cases: one test per row of the report's table
-(``ocio_thinfilm.evaluation.report.stability_rows``; the row names its test). The rows
-are defined once, in ``ocio_thinfilm.evaluation.stability`` (the physics and OCIO rows
+(``evaluation.report.stability_rows``; the row names its test). The rows
+are defined once, in ``evaluation.stability`` (the physics and OCIO rows
 as ``Row``, the clip's extreme XYZ inputs as ``Case``): the report lists them,
 ``test_stability_row`` and ``test_xyz_stability_case`` run each one, and the
 ``..._checks_can_fail`` tests show that each check rejects a wrong value. A row whose
@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation import stability
+from evaluation import stability
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 
@@ -90,7 +90,8 @@ def test_grazing_matches_colour_tmm():
     """The row compares the exact film with colour's TMM at 89.9°; the optical
     thickness there is the Eq. 10 form t sqrt(n^2 - sin^2 theta)."""
     t = spectra.optical_thickness(300.0, 1.33, 89.9)
-    assert np.isfinite(t) and abs(t - 300.0 * np.sqrt(1.33 ** 2 - np.sin(np.radians(89.9)) ** 2)) < 1e-9
+    expected = 300.0 * np.sqrt(1.33 ** 2 - np.sin(np.radians(89.9)) ** 2)
+    assert np.isfinite(t) and abs(t - expected) < 1e-9
 
 
 @pytest.mark.parametrize("theta", [45.0, 60.0, 89.9])
@@ -166,7 +167,7 @@ def test_xyz_above_white_gives_white():
 
 def _limit_along(direction, Y):
     """The clip's limit for a huge component along ``direction``: the geometry of the
-    unit RGB cube (:func:`ocio_thinfilm.evaluation.stability.limit_along`)."""
+    unit RGB cube (:func:`evaluation.stability.limit_along`)."""
     return stability.limit_along(M, W, np.asarray(direction, float), Y)
 
 
@@ -269,7 +270,7 @@ def test_xyz_stability_case_checks_can_fail():
 ROWS = stability.physics_rows() + stability.ocio_clip_rows()
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _measured(index):
     """``ROWS[index].measure()``, once per session (the check-can-fail test reuses it)."""
     with warnings.catch_warnings():

@@ -8,7 +8,7 @@ import pytest
 
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.colours import object_colours, spectral_colours
+from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.lut import clip_lut, ocio_ops, tables, view_transforms
 
 DISPLAYS = clip.DISPLAYS

@@ -27,6 +27,7 @@ from __future__ import annotations
 import os
 import signal
 import sys
+import warnings
 
 from ocio_thinfilm import __version__
 
@@ -145,6 +146,27 @@ def build_parser():
     return parser
 
 
+#: Library parameters whose option has another name (``dest`` of the argparse action),
+#: for every command (key None) and for one command.
+PARAMETER_DEST = {None: {"value_range": "range", "fmt": "format", "out_dir": "out",
+                         "shaper": "resolve_shaper"},
+                  "bake": {"source": "into"}}
+
+
+def _option_message(parser, command, error) -> str:
+    """A :class:`~ocio_thinfilm.io.ParameterError`'s message naming ``command``'s option
+    for the parameter (``value_range`` -> ``--range``); the parameter's own name when the
+    command has no such option."""
+    sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
+    dest = PARAMETER_DEST.get(command, {}).get(error.parameter) \
+        or PARAMETER_DEST[None].get(error.parameter, error.parameter)
+    for action in sub._actions if sub is not None else ():
+        if action.dest == dest:
+            longest = max(action.option_strings, key=len, default=None)
+            return error.for_option(longest or str(action.metavar or dest))
+    return str(error)
+
+
 def _error(command, message) -> None:
     where = PROG if command is None else f"{PROG} {command}"
     text = " ".join(str(message).split())  # one line, whatever the message held
@@ -155,6 +177,10 @@ def main(argv=None) -> int:
     """Run ``ocio-thinfilm`` with ``argv`` (default: the process's arguments); returns
     the exit code: 0, 1 for an unexpected failure, 2 for bad input, 128 + n for signal n."""
     as_program = argv is None
+    if as_program:
+        # colour-science warns on import that SciPy is absent; nothing the command calls
+        # needs it (tests/test_dependencies.py), so the program's stderr stays clean
+        warnings.filterwarnings("ignore", message='"SciPy" related API features')
     _state.update(interrupted=None, late=None, command=None)
     previous = _install_handlers()
     code = 1
@@ -184,7 +210,7 @@ def _set(name):
 
 
 def _main(argv, set_command) -> int:
-    from ocio_thinfilm.io import UsageError
+    from ocio_thinfilm.io import ParameterError, UsageError
 
     parser = build_parser()
     try:
@@ -204,6 +230,9 @@ def _main(argv, set_command) -> int:
         return 2
     try:
         return int(args.func(args) or 0)
+    except ParameterError as error:
+        _error(command, _option_message(parser, command, error))
+        return 2
     except (UsageError, ValueError) as error:
         _error(command, error)
         return 2

@@ -171,8 +171,9 @@ def register(sub) -> None:
                         "spectrum scene shows the first three side by side")
     p.add_argument("--config", default=None,
                    help="OCIO config whose thin-film input spaces and display views the "
-                        "render applies: the package's (default: configs/thinfilm/"
-                        "config.ocio, baked first when missing) or one made by bake --into")
+                        "render applies: the package's (default: a checkout's configs/"
+                        "thinfilm/config.ocio, baked first when missing; installed, the "
+                        "wheel's copy) or one made by bake --into")
     p.add_argument("--frames", type=frames_argument, default=None,
                    help="A-B: render frames A..B as NAME.####.exr/png with the scene's "
                         "animation, one process per frame")

@@ -1,13 +1,44 @@
-"""``ocio-thinfilm report``: measure everything on this machine, write reports/report.md."""
+"""``ocio-thinfilm report``: measure everything on this machine, write reports/report.md.
+
+The report's code is not part of the installed package: it lives in the repository's
+``evaluation/`` folder beside ``benchmarks/`` (with matplotlib and mpmath, the
+``report`` extra), so the command runs from a checkout and says so in one line
+elsewhere.
+"""
 
 from __future__ import annotations
 
+import importlib.util
+import sys
+from pathlib import Path
+
 __all__ = ["register"]
+
+#: The checkout this module is in, if it is in one (evaluation/ beside ocio_thinfilm/).
+CHECKOUT = Path(__file__).resolve().parents[2]
+
+
+def _run_report():
+    """``evaluation.report.run_report`` from the checkout, or a one-line UsageError."""
+    from ocio_thinfilm.io import UsageError
+
+    if not (CHECKOUT / "evaluation" / "report" / "__init__.py").is_file():
+        raise UsageError("the report is not installed with the package; run it from a "
+                         "checkout of the repository: pip install -e '.[report]' && "
+                         "ocio-thinfilm report")
+    missing = [m for m in ("matplotlib", "mpmath") if importlib.util.find_spec(m) is None]
+    if missing:
+        raise UsageError(f"the report needs {' and '.join(missing)}: "
+                         "pip install -e '.[report]' in the checkout")
+    if str(CHECKOUT) not in sys.path:
+        sys.path.insert(0, str(CHECKOUT))
+    from evaluation.report import run_report
+
+    return run_report
 
 
 def _run(args) -> int:
-    from ocio_thinfilm.evaluation.report import run_report
-
+    run_report = _run_report()
     print(run_report(args.out, quick=args.quick, progress=not args.no_progress))
     return 0
 
@@ -15,8 +46,10 @@ def _run(args) -> int:
 def register(subparsers) -> None:
     """Add the ``report`` command to the parsers."""
     p = subparsers.add_parser(
-        "report", help="measure error against run time, peers, stability and throughput",
-        description="Measure everything on this machine and write <out>/report.md with PNG plots.")
+        "report", help="measure error against run time, peers, stability and throughput "
+                       "(from a checkout)",
+        description="Measure everything on this machine and write <out>/report.md with PNG "
+                    "plots. Runs from a checkout of the repository (its evaluation/ folder).")
     p.add_argument("--out", default="reports", help="output directory (default: reports)")
     p.add_argument("--quick", action="store_true",
                    help="smaller sweeps (about 30 s): keeps the report working in the test suite")

@@ -691,6 +691,8 @@ def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
     >>> [round(float(X / (X + Y + Z)), 4), round(float(Y / (X + Y + Z)), 4)]
     [0.0743, 0.8338]
     """
+    if isinstance(Y, (str, bytes)):  # a string is not parsed
+        raise TypeError(f"Y must be a number, got {Y!r}")
     try:
         Y = float(Y)
     except (TypeError, ValueError):

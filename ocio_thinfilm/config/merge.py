@@ -47,7 +47,7 @@ import numpy as np
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import UsageError, atomic_directory, atomic_file, check_writable
+from ocio_thinfilm.io import ParameterError, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["load_base", "interchange", "colorspace_transform", "match_displays", "merge_config",
@@ -95,11 +95,11 @@ def load_base(source):
     ocio = ocio_ops.module()
     text = str(source)
     if not text.startswith("ocio://") and not Path(text).is_file():
-        raise UsageError(f"--into {text}: no such config file (or ocio:// URI)")
+        raise ParameterError("source", f" {text}: no such config file (or ocio:// URI)")
     try:
         return ocio.Config.CreateFromFile(text)
     except ocio.Exception as error:
-        raise UsageError(f"--into {text}: {str(error).splitlines()[0]}") from None
+        raise ParameterError("source", f" {text}: {str(error).splitlines()[0]}") from None
 
 
 def colorspace_transform(cs, to_reference):
@@ -139,24 +139,25 @@ def interchange(cfg):
     name = roles.get("cie_xyz_d65_interchange")
     cs = cfg.getColorSpace(name) if name else None
     if cs is None:
-        raise UsageError("the config has no cie_xyz_d65_interchange role (needed to place "
+        raise ValueError("the config has no cie_xyz_d65_interchange role (needed to place "
                          "CIE-XYZ-D65 in it)")
     if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY:
         vt_name = cfg.getDefaultViewTransformName() or (
             next(iter(cfg.getViewTransformNames()), None))
         vt = cfg.getViewTransform(vt_name) if vt_name else None
         if vt is None or vt.getReferenceSpaceType() != ocio.REFERENCE_SPACE_SCENE:
-            raise UsageError(f"the cie_xyz_d65_interchange space {name!r} is "
+            raise ValueError(f"the cie_xyz_d65_interchange space {name!r} is "
                              "display-referred and the config has no scene-referred "
                              "default view transform to reach it")
-        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt), colorspace_transform(cs, to_reference=False)])
+        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt),
+                                       colorspace_transform(cs, to_reference=False)])
         xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True)])
     else:
         scene_to_xyz = ocio_ops.group([colorspace_transform(cs, to_reference=False)])
         vt_name = cfg.getDefaultViewTransformName() or (
             next(iter(cfg.getViewTransformNames()), None))
         if not vt_name:
-            raise UsageError("the config has no view transform: no display reference")
+            raise ValueError("the config has no view transform: no display reference")
         xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True),
                                          _vt_from_scene(cfg.getViewTransform(vt_name))])
     # it must be a colorimetric (linear) conversion, not a tone scale
@@ -165,7 +166,7 @@ def interchange(cfg):
     for t in (scene_to_xyz, xyz_to_display):
         fa, fb, fab = (_apply(cfg, t, v) for v in (a, b, 0.5 * a + 0.25 * b))
         if not np.allclose(fab, 0.5 * fa + 0.25 * fb, atol=1e-5):
-            raise UsageError(f"the config's conversion to cie_xyz_d65_interchange ({name!r}) "
+            raise ValueError(f"the config's conversion to cie_xyz_d65_interchange ({name!r}) "
                              "is not linear: cannot place CIE-XYZ-D65 in it")
     return scene_to_xyz, xyz_to_display
 
@@ -239,12 +240,12 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
-        raise UsageError(f"the config's profile version {version[0]}.{version[1]} is below "
+        raise ValueError(f"the config's profile version {version[0]}.{version[1]} is below "
                          f"{MIN_PROFILE[0]}.{MIN_PROFILE[1]} (needed by the clip's LUT ops)")
     scene_to_xyz, xyz_to_display = interchange(base)
     matches = match_displays(base)
     if not matches:
-        raise UsageError("the config has no SDR display with the primaries and white of "
+        raise ValueError("the config has no SDR display with the primaries and white of "
                          f"{', '.join(clip.DISPLAYS)} (or Rec.709)")
     gamuts = [d for d in clip.DISPLAYS if d in {g for _, g in matches.values()}]
     data = config.config_data(clip_size=clip_size)
@@ -260,7 +261,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     spaces = [s for s in data.colorspaces if s["name"] in registry.THIN_FILM_SPACES]
     for spec in spaces:
         if _taken(spec["name"]):
-            raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
+            raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
         spec = dict(spec, to_reference=ocio_ops.group([spec["to_reference"],
                                                        ocio_ops.inverse([scene_to_xyz])]))
         cfg.addColorSpace(config.colorspace_factory(**spec))
@@ -272,7 +273,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
         for view in MERGED_VIEWS:
             spec = described[f"{view} - {gamut}"]
             if _taken(spec["name"]):
-                raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
+                raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
             parts = config.view_parts(gamut, view, lut=by_display[gamut], luts=data.luts,
                                       compress=soft_by_display[gamut])
             cfg.addViewTransform(config.view_transform_factory(
@@ -282,7 +283,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
         views = list(base.getViews(display))
         for view in MERGED_VIEWS:
             if view in views:
-                raise UsageError(f"display {display!r} already has a view {view!r}")
+                raise ValueError(f"display {display!r} already has a view {view!r}")
             if view == "Channel Clamp" and "Un-tone-mapped" in views:
                 continue  # the base's colorimetric view is that baseline already
             cfg.addDisplayView(display, view, f"{view} - {gamut}", cs_name, "", "", "")
@@ -296,7 +297,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
                                         compress_by_display={g: soft_by_display[g]
                                                              for g in gamuts}):
         if _taken(spec["name"]):
-            raise UsageError(f"the config already has {spec['name']!r} (merged before?)")
+            raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
         cfg.addNamedTransform(config.named_transform_factory(**spec))
     paths = list(cfg.getSearchPaths())
     if config.LUT_DIRECTORY not in paths:
@@ -358,7 +359,7 @@ def write_archive(config_path, out):
     ocio = ocio_ops.module()
     cfg = ocio.Config.CreateFromFile(str(config_path))
     if not cfg.isArchivable():
-        raise UsageError(f"{config_path}: not archivable (absolute or parent search paths "
+        raise ValueError(f"{config_path}: not archivable (absolute or parent search paths "
                          "or LUT paths)")
     with atomic_file(Path(out)) as tmp:
         cfg.archive(str(tmp))
@@ -374,7 +375,7 @@ def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
             path, _ = write_merged(source, tmp, clip_size=clip_size)
             return write_archive(path, out)
     if out.exists() and not out.is_dir():
-        raise UsageError(f"--out {out}: not a directory")
+        raise ParameterError("out", f" {out}: not a directory")
     with atomic_directory(out) as tmp:
         write_merged(source, tmp, clip_size=clip_size)
     return out / "config.ocio"

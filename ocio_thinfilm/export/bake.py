@@ -15,7 +15,7 @@ from pathlib import Path
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.export.files import FORMATS, export_set, progress_bar
-from ocio_thinfilm.io import UsageError, check_xml, claim_directory, transaction
+from ocio_thinfilm.io import ParameterError, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut
 
 __all__ = ["DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "CLIP_SIZES", "check_clip_size", "bake"]
@@ -27,12 +27,15 @@ CLIP_SIZES = (9, 129)
 
 
 def check_clip_size(clip_size) -> int:
-    """``clip_size`` as an int in :data:`CLIP_SIZES`, else a UsageError naming
-    ``--clip-size``."""
+    """``clip_size`` as an int in :data:`CLIP_SIZES`, else a TypeError or a
+    :class:`~ocio_thinfilm.io.ParameterError` naming it."""
     lo, hi = CLIP_SIZES
-    if isinstance(clip_size, bool) or not isinstance(clip_size, numbers.Integral) or \
-            not lo <= clip_size <= hi:
-        raise UsageError(f"--clip-size must be an integer in [{lo}, {hi}], got {clip_size!r}")
+    if isinstance(clip_size, bool) or not isinstance(clip_size, numbers.Integral):
+        raise TypeError(f"clip_size must be an integer in [{lo}, {hi}], got {clip_size!r} "
+                        f"({type(clip_size).__name__})")
+    if not lo <= clip_size <= hi:
+        raise ParameterError("clip_size", f" must be an integer in [{lo}, {hi}], "
+                                          f"got {clip_size!r}")
     return int(clip_size)
 
 
@@ -92,14 +95,14 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=
     loadable set of files.
     """
     clip_size = check_clip_size(clip_size)
-    claim = claim_directory(out, option="--out", legacy=_legacy_config, last=("config.ocio",))
+    claim = claim_directory(out, parameter="out", legacy=_legacy_config, last=("config.ocio",))
     luts_claim = None
     if luts is not None:
-        luts_claim = claim_directory(luts, option="--luts", legacy=_legacy_luts)
+        luts_claim = claim_directory(luts, parameter="luts", legacy=_legacy_luts)
         a, b = luts_claim.path.resolve(), claim.path.resolve()
         if a == b or a in b.parents or b in a.parents:
-            raise UsageError(f"--luts {luts}: must not be, contain or lie inside the --out "
-                             f"directory {out}")
+            raise ParameterError("luts", f" {luts}: must not be, contain or lie inside the "
+                                         f"output directory {out}")
     n_files = len(registry.THIN_FILM_LIST) + 2 * len(registry.DISPLAYS) + 1  # 2 clip LUTs each
     bar = progress_bar(show_progress, total=n_files, desc=f"bake {claim.path}")
     try:

@@ -34,6 +34,7 @@ Functions: :func:`lut_contents`, :func:`write_lut`, :func:`export_lut`, :func:`e
 from __future__ import annotations
 
 import math
+import numbers
 import sys
 from pathlib import Path
 
@@ -41,8 +42,9 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import UsageError, atomic_file, check_output_file
+from ocio_thinfilm.io import ParameterError, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops, tables
+from ocio_thinfilm.physics.sampling import as_pair, as_real
 
 __all__ = ["FORMATS", "TABLES", "DEFAULT_SIZE", "DEFAULT_RANGE", "lut_contents", "write_lut",
            "export_lut", "export_set", "EXPORT_SET_VIEWS", "progress_bar"]
@@ -68,44 +70,50 @@ DEFAULT_RANGE = {"film": (0.0, 1.5), "morpho": (0.0, 1.0), "clip": (-0.5, 1.5)}
 # --------------------------------------------------------------------------- #
 def _validate(table, kind, display, index, value_range, size, fmt):
     if table not in TABLES:
-        raise UsageError(f"unknown table {table!r}; choose from {', '.join(TABLES)}, view")
+        raise ValueError(f"unknown table {table!r}; choose from {', '.join(TABLES)}, view")
     if fmt not in FORMATS:
-        raise UsageError(f"unknown format {fmt!r}; choose from {', '.join(FORMATS)}")
+        raise ValueError(f"unknown format {fmt!r}; choose from {', '.join(FORMATS)}")
     dims = 3 if table == "clip" else 1
     if dims not in FORMATS[fmt][2]:
         allowed = [f for f, spec in FORMATS.items() if dims in spec[2]]
-        raise UsageError(f"format {fmt} cannot hold a {dims}D LUT; for {table} use "
+        raise ValueError(f"format {fmt} cannot hold a {dims}D LUT; for {table} use "
                          f"{', '.join(allowed)}")
     if display is not None and display not in clip.DISPLAYS:
-        raise UsageError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
+        raise ValueError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
     if table == "clip" and display is None:
-        raise UsageError("export clip needs --display")
+        raise ParameterError("display", " is required for the clip (the gamut to clip into)")
     if kind not in colorimetry.FILM_KINDS:
-        raise UsageError(f"unknown film kind {kind!r}; choose from "
+        raise ValueError(f"unknown film kind {kind!r}; choose from "
                          f"{', '.join(colorimetry.FILM_KINDS)}")
     if index is not None:
+        index = as_real("index", index)
         if table != "film":
-            raise UsageError("--index applies to film tables only")
+            raise ParameterError("index", " applies to film tables only")
         if not (math.isfinite(index) and 1.0 <= index <= 10.0):
-            raise UsageError(f"--index must be a refractive index in [1, 10], got {index:g}")
+            raise ParameterError("index", f" must be a refractive index in [1, 10], got {index:g}")
     size = DEFAULT_SIZE[table] if size is None else size
+    if isinstance(size, bool) or not isinstance(size, numbers.Integral):
+        raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
     if not 2 <= size <= MAX_SIZE[table]:
-        raise UsageError(f"--size must be in [2, {MAX_SIZE[table]}] for {table}, got {size}")
-    lo, hi = DEFAULT_RANGE[table] if value_range is None else value_range
+        raise ParameterError("size", f" must be in [2, {MAX_SIZE[table]}] for {table}, got {size}")
+    lo, hi = DEFAULT_RANGE[table] if value_range is None else as_pair("value_range", value_range)
     if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
-        raise UsageError(f"--range must be two finite numbers MIN < MAX, got {lo:g} {hi:g}")
+        raise ParameterError("value_range", f" must be two finite numbers MIN < MAX, "
+                                            f"got {lo:g} {hi:g}")
     if table == "film" and lo < 0:
-        raise UsageError(f"--range: thickness must not be negative, got {lo:g}")
+        raise ParameterError("value_range", f": thickness must not be negative, got {lo:g}")
     if table == "morpho" and (lo < 0 or hi > 1):
-        raise UsageError(f"--range: cos(theta) must lie in [0, 1], got {lo:g} {hi:g}")
+        raise ParameterError("value_range", f": cos(theta) must lie in [0, 1], got {lo:g} {hi:g}")
     if table == "clip" and (lo > 0 or hi < 1):
-        raise UsageError(f"--range must contain [0, 1] for clip, got {lo:g} {hi:g}")
+        raise ParameterError("value_range", f" must contain [0, 1] for clip, got {lo:g} {hi:g}")
     if table == "film" and hi > 1000:
-        raise UsageError(f"--range: thickness above 1000 um is the incoherent grey; got {hi:g}")
+        raise ParameterError("value_range", f": thickness above 1000 um is the incoherent grey; "
+                                            f"got {hi:g}")
     if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
-        raise UsageError(f"format {fmt} has no input domain (it always takes 0..1), so it "
+        usable = [f for f in FORMATS if f not in NO_DOMAIN and dims in FORMATS[f][2]]
+        raise ValueError(f"format {fmt} has no input domain (it always takes 0..1), so it "
                          f"cannot take {table} input over {lo:g}..{hi:g}; use "
-                         f"{', '.join(f for f in FORMATS if f not in NO_DOMAIN and dims in FORMATS[f][2])}")
+                         f"{', '.join(usable)}")
     return size, (float(lo), float(hi))
 
 
@@ -149,7 +157,7 @@ def _contents(table, kind, display, index, value_range, size, progress):
             if progress:
                 progress(len(chunk) / size)
         values = np.concatenate(parts)
-        what = ("physical thickness t in um (t' = %g t)" % n if index is not None
+        what = (f"physical thickness t in um (t' = {n:g} t)" if index is not None
                 else "optical thickness t' = n t cos(theta_t) in um")
         description = (f"Smits & Meyer 1990 {kind} thin film, {size} entries uniform over "
                        f"{lo:g}-{hi:g} um")
@@ -237,7 +245,7 @@ def write_lut(path, fmt, values, lut, meta):
     path = Path(path)
     lo, hi = meta["range"]
     if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
-        raise UsageError(f"format {fmt} has no input domain; cannot hold {lo:g}..{hi:g}")
+        raise ValueError(f"format {fmt} has no input domain; cannot hold {lo:g}..{hi:g}")
     with atomic_file(path) as tmp:
         if fmt == "clf":
             span = hi - lo
@@ -274,7 +282,7 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
         if fmt not in FORMATS:
-            raise UsageError(f"cannot tell the format from {out!r}; pass --format")
+            raise ParameterError("fmt", f" is needed: no format can be told from {out!r}")
     size, value_range = _validate(table, kind, display, index, value_range, size, fmt)
     if out is None:
         out = Path(_stem(table, kind, display, index) + "." + FORMATS[fmt][1])

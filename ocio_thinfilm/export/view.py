@@ -70,8 +70,9 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import UsageError, atomic_file, check_writable
+from ocio_thinfilm.io import ParameterError, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
+from ocio_thinfilm.physics.sampling import as_pair
 
 __all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
            "PLAIN_INPUTS", "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view"]
@@ -195,11 +196,12 @@ def _cube_shaper(source, fmt, shaper):
     if shaper is None:
         return source not in PLAIN_INPUTS
     if fmt != "cube":
-        raise UsageError(f"--resolve-shaper applies to .cube files, not .{fmt} (its "
-                         "shaper is part of the format)")
+        raise ParameterError("shaper", f" applies to .cube files, not .{fmt} (its "
+                                       "shaper is part of the format)")
     if not shaper and source not in PLAIN_INPUTS:
-        raise UsageError(f"a plain .cube needs an input whose values lie in [0, 1] "
-                         f"({', '.join(PLAIN_INPUTS)}); {source} takes the Resolve form")
+        raise ParameterError("shaper", f"=False (a plain .cube) needs an input whose values "
+                                       f"lie in [0, 1] ({', '.join(PLAIN_INPUTS)}); {source} "
+                                       "takes the Resolve form")
     return bool(shaper)
 
 
@@ -208,44 +210,48 @@ def _validate(source, display, view, size, fmt, value_range):
 
     spaces = [cs["name"] for cs in config_module.config_data(inline=True).colorspaces]
     if source is None:
-        raise UsageError("export view needs --from SPACE (a colour space of the config)")
+        raise ParameterError("source", " is needed: a colour space of the config")
     if source not in spaces:
-        raise UsageError(f"unknown colour space {source!r}; choose from {', '.join(spaces)}")
+        raise ValueError(f"unknown colour space {source!r}; choose from {', '.join(spaces)}")
     if display is None:
-        raise UsageError("export view needs --display")
+        raise ParameterError("display", f" is needed: one of {', '.join(clip.DISPLAYS)}")
     if display not in clip.DISPLAYS:
-        raise UsageError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
+        raise ValueError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
     if view is None:
-        raise UsageError("export view needs --view")
+        raise ParameterError("view", f" is needed: one of {', '.join(registry.VIEWS)}")
     if view not in registry.VIEWS:
-        raise UsageError(f"unknown view {view!r}; choose from {', '.join(registry.VIEWS)}")
+        raise ValueError(f"unknown view {view!r}; choose from {', '.join(registry.VIEWS)}")
     if fmt not in VIEW_FORMATS:
-        raise UsageError(f"unknown format {fmt!r}; choose from {', '.join(VIEW_FORMATS)}")
+        raise ValueError(f"unknown format {fmt!r}; choose from {', '.join(VIEW_FORMATS)}")
+    if size is not None and (isinstance(size, bool) or not isinstance(size, (int, np.integer))):
+        raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
     one_d = source in THIN_FILM_INPUTS
     if one_d:
         what, default_range, default_size = THIN_FILM_INPUTS[source]
         if fmt in ("csp", "spi3d"):
-            raise UsageError(f"{source} takes one value per pixel, a 1D LUT: use cube, "
+            raise ValueError(f"{source} takes one value per pixel, a 1D LUT: use cube, "
                              f"spi1d or clf (format {fmt} holds only 3D LUTs)")
-        lo, hi = default_range if value_range is None else value_range
+        lo, hi = default_range if value_range is None else as_pair("value_range", value_range)
         if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
-            raise UsageError(f"--range must be two finite numbers MIN < MAX, got {lo:g} {hi:g}")
+            raise ParameterError("value_range", f" must be two finite numbers MIN < MAX, "
+                                                f"got {lo:g} {hi:g}")
         if lo < 0 or (source == "Thin Film Morpho Iridescence" and hi > 1) or hi > 100:
-            raise UsageError(f"--range for {source} ({what}) must lie in "
-                             f"{'0..1' if 'Morpho' in source else '0..100'}, "
-                             f"got {lo:g} {hi:g}")
+            raise ParameterError("value_range", f" for {source} ({what}) must lie in "
+                                                f"{'0..1' if 'Morpho' in source else '0..100'}, "
+                                                f"got {lo:g} {hi:g}")
         size = default_size if size is None else size
         if not 2 <= size <= 1 << 20:
-            raise UsageError(f"--size must be in [2, {1 << 20}] for a 1D LUT, got {size}")
+            raise ParameterError("size", f" must be in [2, {1 << 20}] for a 1D LUT, got {size}")
         return size, (float(lo), float(hi))
     if value_range is not None:
-        raise UsageError("--range applies to the thin-film inputs only (3D LUTs carry "
-                         "their own domain)")
+        raise ParameterError("value_range", " applies to the thin-film inputs only (3D LUTs "
+                                            "carry their own domain)")
     if fmt == "spi1d":
-        raise UsageError(f"{source} needs a 3D LUT: use cube, csp, clf, ctf or spi3d")
+        raise ValueError(f"{source} needs a 3D LUT: use cube, csp, clf, ctf or spi3d")
     size = DEFAULT_VIEW_SIZE if size is None else size
     if not 2 <= size <= MAX_VIEW_SIZE:
-        raise UsageError(f"--size must be in [2, {MAX_VIEW_SIZE}] for a 3D LUT, got {size}")
+        raise ParameterError("size", f" must be in [2, {MAX_VIEW_SIZE}] for a 3D LUT, "
+                                     f"got {size}")
     return size, None
 
 
@@ -254,7 +260,8 @@ def _stem(source, display, view):
 
 
 def set_name(source, display, view):
-    """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``, ``ACEScct_to_Rec2020_ChannelClamp``."""
+    """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``,
+    ``ACEScct_to_Rec2020_ChannelClamp``."""
     def clean(text):
         return "".join(c for c in text if c.isalnum())
     return f"{clean(source)}_to_{clean(display)}_{clean(view)}"
@@ -407,20 +414,20 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
         if fmt not in VIEW_FORMATS:
-            raise UsageError(f"cannot tell the format from {out!r}; pass --format "
-                             f"({', '.join(VIEW_FORMATS)})")
+            raise ParameterError("fmt", f" is needed: no format can be told from {out!r} "
+                                        f"({', '.join(VIEW_FORMATS)})")
     size, value_range = _validate(source, display, view, size, fmt, value_range)
     cube_shaper = None
     if source in THIN_FILM_INPUTS:
         if shaper is not None:
-            raise UsageError(f"--resolve-shaper applies to 3D LUTs; {source} gives a 1D LUT")
+            raise ParameterError("shaper", f" applies to 3D LUTs; {source} gives a 1D LUT")
     elif fmt == "cube" or shaper is not None:
         cube_shaper = _cube_shaper(source, fmt, shaper)
     if out is None:
         out = Path(_stem(source, display, view) + "." + fmt)
     out = Path(out)
     if out.exists() and out.is_dir():
-        raise UsageError(f"--out {out} is a directory")
+        raise ParameterError("out", f" {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
 
     cfg, shaper = view_config(source, size)

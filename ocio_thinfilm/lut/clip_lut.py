@@ -429,7 +429,8 @@ def _encode(values, display):
     """Display encoding (the OCIO op the config uses), float64 out."""
     a = np.asarray(values, dtype=np.float64)
     flat = np.repeat(a.reshape(-1, 1), 3, axis=1)
-    return apply(display_encoding_transform(display), flat)[:, 0].astype(np.float64).reshape(a.shape)
+    encoded = apply(display_encoding_transform(display), flat)[:, 0]
+    return encoded.astype(np.float64).reshape(a.shape)
 
 
 def _white_nodes(size, display):
@@ -621,7 +622,7 @@ def _convex_hull(points):
 def _inside_convex(points, hull):
     """Whether each of ``points`` (N, 2) lies inside the counter-clockwise ``hull``."""
     inside = np.ones(len(points), dtype=bool)
-    for a, b in zip(hull, np.roll(hull, -1, axis=0)):
+    for a, b in zip(hull, np.roll(hull, -1, axis=0), strict=True):
         inside &= _cross(b - a, points - a) >= 0.0
     return inside
 

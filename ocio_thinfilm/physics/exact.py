@@ -78,7 +78,8 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
 
     For a lossless, propagating film ``R(delta)`` is 2 pi-periodic, so with
     ``band_limited=True`` it is expanded into ``harmonics`` Fourier terms (an FFT
-    over one period) and each bin-averaged by :func:`~ocio_thinfilm.physics.sampling.cosine_series`. Evanescent or
+    over one period) and each bin-averaged by
+    :func:`~ocio_thinfilm.physics.sampling.cosine_series`. Evanescent or
     absorbing films do not oscillate and are evaluated pointwise; so is near-grazing
     incidence, where ``|r01 r12|**(harmonics/2) >= 1e-6`` and the truncated series
     would ring (R outside [0, 1]).
@@ -139,7 +140,7 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
     # complex: TIR, absorption). Where den = 0 (|r01| = |r12| = 1 with r01 r12 z = -1:
     # grazing incidence on an absentee layer) the film drops out: R = |r02|^2.
     pols = []
-    for a, b, c in zip(r01, r12, r02):
+    for a, b, c in zip(r01, r12, r02, strict=True):
         a, b = np.asarray(a), np.asarray(b)
         cross_num, cross_den = np.conj(a) * b, a * b
         # (constant, |b|^2 or |ab|^2 times rho^2, 2 Re(cross), -2 Im(cross)) for num, den

@@ -22,7 +22,10 @@ share are in :mod:`ocio_thinfilm.physics.sampling`; the exact optics used as ref
 
 from __future__ import annotations
 
+from typing import TypedDict
+
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm.physics.sampling import (
     MAX_LAYERS,
@@ -43,16 +46,26 @@ __all__ = [
     "multilayer_reflectance",
 ]
 
+class MorphoGeometry(TypedDict):
+    """The keys of :data:`MORPHO`."""
+
+    d1: float
+    d2: float
+    n: float
+    layers: int
+
+
 #: Morpho wing scale geometry from the paper (Section 4.3, Eq. 14): spacing d1 and
 #: thickness d2 of the mullions in nm, their index n, and the number of layers l
 #: ("twelve horizontal mullions").
-MORPHO = {"d1": 150.0, "d2": 50.0, "n": 1.53, "layers": 12}
+MORPHO: MorphoGeometry = {"d1": 150.0, "d2": 50.0, "n": 1.53, "layers": 12}
 
 
 # --------------------------------------------------------------------------- #
 # The paper's models.
 # --------------------------------------------------------------------------- #
-def optical_thickness(thickness, n, theta=0.0, *, mode: str = "refraction"):
+def optical_thickness(thickness: npt.ArrayLike, n: npt.ArrayLike, theta: npt.ArrayLike = 0.0,
+                      *, mode: str = "refraction") -> np.ndarray:
     """Optical thickness t' of a film (paper Eq. 10 and Eq. 11).
 
     ``mode="refraction"`` (default) uses the refraction angle inside the film:
@@ -103,8 +116,8 @@ def optical_thickness(thickness, n, theta=0.0, *, mode: str = "refraction"):
     raise ValueError(f"mode must be 'refraction' or 'literal', got {mode!r}")
 
 
-def two_beam_reflectance(optical_thickness_nm, wavelengths, *, phase_change: bool = True,
-                         band_limited: bool = False):
+def two_beam_reflectance(optical_thickness_nm: npt.ArrayLike, wavelengths: npt.ArrayLike, *,
+                         phase_change: bool = True, band_limited: bool = False) -> np.ndarray:
     """Two-beam reflectance of a single film, normalised to a peak of 1 (Eq. 5-8).
 
     Eq. 7 (phase change: soap film, oil on water):   ``R = sin^2(2 pi t'/lambda)``;
@@ -147,8 +160,9 @@ def two_beam_reflectance(optical_thickness_nm, wavelengths, *, phase_change: boo
     return np.clip(cosine_series([0.5, -0.5 if phase_change else 0.5], phi, dphi), 0.0, 1.0)
 
 
-def morpho_layer_thickness(theta=0.0, d1: float = MORPHO["d1"], d2: float = MORPHO["d2"],
-                           n: float = MORPHO["n"]):
+def morpho_layer_thickness(theta: npt.ArrayLike = 0.0, d1: npt.ArrayLike = MORPHO["d1"],
+                           d2: npt.ArrayLike = MORPHO["d2"],
+                           n: npt.ArrayLike = MORPHO["n"]) -> np.ndarray:
     """Effective layer thickness of the Morpho wing scale (paper Eq. 14).
 
     ``t = d1 cos(theta) + d2 sqrt(n^2 - sin^2(theta))``: the air gap d1 and the
@@ -184,8 +198,9 @@ def morpho_layer_thickness(theta=0.0, d1: float = MORPHO["d1"], d2: float = MORP
     return d1 * np.cos(theta) + d2 * np.sqrt(np.maximum(n * n - np.sin(theta) ** 2, 0.0))
 
 
-def multilayer_reflectance(thickness, wavelengths, layers: int = MORPHO["layers"], *,
-                           band_limited: bool = False):
+def multilayer_reflectance(thickness: npt.ArrayLike, wavelengths: npt.ArrayLike,
+                           layers: int = MORPHO["layers"], *,
+                           band_limited: bool = False) -> np.ndarray:
     """Multiple-film reflectance, Eq. 9 (Anderson & Richards 1942), peak-normalised.
 
     Eq. 9 reads ``I = 1/2 A0 (sin(2 pi (l+1) t/lambda) / sin(2 pi t/lambda))^2``. With

@@ -108,8 +108,8 @@ def _exr_attributes(scene, picture, *, seed, frame, display, view):
     for channel, doc in picture.aov_docs.items():
         attrs[f"ocio_thinfilm:aov:{channel}"] = doc
     for key, value in picture.attributes.items():
-        attrs[f"ocio_thinfilm:{key}"] = float(value) if isinstance(value, (int, float, np.floating)) \
-            else str(value)
+        number = isinstance(value, (int, float, np.floating))
+        attrs[f"ocio_thinfilm:{key}"] = float(value) if number else str(value)
     return attrs
 
 
@@ -133,7 +133,7 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     scene = scene_module.get_scene(name)
     stem = name if frame is None else f"{name}.{frame:04d}"
     for path in frame_paths(name, out_dir, frame):
-        check_output_file(path)
+        check_output_file(path, parameter="out_dir")
     channels = ["R", "G", "B"] + list(picture.aovs)
     data = np.concatenate([picture.xyz] + [a[..., None] for a in picture.aovs.values()],
                           axis=-1)

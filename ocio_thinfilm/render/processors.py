@@ -1,8 +1,9 @@
 """A render's OCIO processors, created from one config file on first use.
 
-A render goes through an OCIO config -- by default the package's baked
-``configs/thinfilm/config.ocio`` (:data:`DEFAULT_CONFIG`, baked first when missing) --
-so it is an end-to-end test of what users load:
+A render goes through an OCIO config -- by default the package's baked config
+(:data:`DEFAULT_CONFIG`: in a checkout its ``configs/thinfilm/config.ocio``, baked first
+when missing; installed from a wheel, the copy the wheel carries as package data) -- so
+it is an end-to-end test of what users load:
 
 - a scene's table (:class:`ocio_thinfilm.render.scenes.TableSpec`) is the config's
   thin-film input colour space, pixel encoding -> CIE-XYZ-D65
@@ -17,21 +18,41 @@ render time.
 
 from __future__ import annotations
 
+from importlib import resources
 from pathlib import Path
 
 import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.data import REFERENCE
-from ocio_thinfilm.io import UsageError
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import tables
 
-__all__ = ["DEFAULT_CONFIG", "REFERENCE_SPACE", "table_colorspace", "load_config",
-           "ConfigProcessors", "make_lookup", "display_image", "build_table"]
+__all__ = ["DEFAULT_CONFIG", "PACKAGE_CONFIG", "REFERENCE_SPACE", "table_colorspace",
+           "load_config", "ConfigProcessors", "make_lookup", "display_image", "build_table"]
 
-#: The config a render goes through by default: the package's baked config (baked
-#: with ``ocio-thinfilm bake`` first when it is missing).
-DEFAULT_CONFIG = Path(__file__).resolve().parents[2] / "configs" / "thinfilm" / "config.ocio"
+#: The baked config a wheel carries as package data (setup.py copies the checkout's
+#: ``configs/thinfilm`` into ``ocio_thinfilm/data/thinfilm``); read-only, never baked.
+PACKAGE_CONFIG = Path(str(resources.files("ocio_thinfilm").joinpath("data", "thinfilm",
+                                                                   "config.ocio")))
+
+
+def _checkout_config() -> Path | None:
+    """``configs/thinfilm/config.ocio`` of the checkout this module runs from (the
+    repository's pyproject.toml beside the package), None when installed."""
+    root = Path(__file__).resolve().parents[2]
+    try:
+        if 'name = "ocio-thinfilm"' in (root / "pyproject.toml").read_text(encoding="utf-8"):
+            return root / "configs" / "thinfilm" / "config.ocio"
+    except OSError:
+        pass
+    return None
+
+
+#: The config a render goes through by default: a checkout's ``configs/thinfilm``
+#: (baked with ``ocio-thinfilm bake`` first when it is missing), else
+#: :data:`PACKAGE_CONFIG`. Nothing is ever written beside the installed code.
+DEFAULT_CONFIG = _checkout_config() or PACKAGE_CONFIG
 #: The config's reference, the EXR's colour space: tables go to it, views start at it.
 REFERENCE_SPACE = REFERENCE
 
@@ -50,24 +71,29 @@ def table_colorspace(spec) -> str:
     return registry.thin_film_space_for_kind(spec.kind).name
 
 
-def load_config(path=None):
-    """``PyOpenColorIO.Config`` of ``path`` (default :data:`DEFAULT_CONFIG`, baked with
-    :func:`ocio_thinfilm.export.bake.bake` first when missing)."""
+def load_config(config=None):
+    """``PyOpenColorIO.Config`` of the file ``config`` (default :data:`DEFAULT_CONFIG`,
+    baked with :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is
+    the installed :data:`PACKAGE_CONFIG`)."""
     import PyOpenColorIO as ocio
 
-    if path is None:
+    if config is None:
         path = DEFAULT_CONFIG
         if not path.is_file():
+            if path == PACKAGE_CONFIG:
+                raise ParameterError("config", f" is needed: the package's config {path} is "
+                                               "missing (an install without its data? "
+                                               "reinstalling the wheel restores it)")
             from ocio_thinfilm.export import bake
 
             bake.bake(path.parent)
-    path = Path(path)
+    path = DEFAULT_CONFIG if config is None else Path(config)
     if not path.is_file():
-        raise UsageError(f"--config {path}: no such config file")
+        raise ParameterError("config", f" {path}: no such config file")
     try:
         return ocio.Config.CreateFromFile(str(path))
     except Exception as error:  # OCIO's parse errors
-        raise UsageError(f"--config {path}: {str(error).splitlines()[0]}") from None
+        raise ParameterError("config", f" {path}: {str(error).splitlines()[0]}") from None
 
 
 class ConfigProcessors:
@@ -97,8 +123,8 @@ class ConfigProcessors:
             name = dict(self.config.getRoles()).get("scene_linear")
             cs = self.config.getColorSpace(name) if name else None
             if cs is None:
-                raise UsageError(f"config: no {REFERENCE_SPACE} colour space and no "
-                                 "scene_linear role to reach it")
+                raise ParameterError("config", f": no {REFERENCE_SPACE} colour space and no "
+                                               "scene_linear role to reach it")
             scene_to_xyz, _ = merge.interchange(self.config)
             self._bridge = (cs.getName(), ocio_ops.group(
                 [merge.colorspace_transform(cs, to_reference=True), scene_to_xyz]))
@@ -118,8 +144,8 @@ class ConfigProcessors:
             try:
                 self._cpu[key] = make().getDefaultCPUProcessor()
             except Exception as error:  # a missing space / view / LUT file
-                raise UsageError(f"config: cannot build {key}: "
-                                 f"{str(error).splitlines()[0]}") from None
+                raise ParameterError("config", f": cannot build {key}: "
+                                               f"{str(error).splitlines()[0]}") from None
             self.created.append(key)
         return self._cpu[key]
 
@@ -144,14 +170,16 @@ class ConfigProcessors:
         return self._processor(f"view:{display}/{view}", make)
 
     def check_display_view(self, display: str, view: str) -> None:
-        """UsageError unless the config has ``display`` with ``view``."""
+        """A :class:`~ocio_thinfilm.io.ParameterError` naming ``display`` or ``view``
+        unless the config has ``display`` with ``view``."""
         displays = list(self.config.getDisplays())
         if display not in displays:
-            raise UsageError(f"--display {display!r}: the config has {', '.join(displays)}")
+            raise ParameterError("display", f" {display!r}: the config has "
+                                            f"{', '.join(displays)}")
         views = list(self.config.getViews(display))
         if view not in views:
-            raise UsageError(f"--view {view!r}: the config's display {display} has "
-                             f"{', '.join(views)}")
+            raise ParameterError("view", f" {view!r}: the config's display {display} has "
+                                         f"{', '.join(views)}")
 
 
 def _apply(cpu, pixels) -> np.ndarray:

@@ -34,7 +34,7 @@ the frame number only, so every frame is independent of the others.
 from __future__ import annotations
 
 import dataclasses
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -237,7 +237,8 @@ class OilScene(Scene):
     name = "oil"
     figure = "Figure 5"
     title = "An oil slick on wet asphalt (Eq. 12-13), seen from above at an angle"
-    animation = "the slick spreads: k1 and the centre thickness fall as 1/(1 + 0.04 (frame - 1)), keeping its volume"
+    animation = ("the slick spreads: k1 and the centre thickness fall as "
+                 "1/(1 + 0.04 (frame - 1)), keeping its volume")
     tables = (FILM_TABLE,)
 
     N_OIL = 1.5            # oil on water: air|oil inverts, oil|water does not -> phase change
@@ -485,4 +486,5 @@ def get_scene(name: str) -> Scene:
     try:
         return SCENES[name]
     except KeyError:
-        raise ValueError(f"unknown scene {name!r}; choose from {', '.join(SCENES)} or all") from None
+        raise ValueError(f"unknown scene {name!r}; choose from {', '.join(SCENES)} "
+                         "or all") from None

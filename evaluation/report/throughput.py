@@ -9,9 +9,9 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.datasets import INTERFERENCE, lut_test_sets
-from ocio_thinfilm.evaluation.report.measure import best_time, ocio_cpu, table
+from evaluation.report.context import Section
+from evaluation.report.datasets import INTERFERENCE, lut_test_sets
+from evaluation.report.measure import best_time, ocio_cpu, table
 from ocio_thinfilm.lut import view_transforms
 
 #: The view the headline quotes.

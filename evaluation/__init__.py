@@ -1,6 +1,9 @@
 """Evaluation code: what the tests, the benchmarks and the report measure against.
 
-Not part of the shipped path (tables, LUTs, config, export, render never import it).
+Not part of the shipped package: a top-level package of the repository, beside
+``benchmarks/``, that imports :mod:`ocio_thinfilm` (which never imports it; the
+``report`` command loads it from a checkout). The tests find it on the repository root
+(``pythonpath`` in pyproject.toml); the benchmarks put the root on ``sys.path``.
 
 - :mod:`.colours`: the test-colour sets (object and monochromatic colours).
 - :mod:`.stability`: the stability cases, defined once (the films, the clip's extreme

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.context import Section
+from evaluation.report.measure import (
     best_time,
     default,
     film_XYZ_chunked,
@@ -14,7 +14,7 @@ from ocio_thinfilm.evaluation.report.measure import (
     stats,
     table,
 )
-from ocio_thinfilm.evaluation.report.plots import pareto_plot
+from evaluation.report.plots import pareto_plot
 
 
 def section(ctx) -> Section:

@@ -22,13 +22,13 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
 from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.formatting import fmt
+from evaluation.formatting import fmt
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 
@@ -133,7 +133,8 @@ def xyz_cases(W=None) -> list[Case]:
             rgb = out @ M.T
             ok = bool(np.all(np.isfinite(out)) and np.all(rgb > -1e-9) and np.all(rgb < 1 + 1e-9)
                       and np.allclose(out[..., 1], Y, rtol=1e-9, atol=1e-12))
-            return ok, f"RGB [{', '.join(fmt(float(v), 4) for v in np.ravel(rgb)[:3])}], Y {fmt(float(np.ravel(out)[1]), 6)}"
+            rgb_text = ", ".join(fmt(float(v), 4) for v in np.ravel(rgb)[:3])
+            return ok, f"RGB [{rgb_text}], Y {fmt(float(np.ravel(out)[1]), 6)}"
         return check
 
     def equals(target, tol, label):
@@ -165,7 +166,8 @@ def xyz_cases(W=None) -> list[Case]:
         ("XYZ on faces and edges (RGB channels exactly 0 or 1)", _faces_edges() @ Minv.T,
          "unchanged (≤ 1e-12: only the XYZ↔RGB round-off)",
          equals(_faces_edges() @ Minv.T, 1e-12, "moved"), "test_xyz_on_faces_and_edges_unchanged"),
-        ("rays nearly parallel to a face (R − grey = ±1e-15…1e-6, G far out)", _near_parallel(M, Minv),
+        ("rays nearly parallel to a face (R − grey = ±1e-15…1e-6, G far out)",
+         _near_parallel(M, Minv),
          "finite, in gamut, Y preserved to 1e-9", _near_parallel_check(M, Minv),
          "test_rays_nearly_parallel_to_a_face"),
     ]
@@ -502,7 +504,7 @@ def ocio_clip_rows(W=None) -> list[Row]:
             f"OCIO clip_transform: X = {s}1e30, {s}Inf (Y = 0.5)",
             "finite, in gamut, " + ("ΔE2000 < 5 from the analytic clip's limit" if hue
                                     else "Y kept within 1e-3 (outside the chart: hue approximate)"),
-            (lambda sign: lambda: {"RGB": _through_ocio(_ocio_limit_inputs(sign))})(sign),
+            (lambda sign: lambda: {"RGB": _through_ocio(_ocio_limit_inputs(sign))})(sign),  # noqa: B023
             _ocio_limit_check(sign, hue), test))
     rows.append(Row("OCIO clip_transform: NaN components",
                     "finite and in gamut (the transform's documented policy: NaN → finite)",

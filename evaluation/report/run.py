@@ -8,7 +8,7 @@ import sys
 import time
 from pathlib import Path
 
-from ocio_thinfilm.evaluation.report import (
+from evaluation.report import (
     analytic_vs_lut,
     gamut,
     gaussian,
@@ -19,9 +19,9 @@ from ocio_thinfilm.evaluation.report import (
     throughput,
     tmm,
 )
-from ocio_thinfilm.evaluation.report.context import Context, Section
-from ocio_thinfilm.evaluation.report.headline import headline_lines
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.context import Context, Section
+from evaluation.report.headline import headline_lines
+from evaluation.report.measure import (
     json_default,
     machine_description,
     table,

@@ -1,7 +1,7 @@
 """The number format of the report's tables and of the stability cases' observed text.
 
-A module of its own (not in :mod:`ocio_thinfilm.evaluation.report.measure`, which
-re-exports it) so that :mod:`ocio_thinfilm.evaluation.stability` can format numbers
+A module of its own (not in :mod:`evaluation.report.measure`, which
+re-exports it) so that :mod:`evaluation.stability` can format numbers
 without importing the report package, which imports the stability cases.
 """
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.context import Section
+from evaluation.report.measure import (
     best_time,
     dE_white,
     default,
@@ -15,7 +15,7 @@ from ocio_thinfilm.evaluation.report.measure import (
     stats,
     table,
 )
-from ocio_thinfilm.evaluation.report.peers import belcour_barla_film_XYZ
+from evaluation.report.peers import belcour_barla_film_XYZ
 
 
 def section(ctx) -> Section:

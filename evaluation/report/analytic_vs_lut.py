@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.datasets import test_thicknesses
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.context import Section
+from evaluation.report.datasets import test_thicknesses
+from evaluation.report.measure import (
     best_time,
     default,
     film_XYZ_chunked,
@@ -16,7 +16,7 @@ from ocio_thinfilm.evaluation.report.measure import (
     stats,
     table,
 )
-from ocio_thinfilm.evaluation.report.plots import pareto_plot
+from evaluation.report.plots import pareto_plot
 from ocio_thinfilm.lut import clip_lut, ocio_ops, tables
 
 

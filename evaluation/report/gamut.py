@@ -5,15 +5,15 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.context import Section
+from evaluation.report.measure import (
     best_time,
     ocio_apply_speed,
     ocio_cpu,
     stats,
     table,
 )
-from ocio_thinfilm.evaluation.report.peers import oklch_gamut_map_RGB
+from evaluation.report.peers import oklch_gamut_map_RGB
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 #: The views compared through OCIO: id -> (label in the speed table, view name).
@@ -168,7 +168,7 @@ def section(ctx) -> Section:
         "the gamut; ΔL* and Δh_ab in CIELAB (D65), Δh only where C*ab > 5. The ACES 1.3 "
         "compression (OCIO `ACES_GamutComp13`, applied to display-linear RGB) is followed by a "
         "clamp; the OKLCh method is the CSS Color 4 binary search (JND 0.02, ε 1e-4) implemented "
-        "in `ocio_thinfilm/evaluation/report/peers.py` with colour-science's Oklab. Per that spec, colours whose Oklab L is ≥ 1 map "
+        "in `evaluation/report/peers.py` with colour-science's Oklab. Per that spec, colours whose Oklab L is ≥ 1 map "
         "to white: at Y = 0.2 the deep-blue spectral colours have L > 1 (their S-cone response is "
         "huge), which is what drives its hue and lightness figures on the spectral locus.",
         "",

@@ -7,20 +7,20 @@ import time
 import numpy as np
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.datasets import (
+from evaluation.report.context import Section
+from evaluation.report.datasets import (
     INTERFERENCE,
     MIXTURES,
     lut_test_sets,
 )
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.measure import (
     default,
     ocio_apply_speed,
     ocio_cpu,
     stats,
     table,
 )
-from ocio_thinfilm.evaluation.report.plots import pareto_plot
+from evaluation.report.plots import pareto_plot
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 

@@ -1,6 +1,6 @@
 """Measurement helpers of the report: timing, error statistics, ΔE, OCIO speed, the
 machine, and the number format of every table (:func:`fmt`, defined in
-:mod:`ocio_thinfilm.evaluation.formatting` so that :mod:`ocio_thinfilm.evaluation.stability`
+:mod:`evaluation.formatting` so that :mod:`evaluation.stability`
 can use it without importing the report).
 
 Everything here is small and independent of the sections; the sections combine it.
@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.evaluation.formatting import fmt
+from evaluation.formatting import fmt
 
 __all__ = ["fmt", "best_time", "stats", "dE_white", "table", "default", "machine_description",
            "ocio_cpu", "ocio_apply_speed", "film_XYZ_chunked", "json_default"]

@@ -22,7 +22,7 @@ Sections
    and the glTF sample viewer; (c) the closed-form film against colour-science's
    transfer-matrix method.
 3. Stability on stiff and extreme inputs, as case -> expected -> observed. The cases
-   are defined once, in :mod:`ocio_thinfilm.evaluation.stability`; every row names the
+   are defined once, in :mod:`evaluation.stability`; every row names the
    test in ``tests/test_stability.py`` that asserts it independently.
 4. Throughput against the bandwidth bound (a memory copy of the same image), one
    thread and all threads.
@@ -59,15 +59,15 @@ References
 
 from __future__ import annotations
 
-from ocio_thinfilm.evaluation.report.measure import fmt, machine_description
-from ocio_thinfilm.evaluation.report.peers import (
+from evaluation.report.measure import fmt, machine_description
+from evaluation.report.peers import (
                                                    belcour_barla_film_XYZ,
                                                    belcour_barla_sensitivity,
                                                    oklch_gamut_map_RGB,
 )
-from ocio_thinfilm.evaluation.report.run import SECTIONS, run_report
-from ocio_thinfilm.evaluation.report.stability_table import stability_rows
-from ocio_thinfilm.evaluation.stability import spectral_white_XYZ
+from evaluation.report.run import SECTIONS, run_report
+from evaluation.report.stability_table import stability_rows
+from evaluation.stability import spectral_white_XYZ
 
 __all__ = [
     "run_report",

@@ -1,14 +1,14 @@
 """Section 3: the stability table, measured now from the cases of
-:mod:`ocio_thinfilm.evaluation.stability` (each row names the test that asserts it)."""
+:mod:`evaluation.stability` (each row names the test that asserts it)."""
 
 from __future__ import annotations
 
 import warnings
 
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.evaluation import stability
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.measure import table
+from evaluation import stability
+from evaluation.report.context import Section
+from evaluation.report.measure import table
 
 
 def stability_rows() -> list[dict]:

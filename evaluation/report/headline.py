@@ -7,7 +7,7 @@ gives no line. :func:`headline_lines` works from ``report.json`` alone.
 
 from __future__ import annotations
 
-from ocio_thinfilm.evaluation.report.measure import fmt
+from evaluation.report.measure import fmt
 
 __all__ = ["headline_lines"]
 

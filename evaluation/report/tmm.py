@@ -7,8 +7,8 @@ import warnings
 import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.measure import best_time, fmt, stats, table
+from evaluation.report.context import Section
+from evaluation.report.measure import best_time, fmt, stats, table
 from ocio_thinfilm.physics import exact, sampling, spectra
 
 

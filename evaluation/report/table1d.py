@@ -7,9 +7,9 @@ import time
 import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.evaluation.report.context import Section
-from ocio_thinfilm.evaluation.report.datasets import test_thicknesses
-from ocio_thinfilm.evaluation.report.measure import (
+from evaluation.report.context import Section
+from evaluation.report.datasets import test_thicknesses
+from evaluation.report.measure import (
     default,
     fmt,
     ocio_apply_speed,
@@ -17,7 +17,7 @@ from ocio_thinfilm.evaluation.report.measure import (
     stats,
     table,
 )
-from ocio_thinfilm.evaluation.report.plots import pareto_plot
+from evaluation.report.plots import pareto_plot
 from ocio_thinfilm.lut import ocio_ops, tables
 
 
