@@ -1,10 +1,11 @@
-"""Section 2a: gamut-mapping peers on the same colours (and their speed)."""
+"""Section 2a: gamut-mapping peers on the same colours (and their speed), and the
+saturation ramps through the clip and the compression views."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry, compress
 from evaluation.report.context import Section
 from evaluation.report.measure import (
     best_time,
@@ -13,12 +14,15 @@ from evaluation.report.measure import (
     stats,
     table,
 )
+from evaluation.report import ramps
 from evaluation.report.peers import oklch_gamut_map_RGB
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 #: The views compared through OCIO: id -> (label in the speed table, view name).
 VIEWS = {"aces_gamut_compression": ("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
-         "constant_lightness_clip": ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip")}
+         "constant_lightness_clip": ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip"),
+         "constant_lightness_compress": ("constant-lightness compress view (OCIO)",
+                                         "Constant-Lightness Compress")}
 
 
 def _datasets(q):
@@ -40,6 +44,9 @@ def _methods(display):
     return {
         "constant_lightness_clip": ("constant-lightness clip",
                                     lambda rgb: clip.clip_RGB(rgb, display), "numpy", 1),
+        "constant_lightness_compress": ("constant-lightness compress (0.8 / 1.3)",
+                                        lambda rgb: compress.compress_RGB(rgb, display),
+                                        "numpy", 1),
         "clamp": ("per-channel clamp", clip.clamp_RGB, "numpy", 1),
         "aces": ("ACES 1.3 gamut compression (+clamp)",
                  lambda rgb: clip.aces_gamut_compress_RGB(rgb).astype(np.float64),
@@ -161,6 +168,10 @@ def section(ctx) -> Section:
     axes[-1].grid(alpha=0.3)
     fig.suptitle("Gamut mapping of the spectrum into sRGB")
     img_md = ctx.savefig(fig, "peers_gamut_spectrum.png")
+    ramp, ramp_rgb = ramps.ramp_table(display)
+    ramp_md = ctx.savefig(ramps.plot(ramp, ramp_rgb), "compress_ramps.png")
+    results["ramps"] = {view: {k: v for k, v in ramp[view].items() if k != "output"}
+                        for view in ramps.VIEWS}
     text = [
         "### 2a. Gamut mapping peers",
         "",
@@ -183,5 +194,18 @@ def section(ctx) -> Section:
         table(["method", "Mpixel/s", "× ACES (OCIO)"], srows),
         "",
         img_md,
+        "",
+        "Saturation ramps at Y = 0.2 from the grey towards monochromatic 450–650 nm (to 2.1 "
+        "boundary distances or the spectral colour), through the config's views: the output's "
+        "distance to the boundary along the same ray. The compression rises up to its limit "
+        "(1.3), the clip is flat past the boundary, ACES 1.3 compresses per channel (not along "
+        "the ray; it changes Y).",
+        "",
+        table(["view", "strictly rising to the limit", "smallest step",
+               "spread past the boundary", "max |ΔY|"],
+              [[view, str(r["strictly_rising"]), r["min_step"], r["spread_past_boundary"],
+                r["dY"]] for view, r in results["ramps"].items()]),
+        "",
+        ramp_md,
     ]
     return Section("\n".join(text), results, {"gamut": headline})
