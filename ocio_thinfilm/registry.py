@@ -68,9 +68,9 @@ class HDRDisplay:
     (SMPTE ST 2084) or ``"HLG"`` (ARIB STD-B67 with the BT.2100 OOTF for ``peak``);
     ``builtin``: OCIO's built-in display transform (CIE XYZ with Y = 1 at
     :data:`OCIO_XYZ_UNIT` cd/m2 -> code values; OCIO >= 2.1); ``peak``: peak white in
-    cd/m2; ``lut_stem``: the display's part of file names; ``cicp``: the PNG cICP chunk
-    (ITU-T H.273 colour primaries, transfer characteristics, matrix coefficients,
-    full-range flag).
+    cd/m2; ``lut_stem``: the display's part of file names; ``png_colorspace``: the
+    OpenImageIO colour interop ID a (16-bit) PNG for it is tagged with (OpenImageIO 3
+    writes it as the PNG cICP chunk, ITU-T H.273 code points).
     """
 
     name: str
@@ -81,7 +81,7 @@ class HDRDisplay:
     builtin: str
     peak: float
     lut_stem: str
-    cicp: tuple
+    png_colorspace: str
 
     @property
     def scale(self) -> float:
@@ -139,18 +139,18 @@ HDR_DISPLAY_LIST = (
                "ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 encoding, "
                "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
                "PQ", "DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ", 1000.0, "Rec2100PQ",
-               (9, 16, 0, 1)),
+               "pq_rec2020_display"),
     HDRDisplay("Rec.2100-HLG", "Rec.2020", "Rec.2100-HLG - Display",
                "ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the BT.2100 "
                "OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
                "reference white)",
                "HLG", "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit", 1000.0,
-               "Rec2100HLG", (9, 18, 0, 1)),
+               "Rec2100HLG", "hlg_rec2020_display"),
     HDRDisplay("P3-D65 PQ", "Display P3", "ST2084-P3-D65 - Display",
                "P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, 1000 cd/m2 "
                "peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
                "PQ", "DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65", 1000.0, "P3D65PQ",
-               (12, 16, 0, 1)),
+               "pq_p3d65_display"),
 )
 
 VIEW_LIST = (
@@ -281,7 +281,7 @@ def validate() -> None:
     for d in HDR_DISPLAY_LIST:
         if (d.gamut not in DISPLAYS or d.transfer not in ("PQ", "HLG")
                 or not d.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
-                or not d.peak > HDR_REFERENCE_WHITE or len(d.cicp) != 4):
+                or not d.peak > HDR_REFERENCE_WHITE or not d.png_colorspace):
             raise ValueError(f"registry: HDR display {d.name!r}: bad entry {d!r}")
     if [v.name for v in VIEW_LIST if v.raw] != [VIEW_LIST[-1].name]:
         raise ValueError("registry: exactly one raw view, listed last")

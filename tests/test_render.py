@@ -518,3 +518,43 @@ def test_render_through_a_merged_aces_config(tmp_path, capsys, base):
     code, _, err = _cli(capsys, "spectrum", "--size", "32", "--config", str(config),
                         "--display", "sRGB - Display", "--out", str(theirs))
     assert code == 2 and len(err.strip().splitlines()) == 1 and "Channel Clamp" in err
+
+
+def _png_chunks(path):
+    """(type, data) of every chunk of a PNG file, read with the PNG layout (length,
+    type, data, CRC), not with OpenImageIO."""
+    import struct
+
+    data = Path(path).read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    out, i = [], 8
+    while i < len(data):
+        n, kind = struct.unpack(">I4s", data[i:i + 8])
+        out.append((kind.decode("ascii"), data[i + 8:i + 8 + n]))
+        i += 12 + n
+    return out
+
+
+@pytest.mark.parametrize("display, cicp", [("Rec.2100-PQ", (9, 16, 0, 1)),
+                                           ("Rec.2100-HLG", (9, 18, 0, 1)),
+                                           ("P3-D65 PQ", (12, 16, 0, 1))])
+def test_hdr_png_is_16_bit_with_its_cicp_chunk(tmp_path, display, cicp):
+    """render --display on an HDR display: a 16-bit PNG whose cICP chunk holds the
+    ITU-T H.273 code points (BT.2020 = 9 / P3-D65 = 12 primaries, PQ = 16 / HLG = 18,
+    RGB matrix 0, full range 1), no sRGB/gAMA chunk claiming otherwise; its pixels
+    are the EXR through the view (to 16-bit rounding and the half-float EXR); the EXR
+    is as for SDR displays."""
+    assert cli.main(["render", "oil", "--size", "24x16", "--display", display, "--out",
+                     str(tmp_path), "--quiet"]) == 0
+    chunks = _png_chunks(tmp_path / "oil.png")
+    kinds = [k for k, _ in chunks]
+    assert tuple(chunks[0][1][8:9]) == (16,)  # IHDR bit depth
+    assert [tuple(d) for k, d in chunks if k == "cICP"] == [cicp]
+    assert kinds.index("cICP") < kinds.index("IDAT")
+    assert not {"sRGB", "gAMA", "iCCP"} & set(kinds)
+    exr = read_image(tmp_path / "oil.exr")
+    png = read_image(tmp_path / "oil.png")
+    expected = np.clip(ocio_ops.apply(view_transforms.view_transform(display,
+                                                                     render.DEFAULT_VIEW),
+                                      exr[..., :3]), 0, 1)
+    assert np.abs(expected - png).max() < 2 / 1023

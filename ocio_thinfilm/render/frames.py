@@ -41,8 +41,10 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
 #: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
 #: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4), the Raw view and the displays
 #: of other configs (an ACES config merged with ``bake --into``) no tag -- never a wrong
-#: sRGB one.
-PNG_COLORSPACE = {d.name: d.png_colorspace for d in registry.DISPLAY_LIST}
+#: sRGB one. The HDR displays get their cICP chunk (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1,
+#: P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
+PNG_COLORSPACE = {d.name: d.png_colorspace
+                  for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST}
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
@@ -155,7 +157,9 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
         raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
         raw = all((region[2] or view) in raw_views for region in picture.regions)
         png_tag = "data" if raw else PNG_COLORSPACE.get(display, "data")
-        png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
+        # HDR code values need 16 bits (PQ: 8-bit steps are visible banding)
+        png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb,
+                              dtype="uint16" if registry.is_hdr(display) else "uint8",
                               attributes={"png:compressionLevel": 3,
                                           "oiio:ColorSpace": png_tag}, tx=tx)
         return [exr_job.result(), png_job.result()]
