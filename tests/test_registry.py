@@ -29,7 +29,7 @@ def test_every_module_lists_the_registrys_displays_views_and_spaces():
                                                         "P3-D65 PQ")
     assert list(config.DISPLAY_SPACES) == list(registry.ALL_DISPLAYS)
     assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
-    assert list(render.PNG_COLORSPACE) == list(registry.DISPLAYS)
+    assert list(render.PNG_COLORSPACE) == list(registry.ALL_DISPLAYS)
     data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
     assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == \
         list(registry.THIN_FILM_SPACES)
