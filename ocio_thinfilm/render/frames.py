@@ -51,9 +51,33 @@ PNG_COLORSPACE = {d.name: d.png_colorspace
 FIXED_DATETIME = "1990:06:11 00:00:00"
 
 
-def draw_labels(rgb: np.ndarray, labels) -> tuple[np.ndarray, bool]:
+#: Code value of the captions on SDR displays (sRGB: 83 % of white).
+LABEL_CODE = 0.92
+
+
+def label_code(display: str) -> float:
+    """The captions' code value on ``display``: :data:`LABEL_CODE` on SDR displays; on
+    the registry's HDR displays the code of the same light relative to the 203 cd/m2
+    reference white (graphics white of ITU-R BT.2408), not 0.92 of the PQ / HLG range.
+
+    >>> round(label_code("sRGB"), 2), round(label_code("Rec.2100-PQ"), 3)
+    (0.92, 0.561)
+    """
+    if not registry.is_hdr(display):
+        return LABEL_CODE
+    from ocio_thinfilm.colour import colorimetry
+    from ocio_thinfilm.lut import display_transforms, ocio_ops
+
+    light = ((LABEL_CODE + 0.055) / 1.055) ** 2.4  # the sRGB EOTF of LABEL_CODE
+    grey = light * colorimetry.white_XYZ(registry.gamut_of(display))
+    return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(display),
+                                grey)[1])
+
+
+def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.ndarray, bool]:
     """Draw ``(x, y, text, size)`` captions, centred at x, with OpenImageIO's
-    ``render_text`` and its bundled font. Returns (image, whether text was drawn)."""
+    ``render_text`` and its bundled font, in the grey of code value ``code``. Returns
+    (image, whether text was drawn)."""
     if not labels:
         return rgb, True
     import OpenImageIO as oiio
@@ -63,7 +87,7 @@ def draw_labels(rgb: np.ndarray, labels) -> tuple[np.ndarray, bool]:
     drawn = True
     for x, y, text, size in labels:
         ok = oiio.ImageBufAlgo.render_text(buf, int(x), int(y), text, int(size), "",
-                                           (0.92, 0.92, 0.92), "center", "baseline", 0)
+                                           (code, code, code), "center", "baseline", 0)
         drawn = drawn and bool(ok)
     if not drawn:
         return rgb, False
@@ -91,7 +115,7 @@ def render_scene(name: str, size=DEFAULT_SIZE, *, seed: int = 0, frame: int = 1,
     lookup = lookup or make_lookup(processors)
     picture = scene.render(width, height, lookup=lookup, seed=seed, frame=frame)
     rgb = display_image(picture, display, view, processors)
-    rgb, _ = draw_labels(rgb, picture.labels)
+    rgb, _ = draw_labels(rgb, picture.labels, label_code(display))
     return picture, rgb
 
 
