@@ -224,7 +224,7 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
     script.write_text(
         "import bpy\n"
         "s = bpy.context.scene\n"
-        "for d in ('sRGB', 'Display P3', 'Rec.2020'):\n"
+        f"for d in {registry.ALL_DISPLAYS!r}:\n"
         "    s.display_settings.display_device = d\n"
         "    for v in ('Constant-Lightness Clip', 'Channel Clamp', 'ACES Gamut Compression',"
         " 'Raw'):\n"
@@ -239,7 +239,7 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
                             capture_output=True, text=True, timeout=300, env=env)
     text = result.stdout + result.stderr
     assert "Color management: Error" not in text, text
-    for display in clip.DISPLAYS:
+    for display in registry.ALL_DISPLAYS:
         for view in registry.VIEWS:
             assert f"SET {display} / {view}" in text, text
     assert "IMAGE Thin Film Phase-Change Thickness" in text, text
