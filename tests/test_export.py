@@ -104,7 +104,12 @@ def test_export_set_covers_every_table_display_and_format(exported_set):
     assert tables_size < 2_000_000  # the tables stay small
     views_size = sum((exported_set / n).stat().st_size for n in names
                      if n.startswith("ACEScct_to_"))
-    assert views_size < 25_000_000  # a 65^3 .cube is 7.5 MB per display
+    assert tables_size + views_size <= 15_000_000  # the size budget of luts/ (committed)
+
+
+def test_committed_config_within_size_budget():
+    size = sum(p.stat().st_size for p in CONFIG_DIR.rglob("*") if p.is_file())
+    assert size <= 25_000_000
 
 
 # --------------------------------------------------------------------------- #

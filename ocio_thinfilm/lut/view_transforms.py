@@ -21,7 +21,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ocio_thinfilm import registry
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.clip_lut import (
     CLIP_SIZE,
     clip_lut,
@@ -33,10 +36,8 @@ from ocio_thinfilm.lut.display_transforms import (
     check_display,
     display_encoding_transform,
     display_matrix_transform,
+    hdr_encoding_transform,
 )
-from ocio_thinfilm import registry
-from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.lut.display_transforms import hdr_encoding_transform
 from ocio_thinfilm.lut.ocio_ops import finite_limit_transform, group, transform_id
 from ocio_thinfilm.registry import VIEWS
 
@@ -183,6 +184,9 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     check_display(display)
     if view == "Constant-Lightness Clip":
         return clip_transform(display, size)
+    if view == "Constant-Lightness Compress":
+        return group(compress_lut(display, clip_size=size).transforms()
+                     + [working_decoding_transform()])
     # the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range
     # takes to the lower bound) stay finite through the matrices at every
     # optimisation level (OPTIMIZATION_NONE does not compose them, so F32_MAX inputs
@@ -193,7 +197,7 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     if view == "ACES Gamut Compression":
         return group([finite_limit_transform(), display_matrix_transform(display),
                       aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0)])
-    raise ValueError(f"view must be one of {VIEWS[:3]}, got {view!r}")
+    raise ValueError(f"view must be one of {VIEWS[:-1]}, got {view!r}")
 
 
 def view_transform(display: str, view: str, size: int = CLIP_SIZE):
@@ -267,5 +271,10 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
         return group(lut.transforms() + [working_decoding_transform(),
                                          display_encoding_transform(display)],
                      name=lut.name, id=transform_id("Gamut_Map", lut.name))
+    if view == "Constant-Lightness Compress":
+        soft = compress_lut(display, clip_size=size)
+        return group(soft.transforms() + [working_decoding_transform(),
+                                          display_encoding_transform(display)],
+                     name=soft.name, id=transform_id("Gamut_Map", soft.name))
     return group([view_linear_transform(display, view, size),
                   display_encoding_transform(display)])
