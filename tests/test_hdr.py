@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry, compress
 
 ocio = pytest.importorskip("PyOpenColorIO")
 colour = pytest.importorskip("colour")
@@ -29,6 +29,12 @@ from test_gamut_map import EXTREMES, LEVELS, TOL, _sets  # noqa: E402
 
 CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
 VIEW = "Constant-Lightness Clip"
+#: The views with an analytic map: the clip and the soft compression (the same ray and
+#: faces, scale-covariant alike), and their maps of XYZ into an SDR gamut.
+MAPPED = {"Constant-Lightness Clip": clip.clip_XYZ,
+          "Constant-Lightness Compress": compress.compress_XYZ}
+#: Every view but Raw.
+NOT_RAW = [v for v in registry.VIEWS if v != "Raw"]
 WHITE = 203.0
 PEAK = 1000.0
 K = PEAK / WHITE
@@ -63,14 +69,15 @@ def _decoded_XYZ(display, code):
     return colorimetry.RGB_to_XYZ(_nits(display, code) / WHITE, registry.gamut_of(display))
 
 
-def _truth(display, XYZ):
-    """The analytic clip into the display's HDR volume (XYZ, Y = 1 at 203 cd/m2), and
-    whether each colour is inside that volume."""
+def _truth(display, XYZ, view=VIEW):
+    """The analytic map of ``view`` into the display's HDR volume (XYZ, Y = 1 at 203
+    cd/m2), and whether each colour is inside that volume."""
+    mapping = MAPPED[view]
     gamut = registry.gamut_of(display)
     M = colorimetry.matrix_XYZ_to_RGB(gamut)
     XYZ = np.asarray(XYZ, dtype=np.float64)
     if registry.hdr_display(display).transfer == "PQ":
-        return K * clip.clip_XYZ(XYZ / K, gamut), clip.in_gamut(XYZ / K @ M.T)
+        return K * mapping(XYZ / K, gamut), clip.in_gamut(XYZ / K @ M.T)
     # HLG (BT.2100 Table 5, L_B = 0): F_D = L_W Y_S^(gamma - 1) E, gamma = 1.2 at 1000
     # cd/m2; the scene light E in [0, 1] is the signal's volume. A pixel of display
     # luminance Y_D (cd/m2) has Y_S = (Y_D / L_W)^(1 / gamma).
@@ -79,28 +86,28 @@ def _truth(display, XYZ):
     with np.errstate(all="ignore"):
         to_scene = np.where(Yd > 0, (Yd / PEAK) ** (1.0 / gamma - 1.0) / PEAK, 0.0)
     scene = XYZ * WHITE * to_scene[:, None]
-    clipped = clip.clip_XYZ(scene, gamut)
+    clipped = mapping(scene, gamut)
     return (clipped * (PEAK * clipped[:, 1:2] ** (gamma - 1.0)) / WHITE,
             clip.in_gamut(scene @ M.T))
 
 
 def _measured(cfg):
-    """{(display, set): statistics} of the clip view on the sets scaled by k."""
+    """{(view, display, set): statistics} of the mapped views on the sets scaled by k."""
     out = {}
-    for display in HDR:
+    for view, display in [(v, d) for v in MAPPED for d in HDR]:
         gamut = registry.gamut_of(display)
         M = colorimetry.matrix_XYZ_to_RGB(gamut)
         for name, XYZ in _sets().items():
             XYZ = XYZ * K
-            code = _apply(cfg, display, VIEW, XYZ)
+            code = _apply(cfg, display, view, XYZ)
             got = _decoded_XYZ(display, code)
-            truth, inside = _truth(display, XYZ)
+            truth, inside = _truth(display, XYZ, view)
             # dE2000 relative to the peak white (the HDR volume scaled back into SDR
             # units, as the SDR tests compare relative to their white)
             de = colorimetry.delta_E2000(truth / K, got / K)
             L, L_true = got[:, 1] * WHITE, XYZ[:, 1] * WHITE  # cd/m2
             rel = np.abs(L - L_true) / np.maximum(L_true, FLOOR)
-            out[display, name] = dict(
+            out[view, display, name] = dict(
                 p99=float(np.percentile(de, 99)), max=float(de.max()),
                 rel_inside=float(rel[inside].max()) if inside.any() else 0.0,
                 rel_outside=float(rel[~inside].max()) if (~inside).any() else 0.0,
@@ -124,31 +131,52 @@ TARGET = (0.5, 1.5, 1e-3, 0.1)
 REACHED_OUTSIDE = 4e-3
 
 
+#: What the compression reaches against its analytic map (the same as its SDR LUTs on
+#: Rec.2020 / P3 for PQ; HLG moves the colours in the LUTs' cells a little): dE2000 max
+#: per set, and its luminance error relative to 203 Y (its LUTs' |dY|, scaled).
+COMPRESS_MAX = {"object": 1.1, "monochromatic": 1.0, "ap0": 1.5, "mixtures": 1.6}
+COMPRESS_REL = 5e-3
+
+
+@pytest.mark.parametrize("view", list(MAPPED))
 @pytest.mark.parametrize("display", HDR)
 @pytest.mark.parametrize("name", ["object", "monochromatic", "ap0", "mixtures"])
-def test_hdr_view_against_the_scaled_analytic_clip(measured, display, name):
-    m = measured[display, name]
-    print(f"{display:12s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
+def test_hdr_view_against_the_scaled_analytic_map(measured, view, display, name):
+    m = measured[view, display, name]
+    print(f"{view:28s} {display:12s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
           f"rel L in {m['rel_inside']:.1e} out {m['rel_outside']:.1e} "
           f"in-gamut max {m['inside_max']:.3f}")
     p99, worst, rel, inside = TARGET
     assert m["in_range"] and m["in_volume"]
     assert m["p99"] <= p99
-    # the SDR Rec.2020 / P3 clip's AP0 figures (dark violet beyond the blue primary)
-    assert m["max"] <= (1.6 if name == "ap0" else worst)
-    assert m["rel_inside"] <= rel
-    assert m["inside_max"] <= inside
-    assert m["rel_outside"] <= REACHED_OUTSIDE
+    if view == VIEW:
+        # the SDR Rec.2020 / P3 clip's AP0 figures (dark violet beyond the blue primary)
+        assert m["max"] <= (1.6 if name == "ap0" else worst)
+        assert m["rel_inside"] <= rel
+        assert m["inside_max"] <= inside
+        assert m["rel_outside"] <= REACHED_OUTSIDE
+    else:  # in-gamut colours near the faces move too: no 'unchanged' bound here
+        assert m["max"] <= COMPRESS_MAX[name]
+        assert max(m["rel_inside"], m["rel_outside"]) <= COMPRESS_REL
+
+
+@pytest.mark.xfail(strict=True, reason="target not reached: max dE2000 1.60 for the "
+                   "compression into Rec.2100-HLG on spectral-line mixtures (1.27 / 1.39 "
+                   "into its SDR gamuts)")
+def test_hdr_compress_target(measured):
+    assert max(m["max"] for (v, _, _), m in measured.items() if v != VIEW) <= TARGET[1]
 
 
 @pytest.mark.xfail(strict=True, reason="target not reached: luminance of out-of-gamut "
                    "colours to 1e-3 relative (the SDR LUTs' |dY| <= 1e-3 is absolute)")
 def test_hdr_relative_luminance_target_outside_the_gamut(measured):
-    assert max(m["rel_outside"] for m in measured.values()) <= TARGET[2]
+    assert max(m["rel_outside"] for (v, _, _), m in measured.items() if v == VIEW) \
+        <= TARGET[2]
 
 
+@pytest.mark.parametrize("view", list(MAPPED))
 @pytest.mark.parametrize("display", HDR)
-def test_luminance_is_203_Y(cfg, display):
+def test_luminance_is_203_Y(cfg, display, view):
     """Decoding the view's output with the ST 2084 / HLG EOTF gives 203 Y cd/m2 for
     colours the clip keeps (in gamut, Y up to the peak), and the peak white above."""
     gamut = registry.gamut_of(display)
@@ -160,22 +188,23 @@ def test_luminance_is_203_Y(cfg, display):
         Ys = rgb @ colorimetry.RGB_to_XYZ(np.eye(3), gamut)[:, 1]
         rgb = rgb * (PEAK / WHITE * Ys[:, None] ** 0.2)
     XYZ = colorimetry.RGB_to_XYZ(rgb, gamut)
-    code = _apply(cfg, display, VIEW, XYZ)
+    code = _apply(cfg, display, view, XYZ)
     L = _decoded_XYZ(display, code)[:, 1] * WHITE
     L_true = XYZ[:, 1] * WHITE
     keep = L_true >= FLOOR
     assert np.abs(L - L_true)[keep].max() / 1.0 <= 1e-3 * L_true[keep].max()
     assert (np.abs(L - L_true) / L_true)[keep].max() <= 1e-3
-    np.testing.assert_allclose(_decoded_XYZ(display, code), XYZ, rtol=2e-3, atol=2e-4)
+    if view == VIEW:  # in gamut: unchanged (the compression moves those near the faces)
+        np.testing.assert_allclose(_decoded_XYZ(display, code), XYZ, rtol=2e-3, atol=2e-4)
     # grey ramp above the peak: the peak white
     grey = np.outer([1.01 * K, 2 * K, 100.0], colorimetry.white_XYZ())
-    out = _nits(display, _apply(cfg, display, VIEW, grey))
+    out = _nits(display, _apply(cfg, display, view, grey))
     np.testing.assert_allclose(out, PEAK, rtol=1e-3)
 
 
 @pytest.mark.parametrize("level", LEVELS)
 @pytest.mark.parametrize("display", HDR)
-@pytest.mark.parametrize("view", registry.VIEWS[:3])
+@pytest.mark.parametrize("view", NOT_RAW)
 def test_hdr_extremes_finite_and_in_range(cfg, display, view, level):
     with np.errstate(over="ignore"):  # float32 max * k is +Inf: an input too
         x = np.r_[EXTREMES, EXTREMES * np.float32(K)]
