@@ -136,9 +136,10 @@ def test_merged_contents(merged):
     gamuts = {registry.gamut_of(d) for d in EXPECTED[uri].values()}
     nts = set(cfg.getNamedTransformNames()) - set(base.getNamedTransformNames())
     assert nts == ({f"Constant-Lightness Clip - {g} (display-linear)" for g in gamuts}
+                   | {f"Constant-Lightness Compress - {g} (display-linear)" for g in gamuts}
                    | {f"{s} to CIE-XYZ-D65" for s in registry.THIN_FILM_SPACES})
     luts = {p.name for p in (path.parent / "luts").iterdir()}
-    assert len(luts) == 3 + 2 * len(gamuts)
+    assert len(luts) == 3 + 4 * len(gamuts)  # the clip's and the compression's 2 each
 
 
 def _write_exr(path, pixels):
