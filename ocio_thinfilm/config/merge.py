@@ -256,7 +256,7 @@ def _match_hdr(cfg, xyz_to_display, cs):
             nits = _hdr_nits(entry.transfer, _apply(cfg, transform, rgb * scale @ to_xyz))
         except Exception:  # noqa: BLE001 -- a colour space that cannot process: no match
             return None
-        if np.allclose(nits / unit, rgb * scale, rtol=2e-3, atol=2e-3 * scale):
+        if np.allclose(nits / unit, rgb * scale, rtol=2e-3, atol=5e-4 * scale):
             return entry.name, unit
     return None
 
