@@ -193,8 +193,8 @@ def test_scene_linear_white_is_display_white(cfg, ocio):
             px = np.ones((1, 3), np.float32)
             cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
                              ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
-            if hdr:
-                np.testing.assert_allclose(_hdr_nits(display, px), 203.0, rtol=1e-3)
+            if hdr:  # 0.25/255 of an sRGB code at white is 2.3e-3 of its light
+                np.testing.assert_allclose(_hdr_nits(display, px), 203.0, rtol=2.5e-3)
             else:
                 np.testing.assert_allclose(px, 1.0, atol=0.25 / 255)  # clip: see test_tables
             px = np.full((1, 3), 4.0 * (5.0 if hdr else 1.0), np.float32)  # above white

@@ -23,8 +23,8 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
-    assert registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
-                              "ACES Gamut Compression", "Raw")
+    assert registry.VIEWS == ("Constant-Lightness Clip", "Constant-Lightness Compress",
+                              "Channel Clamp", "ACES Gamut Compression", "Raw")
     assert registry.ALL_DISPLAYS == registry.DISPLAYS + ("Rec.2100-PQ", "Rec.2100-HLG",
                                                         "P3-D65 PQ")
     assert list(config.DISPLAY_SPACES) == list(registry.ALL_DISPLAYS)
@@ -50,8 +50,12 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
             assert (ROOT / "configs" / "thinfilm" / "luts" / "{}.clf".format(
                 registry.clip_lut_stem(registry.gamut_of(d.name), white))).is_file()
     # HDR displays reuse their gamut's LUT files: none of their own
-    luts = sorted(p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir())
-    assert len(luts) == 2 * len(registry.DISPLAYS) + len(registry.THIN_FILM_LIST)
+    luts = {p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir()}
+    assert luts == ({f"{registry.clip_lut_stem(d, w)}.clf" for d in registry.DISPLAYS
+                     for w in (False, True)}
+                    | {f"{registry.compress_lut_stem(d, w)}.clf" for d in registry.DISPLAYS
+                       for w in (False, True)}
+                    | {f"{s.lut_stem}.clf" for s in registry.THIN_FILM_LIST})
     for s in registry.THIN_FILM_LIST:
         assert cfg.getColorSpace(s.name).getFamily() == "Thin Film"
         assert (ROOT / "configs" / "thinfilm" / "luts" / f"{s.lut_stem}.clf").is_file()
@@ -118,8 +122,9 @@ def test_adding_a_display_is_one_entry(tmp_path):
         out.stdout.strip().splitlines()[-1])
     assert displays[:4] == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
     assert displays[4:] == list(registry.HDR_DISPLAYS)
-    assert views == ["Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression",
-                     "Raw"]
+    assert views == list(registry.VIEWS)
     assert luts == ["ConstantLightnessClip_Rec709_BlackFaces.clf",
-                    "ConstantLightnessClip_Rec709_WhiteFaces.clf"]
+                    "ConstantLightnessClip_Rec709_WhiteFaces.clf",
+                    "ConstantLightnessCompress_Rec709_BlackFaces.clf",
+                    "ConstantLightnessCompress_Rec709_WhiteFaces.clf"]
     assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"
