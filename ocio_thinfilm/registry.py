@@ -4,7 +4,10 @@ Every other module derives its lists from here: ``clip.DISPLAYS``,
 ``config.DISPLAY_SPACES``, ``display_transforms.DISPLAY_ENCODINGS``, the config's
 thin-film spaces and views, the LUT file names of the config and of ``export``, and the
 renderer's display choices and PNG tags. Adding a display is one :class:`Display`
-entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm bake``).
+entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm bake``); an HDR display is one
+:class:`HDRDisplay` entry in :data:`HDR_DISPLAY_LIST`, which reuses the clip LUTs of the
+SDR display with its primaries (:data:`DISPLAYS` are the SDR displays, the gamuts the
+clip is baked for; :data:`ALL_DISPLAYS` are the config's displays, HDR ones included).
 
 The registry is plain data (frozen dataclasses) and imports nothing but
 :mod:`ocio_thinfilm.colour.colorimetry`; it is validated once, at import (:func:`validate`).
@@ -16,10 +19,12 @@ from dataclasses import dataclass
 
 from ocio_thinfilm.colour import colorimetry
 
-__all__ = ["Display", "View", "ThinFilmSpace", "DISPLAY_LIST", "VIEW_LIST",
-           "THIN_FILM_LIST", "DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display",
-           "thin_film_space_for_kind", "CLIP_FILE_STEM", "clip_lut_stem", "COMPRESS_FILE_STEM",
-           "compress_lut_stem", "validate"]
+__all__ = ["Display", "HDRDisplay", "View", "ThinFilmSpace", "DISPLAY_LIST",
+           "HDR_DISPLAY_LIST", "VIEW_LIST", "THIN_FILM_LIST", "DISPLAYS", "HDR_DISPLAYS",
+           "ALL_DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display", "hdr_display", "is_hdr",
+           "gamut_of", "HDR_REFERENCE_WHITE", "OCIO_XYZ_UNIT", "thin_film_space_for_kind",
+           "CLIP_FILE_STEM", "clip_lut_stem", "COMPRESS_FILE_STEM", "compress_lut_stem",
+           "validate"]
 
 
 @dataclass(frozen=True)
@@ -42,6 +47,48 @@ class Display:
     encoding: tuple
     lut_stem: str
     png_colorspace: str
+
+
+#: Luminance (cd/m2) at which an HDR display shows the reference white Y = 1: the HDR
+#: reference (diffuse) white of ITU-R BT.2408 (PQ and HLG alike).
+HDR_REFERENCE_WHITE = 203.0
+#: Luminance (cd/m2) of CIE XYZ Y = 1 at the input of OCIO's built-in HDR display
+#: transforms (``DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ`` etc.: "linear nits/100").
+OCIO_XYZ_UNIT = 100.0
+
+
+@dataclass(frozen=True)
+class HDRDisplay:
+    """An HDR display of the config: the parallelepiped of its primaries scaled to the
+    peak luminance, so every view is the SDR one of ``gamut`` scaled by
+    ``peak / HDR_REFERENCE_WHITE`` (the clip is scale-covariant: the same LUT files).
+
+    ``name``: the OCIO display name; ``gamut``: the SDR display of :data:`DISPLAYS` with
+    its primaries and white (whose clip LUTs it reuses); ``colorspace``: the config's
+    display colour space; ``description``: its description; ``transfer``: ``"PQ"``
+    (SMPTE ST 2084) or ``"HLG"`` (ARIB STD-B67 with the BT.2100 OOTF for ``peak``);
+    ``builtin``: OCIO's built-in display transform (CIE XYZ with Y = 1 at
+    :data:`OCIO_XYZ_UNIT` cd/m2 -> code values; OCIO >= 2.1); ``peak``: peak white in
+    cd/m2; ``lut_stem``: the display's part of file names; ``png_colorspace``: the
+    OpenImageIO colour interop ID a (16-bit) PNG for it is tagged with (OpenImageIO 3
+    writes it as the PNG cICP chunk, ITU-T H.273 code points).
+    """
+
+    name: str
+    gamut: str
+    colorspace: str
+    description: str
+    transfer: str
+    builtin: str
+    peak: float
+    lut_stem: str
+    png_colorspace: str
+
+    @property
+    def scale(self) -> float:
+        """Peak white in units of the reference white: the display volume is the
+        gamut's RGB parallelepiped up to this value (1000 / 203 = 4.926)."""
+        return self.peak / HDR_REFERENCE_WHITE
 
 
 @dataclass(frozen=True)
@@ -88,6 +135,25 @@ DISPLAY_LIST = (
             ("BT.1886 gamma 2.4", 2.4, None), "Rec2020", "g24_rec2020_display"),
 )
 
+HDR_DISPLAY_LIST = (
+    HDRDisplay("Rec.2100-PQ", "Rec.2020", "Rec.2100-PQ - Display",
+               "ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 encoding, "
+               "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
+               "PQ", "DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ", 1000.0, "Rec2100PQ",
+               "pq_rec2020_display"),
+    HDRDisplay("Rec.2100-HLG", "Rec.2020", "Rec.2100-HLG - Display",
+               "ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the BT.2100 "
+               "OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
+               "reference white)",
+               "HLG", "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit", 1000.0,
+               "Rec2100HLG", "hlg_rec2020_display"),
+    HDRDisplay("P3-D65 PQ", "Display P3", "ST2084-P3-D65 - Display",
+               "P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, 1000 cd/m2 "
+               "peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
+               "PQ", "DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65", 1000.0, "P3D65PQ",
+               "pq_p3d65_display"),
+)
+
 VIEW_LIST = (
     View("Constant-Lightness Clip",
          "Smits & Meyer 1990 Section 3.2: display-linear RGB clipped at constant luminance "
@@ -116,12 +182,16 @@ THIN_FILM_LIST = (
                   "ThinFilm_Morpho"),
 )
 
-#: Names, in order.
+#: Names, in order (DISPLAYS: the SDR displays, the gamuts the clip is baked for).
 DISPLAYS = tuple(d.name for d in DISPLAY_LIST)
+HDR_DISPLAYS = tuple(d.name for d in HDR_DISPLAY_LIST)
+#: The config's displays: SDR, then HDR.
+ALL_DISPLAYS = DISPLAYS + HDR_DISPLAYS
 VIEWS = tuple(v.name for v in VIEW_LIST)
 THIN_FILM_SPACES = tuple(s.name for s in THIN_FILM_LIST)
 
 _BY_NAME = {d.name: d for d in DISPLAY_LIST}
+_HDR_BY_NAME = {d.name: d for d in HDR_DISPLAY_LIST}
 
 
 def display(name: str) -> Display:
@@ -130,6 +200,32 @@ def display(name: str) -> Display:
         return _BY_NAME[name]
     except (KeyError, TypeError):
         raise ValueError(f"display must be one of {DISPLAYS}, got {name!r}") from None
+
+
+def hdr_display(name: str) -> HDRDisplay:
+    """The :class:`HDRDisplay` called ``name`` (ValueError naming the choices otherwise)."""
+    try:
+        return _HDR_BY_NAME[name]
+    except (KeyError, TypeError):
+        raise ValueError(f"display must be one of {HDR_DISPLAYS}, got {name!r}") from None
+
+
+def is_hdr(name: str) -> bool:
+    """Whether ``name`` is an HDR display of the registry."""
+    return isinstance(name, str) and name in _HDR_BY_NAME
+
+
+def gamut_of(name: str) -> str:
+    """The SDR display (gamut, clip LUTs) of a display of :data:`ALL_DISPLAYS`.
+
+    >>> gamut_of("Rec.2100-HLG"), gamut_of("sRGB")
+    ('Rec.2020', 'sRGB')
+    """
+    if is_hdr(name):
+        return _HDR_BY_NAME[name].gamut
+    if isinstance(name, str) and name in _BY_NAME:
+        return name
+    raise ValueError(f"display must be one of {ALL_DISPLAYS}, got {name!r}")
 
 
 def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
@@ -177,11 +273,12 @@ def validate() -> None:
     the display's name, so a display's name must equal its colorimetry space."""
     import re
 
-    for kind, names in (("display", DISPLAYS), ("view", VIEWS),
+    for kind, names in (("display", DISPLAYS + HDR_DISPLAYS), ("view", VIEWS),
                         ("thin-film space", THIN_FILM_SPACES)):
         if len(set(names)) != len(names) or not all(names):
             raise ValueError(f"registry: {kind} names must be unique and non-empty: {names}")
-    stems = ([d.lut_stem for d in DISPLAY_LIST] + [s.lut_stem for s in THIN_FILM_LIST]
+    stems = ([d.lut_stem for d in DISPLAY_LIST + HDR_DISPLAY_LIST]
+             + [s.lut_stem for s in THIN_FILM_LIST]
              + [s.file_stem for s in THIN_FILM_LIST])
     if len(set(stems)) != len(stems):
         raise ValueError(f"registry: LUT file stems must be unique: {stems}")
@@ -200,6 +297,14 @@ def validate() -> None:
             raise ValueError(f"registry: display {d.name!r}: bad encoding {d.encoding!r}")
         if d.colorspace in THIN_FILM_SPACES or not d.colorspace:
             raise ValueError(f"registry: display {d.name!r}: bad colour space {d.colorspace!r}")
+    spaces = [d.colorspace for d in DISPLAY_LIST + HDR_DISPLAY_LIST]
+    if len(set(spaces)) != len(spaces):
+        raise ValueError(f"registry: display colour spaces must be unique: {spaces}")
+    for d in HDR_DISPLAY_LIST:
+        if (d.gamut not in DISPLAYS or d.transfer not in ("PQ", "HLG")
+                or not d.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
+                or not d.peak > HDR_REFERENCE_WHITE or not d.png_colorspace):
+            raise ValueError(f"registry: HDR display {d.name!r}: bad entry {d!r}")
     if [v.name for v in VIEW_LIST if v.raw] != [VIEW_LIST[-1].name]:
         raise ValueError("registry: exactly one raw view, listed last")
     if any(not v.description for v in VIEW_LIST if not v.raw):

@@ -72,7 +72,8 @@ def test_colour_spaces_displays_views(cfg):
     names = list(cfg.getColorSpaceNames())
     for name in SPACES:
         assert name in names, name
-    assert list(cfg.getDisplays()) == ["sRGB", "Display P3", "Rec.2020"]
+    assert list(cfg.getDisplays()) == ["sRGB", "Display P3", "Rec.2020", "Rec.2100-PQ",
+                                       "Rec.2100-HLG", "P3-D65 PQ"]
     for display in cfg.getDisplays():
         assert list(cfg.getViews(display)) == list(registry.VIEWS)
 
@@ -171,17 +172,38 @@ def test_config_views_equal_package_view_transforms(cfg, ocio):
             np.testing.assert_allclose(out, ref, atol=2e-4, err_msg=f"{display} / {view}")
 
 
+def _hdr_nits(display, code):
+    """An HDR display's code values -> absolute display light, cd/m2 (colour-science's
+    ST 2084 EOTF, or the BT.2100 HLG EOTF for a 1000 cd/m2 peak, black at 0)."""
+    import colour
+
+    code = np.asarray(code, dtype=np.float64)
+    if registry.hdr_display(display).transfer == "PQ":
+        return colour.models.eotf_ST2084(code)
+    return colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0)
+
+
 def test_scene_linear_white_is_display_white(cfg, ocio):
+    """Scene-linear 1.0 is the display white on SDR displays and the BT.2408 reference
+    white (203 cd/m2) on HDR ones; far above white is the white, resp. the 1000 cd/m2
+    peak white."""
     for display in cfg.getDisplays():
+        hdr = registry.is_hdr(display)
         for view in registry.VIEWS[:3]:
             px = np.ones((1, 3), np.float32)
             cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
                              ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
-            np.testing.assert_allclose(px, 1.0, atol=0.25 / 255)  # clip: see test_tables
-            px = np.full((1, 3), 4.0, np.float32)  # above white -> white
-            cfg.getProcessor("Linear Rec.709 (sRGB)", display, "Constant-Lightness Clip",
+            if hdr:  # 0.25/255 of an sRGB code at white is 2.3e-3 of its light
+                np.testing.assert_allclose(_hdr_nits(display, px), 203.0, rtol=2.5e-3)
+            else:
+                np.testing.assert_allclose(px, 1.0, atol=0.25 / 255)  # clip: see test_tables
+            px = np.full((1, 3), 4.0 * (5.0 if hdr else 1.0), np.float32)  # above white
+            cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
                              ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
-            np.testing.assert_allclose(px, 1.0, atol=1e-4)
+            if hdr:
+                np.testing.assert_allclose(_hdr_nits(display, px), 1000.0, rtol=1e-3)
+            elif view == "Constant-Lightness Clip":
+                np.testing.assert_allclose(px, 1.0, atol=1e-4)
 
 
 def test_acescct_round_trip(cfg):
@@ -202,7 +224,7 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
     script.write_text(
         "import bpy\n"
         "s = bpy.context.scene\n"
-        f"for d in {tuple(clip.DISPLAYS)!r}:\n"
+        f"for d in {registry.ALL_DISPLAYS!r}:\n"
         "    s.display_settings.display_device = d\n"
         f"    for v in {tuple(registry.VIEWS)!r}:\n"
         "        s.view_settings.view_transform = v\n"
@@ -216,7 +238,7 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
                             capture_output=True, text=True, timeout=300, env=env)
     text = result.stdout + result.stderr
     assert "Color management: Error" not in text, text
-    for display in clip.DISPLAYS:
+    for display in registry.ALL_DISPLAYS:
         for view in registry.VIEWS:
             assert f"SET {display} / {view}" in text, text
     assert "IMAGE Thin Film Phase-Change Thickness" in text, text

@@ -462,3 +462,97 @@ def test_cli_export_view_writes_file(tmp_path, capsys):
                      CLC, "--size", "9", "--out", str(out), "--quiet"]) == 0
     assert "wrote" in capsys.readouterr().out
     assert out.read_text().startswith("CSPLUTV100")
+
+
+# --------------------------------------------------------------------------- #
+# HDR displays: ACEScct -> Rec.2100-PQ (and the other HDR displays)
+# --------------------------------------------------------------------------- #
+HDR_K = 1000.0 / 203.0
+
+
+def _hdr_dE(code, XYZ, display):
+    """dE2000 of an HDR display LUT's codes (decoded with colour-science's ST 2084 /
+    BT.2100 HLG EOTF, Y = 1 at 203 cd/m2) against the analytic clip scaled into the
+    PQ volume, k clip(X / k), relative to the peak white (as test_hdr.py and the SDR
+    files' dE2000 relative to their white)."""
+    import colour
+
+    from ocio_thinfilm import registry
+
+    entry = registry.hdr_display(display)
+    code = np.asarray(code, dtype=np.float64)
+    nits = (colour.models.eotf_ST2084(code) if entry.transfer == "PQ" else
+            colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0))
+    got = colorimetry.RGB_to_XYZ(nits / 203.0, entry.gamut)
+    return colorimetry.delta_E2000(got / HDR_K, clip.clip_XYZ(XYZ / HDR_K, entry.gamut))
+
+
+@pytest.fixture(scope="module")
+def hdr_luts(tmp_path_factory):
+    d = tmp_path_factory.mktemp("hdr")
+    files = {}
+    for display in ("Rec.2100-PQ", "P3-D65 PQ"):
+        stem = display.replace(" ", "").replace(".", "")
+        for fmt in ("cube", "csp"):
+            files[display, fmt] = export_view.export_view("ACEScct", display, CLC,
+                                                          d / f"{stem}.{fmt}")
+        files[display, "cube-resolve"] = export_view.export_view(
+            "ACEScct", display, CLC, d / f"{stem}-resolve.cube", shaper=True)
+    return files
+
+
+#: Measured on object colours inside AP1 and the same colours at 1000 / 203 (highlights
+#: up to the 1000 cd/m2 peak), dE2000 relative to the peak white, p99 / max: Resolve
+#: .cube (colour-science) Rec.2100-PQ 0.15 / 2.35, P3-D65 PQ 0.51 / 2.12; .csp (OCIO)
+#: 0.14 / 2.09 and 0.39 / 1.78; held to the SDR files' targets (p99 1.0, max 3.0). The
+#: plain .cube (a grid uniform in ACEScct, cells 0.27 stops wide at the peak where the
+#: clip bends everything towards the peak white): 2.28 / 9.94 and 3.19 / 10.62 (diffuse
+#: colours 0.06-0.15 / 0.9-1.5, highlights 3.5-4.9 / 9.9-10.6), held to the SDR plain
+#: files' limits.
+HDR_LIMITS = {"cube-resolve": (1.0, 3.0), "csp": (1.0, 3.0), "cube": (5.5, 12.0)}
+
+
+@pytest.mark.parametrize("display", ["Rec.2100-PQ", "P3-D65 PQ"])
+@pytest.mark.parametrize("fmt, consumer", [("cube-resolve", "colour"), ("csp", "ocio"),
+                                           ("cube", "ocio"), ("cube", "colour")])
+def test_acescct_hdr_view_luts(hdr_luts, inside_AP1, display, fmt, consumer):
+    """ACEScct -> an HDR display: the file's codes, applied by colour-science or OCIO
+    and decoded with colour-science's ST 2084 EOTF, against the analytic clip scaled
+    into the 1000 cd/m2 volume; in-gamut greys keep 203 Y cd/m2."""
+    import colour
+
+    from ocio_thinfilm import registry
+
+    XYZ, cct = inside_AP1
+    XYZ = np.vstack([XYZ, XYZ * HDR_K])
+    cct = np.vstack([cct, colour.models.log_encoding_ACEScct(
+        _colour_rgb(XYZ[len(cct):], "ACEScg"))])
+    (path,) = hdr_luts[display, fmt]
+    if fmt == "cube":
+        assert 'TITLE "ACEScct to ' + display in path.read_text().splitlines()[0]
+    apply = _colour_tetrahedral if (fmt, consumer) == ("cube", "colour") else (
+        (lambda p, v: _colour_apply([p], v)) if consumer == "colour"
+        else (lambda p, v: _ocio_apply([p], v)))
+    dE = _hdr_dE(apply(path, cct), XYZ, display)
+    mean, p99, worst = _stats(dE)
+    n = len(dE) // 2
+    print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
+          f"max {worst:.3f} (diffuse p99 {np.percentile(dE[:n], 99):.3f} max "
+          f"{dE[:n].max():.3f}; highlights p99 {np.percentile(dE[n:], 99):.3f} max "
+          f"{dE[n:].max():.3f})")
+    assert p99 <= HDR_LIMITS[fmt][0] and worst <= HDR_LIMITS[fmt][1]
+    # grey ramp up to the peak: neutral, at 203 Y cd/m2 (dE2000 relative to the peak, as
+    # the SDR files' grey ramp relative to their white)
+    g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 1.0, 2.0, 4.0, 4.9])
+    code = apply(path, np.repeat(colour_acescct(g)[:, None], 3, axis=1))
+    white = colorimetry.RGB_to_XYZ(np.ones(3), registry.gamut_of(display))
+    assert _hdr_dE(code, g[:, None] * white, display).max() <= 0.5
+
+
+@pytest.mark.skipif(FFMPEG is None, reason="ffmpeg not installed (Debian package ffmpeg)")
+def test_acescct_hdr_csp_in_ffmpeg(hdr_luts, inside_AP1):
+    XYZ, cct = inside_AP1
+    (path,) = hdr_luts["Rec.2100-PQ", "csp"]
+    mean, p99, worst = _stats(_hdr_dE(ffmpeg_apply(path, cct), XYZ, "Rec.2100-PQ"))
+    print(f"ACEScct->Rec.2100-PQ .csp (ffmpeg): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
+    assert p99 <= 1.0 and worst <= 3.0

@@ -34,7 +34,15 @@ TOL = 2.0 / 255.0
 #: beyond the limit, so clipped onto G = 0) reaches 2.09/255 with half-float textures:
 #: the CPU puts G at 0 exactly, the GPU 1e-5 above (rounding the white squeeze's shaper
 #: to half floats on the CPU too does not remove it, so it is not the shaper alone).
-REACHED = {("Rec.2020", "Constant-Lightness Compress", "f2"): 2.2 / 255.0}
+#: On the PQ displays ST 2084 is steeper still near black (code 0.013 for 0.004 cd/m2):
+#: a channel on a gamut face that the CPU puts at 0 and the GPU's half-float textures
+#: (the clip's black pass, the compression's squeezes) leave 1e-5 of white (4e-6 of the
+#: peak) above it reaches 2.29/255 (P3-D65 PQ clip), 3.31/255 (P3-D65 PQ compression)
+#: and 2.34/255 (Rec.2100-PQ compression), 0.002-0.004 cd/m2 of light.
+REACHED = {("Rec.2020", "Constant-Lightness Compress", "f2"): 2.2 / 255.0,
+           ("P3-D65 PQ", "Constant-Lightness Clip", "f2"): 2.35 / 255.0,
+           ("P3-D65 PQ", "Constant-Lightness Compress", "f2"): 3.4 / 255.0,
+           ("Rec.2100-PQ", "Constant-Lightness Compress", "f2"): 2.4 / 255.0}
 MODERATE = (-20.0, 100.0)
 SOURCES = [
     "CIE-XYZ-D65",

@@ -29,20 +29,24 @@ OCIO21_CHECK = Path("/usr/bin/ociocheck")
 BASE21 = "ocio://studio-config-v1.0.0_aces-v1.3_ocio-v2.1"
 LATEST = "ocio://studio-config-latest"
 #: The SDR displays with sRGB / Rec.709, P3-D65 or Rec.2020 primaries and D65 white, by
-#: their published names (P3-D60 and P3-DCI have other whites; the rest are HDR).
+#: their published names (P3-D60 and P3-DCI have other whites), and the HDR displays
+#: BT.2100 PQ / HLG and P3-D65 PQ (not Display P3 HDR, Apple's extended sRGB curve).
+_HDR = {"Rec.2100-HLG - Display": "Rec.2100-HLG", "Rec.2100-PQ - Display": "Rec.2100-PQ",
+        "ST2084-P3-D65 - Display": "P3-D65 PQ"}
 EXPECTED = {
     BASE21: {"sRGB - Display": "sRGB", "Rec.1886 Rec.709 - Display": "sRGB",
-             "Rec.1886 Rec.2020 - Display": "Rec.2020", "P3-D65 - Display": "Display P3"},
+             "Rec.1886 Rec.2020 - Display": "Rec.2020", "P3-D65 - Display": "Display P3",
+             **_HDR},
     LATEST: {"sRGB - Display": "sRGB", "Display P3 - Display": "Display P3",
              "Gamma 2.2 Rec.709 - Display": "sRGB",
              "Gamma 2.6 P3-D65 - Display": "Display P3",
-             "Rec.1886 Rec.709 - Display": "sRGB"},
+             "Rec.1886 Rec.709 - Display": "sRGB", **_HDR},
 }
 #: (merged display, project display) pairs with the same encoding, for oiiotool.
 SAME_ENCODING = {BASE21: [("sRGB - Display", "sRGB"), ("Rec.1886 Rec.2020 - Display",
-                                                           "Rec.2020")],
+                                                           "Rec.2020"), *_HDR.items()],
                  LATEST: [("sRGB - Display", "sRGB"), ("Display P3 - Display",
-                                                          "Display P3")]}
+                                                          "Display P3"), *_HDR.items()]}
 
 
 #: What ``bake --into`` printed, per base config (filled by the ``merged`` fixture).
@@ -130,7 +134,7 @@ def test_merged_contents(merged):
     assert "Constant-Lightness Clip" in list(cfg.getActiveViews())
     assert list(cfg.getActiveDisplays()) == list(base.getActiveDisplays())
     assert dict(cfg.getRoles()) == dict(base.getRoles())
-    gamuts = set(EXPECTED[uri].values())
+    gamuts = {registry.gamut_of(d) for d in EXPECTED[uri].values()}
     nts = set(cfg.getNamedTransformNames()) - set(base.getNamedTransformNames())
     assert nts == ({f"Constant-Lightness {v} - {g} (display-linear)" for g in gamuts
                     for v in ("Clip", "Compress")}
@@ -173,19 +177,26 @@ def _oiiotool(cfg_path, src, space, display, view, out):
 
 
 def test_oiiotool_clip_view_matches_project_config(merged, tmp_path, colour):
+    """The merged clip view equals the project config's, through oiiotool: on the SDR
+    displays for colours up to white, on the HDR ones (the base's built-in PQ / HLG
+    display spaces, 100 cd/m2 per unit, against the project's 203 cd/m2 convention)
+    for the same colours scaled by 1000 / 203 into the HDR range."""
     uri, path, _ = merged
     if not PROJECT.exists():
         pytest.skip("configs/thinfilm not baked")
     X = np.vstack([object_colours(n_random=300)[::2],
                    spectral_colours(max_Y=0.6, levels=8)])
-    xyz, ap0 = tmp_path / "xyz.exr", tmp_path / "ap0.exr"
-    _write_exr(xyz, X)
     # ACES2065-1 from colour-science (Bradford D65 -> ACES white), not from our code
     D65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
-    A = colour.XYZ_to_RGB(X, "ACES2065-1", illuminant=D65,
-                          chromatic_adaptation_transform="Bradford")
-    _write_exr(ap0, A)
+    files = {}
+    for hdr, scale in ((False, 1.0), (True, 1000.0 / 203.0)):
+        xyz, ap0 = tmp_path / f"xyz{int(hdr)}.exr", tmp_path / f"ap0{int(hdr)}.exr"
+        _write_exr(xyz, X * scale)
+        _write_exr(ap0, colour.XYZ_to_RGB(X * scale, "ACES2065-1", illuminant=D65,
+                                          chromatic_adaptation_transform="Bradford"))
+        files[hdr] = (xyz, ap0)
     for display, ours in SAME_ENCODING[uri]:
+        xyz, ap0 = files[registry.is_hdr(ours)]
         expected = _oiiotool(PROJECT, xyz, "CIE-XYZ-D65", ours, "Constant-Lightness Clip",
                              tmp_path / "e.exr")
         for src, space in ((xyz, "cie_xyz_d65_interchange"), (ap0, "ACES2065-1")):
@@ -254,7 +265,7 @@ def _check_table_named_transforms(cfg):
 
 def test_named_transforms_in_merged_config(merged):
     uri, _, cfg = merged
-    for display in set(EXPECTED[uri].values()):
+    for display in {registry.gamut_of(d) for d in EXPECTED[uri].values()}:
         _check_clip_named_transform(cfg, display)
         _check_clip_named_transform(cfg, display, "Compress")
     _check_table_named_transforms(cfg)

@@ -25,13 +25,15 @@ def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
     assert registry.VIEWS == ("Constant-Lightness Clip", "Constant-Lightness Compress",
                               "Channel Clamp", "ACES Gamut Compression", "Raw")
-    assert list(config.DISPLAY_SPACES) == list(registry.DISPLAYS)
+    assert registry.ALL_DISPLAYS == registry.DISPLAYS + ("Rec.2100-PQ", "Rec.2100-HLG",
+                                                        "P3-D65 PQ")
+    assert list(config.DISPLAY_SPACES) == list(registry.ALL_DISPLAYS)
     assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
-    assert list(render.PNG_COLORSPACE) == list(registry.DISPLAYS)
+    assert list(render.PNG_COLORSPACE) == list(registry.ALL_DISPLAYS)
     data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
     assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == \
         list(registry.THIN_FILM_SPACES)
-    assert list(data.displays) == list(registry.DISPLAYS)
+    assert list(data.displays) == list(registry.ALL_DISPLAYS)
     assert all([v["name"] for v in views] == list(registry.VIEWS)
                for views in data.displays.values())
 
@@ -40,13 +42,20 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
     import PyOpenColorIO as ocio
 
     cfg = ocio.Config.CreateFromFile(str(ROOT / "configs" / "thinfilm" / "config.ocio"))
-    assert tuple(cfg.getDisplays()) == registry.DISPLAYS
-    for d in registry.DISPLAY_LIST:
+    assert tuple(cfg.getDisplays()) == registry.ALL_DISPLAYS
+    for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST:
         assert tuple(cfg.getViews(d.name)) == registry.VIEWS
         assert cfg.getColorSpace(d.colorspace) is not None
         for white in (False, True):
-            assert (ROOT / "configs" / "thinfilm" / "luts"
-                    / f"{registry.clip_lut_stem(d.name, white)}.clf").is_file()
+            assert (ROOT / "configs" / "thinfilm" / "luts" / "{}.clf".format(
+                registry.clip_lut_stem(registry.gamut_of(d.name), white))).is_file()
+    # HDR displays reuse their gamut's LUT files: none of their own
+    luts = {p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir()}
+    assert luts == ({f"{registry.clip_lut_stem(d, w)}.clf" for d in registry.DISPLAYS
+                     for w in (False, True)}
+                    | {f"{registry.compress_lut_stem(d, w)}.clf" for d in registry.DISPLAYS
+                       for w in (False, True)}
+                    | {f"{s.lut_stem}.clf" for s in registry.THIN_FILM_LIST})
     for s in registry.THIN_FILM_LIST:
         assert cfg.getColorSpace(s.name).getFamily() == "Thin Film"
         assert (ROOT / "configs" / "thinfilm" / "luts" / f"{s.lut_stem}.clf").is_file()
@@ -91,7 +100,7 @@ def test_adding_a_display_is_one_entry(tmp_path):
     shutil.copytree(ROOT / "ocio_thinfilm", package,
                     ignore=shutil.ignore_patterns("__pycache__"))
     source = (package / "registry.py").read_text()
-    anchor = "DISPLAY_LIST = (\n"
+    anchor = "\nDISPLAY_LIST = (\n"
     assert source.count(anchor) == 1
     entry = ('    Display("Rec.709", "Rec.709", "Rec.1886 Rec.709 - Display", "BT.709 primaries, '
              'D65, BT.1886 gamma 2.4", ("BT.1886 gamma 2.4", 2.4, None), "Rec709", '
@@ -112,9 +121,9 @@ def test_adding_a_display_is_one_entry(tmp_path):
                          env=env, cwd=tmp_path, check=True)
     displays, views, luts, clip_displays, tag, encoding = json.loads(
         out.stdout.strip().splitlines()[-1])
-    assert displays == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
-    assert views == ["Constant-Lightness Clip", "Constant-Lightness Compress",
-                     "Channel Clamp", "ACES Gamut Compression", "Raw"]
+    assert displays[:4] == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
+    assert displays[4:] == list(registry.HDR_DISPLAYS)
+    assert views == list(registry.VIEWS)
     assert luts == ["ConstantLightnessClip_Rec709_BlackFaces.clf",
                     "ConstantLightnessClip_Rec709_WhiteFaces.clf",
                     "ConstantLightnessCompress_Rec709_BlackFaces.clf",

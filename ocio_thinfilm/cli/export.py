@@ -99,7 +99,8 @@ def register(sub) -> None:
     e.add_argument("--display", default=None,
                    help=f"display gamut ({', '.join(registry.DISPLAYS)}): clip into it "
                         "(required for clip; for tables gives clipped display-linear RGB "
-                        "instead of XYZ)")
+                        "instead of XYZ); for view any display of the config "
+                        f"({', '.join(registry.HDR_DISPLAYS)} too)")
     e.add_argument("--index", type=float, default=None,
                    help="film refractive index n: input becomes physical thickness t "
                         "(t' = n t, normal incidence)")

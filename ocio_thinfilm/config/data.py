@@ -58,8 +58,10 @@ CONFIG_NAME = "ocio-thinfilm"
 PROFILE_VERSION = (2, 1)
 LUT_DIRECTORY = "luts"
 
-#: Display -> (display colour space name, description) (from :mod:`.registry`).
-DISPLAY_SPACES = {d.name: (d.colorspace, d.description) for d in registry.DISPLAY_LIST}
+#: Display -> (display colour space name, description) (from :mod:`.registry`), the SDR
+#: displays then the HDR ones (:data:`ocio_thinfilm.registry.ALL_DISPLAYS`).
+DISPLAY_SPACES = {d.name: (d.colorspace, d.description)
+                  for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST}
 
 #: Scene-linear RGB spaces: name -> (colorimetry space, description).
 LINEAR_SPACES = {
@@ -182,21 +184,34 @@ def _matrix_to_reference(space):
     return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
 
 
-def view_parts(display, view, *, lut=None, luts=None, inline=False, compress=None):
-    """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
-    the display's ClipLUT (for the Constant-Lightness Clip), ``compress``: its
-    CompressLUT (for the Constant-Lightness Compress), ``luts``: the LUT files."""
+def _linear_parts(gamut, view, lut, luts, inline, compress=None):
+    """CIE-XYZ-D65 -> display-linear RGB in [0, 1] of the SDR display ``gamut`` for one
+    view, as a list of transforms (the config's LUT files for the clip and the
+    compression)."""
     if view == "Constant-Lightness Compress":
-        linear = _compress_passes(compress, luts, inline) + [
+        return _compress_passes(compress, luts, inline) + [
             clip_lut.working_decoding_transform()]
-    elif view == "Constant-Lightness Clip":
+    if view == "Constant-Lightness Clip":
         # the second LUT ends in sRGB code values: back to display-linear here, the
         # display colour space encodes again (OCIO's optimiser removes the pair for
         # the sRGB-encoded displays)
-        linear = _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
-    else:
-        linear = [view_transforms.view_linear_transform(display, view)]
-    return ocio_ops.group(linear + [display_transforms.display_matrix_transform(display,
+        return _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
+    return [view_transforms.view_linear_transform(gamut, view)]
+
+
+def view_parts(display, view, *, lut=None, luts=None, inline=False, compress=None):
+    """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
+    the ClipLUT of the display's gamut (for the Constant-Lightness Clip),
+    ``compress``: its CompressLUT (for the Constant-Lightness Compress), ``luts``: the
+    LUT files. An HDR display's view is its gamut's chain (the same LUT files) between
+    the exact scales of :func:`ocio_thinfilm.lut.view_transforms.hdr_scaled`, whatever
+    the chain: the display reference then has Y = 1 at 203 cd/m2 and the volume up to
+    peak / 203."""
+    gamut = registry.gamut_of(display)
+    linear = _linear_parts(gamut, view, lut, luts, inline, compress)
+    if registry.is_hdr(display):
+        linear = view_transforms.hdr_scaled(display, linear)
+    return ocio_ops.group(linear + [display_transforms.display_matrix_transform(gamut,
                                                                                 inverse=True)])
 
 
@@ -251,12 +266,12 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
                        description=f"{table.description} {encoding}",
                        to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline)))
     for display, (name, description) in DISPLAY_SPACES.items():
-        cs.append(dict(name=name, family="Display", encoding="sdr-video",
+        cs.append(dict(name=name, family="Display",
+                       encoding="hdr-video" if registry.is_hdr(display) else "sdr-video",
                        categories=["file-io"], reference_space="display",
                        description=description,
-                       from_reference=ocio_ops.group([
-                           display_transforms.display_matrix_transform(display),
-                           display_transforms.display_encoding_transform(display)])))
+                       from_reference=display_transforms.display_colorspace_transform(
+                           display)))
 
     # The default view transform links the two reference spaces when a conversion
     # crosses them without a view (e.g. display space -> scene space): an identity,
@@ -279,8 +294,11 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
             view_transforms.append(dict(name=vt, family="Thin Film",
                                         description=f"{descriptions[view]} Display: {display}.",
                                         from_reference=view_parts(
-                                            display, view, lut=by_display[display], luts=luts,
-                                            inline=inline, compress=soft_by_display[display])))
+                                            display, view,
+                                            lut=by_display[registry.gamut_of(display)],
+                                            luts=luts, inline=inline,
+                                            compress=soft_by_display[
+                                                registry.gamut_of(display)])))
             views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
         displays[display] = views
 

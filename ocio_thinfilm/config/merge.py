@@ -13,6 +13,11 @@ else of it as it was:
   and encoding -- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression``
   (and ``Channel Clamp`` on displays without an ``Un-tone-mapped`` view, which is that
   baseline already), each through one view transform per gamut;
+- the same views on every HDR display that is one of the registry's (BT.2020 or P3-D65
+  primaries, D65, ST 2084 or 1000 cd/m2 HLG), found the same way: its codes decoded with
+  colour-science's EOTF must be the gamut's RGB times one luminance per unit of its
+  display reference (100 cd/m2 in the ACES configs). The view transform shows Y = 1 at
+  203 cd/m2 there, as the project's own HDR displays do;
 - named transforms: the clip per matched gamut (display-linear in and out) and the
   three tables (pixel value in, CIE XYZ out);
 - ``luts`` on the search path, with the LUT files the additions use.
@@ -220,19 +225,69 @@ def _match_gamut(cfg, xyz_to_display, cs):
     return None
 
 
-def match_displays(cfg):
-    """{display of ``cfg``: (its display colour space name, clip display)} for every
-    display that the clip supports."""
+def _hdr_nits(transfer, code):
+    """HDR code values -> absolute display light in cd/m2 (colour-science's ST 2084
+    EOTF, or the BT.2100 HLG EOTF for a 1000 cd/m2 peak with black at 0)."""
+    import colour
+
+    code = np.asarray(code, dtype=np.float64)
+    if transfer == "PQ":
+        return colour.models.eotf_ST2084(code)
+    return colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0)
+
+
+def _match_hdr(cfg, xyz_to_display, cs):
+    """(HDR display of the registry, cd/m2 per unit of ``cfg``'s display reference) whose
+    primaries, white and encoding ``cs`` has, or None: in-gamut RGB of the candidate gamut
+    up to the peak goes through the colour space's own processor and, decoded with the
+    candidate's EOTF, must be that RGB times one luminance per unit (from the white)."""
+    transform = ocio_ops.group([xyz_to_display, colorspace_transform(cs, to_reference=False)])
+    rng = np.random.default_rng(7)
+    rgb = np.vstack([np.eye(3), 1.0 - np.eye(3), np.ones((1, 3)), np.linspace(0.05, 1, 8)[
+        :, None] * np.ones(3), rng.uniform(0.0, 1.0, (200, 3))])
+    for entry in registry.HDR_DISPLAY_LIST:
+        to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(entry.gamut)).T
+        try:
+            white = _apply(cfg, transform, np.ones((1, 3)) @ to_xyz)
+            # to 1e-3 cd/m2: float32 round-off of the base's ops (100 -> 99.99997)
+            unit = round(float(_hdr_nits(entry.transfer, white)[0, 1]), 3)
+            if not (np.isfinite(unit) and 1.0 <= unit <= entry.peak):
+                continue
+            scale = entry.peak / unit  # test colours up to the peak
+            nits = _hdr_nits(entry.transfer, _apply(cfg, transform, rgb * scale @ to_xyz))
+        except Exception:  # noqa: BLE001 -- a colour space that cannot process: no match
+            return None
+        if np.allclose(nits / unit, rgb * scale, rtol=2e-3, atol=5e-4 * scale):
+            return entry.name, unit
+    return None
+
+
+def _matches(cfg):
+    """({display: (display colour space name, clip display or HDR display)},
+    {display: cd/m2 per display-reference unit} for the HDR ones)."""
     _, xyz_to_display = interchange(cfg)
-    found = {}
+    found, units = {}, {}
     for display in cfg.getDisplays():
         cs = _display_colorspace(cfg, display)
         if cs is None:
             continue
+        if cs.getEncoding() in ("hdr-video", "edr-video") or cs.getEncoding() == "":
+            hdr = _match_hdr(cfg, xyz_to_display, cs)
+            if hdr is not None:
+                found[display] = (cs.getName(), hdr[0])
+                units[display] = hdr[1]
+                continue
         gamut = _match_gamut(cfg, xyz_to_display, cs)
         if gamut is not None:
             found[display] = (cs.getName(), gamut)
-    return found
+    return found, units
+
+
+def match_displays(cfg):
+    """{display of ``cfg``: (its display colour space name, clip display)} for every
+    display that the clip supports; the clip display of an HDR display is one of
+    :data:`ocio_thinfilm.registry.HDR_DISPLAYS`."""
+    return _matches(cfg)[0]
 
 
 def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
@@ -243,11 +298,21 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
         raise ValueError(f"the config's profile version {version[0]}.{version[1]} is below "
                          f"{MIN_PROFILE[0]}.{MIN_PROFILE[1]} (needed by the clip's LUT ops)")
     scene_to_xyz, xyz_to_display = interchange(base)
-    matches = match_displays(base)
+    matches, units = _matches(base)
     if not matches:
         raise ValueError("the config has no SDR display with the primaries and white of "
                          f"{', '.join(clip.DISPLAYS)} (or Rec.709)")
-    gamuts = [d for d in clip.DISPLAYS if d in {g for _, g in matches.values()}]
+    targets = {g for _, g in matches.values()}
+    # one view transform per target: an HDR display of another luminance unit than the
+    # first one matched to the same target is left alone
+    unit_of = {}
+    for display, (_, target) in list(matches.items()):
+        if display in units:
+            if unit_of.setdefault(target, units[display]) != units[display]:
+                del matches[display]
+    views_for = [d for d in registry.ALL_DISPLAYS if d in targets]
+    gamuts = [d for d in clip.DISPLAYS
+              if d in {registry.gamut_of(g) for g in targets}]
     data = config.config_data(clip_size=clip_size)
     by_display = config.clip_luts(clip_size)
     soft_by_display = config.compress_luts(clip_size)
@@ -269,16 +334,22 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     # view transforms: scene reference -> CIE-XYZ-D65 -> the view -> display reference
     described = {vt["name"]: vt for vt in data.view_transforms}
     added_views = []
-    for gamut in gamuts:
+    for target in views_for:
+        gamut = registry.gamut_of(target)
+        # HDR: the project's display reference has Y = 1 at 203 cd/m2, the base's
+        # unit_of[target] cd/m2 (100 in the ACES configs)
+        to_base = ([ocio_ops.matrix(np.eye(3) * registry.HDR_REFERENCE_WHITE
+                                    / unit_of[target])] if target in unit_of else [])
         for view in MERGED_VIEWS:
-            spec = described[f"{view} - {gamut}"]
+            spec = described[f"{view} - {target}"]
             if _taken(spec["name"]):
                 raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
-            parts = config.view_parts(gamut, view, lut=by_display[gamut], luts=data.luts,
+            parts = config.view_parts(target, view, lut=by_display[gamut], luts=data.luts,
                                       compress=soft_by_display[gamut])
             cfg.addViewTransform(config.view_transform_factory(
                 name=spec["name"], family=spec["family"], description=spec["description"],
-                from_reference=ocio_ops.group([scene_to_xyz, parts, xyz_to_display])))
+                from_reference=ocio_ops.group([scene_to_xyz, parts] + to_base
+                                              + [xyz_to_display])))
     for display, (cs_name, gamut) in matches.items():
         views = list(base.getViews(display))
         for view in MERGED_VIEWS:

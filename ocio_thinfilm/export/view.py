@@ -129,7 +129,8 @@ NO_NEGATIVE_SHAPER = ("ACEScg",)
 # --------------------------------------------------------------------------- #
 # The shaper
 # --------------------------------------------------------------------------- #
-def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE):
+def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE,
+                  display: str | None = None):
     """(lo, hi) of the shaper over ``linear_space`` (one of :data:`LINEAR_SIBLING`'s
     values), the same for the three channels so that every grid node on the diagonal
     is a neutral (greys stay grey under tetrahedral interpolation): it covers the
@@ -138,14 +139,18 @@ def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE):
     widened by 10 %, and at least [0, 1.5] (AP1 spaces: from 0, see
     :data:`NO_NEGATIVE_SHAPER`). (Nudging it so that black and white fall on grid
     nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
-    2.2; ``size`` is kept for that reason in the signature.)"""
+    2.2; ``size`` is kept for that reason in the signature.) For an HDR ``display`` the
+    upper end is at least 1.5 times its peak (1000 / 203 in units of the reference
+    white), so highlights up to the peak are not clamped by the shaper."""
     wl = np.arange(360.0, 781.0, 1.0)
     W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
     w = W @ colorimetry.matrix_XYZ_to_RGB(_COLORIMETRY[linear_space]).T
     lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
     if linear_space in NO_NEGATIVE_SHAPER:
         lo = 0.0
-    hi = max(SHAPER_MIN_HI, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
+    least = SHAPER_MIN_HI * (registry.hdr_display(display).scale
+                             if display is not None and registry.is_hdr(display) else 1.0)
+    hi = max(least, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
     return ocio_ops.quantize(lo, 6), ocio_ops.quantize(hi, 6)
 
 
@@ -163,10 +168,10 @@ def _shaper_to_linear(lo, hi):
     return ocio_ops.group([ocio_ops.matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
 
 
-def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
+def view_config(source: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None):
     """The config in memory (LUTs inline, no files), plus the shaper colour space for
-    ``source`` (for a ``size`` grid) when it needs one. Returns (config, shaper space
-    name or None)."""
+    ``source`` (for a ``size`` grid and ``display``) when it needs one. Returns (config,
+    shaper space name or None)."""
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm import config as config_module
@@ -175,7 +180,7 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE):
     if source not in LINEAR_SIBLING:
         return cfg, None
     sibling = LINEAR_SIBLING[source]
-    lo, hi = shaper_domain(sibling, size)
+    lo, hi = shaper_domain(sibling, size, display)
     to_ref = cfg.getColorSpace(sibling).getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
     parts = [_shaper_to_linear(lo, hi)] + ([to_ref] if to_ref is not None else [])
     cs = ocio.ColorSpace()
@@ -214,9 +219,11 @@ def _validate(source, display, view, size, fmt, value_range):
     if source not in spaces:
         raise ValueError(f"unknown colour space {source!r}; choose from {', '.join(spaces)}")
     if display is None:
-        raise ParameterError("display", f" is needed: one of {', '.join(clip.DISPLAYS)}")
-    if display not in clip.DISPLAYS:
-        raise ValueError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
+        raise ParameterError("display",
+                             f" is needed: one of {', '.join(registry.ALL_DISPLAYS)}")
+    if display not in registry.ALL_DISPLAYS:
+        raise ValueError(f"unknown display {display!r}; choose from "
+                         f"{', '.join(registry.ALL_DISPLAYS)}")
     if view is None:
         raise ParameterError("view", f" is needed: one of {', '.join(registry.VIEWS)}")
     if view not in registry.VIEWS:
@@ -274,7 +281,7 @@ def _description(source, display, view, size, shaper, baked):
     text = (f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
             f"pixel values of {source}; output: {display} display code values.")
     if shaper:
-        lo, hi = shaper_domain(LINEAR_SIBLING[source], size)
+        lo, hi = shaper_domain(LINEAR_SIBLING[source], size, display)
         text += (f" Shaper: sign(x)|x|^(1/2) per channel of linear "
                  f"{LINEAR_SIBLING[source]} over {lo:.6g}..{hi:.6g} (clamped beyond).")
     if baked:
@@ -430,7 +437,7 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
         raise ParameterError("out", f" {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
 
-    cfg, shaper = view_config(source, size)
+    cfg, shaper = view_config(source, size, display)
     meta = _metadata(source, display, view)
     if source in THIN_FILM_INPUTS:
         description = _description(source, display, view, size, None, False)

@@ -67,6 +67,8 @@ SOFT_SIZE = 49
 SOFT_WHITE_SIZE = 49
 #: Slope of S_b's distance past the limit (see :func:`soft_black_RGB`).
 BEYOND_SLOPE = 2.0
+#: The largest distance S_b leaves a colour at (see :func:`soft_black_RGB`).
+BEYOND_CAP = 3.0
 #: Values of mu tried per sign by :func:`_soft_plan`.
 _PLAN_STEPS = 160
 
@@ -89,10 +91,11 @@ def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
     k = _sigma(d, threshold, limit, power)
     # past the limit the clip (L, next) decides: any distance above 1 gives the same
     # result, so the squeeze leaves the colour well outside -- 1 + BEYOND_SLOPE (d - limit),
-    # and no squeeze at all once that reaches d -- rather than the curve's value just
-    # above 1, which the interpolant's error could pull back inside
+    # at most d and at most BEYOND_CAP -- rather than the curve's value just above 1, which
+    # the interpolant's error could pull back inside (the cap keeps chromaticities of
+    # infinite chroma, the chart's edge u_b = 0, finite for xyY -> XYZ after the pass)
     with np.errstate(all="ignore"):
-        beyond = np.minimum(1.0 + BEYOND_SLOPE * (d - limit), d) / d
+        beyond = np.minimum(np.minimum(1.0 + BEYOND_SLOPE * (d - limit), d), BEYOND_CAP) / d
     k = np.where(d > limit, beyond, k)
     return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]),
                     rgb)

@@ -3,6 +3,10 @@
 - :func:`display_matrix_transform` -- CIE-XYZ-D65 -> display-linear RGB (or back);
 - :data:`DISPLAY_ENCODINGS`, :func:`display_encoding_transform` -- display-linear RGB
   -> display code values (the inverse EOTF, as the ACES OCIO configs' display spaces);
+- :func:`hdr_encoding_transform` -- an HDR display's CIE-XYZ-D65 (Y = 1 at 203 cd/m2)
+  -> code values (PQ or HLG, OCIO's built-in display transforms);
+- :func:`display_colorspace_transform` -- any display's CIE-XYZ-D65 -> code values
+  (its display colour space);
 - :func:`aces_gamut_compression_transform` -- OCIO's ACES 1.3 reference gamut
   compression, the baseline view the clip is compared with.
 """
@@ -20,6 +24,8 @@ __all__ = [
     "check_display",
     "display_matrix_transform",
     "display_encoding_transform",
+    "hdr_encoding_transform",
+    "display_colorspace_transform",
     "aces_gamut_compression_transform",
 ]
 
@@ -153,6 +159,85 @@ def display_encoding_transform(display: str):
         t = ocio.ExponentWithLinearTransform([gamma] * 3 + [1.0], [offset] * 3 + [0.0])
     t.setDirection(ocio.TRANSFORM_DIR_INVERSE)
     return t
+
+
+#: OCIO's built-in ST 2084 inverse EOTF (linear, 1.0 = 100 cd/m2 -> PQ code), OCIO >= 2.1.
+PQ_CURVE = "CURVE - LINEAR_to_ST-2084"
+
+
+def hdr_encoding_transform(display: str):
+    """An HDR display's CIE-XYZ-D65 (the display reference: Y = 1 at
+    :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2) -> its code values.
+
+The matrix to the display's primaries scaled by 203 / 100 (OCIO's built-ins take
+    1.0 as 100 cd/m2), a clamp to [0, 10000 cd/m2], then OCIO's built-ins (OCIO >= 2.1):
+    the ST 2084 curve (:data:`PQ_CURVE`) for PQ, for HLG the registry entry's display
+    transform (the BT.2100 HLG inverse EOTF for a 1000 cd/m2 peak) after the matrix
+    back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry entry's built-in display
+    transform (the ACES configs' display colour spaces) of XYZ scaled by 203 / 100.
+
+    Parameters
+    ----------
+    display : str
+        A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
+
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
+
+    Raises
+    ------
+    ValueError
+        For a name that is not an HDR display of the registry.
+
+    References
+    ----------
+    SMPTE ST 2084:2014; ITU-R BT.2100-2 (2018), Table 4 and 5; ITU-R BT.2408-7, HDR
+    reference white 203 cd/m2.
+
+    Examples
+    --------
+    The reference white Y = 1 is 203 cd/m2: PQ code 0.5807; the 1000 cd/m2 peak (Y =
+    1000 / 203) is PQ code 0.7518:
+
+    >>> import numpy as np
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> white = np.array([0.95047, 1.0, 1.08883])
+    >>> out = apply(hdr_encoding_transform("Rec.2100-PQ"), [white, white * 1000 / 203])
+    >>> out.astype(float).round(4).tolist()
+    [[0.5807, 0.5807, 0.5807], [0.7518, 0.7518, 0.7518]]
+    """
+    ocio = ocio_ops.module()
+    entry = registry.hdr_display(display)
+    unit = registry.HDR_REFERENCE_WHITE / registry.OCIO_XYZ_UNIT
+    M = colorimetry.matrix_XYZ_to_RGB(entry.gamut)
+    # the built-in curves are odd (OCIO >= 2.2 mirrors its half-float LUTs): a channel a
+    # float32 round-off below 0 (a gamut face after a matrix pair that OPTIMIZATION_NONE
+    # does not compose) would encode to a negative code, so the display RGB is clamped
+    # to [0, 10000 cd/m2] (the range of ST 2084) first
+    clamp = [ocio_ops.matrix(M * unit), ocio_ops.range_(0.0, 1e4 / registry.OCIO_XYZ_UNIT)]
+    if entry.transfer == "PQ":
+        return ocio_ops.group(clamp + [ocio.BuiltinTransform(PQ_CURVE)])
+    # HLG: the built-in's own matrix brings the round-off back, so its odd curve can
+    # still give a code a few 1e-4 below 0 at OPTIMIZATION_NONE: codes clamped to [0, 1]
+    return ocio_ops.group(clamp + [ocio_ops.matrix(np.linalg.inv(M)),
+                                   ocio.BuiltinTransform(entry.builtin),
+                                   ocio_ops.range_(0.0, 1.0)])
+
+
+def display_colorspace_transform(display: str):
+    """CIE-XYZ-D65 (the display reference) -> code values of any display of
+    :data:`ocio_thinfilm.registry.ALL_DISPLAYS`: the display matrix and encoding of an
+    SDR display, :func:`hdr_encoding_transform` of an HDR one (the config's display
+    colour spaces).
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> apply(display_colorspace_transform("sRGB"), [0.95047, 1.0, 1.08883]).round(3).tolist()
+    [1.0, 1.0, 1.0]
+    """
+    if registry.is_hdr(display):
+        return hdr_encoding_transform(display)
+    return ocio_ops.group([display_matrix_transform(display), display_encoding_transform(display)])
 
 
 def aces_gamut_compression_transform():

@@ -5,11 +5,24 @@ The views are the registry's (:data:`ocio_thinfilm.registry.VIEWS`): the
 compared with, ``Channel Clamp`` and ``ACES Gamut Compression``, and ``Raw``.
 
 - :func:`view_linear_transform` -- CIE-XYZ-D65 -> display-linear RGB in [0, 1];
-- :func:`view_transform` -- CIE-XYZ-D65 -> display-encoded RGB.
+- :func:`view_transform` -- CIE-XYZ-D65 -> display-encoded RGB;
+- :func:`hdr_scaled` -- an SDR view's chain as the view of an HDR display.
+
+HDR displays (:data:`ocio_thinfilm.registry.HDR_DISPLAYS`) show the reference white Y = 1
+at 203 cd/m2 and their volume is the gamut's RGB parallelepiped up to k = peak / 203
+(1000 / 203). Every view here is scale-covariant, ``view_k(X) = k view_1(X / k)``: the
+clip's ray towards the grey of the same Y and its faces scale with k (Smits & Meyer
+1990, Section 3.2), a per-channel clamp to [0, k] and ACES gamut compression (degree
+1 homogeneous) too. So an HDR view is the SDR view of its gamut (the same LUT files)
+between two exact scales, and a colour brighter than the peak white is the peak white.
 """
 
 from __future__ import annotations
 
+import numpy as np
+
+from ocio_thinfilm import registry
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.clip_lut import (
@@ -23,11 +36,91 @@ from ocio_thinfilm.lut.display_transforms import (
     check_display,
     display_encoding_transform,
     display_matrix_transform,
+    hdr_encoding_transform,
 )
 from ocio_thinfilm.lut.ocio_ops import finite_limit_transform, group, transform_id
 from ocio_thinfilm.registry import VIEWS
 
-__all__ = ["view_linear_transform", "view_transform"]
+__all__ = ["view_linear_transform", "view_transform", "hdr_scaled"]
+
+
+#: HLG (ITU-R BT.2100, Table 5): the OOTF's system gamma for a 1000 cd/m2 peak and the
+#: scene-linear range of OCIO's built-in HLG display transform (E in [0, 3]).
+HLG_GAMMA = 1.2
+HLG_E_MAX = 3.0
+
+
+def _hlg_scene_ops(display, inverse=False):
+    """HLG display light -> scene light (or back), as OCIO's built-in
+    ``DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit`` does it: CIE XYZ (Y = 1 at 203
+    cd/m2) -> the gamut's RGB scaled so that the peak is E_MAX ** gamma, the BT.2100
+    inverse OOTF (``FIXED_FUNCTION_REC2100_SURROUND``, RGB Y ** (1 / gamma - 1)), then
+    / E_MAX and back to XYZ: the HLG signal's parallelepiped [0, 1] is the SDR gamut's.
+    ``inverse``: the OOTF way back, ending in display-linear RGB (1 = 203 cd/m2)."""
+    ocio = ocio_ops.module()
+    entry = registry.hdr_display(display)
+    a = HLG_E_MAX ** HLG_GAMMA * registry.HDR_REFERENCE_WHITE / entry.peak
+    M = colorimetry.matrix_XYZ_to_RGB(entry.gamut)
+    if not inverse:
+        return [ocio_ops.matrix(M * a),
+                ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND,
+                                            [1.0 / HLG_GAMMA]),
+                ocio_ops.matrix(np.linalg.inv(M) / HLG_E_MAX)]
+    return [ocio_ops.matrix(np.eye(3) * HLG_E_MAX),
+            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND, [HLG_GAMMA]),
+            ocio_ops.matrix(np.eye(3) / a)]
+
+
+def hdr_scaled(display: str, transforms: list) -> list:
+    """An SDR view's chain (CIE-XYZ-D65 -> display-linear RGB in [0, 1] of the HDR
+    display's gamut, a list of OCIO transforms) as the HDR display's, ending in
+    display-linear RGB in units of the reference white (203 cd/m2).
+
+    PQ: XYZ scaled by 1 / k, the chain, RGB scaled by k, k = peak / 203 (output in
+    [0, k]): exact for the scale-covariant views (module docstring). HLG: the display's
+    volume in display light is the BT.2100 OOTF of the signal's parallelepiped, and the
+    OOTF scales each pixel by a function of its Y only, so it maps the constant-Y ray
+    towards the grey onto the same ray of the scene light: the chain runs in HLG scene
+    light (:func:`_hlg_scene_ops`, the built-in display transform's own inverse OOTF),
+    between the inverse OOTF and the OOTF (exact above OCIO's minimum luminance of the
+    OOTF, 1e-4 of E_MAX ** gamma, 0.027 cd/m2). Either way the peak white stays, colours
+    brighter become it, and the views keep Y where the SDR one does.
+
+    Parameters
+    ----------
+    display : str
+        A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
+    transforms : list
+        The chain for ``registry.gamut_of(display)``.
+
+    Returns
+    -------
+    list
+        PQ: ``[MatrixTransform(1 / k), *transforms, MatrixTransform(k)]``.
+
+    References
+    ----------
+    ITU-R BT.2100-2 (2018), Table 5 (HLG OOTF); Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    The 1000 cd/m2 peak white (Y = 1000 / 203) stays itself through the Rec.2100-PQ
+    clip and twice that becomes it:
+
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> k = 1000 / 203
+    >>> chain = hdr_scaled("Rec.2100-PQ", [view_linear_transform("Rec.2020",
+    ...                                                          "Constant-Lightness Clip")])
+    >>> out = apply(group(chain), [np.array([0.95047, 1.0, 1.08883]) * f for f in (k, 2 * k)])
+    >>> (out / k).round(3).tolist()
+    [[1.0, 1.0, 1.0], [1.0, 1.0, 1.0]]
+    """
+    entry = registry.hdr_display(display)
+    if entry.transfer == "HLG":
+        return _hlg_scene_ops(display) + list(transforms) + _hlg_scene_ops(display, True)
+    k = entry.scale
+    return ([ocio_ops.matrix(np.eye(3) / k)] + list(transforms)
+            + [ocio_ops.matrix(np.eye(3) * k)])
 
 
 def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
@@ -39,10 +132,13 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     OCIO's ACES 1.3 reference gamut compression, then the clamp. The baselines limit
     XYZ to +-1e6 first (:func:`ocio_thinfilm.lut.ocio_ops.finite_limit_transform`).
 
+    For an HDR display, the view of its gamut through :func:`hdr_scaled`: output in
+    [0, k], k = peak / 203.
+
     Parameters
     ----------
     display : str
-        A display of :data:`ocio_thinfilm.registry.DISPLAYS`.
+        A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
     view : str
         ``"Constant-Lightness Clip"``, ``"Channel Clamp"`` or
         ``"ACES Gamut Compression"``.
@@ -82,6 +178,9 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     ...
     ValueError: view must be one of (...), got 'Raw'
     """
+    if registry.is_hdr(display):
+        gamut = registry.gamut_of(display)
+        return group(hdr_scaled(display, [view_linear_transform(gamut, view, size)]))
     check_display(display)
     if view == "Constant-Lightness Clip":
         return clip_transform(display, size)
@@ -109,12 +208,14 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
     (OCIO's optimiser removes the pair for the sRGB-encoded displays).
 
     The other views are :func:`view_linear_transform` followed by
-    :func:`ocio_thinfilm.lut.display_transforms.display_encoding_transform`.
+    :func:`ocio_thinfilm.lut.display_transforms.display_encoding_transform`. An HDR
+    display's views are its gamut's chains through :func:`hdr_scaled`, back to XYZ and
+    :func:`ocio_thinfilm.lut.display_transforms.hdr_encoding_transform` (PQ or HLG).
 
     Parameters
     ----------
     display : str
-        A display of :data:`ocio_thinfilm.registry.DISPLAYS`.
+        A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
     view : str
         A view of :data:`ocio_thinfilm.registry.VIEWS`.
     size : int, optional
@@ -151,6 +252,15 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
     >>> bool(np.array_equal(apply(view_transform("sRGB", "Raw"), px), np.float32(px)))
     True
     """
+    if registry.is_hdr(display):
+        if view not in VIEWS:
+            raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
+        if view == "Raw":
+            return group([])
+        gamut = registry.gamut_of(display)
+        return group([view_linear_transform(display, view, size),
+                      display_matrix_transform(gamut, inverse=True),
+                      hdr_encoding_transform(display)])
     check_display(display)
     if view not in VIEWS:
         raise ValueError(f"view must be one of {VIEWS}, got {view!r}")

@@ -41,17 +41,43 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
 #: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
 #: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4), the Raw view and the displays
 #: of other configs (an ACES config merged with ``bake --into``) no tag -- never a wrong
-#: sRGB one.
-PNG_COLORSPACE = {d.name: d.png_colorspace for d in registry.DISPLAY_LIST}
+#: sRGB one. The HDR displays get their cICP chunk (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1,
+#: P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
+PNG_COLORSPACE = {d.name: d.png_colorspace
+                  for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST}
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
 FIXED_DATETIME = "1990:06:11 00:00:00"
 
 
-def draw_labels(rgb: np.ndarray, labels) -> tuple[np.ndarray, bool]:
+#: Code value of the captions on SDR displays (sRGB: 83 % of white).
+LABEL_CODE = 0.92
+
+
+def label_code(display: str) -> float:
+    """The captions' code value on ``display``: :data:`LABEL_CODE` on SDR displays; on
+    the registry's HDR displays the code of the same light relative to the 203 cd/m2
+    reference white (graphics white of ITU-R BT.2408), not 0.92 of the PQ / HLG range.
+
+    >>> round(label_code("sRGB"), 2), round(label_code("Rec.2100-PQ"), 3)
+    (0.92, 0.561)
+    """
+    if not registry.is_hdr(display):
+        return LABEL_CODE
+    from ocio_thinfilm.colour import colorimetry
+    from ocio_thinfilm.lut import display_transforms, ocio_ops
+
+    light = ((LABEL_CODE + 0.055) / 1.055) ** 2.4  # the sRGB EOTF of LABEL_CODE
+    grey = light * colorimetry.white_XYZ(registry.gamut_of(display))
+    return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(display),
+                                grey)[1])
+
+
+def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.ndarray, bool]:
     """Draw ``(x, y, text, size)`` captions, centred at x, with OpenImageIO's
-    ``render_text`` and its bundled font. Returns (image, whether text was drawn)."""
+    ``render_text`` and its bundled font, in the grey of code value ``code``. Returns
+    (image, whether text was drawn)."""
     if not labels:
         return rgb, True
     import OpenImageIO as oiio
@@ -61,7 +87,7 @@ def draw_labels(rgb: np.ndarray, labels) -> tuple[np.ndarray, bool]:
     drawn = True
     for x, y, text, size in labels:
         ok = oiio.ImageBufAlgo.render_text(buf, int(x), int(y), text, int(size), "",
-                                           (0.92, 0.92, 0.92), "center", "baseline", 0)
+                                           (code, code, code), "center", "baseline", 0)
         drawn = drawn and bool(ok)
     if not drawn:
         return rgb, False
@@ -89,7 +115,7 @@ def render_scene(name: str, size=DEFAULT_SIZE, *, seed: int = 0, frame: int = 1,
     lookup = lookup or make_lookup(processors)
     picture = scene.render(width, height, lookup=lookup, seed=seed, frame=frame)
     rgb = display_image(picture, display, view, processors)
-    rgb, _ = draw_labels(rgb, picture.labels)
+    rgb, _ = draw_labels(rgb, picture.labels, label_code(display))
     return picture, rgb
 
 
@@ -155,7 +181,9 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
         raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
         raw = all((region[2] or view) in raw_views for region in picture.regions)
         png_tag = "data" if raw else PNG_COLORSPACE.get(display, "data")
-        png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb, dtype="uint8",
+        # HDR code values need 16 bits (PQ: 8-bit steps are visible banding)
+        png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb,
+                              dtype="uint16" if registry.is_hdr(display) else "uint8",
                               attributes={"png:compressionLevel": 3,
                                           "oiio:ColorSpace": png_tag}, tx=tx)
         return [exr_job.result(), png_job.result()]
