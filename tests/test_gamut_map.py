@@ -218,3 +218,5 @@ def test_load_benchmark_table_comes_from_its_json(load_benchmark, marked):
         med = row["median_s"]
         assert row["clip_over_aces"] == pytest.approx(
             med["Constant-Lightness Clip"] / med["ACES Gamut Compression"])
+        assert row["compress_over_aces"] == pytest.approx(
+            med["Constant-Lightness Compress"] / med["ACES Gamut Compression"])
