@@ -65,10 +65,6 @@ __all__ = ["SOFT_SIZE", "SOFT_WHITE_SIZE", "CompressLUT", "compress_lut", "soft_
 SOFT_SIZE = 49
 #: Edge of S_w's Lut3D (the clip's white-pass node layout).
 SOFT_WHITE_SIZE = 49
-#: Slope of S_b's distance past the limit (see :func:`soft_black_RGB`).
-BEYOND_SLOPE = 2.0
-#: The largest distance S_b leaves a colour at (see :func:`soft_black_RGB`).
-BEYOND_CAP = 3.0
 #: Values of mu tried per sign by :func:`_soft_plan`.
 _PLAN_STEPS = 160
 
@@ -89,14 +85,6 @@ def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
     with np.errstate(all="ignore"):
         d = np.where(Y > 0.0, (Y - rgb.min(axis=-1)) / Y, 0.0)
     k = _sigma(d, threshold, limit, power)
-    # past the limit the clip (L, next) decides: any distance above 1 gives the same
-    # result, so the squeeze leaves the colour well outside -- 1 + BEYOND_SLOPE (d - limit),
-    # at most d and at most BEYOND_CAP -- rather than the curve's value just above 1, which
-    # the interpolant's error could pull back inside (the cap keeps chromaticities of
-    # infinite chroma, the chart's edge u_b = 0, finite for xyY -> XYZ after the pass)
-    with np.errstate(all="ignore"):
-        beyond = np.minimum(np.minimum(1.0 + BEYOND_SLOPE * (d - limit), d), BEYOND_CAP) / d
-    k = np.where(d > limit, beyond, k)
     return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]),
                     rgb)
 
