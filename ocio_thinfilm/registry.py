@@ -18,7 +18,8 @@ from ocio_thinfilm.colour import colorimetry
 
 __all__ = ["Display", "View", "ThinFilmSpace", "DISPLAY_LIST", "VIEW_LIST",
            "THIN_FILM_LIST", "DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display",
-           "thin_film_space_for_kind", "CLIP_FILE_STEM", "clip_lut_stem", "validate"]
+           "thin_film_space_for_kind", "CLIP_FILE_STEM", "clip_lut_stem", "COMPRESS_FILE_STEM",
+           "compress_lut_stem", "validate"]
 
 
 @dataclass(frozen=True)
@@ -93,6 +94,12 @@ VIEW_LIST = (
          "Y towards the display's neutral axis (two 3D LUTs, faces through black then "
          "through white); scene-linear 1.0 is display white, above white gives white, no "
          "tone mapping."),
+    View("Constant-Lightness Compress",
+         "Soft constant-lightness gamut compression: along the same ray as the clip "
+         "(towards the grey of the same luminance Y, which it keeps exactly), colours "
+         "beyond 0.8 of the distance to the gamut boundary are compressed by the ACES 1.3 "
+         "power curve so that 1.3 boundary distances reach the boundary; further out, the "
+         "clip. Smooth where the clip is flat (four 3D LUTs, two of them the clip's)."),
     View("Channel Clamp", "Baseline: display-linear RGB clamped per channel to [0, 1]."),
     View("ACES Gamut Compression",
          "Baseline: OCIO's ACES 1.3 reference gamut compression (ACES_GamutComp13) in "
@@ -145,6 +152,21 @@ def clip_lut_stem(name: str, white: bool = False) -> str:
     'ConstantLightnessClip_DisplayP3_WhiteFaces'
     """
     return (f"{CLIP_FILE_STEM}_{display(name).lut_stem}"
+            + ("_WhiteFaces" if white else "_BlackFaces"))
+
+
+#: File stem of the compression's own LUT files (the config's squeezes).
+COMPRESS_FILE_STEM = "ConstantLightnessCompress"
+
+
+def compress_lut_stem(name: str, white: bool = False) -> str:
+    """File stem of a display's compression squeeze before the clip's pass against the
+    faces through black (``white=False``) or through white.
+
+    >>> compress_lut_stem("sRGB")
+    'ConstantLightnessCompress_sRGB_BlackFaces'
+    """
+    return (f"{COMPRESS_FILE_STEM}_{display(name).lut_stem}"
             + ("_WhiteFaces" if white else "_BlackFaces"))
 
 

@@ -202,10 +202,9 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
     script.write_text(
         "import bpy\n"
         "s = bpy.context.scene\n"
-        "for d in ('sRGB', 'Display P3', 'Rec.2020'):\n"
+        f"for d in {tuple(clip.DISPLAYS)!r}:\n"
         "    s.display_settings.display_device = d\n"
-        "    for v in ('Constant-Lightness Clip', 'Channel Clamp', 'ACES Gamut Compression',"
-        " 'Raw'):\n"
+        f"    for v in {tuple(registry.VIEWS)!r}:\n"
         "        s.view_settings.view_transform = v\n"
         "        print('SET', s.display_settings.display_device, '/', "
         "s.view_settings.view_transform)\n"

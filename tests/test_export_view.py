@@ -31,11 +31,12 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.cli import main as cli
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry, compress
 from evaluation.colours import object_colours
 from ocio_thinfilm.export import view as export_view
 
 CLC = "Constant-Lightness Clip"
+CLS = "Constant-Lightness Compress"
 FFMPEG = shutil.which("ffmpeg")
 
 
@@ -64,6 +65,8 @@ def _expected_XYZ(XYZ, display, view=CLC):
     rgb = colorimetry.XYZ_to_RGB(XYZ, display)
     if view == CLC:
         out = clip.clip_RGB(rgb, display)
+    elif view == CLS:
+        out = compress.compress_RGB(rgb, display)
     elif view == "Channel Clamp":
         out = np.clip(rgb, 0.0, 1.0)
     else:
@@ -226,6 +229,31 @@ def _quoted(pattern):
     match = re.search(pattern, doc)
     assert match, pattern
     return tuple(float(v) for v in match.groups())
+
+
+@pytest.mark.parametrize("display", clip.DISPLAYS)
+def test_compress_display_luts(tmp_path, inside_AP1, display):
+    """ACEScct -> the Constant-Lightness Compress view as display LUTs, against the
+    analytic compression: the Resolve .cube in colour-science, the .csp in ffmpeg (when
+    installed) and OCIO, the plain .cube alike in OCIO and colour-science -- the clip's
+    targets for the shaper forms (dE2000 p99 <= 1.0, max <= 3.0)."""
+    XYZ, cct = inside_AP1
+    name = display.replace(" ", "")
+    (resolve,) = export_view.export_view("ACEScct", display, CLS, tmp_path / f"{name}-r.cube",
+                                         shaper=True)
+    (csp,) = export_view.export_view("ACEScct", display, CLS, tmp_path / f"{name}.csp")
+    (plain,) = export_view.export_view("ACEScct", display, CLS, tmp_path / f"{name}.cube")
+    assert "Constant-Lightness Compress" in plain.read_text().splitlines()[0]
+    results = {"resolve cube (colour)": _colour_apply([resolve], cct),
+               "csp (ocio)": _ocio_apply([csp], cct)}
+    if FFMPEG is not None:
+        results["csp (ffmpeg)"] = ffmpeg_apply(csp, cct)
+    for what, code in results.items():
+        mean, p99, worst = _stats(_dE(code, XYZ, display, CLS))
+        print(f"ACEScct->{display} compress {what}: p99 {p99:.3f} max {worst:.3f}")
+        assert p99 <= TARGET_P99 and worst <= TARGET_MAX, what
+    np.testing.assert_allclose(_colour_tetrahedral(plain, cct), _ocio_apply([plain], cct),
+                               atol=1e-5)
 
 
 @pytest.mark.skipif(FFMPEG is None, reason="ffmpeg not installed (Debian package ffmpeg)")

@@ -199,26 +199,27 @@ def test_spectrum_film_strip_is_the_exact_film_colour(stills):
     assert 379 < wl[wl > 0].min() < 390 and 690 < wl.max() < 701
 
 
-def test_spectrum_shows_three_views_side_by_side(tmp_path):
+def test_spectrum_shows_four_views_side_by_side(tmp_path):
     picture, rgb = render.render_scene("spectrum", (480, 320))
     assert [r[2] for r in picture.regions] == list(scenes.SpectrumScene.VIEWS)
     captions = [label[2] for label in picture.labels]
     assert [c for c in captions if c in scenes.SpectrumScene.VIEWS] == list(
         scenes.SpectrumScene.VIEWS)
-    assert captions.count("spectrum") == captions.count("film") == captions.count("morpho") == 3
+    assert captions.count("spectrum") == captions.count("film") == captions.count("morpho") == 4
     # The same XYZ in each panel, different display colours: the views differ.
-    thirds = [rgb[60:300, x0:x1] for x0, x1, _ in picture.regions]
-    w = min(t.shape[1] for t in thirds)
-    assert not np.allclose(thirds[0][:, :w], thirds[1][:, :w], atol=0.02)
-    assert not np.allclose(thirds[1][:, :w], thirds[2][:, :w], atol=0.02)
+    panels = [rgb[60:300, x0:x1] for x0, x1, _ in picture.regions]
+    w = min(t.shape[1] for t in panels)
+    for a, b in zip(panels, panels[1:], strict=False):
+        assert not np.allclose(a[:, :w], b[:, :w], atol=0.02)
 
 
-def test_constant_lightness_view_keeps_the_luminance_of_the_spectrum():
+@pytest.mark.parametrize("panel", [0, 1])
+def test_constant_lightness_views_keep_the_luminance_of_the_spectrum(panel):
     picture, rgb = render.render_scene("spectrum", (240, 160), view="Channel Clamp")
     import colour
 
-    x0, x1, view = picture.regions[0]
-    assert view == "Constant-Lightness Clip"
+    x0, x1, view = picture.regions[panel]
+    assert view == ("Constant-Lightness Clip", "Constant-Lightness Compress")[panel]
     wl = picture.aovs["wavelength"][:, x0:x1]
     mask = wl > 0
     Y_scene = picture.xyz[..., 1][:, x0:x1][mask]
@@ -284,12 +285,13 @@ def test_a_scene_uses_only_the_view_it_shows():
         {}, ["colorspace:Thin Film Phase-Change Thickness", "view:sRGB/Channel Clamp"])
 
 
-def test_spectrum_uses_both_tables_and_its_three_views():
+def test_spectrum_uses_both_tables_and_its_four_views():
     built, created = _built("spectrum", display="Rec.2020")
     assert built == {}
     assert sorted(created) == sorted(
         ["colorspace:Thin Film Phase-Change Thickness", "colorspace:Thin Film Morpho Iridescence"]
-        + [f"view:Rec.2020/{v}" for v in ("Constant-Lightness Clip", "Channel Clamp",
+        + [f"view:Rec.2020/{v}" for v in ("Constant-Lightness Clip",
+                                          "Constant-Lightness Compress", "Channel Clamp",
                                           "ACES Gamut Compression")])
 
 

@@ -24,6 +24,7 @@ from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.config.factories import file_transform
 from ocio_thinfilm.lut import (
     clip_lut,
+    compress_lut,
     display_transforms,
     ocio_ops,
     tables,
@@ -41,12 +42,15 @@ __all__ = [
     "ConfigData",
     "named_lut",
     "clip_luts",
+    "compress_luts",
     "lut_files",
     "view_parts",
     "config_data",
     "CLIP_NAMED_TRANSFORM",
     "TABLE_NAMED_TRANSFORM",
     "clip_named_transform",
+    "COMPRESS_NAMED_TRANSFORM",
+    "compress_named_transform",
     "named_transforms",
 ]
 
@@ -121,11 +125,19 @@ def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
     return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
 
 
+def compress_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
+    """Display -> its :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT` (running with
+    the clip LUTs of edge ``clip_size``), for every display of the registry."""
+    return {display: compress_lut.compress_lut(display, clip_size=clip_size)
+            for display in registry.DISPLAYS}
+
+
 def lut_files(luts_by_display: dict, film_size: int = tables.FILM_SIZE,
-              morpho_size: int = tables.MORPHO_SIZE) -> dict:
+              morpho_size: int = tables.MORPHO_SIZE, compress_by_display=None) -> dict:
     """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses:
     the thin-film tables and, per display, the two passes of its clip LUT
-    (``luts_by_display``: :func:`clip_luts`)."""
+    (``luts_by_display``: :func:`clip_luts`) and the two squeezes of its compression
+    (``compress_by_display``: :func:`compress_luts`)."""
     files = {}
     for space in registry.THIN_FILM_LIST:
         table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
@@ -133,6 +145,9 @@ def lut_files(luts_by_display: dict, film_size: int = tables.FILM_SIZE,
     for display, lut in luts_by_display.items():
         files[named_lut(registry.clip_lut_stem(display))] = lut.black_core()
         files[named_lut(registry.clip_lut_stem(display, True))] = lut.white_core()
+    for display, soft in (compress_by_display or {}).items():
+        files[named_lut(registry.compress_lut_stem(display))] = soft.black_core()
+        files[named_lut(registry.compress_lut_stem(display, True))] = soft.white_core()
     return files
 
 
@@ -149,6 +164,15 @@ def _clip_passes(lut, luts, inline):
     return lut.transforms(*cores)
 
 
+def _compress_passes(soft, luts, inline):
+    """The compression chain of ``soft`` (a CompressLUT) with its two squeezes and the
+    clip's two passes as in the config: CIE-XYZ-D65 -> sRGB code values."""
+    cores = [_lut_reference(named_lut(stem(soft.display, white)), luts, inline)
+             for stem in (registry.compress_lut_stem, registry.clip_lut_stem)
+             for white in (False, True)]
+    return soft.transforms(*cores)
+
+
 def _matrix_to_reference(space):
     """Linear RGB of ``space`` -> CIE-XYZ-D65, after limiting the components to
     +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes above ~7.9)
@@ -158,10 +182,14 @@ def _matrix_to_reference(space):
     return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
 
 
-def view_parts(display, view, *, lut=None, luts=None, inline=False):
+def view_parts(display, view, *, lut=None, luts=None, inline=False, compress=None):
     """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
-    the display's ClipLUT (for the Constant-Lightness Clip), ``luts``: the LUT files."""
-    if view == "Constant-Lightness Clip":
+    the display's ClipLUT (for the Constant-Lightness Clip), ``compress``: its
+    CompressLUT (for the Constant-Lightness Compress), ``luts``: the LUT files."""
+    if view == "Constant-Lightness Compress":
+        linear = _compress_passes(compress, luts, inline) + [
+            clip_lut.working_decoding_transform()]
+    elif view == "Constant-Lightness Clip":
         # the second LUT ends in sRGB code values: back to display-linear here, the
         # display colour space encodes again (OCIO's optimiser removes the pair for
         # the sRGB-encoded displays)
@@ -179,7 +207,8 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
     (an in-memory config needing no files, for baking and tests); otherwise colour
     spaces refer to ``luts/*.clf`` by FileTransform."""
     by_display = clip_luts(clip_size)
-    luts = lut_files(by_display, film_size, morpho_size)
+    soft_by_display = compress_luts(clip_size)
+    luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
     ref = REFERENCE
     cs = []
     cs.append(dict(name=ref, family="Utility", encoding="scene-linear",
@@ -251,7 +280,7 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
                                         description=f"{descriptions[view]} Display: {display}.",
                                         from_reference=view_parts(
                                             display, view, lut=by_display[display], luts=luts,
-                                            inline=inline)))
+                                            inline=inline, compress=soft_by_display[display])))
             views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
         displays[display] = views
 
@@ -271,11 +300,14 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
                      "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."),
         roles=dict(ROLES), colorspaces=cs, view_transforms=view_transforms,
         displays=displays, file_rules=file_rules, luts=luts,
-        named_transforms=named_transforms(by_display, inline=inline, luts=luts))
+        named_transforms=named_transforms(by_display, inline=inline, luts=luts,
+                                          compress_by_display=soft_by_display))
 
 
 #: Named transform of the clip alone, per display (display-linear RGB in and out).
 CLIP_NAMED_TRANSFORM = "Constant-Lightness Clip - {display} (display-linear)"
+#: Named transform of the compression alone, per display.
+COMPRESS_NAMED_TRANSFORM = "Constant-Lightness Compress - {display} (display-linear)"
 #: Named transform of a thin-film table (pixel value in, CIE XYZ out).
 TABLE_NAMED_TRANSFORM = "{space} to CIE-XYZ-D65"
 
@@ -289,7 +321,16 @@ def clip_named_transform(lut, *, inline=False, luts=None):
         + _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()])
 
 
-def named_transforms(luts_by_display: dict, *, inline=False, luts=None) -> list:
+def compress_named_transform(soft, *, inline=False, luts=None):
+    """The soft constant-lightness compression of a CompressLUT's display on its own:
+    display-linear RGB in and out (as :func:`clip_named_transform`)."""
+    return ocio_ops.group(
+        [display_transforms.display_matrix_transform(soft.display, inverse=True)]
+        + _compress_passes(soft, luts, inline) + [clip_lut.working_decoding_transform()])
+
+
+def named_transforms(luts_by_display: dict, *, inline=False, luts=None,
+                     compress_by_display=None) -> list:
     """Named transforms (OCIO >= 2.0) as data: the clip per display of ``luts_by_display``
     (display -> ClipLUT)
     and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
@@ -304,6 +345,16 @@ def named_transforms(luts_by_display: dict, *, inline=False, luts=None) -> list:
                          "display-linear RGB in [0, 1] out, luminance kept. Apply it as "
                          "a node, then encode for the display."),
             transform=clip_named_transform(lut, inline=inline, luts=luts)))
+    for display, soft in (compress_by_display or {}).items():
+        t, lim, _ = soft.parameters
+        out.append(dict(
+            name=COMPRESS_NAMED_TRANSFORM.format(display=display), family="Thin Film",
+            categories=["gamut-mapping"], encoding="display-linear",
+            description=(f"Soft constant-lightness compression into {display} on its own "
+                         f"(threshold {t:g}, limit {lim:g}): {display} display-linear RGB "
+                         "in (any values), display-linear RGB in [0, 1] out, luminance "
+                         "kept. Apply it as a node, then encode for the display."),
+            transform=compress_named_transform(soft, inline=inline, luts=luts)))
     for space in registry.THIN_FILM_LIST:
         table = named_lut(space.lut_stem)
         out.append(dict(

@@ -80,7 +80,8 @@ def profile_readers(cfg) -> str:
 
 
 #: Views added to every matched display (Channel Clamp only where no Un-tone-mapped).
-MERGED_VIEWS = ("Constant-Lightness Clip", "ACES Gamut Compression", "Channel Clamp")
+MERGED_VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress",
+                "ACES Gamut Compression", "Channel Clamp")
 #: Minimum profile version: ACES_GamutComp13 and the LUT ops need 2.1.
 MIN_PROFILE = (2, 1)
 #: Tolerance of the display match, in code values for the white and the grey ramp and in
@@ -249,6 +250,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     gamuts = [d for d in clip.DISPLAYS if d in {g for _, g in matches.values()}]
     data = config.config_data(clip_size=clip_size)
     by_display = config.clip_luts(clip_size)
+    soft_by_display = config.compress_luts(clip_size)
     cfg = copy.deepcopy(base)
 
     def _taken(name):
@@ -272,7 +274,8 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
             spec = described[f"{view} - {gamut}"]
             if _taken(spec["name"]):
                 raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
-            parts = config.view_parts(gamut, view, lut=by_display[gamut], luts=data.luts)
+            parts = config.view_parts(gamut, view, lut=by_display[gamut], luts=data.luts,
+                                      compress=soft_by_display[gamut])
             cfg.addViewTransform(config.view_transform_factory(
                 name=spec["name"], family=spec["family"], description=spec["description"],
                 from_reference=ocio_ops.group([scene_to_xyz, parts, xyz_to_display])))
@@ -290,7 +293,9 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     if active:
         cfg.setActiveViews(", ".join(active + [v for v in added_views if v not in active]))
     # named transforms: the clip per gamut and the tables
-    for spec in config.named_transforms({g: by_display[g] for g in gamuts}):
+    for spec in config.named_transforms({g: by_display[g] for g in gamuts},
+                                        compress_by_display={g: soft_by_display[g]
+                                                             for g in gamuts}):
         if _taken(spec["name"]):
             raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
         cfg.addNamedTransform(config.named_transform_factory(**spec))
@@ -302,7 +307,8 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
                         "thin-film input spaces, the constant-lightness clip views and "
                         "named transforms.")
     names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
-    names += [config.named_lut(registry.clip_lut_stem(g, w)) for g in gamuts
+    names += [config.named_lut(stem(g, w)) for g in gamuts
+              for stem in (registry.clip_lut_stem, registry.compress_lut_stem)
               for w in (False, True)]
     return cfg, {name: data.luts[name] for name in names}, matches
 

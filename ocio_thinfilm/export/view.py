@@ -63,6 +63,7 @@ Public functions: :func:`export_view`, :func:`view_config`, :func:`shaper_domain
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -320,7 +321,22 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description,
         baker.setShaperSize(SHAPER_SIZE)
     baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
     text = baker.bake()
+    if fmt == "cube":
+        text = _without_trailing_zeros(text)
     return text if text.endswith("\n") else text + "\n"
+
+
+#: A line of a LUT's table: numbers only (OCIO's .cube writer prints them as %.6f).
+_TABLE_LINE = re.compile(r"^[-+0-9. ]+$", re.MULTILINE)
+_TRAILING_ZEROS = re.compile(r"(?:(\.\d*?[1-9])|\.)0*(?=[ \n]|$)")
+
+
+def _without_trailing_zeros(text):
+    """``text`` with each table value in its shortest fixed form: ``0.500000`` becomes
+    ``0.5``, ``1.000000`` becomes ``1``. The numbers are the same, every .cube reader
+    parses either form, and a 65^3 display .cube shrinks by about 40 % (clipped colours
+    are mostly 0 and 1)."""
+    return _TABLE_LINE.sub(lambda m: _TRAILING_ZEROS.sub(r"\1", m.group(0)), text)
 
 
 def _write_text(path, text):

@@ -11,6 +11,7 @@ compared with, ``Channel Clamp`` and ``ACES Gamut Compression``, and ``Raw``.
 from __future__ import annotations
 
 from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.clip_lut import (
     CLIP_SIZE,
     clip_lut,
@@ -84,6 +85,9 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     check_display(display)
     if view == "Constant-Lightness Clip":
         return clip_transform(display, size)
+    if view == "Constant-Lightness Compress":
+        return group(compress_lut(display, clip_size=size).transforms()
+                     + [working_decoding_transform()])
     # the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range
     # takes to the lower bound) stay finite through the matrices at every
     # optimisation level (OPTIMIZATION_NONE does not compose them, so F32_MAX inputs
@@ -94,7 +98,7 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     if view == "ACES Gamut Compression":
         return group([finite_limit_transform(), display_matrix_transform(display),
                       aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0)])
-    raise ValueError(f"view must be one of {VIEWS[:3]}, got {view!r}")
+    raise ValueError(f"view must be one of {VIEWS[:-1]}, got {view!r}")
 
 
 def view_transform(display: str, view: str, size: int = CLIP_SIZE):
@@ -157,5 +161,10 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
         return group(lut.transforms() + [working_decoding_transform(),
                                          display_encoding_transform(display)],
                      name=lut.name, id=transform_id("Gamut_Map", lut.name))
+    if view == "Constant-Lightness Compress":
+        soft = compress_lut(display, clip_size=size)
+        return group(soft.transforms() + [working_decoding_transform(),
+                                          display_encoding_transform(display)],
+                     name=soft.name, id=transform_id("Gamut_Map", soft.name))
     return group([view_linear_transform(display, view, size),
                   display_encoding_transform(display)])

@@ -140,21 +140,22 @@ def _grey(Y):
 # --------------------------------------------------------------------------- #
 class SpectrumScene(Scene):
     """Figure 4: the visible spectrum, Newton's colours of a soap film against
-    thickness and the Morpho colours against angle, each strip through the three
-    views side by side (the clip keeps luminance, the clamp and ACES do not)."""
+    thickness and the Morpho colours against angle, each strip through four views side
+    by side (the clip and the compression keep luminance, the clamp and ACES do not)."""
 
     name = "spectrum"
     figure = "Figure 4"
     title = ("The visible spectrum (380 nm at the top to 700 nm) and two rows of "
              "interference colours -- Newton's colours of a soap film (t' = 0 to 1 um) and "
              "the near-spectral Morpho multilayer (0 to 60 degrees) -- through the "
-             "Constant-Lightness Clip, Channel Clamp and ACES Gamut Compression views "
-             "side by side")
+             "Constant-Lightness Clip, Constant-Lightness Compress, Channel Clamp and ACES "
+             "Gamut Compression views side by side")
     animation = "none (every frame is the same)"
     tables = (FILM_TABLE, MORPHO_TABLE)
 
     #: The views compared, left to right.
-    VIEWS = ("Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression")
+    VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress", "Channel Clamp",
+             "ACES Gamut Compression")
     #: Peak luminance of the spectrum strip (Y of the equal-energy spectrum at 555 nm).
     SPECTRUM_PEAK_Y = 0.6
     WAVELENGTHS = (380.0, 700.0)
@@ -165,7 +166,7 @@ class SpectrumScene(Scene):
     def render(self, width, height, *, lookup, seed=0, frame=1):
         header = max(2, int(round(height * 0.11)))
         gap = max(1, width // 64)
-        panel = (width - 4 * gap) // 3
+        panel = (width - (len(self.VIEWS) + 1) * gap) // len(self.VIEWS)
         strip = (panel - 2 * gap) // 3
         rows = np.arange(header, height - gap)
         frac = (rows - header + 0.5) / max(1, len(rows))
@@ -208,7 +209,7 @@ class SpectrumScene(Scene):
                 labels.append((x0 + j * (strip + gap) + strip // 2, int(header * 0.9),
                                self.STRIPS[j], small))
             left = 0 if i == 0 else x0 - gap // 2
-            right = width if i == 2 else x0 + panel + gap // 2
+            right = width if i == len(self.VIEWS) - 1 else x0 + panel + gap // 2
             regions.append((left, right, view))
             labels.append((x0 + panel // 2, int(header * 0.45), view, font))
         if small < 6:  # too small to read: no captions on thumbnails

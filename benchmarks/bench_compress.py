@@ -1,0 +1,285 @@
+"""Benchmark: the soft constant-lightness compression -- its defaults, its LUTs' size
+against accuracy, and what it does to saturation ramps, beside the clip.
+
+1. Defaults. For (threshold, limit) candidates and each display: the share of the
+   display's gamut left untouched (uniform display-linear RGB in the unit cube, and
+   object colours inside the gamut), and where the spectral locus (380-700 nm at
+   Y = 0.02, 0.1, 0.3, 0.6) and random AP0 colours (0 <= Y <= 1) land: the share
+   compressed with shading kept (threshold < d < limit) and the share clipped (d >=
+   limit).
+2. Size against accuracy. The view's chain (``lut.compress_lut.CompressLUT``) for edge
+   pairs of its two squeezes, through OCIO's CPU processor, against the analytic map
+   (``colour.compress.compress_XYZ``) on the clip's test sets: dE2000 p99 / max and
+   |dY|; MB of the two squeezes' CLF text per display.
+3. Ramps. Saturation ramps at fixed Y and hue from the grey to 2.1 boundary distances
+   or the spectral colour, whichever is nearer (towards monochromatic 450-650 nm at
+   Y = 0.2): output boundary distance against
+   input distance through the compress view, the clip view and OCIO's ACES 1.3 gamut
+   compression view (its output measured along the same ray), and whether each rises
+   strictly up to the limit. Plot: docs/compress_ramps.png (distances, and the ramps
+   as colour strips).
+
+Writes reports/bench_compress.json and reports/bench_compress.md.
+
+Usage: python benchmarks/bench_compress.py [--pairs 41:41 49:41 49:49 57:49]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+DEFAULT_PAIRS = ("33:33", "41:41", "49:41", "49:49", "57:49")
+CANDIDATES = ((0.75, 1.2), (0.8, 1.2), (0.8, 1.3), (0.85, 1.3), (0.8, 1.5))
+
+
+def _sets():
+    from ocio_thinfilm.colour import colorimetry
+    from evaluation.colours import object_colours, spectral_mixtures
+
+    rng = np.random.default_rng(7)
+    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ np.linalg.inv(
+        colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
+    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
+    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
+                            for Y in (0.02, 0.1, 0.3, 0.6)])
+    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
+            "mixtures": spectral_mixtures()}
+
+
+def defaults_table(sets):
+    """Per (threshold, limit) and display: shares untouched / compressed / clipped."""
+    from ocio_thinfilm.colour import clip, colorimetry
+    from ocio_thinfilm.colour.compress import boundary_distance
+
+    rows = []
+    rng = np.random.default_rng(0)
+    cube = rng.uniform(0.0, 1.0, (200000, 3))
+    for display in clip.DISPLAYS:
+        d_cube = boundary_distance(cube, display)
+        rgb = {name: colorimetry.XYZ_to_RGB(sets[name], display)
+               for name in ("object", "monochromatic", "ap0")}
+        d = {name: boundary_distance(v, display) for name, v in rgb.items()}
+        inside_objects = d["object"][d["object"] <= 1.0]
+        for thr, lim in CANDIDATES:
+            row = dict(display=display, threshold=thr, limit=lim,
+                       cube_untouched=float(np.nanmean(d_cube <= thr)),
+                       objects_untouched=float(np.mean(inside_objects <= thr)))
+            for name in ("monochromatic", "ap0"):
+                v = d[name][np.isfinite(d[name])]
+                row[f"{name}_shaded"] = float(np.mean((v > 1.0) & (v < lim)))
+                row[f"{name}_clipped"] = float(np.mean(v >= lim))
+            rows.append(row)
+    return rows
+
+
+def _chain(soft):
+    from ocio_thinfilm.lut import clip_lut, ocio_ops
+
+    return ocio_ops.group(soft.transforms() + [clip_lut.working_decoding_transform()])
+
+
+def _clf_bytes(soft, directory):
+    import PyOpenColorIO as ocio
+
+    total = 0
+    for kind, core in (("black", soft.black_core()), ("white", soft.white_core())):
+        path = Path(directory) / f"{kind}.clf"
+        core.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+        total += path.stat().st_size
+    return total
+
+
+def accuracy_table(sets, pairs, progress):
+    from ocio_thinfilm.colour import clip, colorimetry, compress
+    from ocio_thinfilm.lut import compress_lut, ocio_ops
+
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for display in clip.DISPLAYS:
+            M = colorimetry.matrix_XYZ_to_RGB(display)
+            for pair in pairs:
+                black, white = (int(v) for v in pair.split(":"))
+                soft = compress_lut.compress_lut(display, black, white)
+                chain = _chain(soft)
+                row = dict(display=display, black=black, white=white,
+                           mb=_clf_bytes(soft, tmp) / 1e6)
+                for name, XYZ in sets.items():
+                    rgb = ocio_ops.apply(chain, XYZ).astype(np.float64)
+                    truth = compress.compress_XYZ(XYZ, display)
+                    de = colorimetry.delta_E2000(truth, rgb @ np.linalg.inv(M).T)
+                    row[name] = dict(p99=float(np.percentile(de, 99)), max=float(de.max()),
+                                     dY=float(np.abs((rgb @ np.linalg.inv(M).T)[:, 1]
+                                                     - truth[:, 1]).max()))
+                rows.append(row)
+                progress(f"accuracy {display} {pair}: {row['mb']:.2f} MB")
+    return rows
+
+
+def ramps(display="sRGB", Y=0.2, n=129):
+    """Ramps towards monochromatic 450-650 nm at luminance Y: XYZ (k, n, 3), the input
+    distance (k, n) and the wavelengths."""
+    from ocio_thinfilm.colour import colorimetry, compress
+    from ocio_thinfilm.colour.compress import boundary_distance
+
+    wl = np.arange(450.0, 651.0, 25.0)
+    out, dist = [], []
+    for target in colorimetry.XYZ_to_RGB(colorimetry.spectral_locus_XYZ(Y, wl), display):
+        grey = np.full(3, Y)
+        d_target = float(boundary_distance(target, display))
+        # to 2.1 boundary distances, or to the spectral colour itself where it is nearer
+        # (further out the ramp leaves the real colours: yellow 575 nm is at 1.2)
+        t = np.linspace(0.0, min(1.6 * compress.LIMIT / d_target, 1.0), n)
+        out.append(colorimetry.RGB_to_XYZ(grey + t[:, None] * (target - grey), display))
+        dist.append(t * d_target)
+    return np.array(out), np.array(dist), wl
+
+
+def _ray_distance(rgb, grey):
+    """Boundary distance of display-linear ``rgb`` measured along its own ray from the
+    grey ``grey`` (the views keep Y, ACES does not: its output measured from the input's
+    grey)."""
+    from ocio_thinfilm.colour.compress import _distance
+
+    return _distance(np.asarray(rgb, dtype=np.float64).T, np.asarray(grey, dtype=np.float64))
+
+
+def ramp_table(display="sRGB"):
+    import PyOpenColorIO as ocio
+
+    from ocio_thinfilm.colour import colorimetry, compress
+
+    cfg = ocio.Config.CreateFromFile(str(ROOT / "configs" / "thinfilm" / "config.ocio"))
+    XYZ, dist, wl = ramps(display)
+    views = ("Constant-Lightness Compress", "Constant-Lightness Clip", "ACES Gamut Compression")
+    result = {"display": display, "wavelengths": wl.tolist(), "input": dist.tolist()}
+    rgb_out = {}
+    for view in views:
+        proc = cfg.getProcessor("CIE-XYZ-D65", display,
+                                view, ocio.TRANSFORM_DIR_FORWARD)
+        dec = cfg.getProcessor(cfg.getDisplayViewColorSpaceName(display, view),
+                               "CIE-XYZ-D65").getDefaultCPUProcessor()
+        px = np.ascontiguousarray(XYZ.reshape(-1, 3), dtype=np.float32).copy()
+        proc.getDefaultCPUProcessor().applyRGB(px)
+        rgb_out[view] = px.reshape(XYZ.shape).copy()
+        dec.applyRGB(px)  # display code values -> display-referred XYZ
+        rgb = colorimetry.XYZ_to_RGB(px.astype(np.float64), display)
+        grey = (XYZ.reshape(-1, 3)[:, 1]).astype(np.float64)
+        out = _ray_distance(rgb, grey).reshape(dist.shape)
+        rising = (dist > 0.05) & (dist < compress.LIMIT - 0.02)
+        steps = np.diff(out, axis=1)[rising[:, 1:] & rising[:, :-1]]
+        past = dist > 1.02  # (every ramp but 575 nm reaches 1.3)
+        result[view] = dict(output=out.tolist(), min_step=float(steps.min()),
+                            strictly_rising=bool(steps.min() > 0.0),
+                            spread_past_boundary=float(np.ptp(out[past])),
+                            dY=float(np.abs(px[:, 1].reshape(dist.shape)
+                                            - XYZ[..., 1]).max()))
+    return result, rgb_out
+
+
+def plot(result, rgb_out, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from ocio_thinfilm.colour import compress
+
+    dist = np.array(result["input"])
+    views = ("Constant-Lightness Compress", "Constant-Lightness Clip", "ACES Gamut Compression")
+    fig = plt.figure(figsize=(11, 7.5))
+    grid = fig.add_gridspec(2, 3, height_ratios=[2.2, 1.0])
+    x = np.linspace(0, 2.1, 400)
+    for k, view in enumerate(views):
+        ax = fig.add_subplot(grid[0, k])
+        out = np.array(result[view]["output"])
+        for i, wl in enumerate(result["wavelengths"]):
+            ax.plot(dist[i], out[i], lw=1.2, label=f"{wl:.0f} nm")
+        if k == 0:
+            ax.plot(x, compress.compression_curve(x), "k--", lw=0.8, label="analytic")
+        ax.axvline(1.0, color="0.6", lw=0.6)
+        ax.axvline(compress.LIMIT, color="0.6", lw=0.6, ls=":")
+        ax.set_title(view, fontsize=10)
+        ax.set_xlabel("input distance to the boundary (1 = on it)")
+        if k == 0:
+            ax.set_ylabel("output distance along the same ray")
+            ax.legend(fontsize=7, loc="lower right")
+        ax.set_xlim(0, 2.1)
+        ax.set_ylim(0, 1.12)
+        strip = fig.add_subplot(grid[1, k])
+        strip.imshow(np.clip(rgb_out[view], 0, 1), aspect="auto", interpolation="nearest",
+                     extent=(0, float(dist.max()), len(result["wavelengths"]), 0))
+        strip.set_yticks(np.arange(len(result["wavelengths"])) + 0.5,
+                         [f"{w:.0f}" for w in result["wavelengths"]], fontsize=7)
+        strip.set_xlabel("input distance (ramps from grey, Y = 0.2, sRGB)")
+    fig.suptitle("Saturation ramps through the views: the compression keeps the shading "
+                 "up to the limit, the clip is flat past the boundary", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def _markdown(defaults, accuracy, ramp):
+    lines = ["# bench_compress", "", "## Defaults: shares of each set per (threshold, limit)",
+             "", "| display | threshold | limit | gamut cube untouched | in-gamut object colours "
+             "untouched | monochromatic shaded / clipped | AP0 shaded / clipped |",
+             "|---|---|---|---|---|---|---|"]
+    for r in defaults:
+        lines.append(f"| {r['display']} | {r['threshold']} | {r['limit']} | "
+                     f"{r['cube_untouched']:.1%} | {r['objects_untouched']:.1%} | "
+                     f"{r['monochromatic_shaded']:.0%} / {r['monochromatic_clipped']:.0%} | "
+                     f"{r['ap0_shaded']:.0%} / {r['ap0_clipped']:.0%} |")
+    lines += ["", "## The view's LUTs: size against accuracy (dE2000 p99 / max, |dY| max)", "",
+              "| display | S_b | S_w | MB | object | monochromatic | AP0 | mixtures |",
+              "|---|---|---|---|---|---|---|---|"]
+    for r in accuracy:
+        cells = [f"{r[s]['p99']:.2f} / {r[s]['max']:.2f}, {r[s]['dY']:.1e}"
+                 for s in ("object", "monochromatic", "ap0", "mixtures")]
+        lines.append(f"| {r['display']} | {r['black']} | {r['white']} | {r['mb']:.2f} | "
+                     + " | ".join(cells) + " |")
+    lines += ["", f"## Ramps ({ramp['display']}, Y = 0.2, 450-650 nm)", "",
+              "| view | strictly rising to the limit | smallest step | spread of output "
+              "past the boundary | max abs(dY) |", "|---|---|---|---|---|"]
+    for view in ("Constant-Lightness Compress", "Constant-Lightness Clip",
+                 "ACES Gamut Compression"):
+        v = ramp[view]
+        lines.append(f"| {view} | {v['strictly_rising']} | {v['min_step']:.4f} | "
+                     f"{v['spread_past_boundary']:.3f} | {v['dY']:.1e} |")
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--pairs", nargs="+", default=list(DEFAULT_PAIRS),
+                        help="edge pairs S_b:S_w of the squeezes' Lut3Ds")
+    parser.add_argument("--plot", default=str(ROOT / "docs" / "compress_ramps.png"))
+    args = parser.parse_args(argv)
+    sys.path.insert(0, str(ROOT))
+
+    def progress(text):
+        print(text, flush=True)
+
+    sets = _sets()
+    defaults = defaults_table(sets)
+    progress("defaults measured")
+    accuracy = accuracy_table(sets, args.pairs, progress)
+    ramp, rgb_out = ramp_table()
+    plot(ramp, rgb_out, args.plot)
+    report = dict(defaults=defaults, accuracy=accuracy,
+                  ramps={k: (v if not isinstance(v, dict) else
+                             {kk: vv for kk, vv in v.items() if kk != "output"})
+                         for k, v in ramp.items() if k != "input"})
+    (ROOT / "reports" / "bench_compress.json").write_text(json.dumps(report, indent=1) + "\n")
+    text = _markdown(defaults, accuracy, ramp)
+    (ROOT / "reports" / "bench_compress.md").write_text(text)
+    print(text)
+    print(f"wrote reports/bench_compress.md, reports/bench_compress.json, {args.plot}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,233 @@
+"""A soft constant-lightness gamut compression: the paper's ray, a smooth curve on it.
+
+Beside the hard clip of Smits & Meyer (1990), Section 3.2 (:mod:`.clip`), and built on
+the same ray: an out-of-gamut colour moves towards the grey of its own luminance Y (the
+display's white scaled to Y, on the neutral axis R = G = B), so Y is kept exactly and
+the result lies on the segment between the colour and its grey. The clip stops at the
+boundary, so every colour beyond it lands on it: a saturated ramp that leaves the gamut
+turns into a flat band. The compression instead measures how far out the colour is and
+maps that distance with a smooth, strictly increasing curve:
+
+- the normalised distance ``d`` is the colour's distance from its grey divided by the
+  distance from the grey to the gamut boundary along the same ray (``d = 1`` on the
+  boundary, ``d < 1`` inside). In display-linear RGB, with ``g = Y`` the grey's channel
+  value, it is ``d = max_i max((g - c_i) / g, (c_i - g) / (1 - g))``: the largest of
+  the ray's fractions to the six faces of the parallelepiped;
+- ``d <= threshold``: unchanged;
+- ``threshold < d < limit``: the distance becomes :func:`compression_curve` (d), the
+  power curve of the ACES 1.3 reference gamut compression (S-2020-001's
+  ``compress()``, power 1.2): value and slope continuous at the threshold, strictly
+  increasing, reaching 1 (the boundary) at ``limit``;
+- ``d >= limit``: the clip (the curve's value would pass 1).
+
+So the compression keeps ``1 - threshold`` of each display's gamut untouched towards
+its boundary (measured in ``benchmarks/bench_compress.py``), keeps the shading of
+colours up to ``limit`` boundary distances out, and equals the clip for colours further
+out and for every colour with Y <= 0 (black) or Y >= 1 (white).
+
+:func:`compress_RGB` (display-linear RGB) and :func:`compress_XYZ` have the clip's
+defined behaviour at every edge (NaN pixels stay NaN, +-Inf and huge values give a
+finite in-gamut result, float32 or float64 in, same dtype out).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ocio_thinfilm.colour import clip, colorimetry
+
+__all__ = [
+    "THRESHOLD",
+    "LIMIT",
+    "POWER",
+    "compression_curve",
+    "compression_curve_inverse",
+    "boundary_distance",
+    "compress_RGB",
+    "compress_XYZ",
+]
+
+#: Normalised boundary distance up to which colours are unchanged (the default).
+THRESHOLD = 0.8
+#: Normalised distance mapped onto the boundary (the default); further out: the clip.
+LIMIT = 1.3
+#: Exponent of the ACES 1.3 compression curve (S-2020-001).
+POWER = 1.2
+
+
+def _check(threshold, limit, power):
+    if not (np.isfinite(threshold) and 0.0 < threshold < 1.0):
+        raise ValueError(f"threshold must be a number in (0, 1), got {threshold!r}")
+    if not (np.isfinite(limit) and limit > 1.0):
+        raise ValueError(f"limit must be a number greater than 1, got {limit!r}")
+    if not (np.isfinite(power) and power > 0.0):
+        raise ValueError(f"power must be a positive number, got {power!r}")
+    return float(threshold), float(limit), float(power)
+
+
+def _scale(threshold, limit, power):
+    """The ACES curve's scale s such that the curve reaches 1 at ``limit``; its
+    asymptote is threshold + s (S-2020-001, Section 'compress')."""
+    return (limit - threshold) / (((limit - threshold) / (1.0 - threshold)) ** power
+                                  - 1.0) ** (1.0 / power)
+
+
+def compression_curve(d, threshold: float = THRESHOLD, limit: float = LIMIT,
+                      power: float = POWER, *, clipped: bool = True):
+    """The distance ``d`` (>= 0) after compression.
+
+    ``d`` up to ``threshold`` is unchanged; beyond it,
+    ``threshold + x / (1 + (x / s) ** power) ** (1 / power)`` with ``x = d - threshold``
+    and ``s`` such that the value is 1 at ``limit`` (ACES 1.3 reference gamut
+    compression, S-2020-001): continuous in value and slope at the threshold and
+    strictly increasing. ``clipped`` (default): values above 1 (``d > limit``) become 1;
+    otherwise the curve goes on to its asymptote ``threshold + s``.
+
+    Examples
+    --------
+    >>> [round(float(v), 4) for v in compression_curve([0.5, 0.8, 1.0, 1.3, 2.0])]
+    [0.5, 0.8, 0.9306, 1.0, 1.0]
+    >>> round(float(compression_curve(2.0, clipped=False)), 4)
+    1.0451
+    """
+    threshold, limit, power = _check(threshold, limit, power)
+    d = np.asarray(d, dtype=np.float64)
+    s = _scale(threshold, limit, power)
+    x = np.maximum(d - threshold, 0.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        y = threshold + x / (1.0 + (x / s) ** power) ** (1.0 / power)
+    y = np.where(d > threshold, np.where(np.isfinite(y), y, threshold + s), d)
+    return np.minimum(y, 1.0) if clipped else y
+
+
+def compression_curve_inverse(y, threshold: float = THRESHOLD, limit: float = LIMIT,
+                              power: float = POWER):
+    """The distance whose unclipped :func:`compression_curve` is ``y`` (``y`` below the
+    asymptote threshold + s; at or above it: +inf).
+
+    ``x = u / (1 - (u / s) ** power) ** (1 / power)`` with ``u = y - threshold``.
+
+    Examples
+    --------
+    >>> round(float(compression_curve_inverse(1.0)), 6)
+    1.3
+    """
+    threshold, limit, power = _check(threshold, limit, power)
+    y = np.asarray(y, dtype=np.float64)
+    s = _scale(threshold, limit, power)
+    u = np.maximum(y - threshold, 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        base = 1.0 - (u / s) ** power
+        x = np.where(base > 0.0, u / np.maximum(base, 1e-300) ** (1.0 / power), np.inf)
+    return np.where(y > threshold, threshold + x, y)
+
+
+def _distance(rgb, grey):
+    """Planar (3, N) display-linear RGB and its grey (N,) in (0, 1): the normalised
+    boundary distance along the ray (the largest of the fractions to the six faces)."""
+    d = np.zeros_like(grey)
+    for value in rgb:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            below = (grey - value) / grey
+            above = (value - grey) / (1.0 - grey)
+        np.maximum(d, np.where(value < grey, below, above), out=d)
+    return d
+
+
+def boundary_distance(RGB, display: str = "sRGB"):
+    """Normalised distance of display-linear ``RGB`` to ``display``'s gamut boundary
+    along the paper's ray (0 at the grey, 1 on the boundary); NaN where Y <= 0 or
+    Y >= 1 (no ray: the colour is black or white). Returns (N...,) float64.
+
+    Examples
+    --------
+    >>> boundary_distance([[0.5, 0.5, 0.5], [0.6, 0.3, 0.0]], "sRGB").round(3).tolist()
+    [0.0, 1.0]
+    """
+    M = clip._display_matrix(display)
+    w = np.linalg.inv(M)[1]
+    a = np.asarray(RGB, dtype=np.float64)
+    if a.ndim == 0 or a.shape[-1] != 3:
+        raise ValueError(f"RGB must have a last axis of length 3, got shape {a.shape}")
+    flat = a.reshape(-1, 3).T
+    Y = w @ flat
+    with np.errstate(invalid="ignore"):
+        d = _distance(flat, Y)
+    d[~((Y > 0.0) & (Y < 1.0))] = np.nan
+    return d.reshape(a.shape[:-1])
+
+
+def compress_RGB(RGB, display: str = "sRGB", threshold: float = THRESHOLD,
+                 limit: float = LIMIT, power: float = POWER):
+    """Soft constant-lightness gamut compression of display-linear RGB.
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display``, last axis 3 (RGB = 1 is its white).
+    display : str
+        One of :data:`ocio_thinfilm.colour.clip.DISPLAYS`.
+    threshold, limit, power : float
+        The curve (:func:`compression_curve`): ``0 < threshold < 1 < limit``.
+
+    Returns
+    -------
+    numpy.ndarray
+        Same shape and dtype (float32 or float64): Y kept, on the segment between the
+        colour and its grey, in gamut.
+
+    Examples
+    --------
+    In-gamut colours away from the boundary are unchanged; a colour 1.12 boundary
+    distances out keeps its luminance and lands inside, at the curve's distance
+    (the clip would put it on the boundary):
+
+    >>> compress_RGB([0.5, 0.4, 0.3]).tolist()
+    [0.5, 0.4, 0.3]
+    >>> c = np.array([1.05, 0.45, 0.3])
+    >>> d = boundary_distance(c)
+    >>> w = colorimetry.RGB_to_XYZ(np.eye(3), "sRGB")[:, 1]  # luminance weights
+    >>> out = compress_RGB(c)
+    >>> round(float(d), 2), bool(np.isclose(out @ w, c @ w))
+    (1.12, True)
+    >>> round(float(boundary_distance(out)), 4) == round(float(compression_curve(d)), 4)
+    True
+    """
+    threshold, limit, power = _check(threshold, limit, power)
+    M = clip._display_matrix(display)
+    luminance = np.linalg.inv(M)[1]
+
+    def kernel(rgb):
+        Y = luminance[0] * rgb[0] + luminance[1] * rgb[1] + luminance[2] * rgb[2]
+        grey = np.clip(Y, 0.0, 1.0)
+        d = _distance(rgb, grey)
+        beyond = d >= limit
+        with np.errstate(divide="ignore", invalid="ignore"):
+            k = np.where(beyond, 1.0 / d,
+                         compression_curve(np.where(beyond, 0.0, d), threshold, limit,
+                                           power) / d)
+        k = np.where(d > threshold, k, 1.0)
+        out = np.where(d > threshold, np.clip(grey + k * (rgb - grey), 0.0, 1.0), rgb)
+        out[:, Y <= 0.0] = 0.0
+        out[:, Y >= 1.0] = 1.0
+        return out
+
+    return clip._apply(RGB, "RGB", kernel)
+
+
+def compress_XYZ(XYZ, display: str = "sRGB", threshold: float = THRESHOLD,
+                 limit: float = LIMIT, power: float = POWER):
+    """:func:`compress_RGB` for D65-relative CIE XYZ (Y = 1 the display's white):
+    XYZ in, XYZ out, same shape and dtype.
+
+    >>> xyz = [0.4034, 0.414, 0.3425]  # sRGB (0.5, 0.4, 0.3): far inside, unchanged
+    >>> bool(np.allclose(compress_XYZ(xyz), xyz, rtol=0, atol=1e-15))
+    True
+    """
+    M = clip._display_matrix(display)
+    a = np.asarray(XYZ)
+    dtype = a.dtype if a.dtype in (np.float32, np.float64) else np.float64
+    limited = np.clip(np.asarray(a, dtype=np.float64), -clip.LIMIT, clip.LIMIT)  # NaN stays
+    rgb = colorimetry.XYZ_to_RGB(limited, display)
+    out = compress_RGB(rgb, display, threshold, limit, power) @ np.linalg.inv(M).T
+    return out.astype(dtype)

@@ -1,0 +1,297 @@
+"""The soft constant-lightness compression: the analytic map (colour.compress) against
+an independent ray-marching reference, and the config's ``Constant-Lightness Compress``
+views (OCIO's CPU processor) against the analytic map on the clip's test sets.
+
+Independent of the code under test: luminance weights and gamut test from
+colour-science's RGB_COLOURSPACES, the boundary found by bisection along the ray, the
+ACES 1.3 curve written out from S-2020-001's formula.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ocio_thinfilm.colour import clip, colorimetry, compress
+from evaluation.colours import object_colours, spectral_mixtures
+from ocio_thinfilm.lut import clip_lut, compress_lut
+
+ocio = pytest.importorskip("PyOpenColorIO")
+
+CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
+DISPLAYS = clip.DISPLAYS
+VIEW = "Constant-Lightness Compress"
+_COLOUR_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
+
+
+def _weights(display):
+    """Luminance weights of ``display`` from colour-science's primaries and white
+    (independent of our matrices)."""
+    import colour
+
+    space = colour.RGB_COLOURSPACES[_COLOUR_NAMES[display]]
+    return colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
+
+
+def _aces_curve(d, thr, lim, p=1.2):
+    """S-2020-001 'compress': thr + (d - thr) / (1 + ((d - thr) / s) ** p) ** (1 / p),
+    s = (lim - thr) / (((1 - thr) / (lim - thr)) ** -p - 1) ** (1 / p)."""
+    s = (lim - thr) / (((1.0 - thr) / (lim - thr)) ** -p - 1.0) ** (1.0 / p)
+    x = d - thr
+    with np.errstate(invalid="ignore"):  # x < 0 where d <= thr (not used there)
+        return np.where(d > thr, thr + x / (1.0 + (x / s) ** p) ** (1.0 / p), d)
+
+
+def _ray_distance(rgb, w, steps=80):
+    """Normalised boundary distance by bisection: the largest t with grey + t (c - grey)
+    inside the unit cube, d = 1 / t."""
+    rgb = np.asarray(rgb, dtype=np.float64)
+    Y = rgb @ w
+    lo, hi = np.zeros(len(rgb)), np.full(len(rgb), 1e6)
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        p = Y[:, None] + mid[:, None] * (rgb - Y[:, None])
+        inside = np.all((p >= 0.0) & (p <= 1.0), axis=1)
+        lo, hi = np.where(inside, mid, lo), np.where(inside, hi, mid)
+    return 1.0 / lo
+
+
+def _random_rgb(display, n=4000, seed=0):
+    rng = np.random.default_rng(seed)
+    w = _weights(display)
+    Y = rng.uniform(0.02, 0.97, n)
+    direction = rng.normal(size=(n, 3))
+    direction -= (direction @ w)[:, None]  # keeps Y
+    grey = np.repeat(Y[:, None], 3, axis=1)
+    d = _ray_distance(grey + direction, w)  # distance of grey + direction
+    scale = rng.uniform(0.0, 2.0, n) / d  # colours from the grey to 2 boundary distances
+    return grey + scale[:, None] * direction
+
+
+# --------------------------------------------------------------------------- #
+# The analytic map
+# --------------------------------------------------------------------------- #
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_compress_keeps_Y_on_the_ray_and_follows_the_curve(display):
+    w = _weights(display)
+    rgb = _random_rgb(display)
+    out = compress.compress_RGB(rgb, display)
+    Y = rgb @ w
+    assert np.abs(out @ w - Y).max() < 1e-12
+    assert np.all((out >= 0.0) & (out <= 1.0))
+    # on the segment from the colour to its grey: out - grey = k (c - grey), 0 < k <= 1
+    k = ((out - Y[:, None]) * (rgb - Y[:, None])).sum(1) / ((rgb - Y[:, None]) ** 2).sum(1)
+    assert np.abs(out - Y[:, None] - k[:, None] * (rgb - Y[:, None])).max() < 1e-12
+    assert np.all((k > 0.0) & (k <= 1.0 + 1e-12))
+    d = _ray_distance(rgb, w)
+    expected = np.minimum(_aces_curve(d, compress.THRESHOLD, compress.LIMIT), 1.0)
+    np.testing.assert_allclose(_ray_distance(out, w), expected, rtol=1e-9, atol=1e-12)
+    inside = d <= compress.THRESHOLD
+    assert inside.sum() > 500 and np.array_equal(out[inside], rgb[inside])
+    beyond = d >= compress.LIMIT
+    assert beyond.sum() > 500
+    np.testing.assert_allclose(out[beyond], clip.clip_RGB(rgb[beyond], display), atol=1e-12)
+
+
+def test_curve_is_smooth_at_the_threshold_and_strictly_increasing_to_the_limit():
+    thr, lim = compress.THRESHOLD, compress.LIMIT
+    eps = 1e-6
+    f = compress.compression_curve
+    slope = (f(thr + eps) - f(thr)) / eps
+    assert abs(slope - 1.0) < 1e-4  # first derivative continuous (1 on both sides)
+    d = np.linspace(thr, lim, 10001)
+    assert np.all(np.diff(f(d)) > 0.0)
+    assert f(lim) == pytest.approx(1.0, abs=1e-12)
+    assert np.all(f(np.array([lim + 0.01, 2.0, 1e6, np.inf])) == 1.0)
+    np.testing.assert_allclose(f(d), _aces_curve(d, thr, lim), rtol=1e-13)
+    y = np.linspace(0.0, 0.999, 500)
+    np.testing.assert_allclose(f(compress.compression_curve_inverse(y), clipped=False), y,
+                               atol=1e-12)
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_compress_edges(display):
+    out = compress.compress_RGB(np.array([[np.nan, 0.2, 0.3], [np.inf, 0.0, 0.0],
+                                          [-0.1, -0.2, -0.3], [2.0, 2.0, 2.0],
+                                          [1e300, -1e300, 5.0]]), display)
+    assert np.isnan(out[0]).all()
+    assert np.isfinite(out[1:]).all() and np.all((out[1:] >= 0) & (out[1:] <= 1))
+    assert out[2].tolist() == [0.0, 0.0, 0.0] and out[3].tolist() == [1.0, 1.0, 1.0]
+    assert compress.compress_RGB(np.float32([[1.2, 0.3, 0.1]]), display).dtype == np.float32
+
+
+@pytest.mark.parametrize("kwargs, name", [(dict(threshold=1.0), "threshold"),
+                                          (dict(threshold=0.0), "threshold"),
+                                          (dict(limit=1.0), "limit"),
+                                          (dict(power=-1.0), "power")])
+def test_compress_parameters_refused(kwargs, name):
+    with pytest.raises(ValueError, match=name):
+        compress.compress_RGB([0.5, 0.5, 0.5], **kwargs)
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_lut_factorisation_is_the_analytic_map(display):
+    """U o S_w o L o S_b, each evaluated analytically, is compress_RGB (the LUT chain
+    only adds interpolation)."""
+    rgb = np.concatenate([_random_rgb(display, seed=2),
+                          colorimetry.XYZ_to_RGB(object_colours()[:3000], display)])
+    a = compress_lut.soft_black_RGB(rgb, display)
+    a = clip_lut.clip_black_faces_RGB(a, display)
+    a = compress_lut.soft_white_RGB(a, display)
+    a = clip.clip_RGB(a, display)
+    np.testing.assert_allclose(a, compress.compress_RGB(rgb, display), atol=1e-9)
+
+
+# --------------------------------------------------------------------------- #
+# The config's views
+# --------------------------------------------------------------------------- #
+@pytest.fixture(scope="module")
+def cfg():
+    return ocio.Config.CreateFromFile(str(CONFIG))
+
+
+def _decode(code, display):
+    import colour
+
+    code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
+    if display == "Rec.2020":
+        return colour.models.eotf_BT1886(code)
+    return colour.cctf_decoding(code, function="sRGB")
+
+
+def _apply(cfg, display, XYZ, view=VIEW, optimization=None):
+    proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+    cpu = (proc.getDefaultCPUProcessor() if optimization is None else
+           proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
+                                         optimization))
+    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
+    cpu.applyRGB(px)
+    return px
+
+
+def _sets():
+    rng = np.random.default_rng(7)
+    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ np.linalg.inv(
+        colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
+    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
+    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
+                            for Y in (0.02, 0.1, 0.3, 0.6)])
+    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
+            "mixtures": spectral_mixtures()}
+
+
+@pytest.fixture(scope="module")
+def measured(cfg):
+    out = {}
+    for display in DISPLAYS:
+        w = _weights(display)
+        for name, XYZ in _sets().items():
+            rgb = _decode(_apply(cfg, display, XYZ), display)
+            truth = compress.compress_XYZ(XYZ, display)
+            de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
+            out[display, name] = dict(p99=float(np.percentile(de, 99)), max=float(de.max()),
+                                      dY=float(np.abs(rgb @ w - truth[:, 1]).max()))
+    return out
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+@pytest.mark.parametrize("name", ["object", "monochromatic", "ap0", "mixtures"])
+def test_view_against_the_analytic_compression(measured, display, name):
+    """The clip issue's targets: dE2000 p99 <= 0.5, max <= 1.5, |dY| <= 1e-3."""
+    m = measured[display, name]
+    assert m["p99"] <= 0.5 and m["max"] <= 1.5 and m["dY"] <= 1e-3, m
+
+
+LEVELS = ["OPTIMIZATION_NONE", "OPTIMIZATION_DEFAULT", "OPTIMIZATION_LOSSLESS",
+          "OPTIMIZATION_VERY_GOOD", "OPTIMIZATION_GOOD", "OPTIMIZATION_DRAFT"]
+
+
+@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_view_finite_and_in_range_at_every_optimisation_level(cfg, display, level):
+    big = np.float32(3.0e38)
+    px = np.array([[big, big, big], [-big, big, -big], [np.inf, 0, 0], [0, -np.inf, 1],
+                   [1e30, 1e-30, 0], [0.2, 0.3, 0.1], [0.0, 0.0, 0.0], [5.0, 1.0, 0.0]])
+    out = _apply(cfg, display, px, optimization=getattr(ocio, level))
+    # 1e-4: the tolerance of the clip's views (test_gamut_map), float32 ops after the LUTs
+    assert np.isfinite(out).all() and out.min() >= -1e-4 and out.max() <= 1.0 + 1e-4
+
+
+def _ramps(display, n=64):
+    """Saturation ramps at fixed Y and hue, from the grey to far outside: towards each
+    monochromatic colour 450-650 nm, at Y = 0.05, 0.2 and 0.4 -- XYZ (ramps, n, 3) and
+    the unclipped normalised distance of each step."""
+    w = _weights(display)
+    wl = np.arange(450.0, 651.0, 25.0)
+    ramps, dist = [], []
+    for Y in (0.05, 0.2, 0.4):
+        for target in colorimetry.XYZ_to_RGB(colorimetry.spectral_locus_XYZ(Y, wl), display):
+            grey = np.full(3, Y)
+            d_target = _ray_distance(target[None], w)[0]
+            # to 2.1 distances, or to the spectral colour where it is nearer (beyond it
+            # the ramp leaves the real colours)
+            t = np.linspace(0.0, min(1.6 * compress.LIMIT / d_target, 1.0), n)
+            rgb = grey + t[:, None] * (target - grey)
+            ramps.append(colorimetry.RGB_to_XYZ(rgb, display))
+            dist.append(t * d_target)
+    return np.array(ramps), np.array(dist)
+
+
+@pytest.fixture(scope="module")
+def ramp_distances(cfg):
+    """{display: (unclipped distance, analytic compress, compress view, clip view)}, the
+    output distances along the ramps of :func:`_ramps`."""
+    out = {}
+    for display in DISPLAYS:
+        w = _weights(display)
+        ramps, dist = _ramps(display)
+        M = colorimetry.matrix_XYZ_to_RGB(display)
+        analytic = compress.compress_XYZ(ramps.reshape(-1, 3), display) @ M.T
+        views = [_decode(_apply(cfg, display, ramps.reshape(-1, 3), view), display)
+                 for view in (VIEW, "Constant-Lightness Clip")]
+        out[display] = (dist, *[_ray_distance(rgb, w).reshape(dist.shape)
+                                for rgb in [analytic] + views])
+    return out
+
+
+def _rising_steps(dist, out):
+    """Steps of ``out`` along each ramp between 0.05 and the limit (minus one step)."""
+    rising = (dist > 0.05) & (dist < compress.LIMIT - 0.02)
+    return np.diff(out, axis=1)[rising[:, 1:] & rising[:, :-1]]
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_ramps_compress_rises_where_the_clip_is_flat(ramp_distances, display):
+    """Saturation ramps at fixed Y and hue (64 steps from the grey to 2.1 boundary
+    distances or the spectral colour): the analytic compression's output distance
+    increases strictly up to the limit, the view follows it to within 0.03 of a
+    boundary distance (the reached bound, measured 0.012-0.021, near the boundary), and
+    the clip view's output is flat (on the boundary, to the clip LUT's 0.023) past it."""
+    dist, analytic, view, clip_view = ramp_distances[display]
+    assert _rising_steps(dist, analytic).min() > 0.0
+    rising = dist < compress.LIMIT
+    assert np.abs(view - analytic)[rising].max() < 0.03
+    assert np.abs(clip_view[dist > 1.02] - 1.0).max() < 0.03  # on the boundary (LUT: 0.023)
+
+
+def test_ramps_compress_view_rises_until_near_the_boundary(ramp_distances):
+    """The view's output distance increases strictly along every ramp until the analytic
+    output is within 3 % of the boundary (input distance 1.13)."""
+    for display in DISPLAYS:
+        dist, analytic, view, _ = ramp_distances[display]
+        rising = (dist > 0.05) & (analytic < 0.97)
+        steps = np.diff(view, axis=1)[rising[:, 1:] & rising[:, :-1]]
+        assert steps.min() > 0.0, (display, steps.min())
+
+
+@pytest.mark.parametrize("display", [
+    pytest.param(d, marks=pytest.mark.xfail(
+        strict=True, reason="the view reaches the boundary up to 0.1 boundary distances "
+                            "before the limit (sRGB 475 nm, Rec.2020 450-475 nm): flat "
+                            "or 2e-4 back there")) if d != "Display P3" else d
+    for d in DISPLAYS])
+def test_ramps_compress_view_strictly_increasing_to_the_limit(ramp_distances, display):
+    dist, _, view, _ = ramp_distances[display]
+    assert _rising_steps(dist, view).min() > 0.0
