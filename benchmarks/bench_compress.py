@@ -19,7 +19,8 @@ against accuracy, and what it does to saturation ramps, beside the clip.
    strictly up to the limit. Plot: docs/compress_ramps.png (distances, and the ramps
    as colour strips).
 
-Writes reports/bench_compress.json and reports/bench_compress.md.
+Writes reports/bench_compress.json, reports/bench_compress.md and docs/compress.md's
+accuracy table (the shipped edges).
 
 Usage: python benchmarks/bench_compress.py [--pairs 41:41 49:41 49:49 57:49]
 """
@@ -28,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 import tempfile
 from pathlib import Path
@@ -36,6 +38,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_PAIRS = ("33:33", "41:41", "49:41", "49:49", "57:49")
+DOC = ROOT / "docs" / "compress.md"
+BEGIN, END = "<!-- compress-accuracy:begin -->", "<!-- compress-accuracy:end -->"
 CANDIDATES = ((0.75, 1.2), (0.8, 1.2), (0.8, 1.3), (0.85, 1.3), (0.8, 1.5))
 
 
@@ -56,7 +60,7 @@ def _sets():
 def defaults_table(sets):
     """Per (threshold, limit) and display: shares untouched / compressed / clipped."""
     from ocio_thinfilm.colour import clip, colorimetry
-    from ocio_thinfilm.colour.compress import boundary_distance
+    from ocio_thinfilm.colour.compress import boundary_distance, compress_RGB
 
     rows = []
     rng = np.random.default_rng(0)
@@ -67,10 +71,16 @@ def defaults_table(sets):
                for name in ("object", "monochromatic", "ap0")}
         d = {name: boundary_distance(v, display) for name, v in rgb.items()}
         inside_objects = d["object"][d["object"] <= 1.0]
+        in_rgb = rgb["object"][d["object"] <= 1.0]
         for thr, lim in CANDIDATES:
+            moved = colorimetry.delta_E2000(
+                colorimetry.RGB_to_XYZ(compress_RGB(in_rgb, display, thr, lim), display),
+                colorimetry.RGB_to_XYZ(in_rgb, display))
             row = dict(display=display, threshold=thr, limit=lim,
                        cube_untouched=float(np.nanmean(d_cube <= thr)),
-                       objects_untouched=float(np.mean(inside_objects <= thr)))
+                       objects_untouched=float(np.mean(inside_objects <= thr)),
+                       objects_moved_p99=float(np.percentile(moved, 99)),
+                       objects_moved_max=float(moved.max()))
             for name in ("monochromatic", "ap0"):
                 v = d[name][np.isfinite(d[name])]
                 row[f"{name}_shaded"] = float(np.mean((v > 1.0) & (v < lim)))
@@ -227,11 +237,13 @@ def plot(result, rgb_out, path):
 def _markdown(defaults, accuracy, ramp):
     lines = ["# bench_compress", "", "## Defaults: shares of each set per (threshold, limit)",
              "", "| display | threshold | limit | gamut cube untouched | in-gamut object colours "
-             "untouched | monochromatic shaded / clipped | AP0 shaded / clipped |",
-             "|---|---|---|---|---|---|---|"]
+             "untouched | their dE2000 moved p99 / max | monochromatic shaded / clipped | "
+             "AP0 shaded / clipped |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in defaults:
         lines.append(f"| {r['display']} | {r['threshold']} | {r['limit']} | "
                      f"{r['cube_untouched']:.1%} | {r['objects_untouched']:.1%} | "
+                     f"{r['objects_moved_p99']:.2f} / {r['objects_moved_max']:.2f} | "
                      f"{r['monochromatic_shaded']:.0%} / {r['monochromatic_clipped']:.0%} | "
                      f"{r['ap0_shaded']:.0%} / {r['ap0_clipped']:.0%} |")
     lines += ["", "## The view's LUTs: size against accuracy (dE2000 p99 / max, |dY| max)", "",
@@ -251,6 +263,29 @@ def _markdown(defaults, accuracy, ramp):
         lines.append(f"| {view} | {v['strictly_rising']} | {v['min_step']:.4f} | "
                      f"{v['spread_past_boundary']:.3f} | {v['dY']:.1e} |")
     return "\n".join(lines) + "\n"
+
+
+def shipped_markdown(result):
+    """docs/compress.md's accuracy table: the rows of the shipped edges."""
+    from ocio_thinfilm.lut import compress_lut
+
+    out = ["| display | object | monochromatic | AP0 | mixtures |", "|---|---|---|---|---|"]
+    for r in result["accuracy"]:
+        if (r["black"], r["white"]) != (compress_lut.SOFT_SIZE, compress_lut.SOFT_WHITE_SIZE):
+            continue
+        out.append(f"| {r['display']} | " + " | ".join(
+            f"{r[s]['p99']:.2f} / {r[s]['max']:.2f}, {r[s]['dY']:.1e}"
+            for s in ("object", "monochromatic", "ap0", "mixtures")) + " |")
+    return "\n".join(out)
+
+
+def update_doc(result, path=DOC):
+    text = path.read_text()
+    if BEGIN not in text:
+        raise SystemExit(f"{path} has no {BEGIN} marker")
+    block = f"{BEGIN}\n{shipped_markdown(result)}\n{END}"
+    path.write_text(re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text,
+                           flags=re.S))
 
 
 def main(argv=None):
@@ -277,8 +312,10 @@ def main(argv=None):
     (ROOT / "reports" / "bench_compress.json").write_text(json.dumps(report, indent=1) + "\n")
     text = _markdown(defaults, accuracy, ramp)
     (ROOT / "reports" / "bench_compress.md").write_text(text)
+    update_doc(report)
     print(text)
-    print(f"wrote reports/bench_compress.md, reports/bench_compress.json, {args.plot}")
+    print(f"wrote reports/bench_compress.md, reports/bench_compress.json, {args.plot}, "
+          f"and the accuracy table of {DOC.relative_to(ROOT)}")
 
 
 if __name__ == "__main__":

@@ -295,3 +295,19 @@ def test_ramps_compress_view_rises_until_near_the_boundary(ramp_distances):
 def test_ramps_compress_view_strictly_increasing_to_the_limit(ramp_distances, display):
     dist, _, view, _ = ramp_distances[display]
     assert _rising_steps(dist, view).min() > 0.0
+
+
+def test_documented_accuracy_comes_from_the_benchmark(load_benchmark, marked):
+    """docs/compress.md's accuracy table is what benchmarks/bench_compress.py renders from
+    reports/bench_compress.json (the shipped edges), and those figures meet the targets
+    this file asserts on the baked config."""
+    import json
+
+    root = Path(__file__).resolve().parents[1]
+    bench = load_benchmark("bench_compress")
+    result = json.loads((root / "reports" / "bench_compress.json").read_text())
+    doc = (root / "docs" / "compress.md").read_text()
+    assert marked(doc, bench.BEGIN, bench.END) == bench.shipped_markdown(result)
+    shipped = [r for r in result["accuracy"] if (r["black"], r["white"]) == (
+        compress_lut.SOFT_SIZE, compress_lut.SOFT_WHITE_SIZE)]
+    assert len(shipped) == len(DISPLAYS)

@@ -17,7 +17,7 @@ import pytest
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.config import merge
 from evaluation.colours import object_colours, spectral_colours
 
@@ -118,7 +118,8 @@ def test_merged_contents(merged):
     for display in base.getDisplays():
         added = [v for v in cfg.getViews(display) if v not in base.getViews(display)]
         if display in EXPECTED[uri]:
-            assert added[0] == "Constant-Lightness Clip" and "ACES Gamut Compression" in added
+            assert added[:2] == ["Constant-Lightness Clip", "Constant-Lightness Compress"]
+            assert "ACES Gamut Compression" in added
             assert (cfg.getDisplayViewTransformName(display, added[0])
                     == f"Constant-Lightness Clip - {EXPECTED[uri][display]}")
             # views appended, the base's own views first and unchanged in order
@@ -131,10 +132,11 @@ def test_merged_contents(merged):
     assert dict(cfg.getRoles()) == dict(base.getRoles())
     gamuts = set(EXPECTED[uri].values())
     nts = set(cfg.getNamedTransformNames()) - set(base.getNamedTransformNames())
-    assert nts == ({f"Constant-Lightness Clip - {g} (display-linear)" for g in gamuts}
+    assert nts == ({f"Constant-Lightness {v} - {g} (display-linear)" for g in gamuts
+                    for v in ("Clip", "Compress")}
                    | {f"{s} to CIE-XYZ-D65" for s in registry.THIN_FILM_SPACES})
     luts = {p.name for p in (path.parent / "luts").iterdir()}
-    assert len(luts) == 3 + 2 * len(gamuts)
+    assert len(luts) == 3 + 4 * len(gamuts)  # tables; per gamut the clip's 2 and 2 squeezes
 
 
 def _write_exr(path, pixels):
@@ -211,18 +213,25 @@ def test_base_views_and_spaces_unchanged(merged):
         assert a.tobytes() == b.tobytes(), name
 
 
-def _check_clip_named_transform(cfg, display):
+def _check_clip_named_transform(cfg, display, kind="Clip"):
     rng = np.random.default_rng(5)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     inside = rng.uniform(0.0, 1.0, (500, 3))
     X = object_colours(n_random=200)
     rgb = X @ M.T
-    nt = f"Constant-Lightness Clip - {display} (display-linear)"
+    nt = f"Constant-Lightness {kind} - {display} (display-linear)"
     proc = cfg.getProcessor(nt, ocio.TRANSFORM_DIR_FORWARD)
-    np.testing.assert_allclose(_apply(proc, inside), inside, atol=2e-3)
+    analytic = clip.clip_RGB if kind == "Clip" else compress.compress_RGB
+    if kind == "Clip":  # in-gamut colours unchanged
+        np.testing.assert_allclose(_apply(proc, inside), inside, atol=2e-3)
+    else:  # the compression moves those near the boundary: within its accuracy target
+        got = _apply(proc, inside).astype(np.float64)
+        dE = colorimetry.delta_E2000(colorimetry.RGB_to_XYZ(got, display),
+                                     colorimetry.RGB_to_XYZ(analytic(inside, display), display))
+        assert dE.max() <= 1.5, dE.max()
     out = _apply(proc, rgb).astype(np.float64)
     assert out.min() >= -1e-6 and out.max() <= 1.0 + 1e-4
-    ref = clip.clip_RGB(rgb, display)  # the analytic clip
+    ref = analytic(rgb, display)
     Y = np.linalg.inv(M)[1]
     below = rgb @ Y < 0.95
     assert np.abs(out @ Y - rgb @ Y)[below].max() < 2e-3  # luminance kept
@@ -247,6 +256,7 @@ def test_named_transforms_in_merged_config(merged):
     uri, _, cfg = merged
     for display in set(EXPECTED[uri].values()):
         _check_clip_named_transform(cfg, display)
+        _check_clip_named_transform(cfg, display, "Compress")
     _check_table_named_transforms(cfg)
 
 
@@ -254,6 +264,7 @@ def test_named_transforms_in_project_config():
     cfg = config.generate_config(config.config_data(inline=True))
     for display in clip.DISPLAYS:
         _check_clip_named_transform(cfg, display)
+        _check_clip_named_transform(cfg, display, "Compress")
     _check_table_named_transforms(cfg)
 
 

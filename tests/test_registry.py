@@ -23,8 +23,8 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
-    assert registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
-                              "ACES Gamut Compression", "Raw")
+    assert registry.VIEWS == ("Constant-Lightness Clip", "Constant-Lightness Compress",
+                              "Channel Clamp", "ACES Gamut Compression", "Raw")
     assert list(config.DISPLAY_SPACES) == list(registry.DISPLAYS)
     assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
     assert list(render.PNG_COLORSPACE) == list(registry.DISPLAYS)
@@ -113,8 +113,10 @@ def test_adding_a_display_is_one_entry(tmp_path):
     displays, views, luts, clip_displays, tag, encoding = json.loads(
         out.stdout.strip().splitlines()[-1])
     assert displays == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
-    assert views == ["Constant-Lightness Clip", "Channel Clamp", "ACES Gamut Compression",
-                     "Raw"]
+    assert views == ["Constant-Lightness Clip", "Constant-Lightness Compress",
+                     "Channel Clamp", "ACES Gamut Compression", "Raw"]
     assert luts == ["ConstantLightnessClip_Rec709_BlackFaces.clf",
-                    "ConstantLightnessClip_Rec709_WhiteFaces.clf"]
+                    "ConstantLightnessClip_Rec709_WhiteFaces.clf",
+                    "ConstantLightnessCompress_Rec709_BlackFaces.clf",
+                    "ConstantLightnessCompress_Rec709_WhiteFaces.clf"]
     assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"

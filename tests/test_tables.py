@@ -28,8 +28,8 @@ def grey_input(x):
 # Contract
 # --------------------------------------------------------------------------- #
 def test_views_and_default_tables():
-    assert registry.VIEWS == ("Constant-Lightness Clip", "Channel Clamp",
-                              "ACES Gamut Compression", "Raw")
+    assert registry.VIEWS == ("Constant-Lightness Clip", "Constant-Lightness Compress",
+                              "Channel Clamp", "ACES Gamut Compression", "Raw")
     table = tables.film_table("phase-change")
     assert table.kind == "phase-change"
     assert table.values.shape == (tables.FILM_SIZE, 3)
