@@ -300,11 +300,11 @@ def validate() -> None:
     spaces = [d.colorspace for d in DISPLAY_LIST + HDR_DISPLAY_LIST]
     if len(set(spaces)) != len(spaces):
         raise ValueError(f"registry: display colour spaces must be unique: {spaces}")
-    for d in HDR_DISPLAY_LIST:
-        if (d.gamut not in DISPLAYS or d.transfer not in ("PQ", "HLG")
-                or not d.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
-                or not d.peak > HDR_REFERENCE_WHITE or not d.png_colorspace):
-            raise ValueError(f"registry: HDR display {d.name!r}: bad entry {d!r}")
+    for h in HDR_DISPLAY_LIST:
+        if (h.gamut not in DISPLAYS or h.transfer not in ("PQ", "HLG")
+                or not h.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
+                or not h.peak > HDR_REFERENCE_WHITE or not h.png_colorspace):
+            raise ValueError(f"registry: HDR display {h.name!r}: bad entry {h!r}")
     if [v.name for v in VIEW_LIST if v.raw] != [VIEW_LIST[-1].name]:
         raise ValueError("registry: exactly one raw view, listed last")
     if any(not v.description for v in VIEW_LIST if not v.raw):

@@ -46,9 +46,10 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
     for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST:
         assert tuple(cfg.getViews(d.name)) == registry.VIEWS
         assert cfg.getColorSpace(d.colorspace) is not None
+        gamut = registry.gamut_of(d.name)
         for white in (False, True):
-            assert (ROOT / "configs" / "thinfilm" / "luts" / "{}.clf".format(
-                registry.clip_lut_stem(registry.gamut_of(d.name), white))).is_file()
+            stem = registry.clip_lut_stem(gamut, white)
+            assert (ROOT / "configs" / "thinfilm" / "luts" / f"{stem}.clf").is_file()
     # HDR displays reuse their gamut's LUT files: none of their own
     luts = {p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir()}
     assert luts == ({f"{registry.clip_lut_stem(d, w)}.clf" for d in registry.DISPLAYS

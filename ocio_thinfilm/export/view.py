@@ -69,7 +69,7 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.io import ParameterError, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics.sampling import as_pair

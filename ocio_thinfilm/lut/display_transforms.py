@@ -173,8 +173,9 @@ The matrix to the display's primaries scaled by 203 / 100 (OCIO's built-ins take
     1.0 as 100 cd/m2), a clamp to [0, 10000 cd/m2], then OCIO's built-ins (OCIO >= 2.1):
     the ST 2084 curve (:data:`PQ_CURVE`) for PQ, for HLG the registry entry's display
     transform (the BT.2100 HLG inverse EOTF for a 1000 cd/m2 peak) after the matrix
-    back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry entry's built-in display
-    transform (the ACES configs' display colour spaces) of XYZ scaled by 203 / 100.
+    back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry
+    entry's built-in display transform (the ACES configs' display colour spaces) of XYZ
+    scaled by 203 / 100.
 
     Parameters
     ----------
