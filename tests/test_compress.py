@@ -286,13 +286,9 @@ def test_ramps_compress_view_rises_until_near_the_boundary(ramp_distances):
         assert steps.min() > 0.0, (display, steps.min())
 
 
-@pytest.mark.parametrize("display", [
-    pytest.param(d, marks=pytest.mark.xfail(
-        strict=True, reason="the view reaches the boundary up to 0.1 boundary distances "
-                            "before the limit (sRGB 475 nm, Rec.2020 450-475 nm): flat "
-                            "or 2e-4 back there")) if d != "Display P3" else d
-    for d in DISPLAYS])
+@pytest.mark.parametrize("display", DISPLAYS)
 def test_ramps_compress_view_strictly_increasing_to_the_limit(ramp_distances, display):
+    """... and up to the limit (less one step of the 64), as the analytic curve."""
     dist, _, view, _ = ramp_distances[display]
     assert _rising_steps(dist, view).min() > 0.0
 

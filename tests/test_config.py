@@ -169,7 +169,9 @@ def test_config_views_equal_package_view_transforms(cfg, ocio):
             cfg.getProcessor("CIE-XYZ-D65", display, view,
                              ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(out)
             ref = ocio_ops.apply(view_transforms.view_transform(display, view), X)
-            np.testing.assert_allclose(out, ref, atol=2e-4, err_msg=f"{display} / {view}")
+            # 3e-4: code values near black through BT.1886's pure power (one Rec.2020
+            # compression pixel at 2.3e-4 = a linear 1e-9, file vs in-memory LUT ops)
+            np.testing.assert_allclose(out, ref, atol=3e-4, err_msg=f"{display} / {view}")
 
 
 def _hdr_nits(display, code):
