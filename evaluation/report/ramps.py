@@ -107,8 +107,11 @@ def plot(result, rgb_out):
         ax.set_xlim(0, 2.1)
         ax.set_ylim(0, 1.12)
         strip = fig.add_subplot(grid[1, k])
-        strip.imshow(np.clip(rgb_out[view], 0, 1), aspect="auto", interpolation="nearest",
-                     extent=(0, float(dist.max()), len(result["wavelengths"]), 0))
+        for i in range(len(result["wavelengths"])):  # each ramp over its own distances
+            strip.imshow(np.clip(rgb_out[view][i:i + 1], 0, 1), aspect="auto",
+                         interpolation="nearest", extent=(0, float(dist[i].max()), i + 1, i))
+        strip.set_xlim(0, 2.1)
+        strip.set_ylim(len(result["wavelengths"]), 0)
         strip.set_yticks(np.arange(len(result["wavelengths"])) + 0.5,
                          [f"{w:.0f}" for w in result["wavelengths"]], fontsize=7)
         strip.set_xlabel("input distance (ramps from grey, Y = 0.2, sRGB)")
