@@ -45,17 +45,9 @@ CANDIDATES = ((0.75, 1.2), (0.8, 1.2), (0.8, 1.3), (0.85, 1.3), (0.8, 1.5))
 
 
 def _sets():
-    from ocio_thinfilm.colour import colorimetry
-    from evaluation.colours import object_colours, spectral_mixtures
+    from evaluation.colours import gamut_map_sets
 
-    rng = np.random.default_rng(7)
-    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ np.linalg.inv(
-        colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
-    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
-    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
-                            for Y in (0.02, 0.1, 0.3, 0.6)])
-    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
-            "mixtures": spectral_mixtures()}
+    return gamut_map_sets()
 
 
 def defaults_table(sets):

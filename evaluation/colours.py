@@ -78,3 +78,18 @@ def spectral_mixtures(n: int = 20000, seed: int = 3, max_Y: float = 0.99) -> np.
     Y = max_Y * rng.uniform(0.0, 1.0, n) ** 0.5
     Y[: n // 4] = rng.uniform(0.95, max_Y, n // 4)
     return XYZ / XYZ[:, 1:2] * Y[:, None]
+
+
+def gamut_map_sets() -> dict:
+    """The clip issue's test sets (CIE-XYZ-D65), by name: ``object`` (object and
+    interference colours, :func:`object_colours`), ``monochromatic`` (380-700 nm at
+    Y = 0.02, 0.1, 0.3, 0.6), ``ap0`` (20,000 random colours inside ACES AP0 with
+    0 <= Y <= 1) and ``mixtures`` (:func:`spectral_mixtures`)."""
+    rng = np.random.default_rng(7)
+    ap0_to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1"))
+    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ ap0_to_xyz.T
+    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
+    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
+                            for Y in (0.02, 0.1, 0.3, 0.6)])
+    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
+            "mixtures": spectral_mixtures()}

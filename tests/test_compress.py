@@ -9,16 +9,19 @@ ACES 1.3 curve written out from S-2020-001's formula.
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from evaluation.colours import object_colours, spectral_mixtures
+from evaluation.colours import gamut_map_sets, object_colours
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import clip_lut, compress_lut
 
 ocio = pytest.importorskip("PyOpenColorIO")
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from test_gamut_map import _apply_view, _decode  # noqa: E402
 
 CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
 DISPLAYS = clip.DISPLAYS
@@ -152,34 +155,8 @@ def cfg():
     return ocio.Config.CreateFromFile(str(CONFIG))
 
 
-def _decode(code, display):
-    import colour
-
-    code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
-    if display == "Rec.2020":
-        return colour.models.eotf_BT1886(code)
-    return colour.cctf_decoding(code, function="sRGB")
-
-
 def _apply(cfg, display, XYZ, view=VIEW, optimization=None):
-    proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-    cpu = (proc.getDefaultCPUProcessor() if optimization is None else
-           proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
-                                         optimization))
-    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
-    cpu.applyRGB(px)
-    return px
-
-
-def _sets():
-    rng = np.random.default_rng(7)
-    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ np.linalg.inv(
-        colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
-    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
-    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
-                            for Y in (0.02, 0.1, 0.3, 0.6)])
-    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
-            "mixtures": spectral_mixtures()}
+    return _apply_view(cfg, display, XYZ, optimization, view=view)
 
 
 @pytest.fixture(scope="module")
@@ -187,7 +164,7 @@ def measured(cfg):
     out = {}
     for display in DISPLAYS:
         w = _weights(display)
-        for name, XYZ in _sets().items():
+        for name, XYZ in gamut_map_sets().items():
             rgb = _decode(_apply(cfg, display, XYZ), display)
             truth = compress.compress_XYZ(XYZ, display)
             de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))

@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from evaluation.colours import object_colours, spectral_mixtures
+from evaluation.colours import gamut_map_sets
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -45,8 +45,9 @@ def _decode(code, display):
     return colour.cctf_decoding(code, function="sRGB")
 
 
-def _apply_view(cfg, display, XYZ, optimization=None):
-    proc = cfg.getProcessor("CIE-XYZ-D65", display, VIEW, ocio.TRANSFORM_DIR_FORWARD)
+def _apply_view(cfg, display, XYZ, optimization=None, view=VIEW):
+    """The config's ``view`` of ``display`` on CIE-XYZ-D65 (float32 code values)."""
+    proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
     cpu = (proc.getDefaultCPUProcessor() if optimization is None else
            proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
                                          optimization))
@@ -55,15 +56,7 @@ def _apply_view(cfg, display, XYZ, optimization=None):
     return px
 
 
-def _sets():
-    rng = np.random.default_rng(7)
-    ap0_to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1"))
-    ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ ap0_to_xyz.T
-    ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
-    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
-                            for Y in (0.02, 0.1, 0.3, 0.6)])
-    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
-            "mixtures": spectral_mixtures()}
+_sets = gamut_map_sets
 
 
 @pytest.fixture(scope="module")

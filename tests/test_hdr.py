@@ -25,7 +25,7 @@ from ocio_thinfilm.colour import clip, colorimetry, compress
 ocio = pytest.importorskip("PyOpenColorIO")
 colour = pytest.importorskip("colour")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from test_gamut_map import EXTREMES, LEVELS, TOL, _sets  # noqa: E402
+from test_gamut_map import EXTREMES, LEVELS, TOL, _apply_view, _sets  # noqa: E402
 
 CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
 VIEW = "Constant-Lightness Clip"
@@ -47,13 +47,7 @@ def cfg():
 
 
 def _apply(cfg, display, view, XYZ, optimization=None):
-    proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-    cpu = (proc.getDefaultCPUProcessor() if optimization is None else
-           proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
-                                         optimization))
-    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
-    cpu.applyRGB(px)
-    return px
+    return _apply_view(cfg, display, XYZ, optimization, view=view)
 
 
 def _nits(display, code):

@@ -350,29 +350,27 @@ def compress_named_transform(soft, *, inline=False, luts=None):
 def named_transforms(luts_by_display: dict, *, inline=False, luts=None,
                      compress_by_display=None) -> list:
     """Named transforms (OCIO >= 2.0) as data: the clip per display of ``luts_by_display``
-    (display -> ClipLUT)
-    and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
+    (display -> ClipLUT), the compression per display of ``compress_by_display`` (display
+    -> CompressLUT) and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
     config's reference space: merged configs add the same ones)."""
-    out = []
-    for display, lut in luts_by_display.items():
-        out.append(dict(
-            name=CLIP_NAMED_TRANSFORM.format(display=display), family="Thin Film",
-            categories=["gamut-mapping"], encoding="display-linear",
-            description=(f"Smits & Meyer 1990 constant-lightness clip into {display} on "
-                         f"its own: {display} display-linear RGB in (any values), "
-                         "display-linear RGB in [0, 1] out, luminance kept. Apply it as "
-                         "a node, then encode for the display."),
-            transform=clip_named_transform(lut, inline=inline, luts=luts)))
+    def gamut_map(name, display, what, transform):
+        return dict(name=name.format(display=display), family="Thin Film",
+                    categories=["gamut-mapping"], encoding="display-linear",
+                    description=(f"{what}: {display} display-linear RGB in (any values), "
+                                 "display-linear RGB in [0, 1] out, luminance kept. Apply it "
+                                 "as a node, then encode for the display."),
+                    transform=transform)
+
+    out = [gamut_map(CLIP_NAMED_TRANSFORM, display,
+                     f"Smits & Meyer 1990 constant-lightness clip into {display} on its own",
+                     clip_named_transform(lut, inline=inline, luts=luts))
+           for display, lut in luts_by_display.items()]
     for display, soft in (compress_by_display or {}).items():
         t, lim, _ = soft.parameters
-        out.append(dict(
-            name=COMPRESS_NAMED_TRANSFORM.format(display=display), family="Thin Film",
-            categories=["gamut-mapping"], encoding="display-linear",
-            description=(f"Soft constant-lightness compression into {display} on its own "
-                         f"(threshold {t:g}, limit {lim:g}): {display} display-linear RGB "
-                         "in (any values), display-linear RGB in [0, 1] out, luminance "
-                         "kept. Apply it as a node, then encode for the display."),
-            transform=compress_named_transform(soft, inline=inline, luts=luts)))
+        out.append(gamut_map(COMPRESS_NAMED_TRANSFORM, display,
+                             f"Soft constant-lightness compression into {display} on its own "
+                             f"(threshold {t:g}, limit {lim:g})",
+                             compress_named_transform(soft, inline=inline, luts=luts)))
     for space in registry.THIN_FILM_LIST:
         table = named_lut(space.lut_stem)
         out.append(dict(
