@@ -16,21 +16,23 @@ U o L (:mod:`.clip_lut`), and S factors the same way, so the chain is
 ``U o S_w o L o S_b``:
 
 - S_b (:func:`soft_black_RGB`) squeezes by ``sigma(d_black)`` alone. It is homogeneous
-  like L, so its Lut3D works over the black pass's chromaticity chart and keeps Y
-  exactly; it is smooth (no flat part: that is L's job, next).
+  like L, so its Lut3D works over a chromaticity chart and keeps Y exactly: its own
+  (:func:`_soft_plan`), with the three rays where its gradient jumps on grid and split
+  lines. It is smooth (no flat part: that is L's job, next).
 - L, the clip's black pass, then clips what S_b left beyond the faces through black.
 - S_w (:func:`soft_white_RGB`) recovers ``d_black = f^-1(d_black')`` from the colour L
   gives it (d_black' <= 1; on the faces: the limit, the continuous choice) and
   ``d_white = d_white' / sigma(d_black)``, and scales by ``sigma(D) / sigma(d_black)``
   towards the grey: the identity wherever the faces through black bind. Its Lut3D uses
-  the clip's white-pass node layout (per-channel nodes, encoded below white), and
-  nodes brighter than white hold its continuation, so the cells that straddle Y = 1
+  the clip's white-pass nodes (per channel, up to 1 / its luminance weight) with a
+  shaper linear in the value between them, so interpolation keeps Y, and its nodes
+  brighter than white hold its continuation, so the cells that straddle Y = 1
   interpolate a smooth function.
 - U, the clip's white pass, clips what is still beyond the faces through white.
 
 Every step keeps Y and moves along the same ray, so the chain does (tested against the
 analytic map in ``tests/test_compress.py``). Sizes, accuracy and load time:
-``benchmarks/bench_compress.py`` and docs/gamut_map.md.
+``benchmarks/bench_compress.py``, ``benchmarks/bench_load.py`` and docs/compress.md.
 """
 
 from __future__ import annotations
@@ -47,6 +49,7 @@ from ocio_thinfilm.lut.clip_lut import (
     ClipLUT,
     _chart_cover,
     _chart_to_XYZ,
+    _cross,
     _luminance,
     _q16,
     _shaper_values,
@@ -132,7 +135,9 @@ def _chart_coordinates(P, XYZ):
         return c[:, :2] / s[:, None], s
 
 
-@cache.memoize(maxsize=16)
+@colorimetry.persistent(modules=("ocio_thinfilm.lut.compress_lut",
+                                 "ocio_thinfilm.lut.clip_lut",
+                                 "ocio_thinfilm.colour.colorimetry"))
 def _soft_plan(display, size):
     """S_b's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives its Lut3D's
     coordinates (u_a, u_b) and Y, with the three rays where S_b has a kink on grid and
@@ -145,7 +150,8 @@ def _soft_plan(display, size):
     third, for alpha = -mu / lam, the diagonal u_a - u_b = const (a split plane of
     tetrahedral interpolation) -- all through the white point's node. Of the charts
     that hold :func:`ocio_thinfilm.lut.clip_lut._chart_cover` in [0, 1]^2, the one
-    where the display's triangle is largest is taken."""
+    where the display's triangle is largest is taken. Memoised on disk (the search takes
+    about 2 s per display)."""
     cells = size - 1
     M = colorimetry.matrix_XYZ_to_RGB(display)
     cover = _chart_cover()
@@ -164,16 +170,12 @@ def _soft_plan(display, size):
                 if hi + a_nodes / cells > 1.0 or a_nodes > cells:
                     continue
                 tri, _ = _chart_coordinates(P, primaries)
-                area = abs(_cross2(tri[1] - tri[0], tri[2] - tri[0]))
+                area = abs(_cross(tri[1] - tri[0], tri[2] - tri[0]))
                 if best is None or area > best[0]:
                     best = (area, _plan_matrix(M, perm, lam_nodes, mu, a_nodes, cells))
     if best is None:
         raise ValueError(f"compression LUT size {size} is too small for its chart")
     return best[1]
-
-
-def _cross2(a, b):
-    return a[0] * b[1] - a[1] * b[0]
 
 
 @dataclass(frozen=True, eq=False)
