@@ -290,7 +290,7 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     # stored linear: with the shaper piecewise linear in c itself, the grid coordinates
     # are affine in c within each cell, so interpolating S_w, which keeps Y (a linear
     # function), keeps Y (stored sRGB-encoded, as the clip's white pass, the encoding's
-    # curvature costs |dY| up to 1.7e-3). Half floats rounded to the 16-bit grid, as the
+    # curvature costs |dY|: docs/compress.md). Half floats rounded to the 16-bit grid, as the
     # black passes: half-float GPU textures see the CPU's values.
     white = np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
