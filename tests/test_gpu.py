@@ -32,7 +32,7 @@ TOL = 2.0 / 255.0
 #: Rec.2020's BT.1886 encoding (a pure 2.4 power) turns a linear 1e-5 near black into
 #: 2/255: one extreme input of the compression (sRGB - Texture code (1.19, -2.68, 1.00),
 #: beyond the limit, so clipped onto G = 0) reaches 2.09/255 with half-float textures:
-#: the CPU puts G at 0 exactly, the GPU 1e-5 above (rounding the white squeeze's shaper
+#: the CPU puts G at 0 exactly, the GPU 1e-5 above (in a one-off try, rounding the shaper
 #: to half floats on the CPU too does not remove it, so it is not the shaper alone).
 #: On the PQ displays ST 2084 is steeper still near black (code 0.013 for 0.004 cd/m2):
 #: a channel on a gamut face that the CPU puts at 0 and the GPU's half-float textures
