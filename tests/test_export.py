@@ -13,9 +13,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm import config
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.export import bake
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.io import MARKER
 
@@ -78,7 +78,7 @@ def test_bake_is_byte_identical_to_committed_config(tmp_path):
 
 
 def test_export_set_is_byte_identical_to_committed_luts(tmp_path):
-    export.export_set(tmp_path)
+    bake.export_set(tmp_path)
     _assert_identical_trees(tmp_path, LUTS_DIR)
 
 
@@ -86,7 +86,7 @@ def test_export_set_is_byte_identical_to_committed_luts(tmp_path):
 def exported_set(tmp_path_factory):
     """What ``ocio-thinfilm bake --luts`` ships, written by this code to a temp dir."""
     d = tmp_path_factory.mktemp("luts")
-    export.export_set(d)
+    bake.export_set(d)
     return d
 
 
@@ -422,7 +422,7 @@ def test_interrupted_bake_leaves_previous_config_intact(tmp_path, monkeypatch):
         (Path(directory) / "luts" / "half.clf").write_text("<ProcessList")
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(config, "write_config", broken)
+    monkeypatch.setattr(bake, "write_config", broken)
     assert cli.main(["bake", "--out", str(out), "--quiet"]) == 130
     _assert_identical_trees(out, CONFIG_DIR)
     assert [p.name for p in tmp_path.iterdir()] == ["thinfilm"]  # no temporary left

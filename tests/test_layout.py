@@ -95,3 +95,91 @@ def test_the_shipped_package_never_imports_the_evaluation_code(tmp_path):
     bad = tmp_path / "bad.py"
     bad.write_text("def f():\n    from evaluation.colours import object_colours\n")
     assert _imports_evaluation(bad) == [2]
+
+
+def _module_name(path: Path) -> str:
+    rel = path.relative_to(PACKAGE.parent).with_suffix("")
+    parts = list(rel.parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+def _edges(path: Path):
+    """Modules of the package that ``path`` imports (module level or lazily): for
+    ``from package import name`` the submodule ``package.name`` where that is a module,
+    else the package itself."""
+    known = {_module_name(p) for p in _modules()}
+    tree = ast.parse(path.read_text())
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0 \
+                and node.module.startswith("ocio_thinfilm"):
+            for alias in node.names:
+                sub = f"{node.module}.{alias.name}"
+                yield sub if sub in known else node.module
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.startswith("ocio_thinfilm"):
+                    yield alias.name
+
+
+def _cycles(graph: dict) -> list:
+    """Every cycle of ``graph`` (module -> set of modules) found by a depth-first search."""
+    found, state = [], {}
+
+    def visit(node, stack):
+        state[node] = "open"
+        stack.append(node)
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == "open":
+                found.append(stack[stack.index(nxt):] + [nxt])
+            elif nxt not in state:
+                visit(nxt, stack)
+        stack.pop()
+        state[node] = "done"
+
+    for node in sorted(graph):
+        if node not in state:
+            visit(node, [])
+    return found
+
+
+def test_no_import_cycles(tmp_path):
+    """No module reaches itself through the package's imports (lazy ones included): one
+    writer per kind of file, called in one direction (export.bake -> export.view ->
+    export.files)."""
+    graph = {_module_name(p): {t for t in _edges(p) if t != _module_name(p)}
+             for p in _modules()}
+    # a package's __init__ re-exporting its submodules is not a cycle of those submodules
+    for name in list(graph):
+        graph[name] = {t for t in graph[name] if not name.startswith(t + ".")}
+    assert _cycles(graph) == []
+    assert _cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == [["a", "b", "c", "a"]]
+
+
+#: Calls that write files (methods and functions).
+WRITERS = {"write", "write_text", "write_bytes", "mkdir", "copytree", "archive", "open",
+           "atomic_file", "atomic_directory", "claim_directory", "transaction"}
+
+
+def _writes(path: Path) -> list:
+    tree = ast.parse(path.read_text())
+    calls = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            f = node.func
+            name = f.attr if isinstance(f, ast.Attribute) else getattr(f, "id", None)
+            if name in WRITERS:
+                calls.append((node.lineno, name))
+    return calls
+
+
+def test_the_config_stage_writes_no_files(tmp_path):
+    """``config/`` turns data into OCIO ``Config`` objects and nothing else: the files are
+    written by ``export/`` (export.bake.write_config, export.merged)."""
+    offenders = {str(p.relative_to(PACKAGE)): _writes(p)
+                 for p in sorted((PACKAGE / "config").glob("*.py"))}
+    assert {k: v for k, v in offenders.items() if v} == {}
+    bad = tmp_path / "bad.py"
+    bad.write_text("def f(p, t):\n    p.write_text(t)\n")
+    assert _writes(bad) == [(2, "write_text")]

@@ -19,6 +19,8 @@ from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.config import merge
+from ocio_thinfilm.export import bake
+from ocio_thinfilm.export import merged as export_merged
 from evaluation.colours import object_colours, spectral_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")
@@ -302,8 +304,8 @@ def test_file_rules_name_colour_spaces():
 def test_ocioz_gives_the_folders_output(tmp_path):
     folder = tmp_path / "folder"
     folder.mkdir()
-    config.write_config(folder, clip_size=9)
-    archive = merge.bake_archive(tmp_path / "thinfilm.ocioz", clip_size=9)
+    bake.write_config(folder, clip_size=9)
+    archive = export_merged.bake_archive(tmp_path / "thinfilm.ocioz", clip_size=9)
     a = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
     b = ocio.Config.CreateFromFile(str(archive))
     b.validate()
@@ -356,7 +358,7 @@ def test_a_missing_base_is_named_source_by_the_library_and_into_by_the_cli(tmp_p
                                                                            capsys):
     missing = tmp_path / "no" / "such.ocio"
     with pytest.raises(ValueError, match=r"^source .*such\.ocio: no such config file"):
-        merge.bake_into(missing, tmp_path / "a")
+        export_merged.bake_into(missing, tmp_path / "a")
     assert main(["bake", "--into", str(missing), "--out", str(tmp_path / "a"), "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
     assert err == f"ocio-thinfilm bake: error: --into {missing}: no such config file " \
@@ -364,7 +366,7 @@ def test_a_missing_base_is_named_source_by_the_library_and_into_by_the_cli(tmp_p
     blocker = tmp_path / "file"
     blocker.write_text("x")
     with pytest.raises(ValueError, match=r"^out .*file: not a directory"):
-        merge.bake_into(BASE21, blocker)
+        export_merged.bake_into(BASE21, blocker)
     assert blocker.read_text() == "x" and not (tmp_path / "a").exists()
 
 

@@ -516,9 +516,9 @@ def test_render_through_a_merged_aces_config(tmp_path, capsys, base):
     through the merged sRGB display's clip view is within one code value of it (and
     untagged: that display is not the registry's), and a view the merged display lacks
     is one line naming it."""
-    from ocio_thinfilm.config import merge
+    from ocio_thinfilm.export import merged
 
-    config = merge.bake_into(base, tmp_path / "studio")
+    config = merged.bake_into(base, tmp_path / "studio")
     ours, theirs = tmp_path / "ours", tmp_path / "theirs"
     assert cli.main(["render", "oil", "--size", "64", "--out", str(ours), "--quiet"]) == 0
     assert cli.main(["render", "oil", "--size", "64", "--config", str(config), "--display",

@@ -1,7 +1,7 @@
 """``ocio-thinfilm bake`` and ``ocio-thinfilm export``: their options and what they run.
 
 Options are parsed and typed by argparse here; the library functions
-(:func:`ocio_thinfilm.export.bake.bake`, :func:`ocio_thinfilm.config.merge.bake_into`,
+(:func:`ocio_thinfilm.export.bake.bake`, :func:`ocio_thinfilm.export.merged.bake_into`,
 :func:`ocio_thinfilm.export.files.export_lut`,
 :func:`ocio_thinfilm.export.view.export_view`) check what the values allow.
 """
@@ -23,14 +23,15 @@ def _run_bake(args) -> int:
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
         # --into CONFIG (merge into a studio config) and/or an .ocioz archive
         from ocio_thinfilm.config import merge
+        from ocio_thinfilm.export import merged
 
         if args.into and args.out == bake_module.DEFAULT_CONFIG_DIR:
             raise UsageError("--into needs --out DIR (or FILE.ocioz)")
         if args.luts is not None:
             raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
         clip_size = bake_module.check_clip_size(args.clip_size)
-        path = (merge.bake_into(args.into, args.out, clip_size=clip_size) if args.into
-                else merge.bake_archive(args.out, clip_size=clip_size))
+        path = (merged.bake_into(args.into, args.out, clip_size=clip_size) if args.into
+                else merged.bake_archive(args.out, clip_size=clip_size))
         print(f"wrote {path}")
         if args.into:  # a merged config has the base config's profile: say who reads it
             import PyOpenColorIO as ocio

@@ -5,9 +5,12 @@ In the style of OpenColorIO-Config-ACES:
 - :mod:`.data` -- the config described as plain data (:func:`config_data`), from the
   registry, the thin-film tables and the clip LUTs;
 - :mod:`.factories` -- one OCIO object from one dict;
-- :mod:`.generate` -- :func:`generate_config` (validated) and :func:`write_config`;
-- :mod:`.merge` -- the same additions merged into an existing config
-  (``bake --into``) or an ``.ocioz`` archive.
+- :mod:`.generate` -- :func:`generate_config` (validated);
+- :mod:`.merge` -- the same additions merged into an existing config (``bake --into``).
+
+This stage turns data into OCIO ``Config`` objects and writes nothing: the files are
+``ocio_thinfilm.export``'s (:mod:`ocio_thinfilm.export.bake`,
+:mod:`ocio_thinfilm.export.merged`).
 
 The public names of :mod:`.data`, :mod:`.factories` and :mod:`.generate` are
 importable from this package.

@@ -1,15 +1,12 @@
-"""One entry point from data to a validated config, and the writer of the config folder.
+"""One entry point from data to a validated config.
 
-- :func:`generate_config` -- :class:`~ocio_thinfilm.config.data.ConfigData` -> a
-  validated ``PyOpenColorIO.Config`` (the factories of
-  :mod:`ocio_thinfilm.config.factories`);
-- :func:`write_config` -- ``config.ocio`` and ``luts/*.clf`` (CLF with IDs and
-  descriptors) into a directory.
+:func:`generate_config` -- :class:`~ocio_thinfilm.config.data.ConfigData` -> a validated
+``PyOpenColorIO.Config`` (the factories of :mod:`ocio_thinfilm.config.factories`). This
+stage writes no file: :func:`ocio_thinfilm.export.bake.write_config` writes the folder.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.data import LUT_DIRECTORY, ConfigData, config_data
@@ -18,9 +15,8 @@ from ocio_thinfilm.config.factories import (
     named_transform_factory,
     view_transform_factory,
 )
-from ocio_thinfilm.lut import clip_lut, tables
 
-__all__ = ["generate_config", "write_config"]
+__all__ = ["generate_config"]
 
 
 def generate_config(data: ConfigData | None = None, *, validate: bool = True,
@@ -77,37 +73,3 @@ def generate_config(data: ConfigData | None = None, *, validate: bool = True,
     return config
 
 
-def write_config(directory, *, clip_size: int = clip_lut.CLIP_SIZE,
-                 film_size: int = tables.FILM_SIZE, morpho_size: int = tables.MORPHO_SIZE,
-                 progress=None) -> Path:
-    """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
-
-    ``progress``: optional callable ``progress(step_name)`` called once per file.
-    Returns the config path. The files carry no timestamps: equal inputs give equal
-    bytes.
-    """
-    import PyOpenColorIO as ocio
-
-    directory = Path(directory)
-    data = config_data(clip_size=clip_size, film_size=film_size, morpho_size=morpho_size)
-    (directory / LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
-    raw = ocio.Config.CreateRaw()
-    for filename, transform in sorted(data.luts.items()):
-        transform.write("Academy/ASC Common LUT Format",
-                        str(directory / LUT_DIRECTORY / filename), raw)
-        if progress:
-            progress(filename)
-    config = generate_config(data, validate=False, working_dir=directory)
-    config.validate()
-    # Check that every FileTransform resolves and every processor builds.
-    for display in config.getDisplays():
-        for view in config.getViews(display):
-            config.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-    for name in config.getColorSpaceNames():
-        config.getProcessor(name, "CIE-XYZ-D65")
-    path = directory / "config.ocio"
-    text = config.serialize()
-    path.write_text(text if text.endswith("\n") else text + "\n")
-    if progress:
-        progress("config.ocio")
-    return path

@@ -1,5 +1,6 @@
 """Add the thin-film spaces and the constant-lightness clip to an existing OCIO config
-(``ocio-thinfilm bake --into CONFIG``), and write configs as OCIO archives (``.ocioz``).
+(``ocio-thinfilm bake --into CONFIG``), as a new ``Config`` (written by
+:mod:`ocio_thinfilm.export.merged`, also as an OCIO archive, ``.ocioz``).
 
 Studios run the ACES studio/CG configs (OCIO ships them built in, ``ocio://...``) and
 add to them. :func:`merge_config` takes such a config and adds, leaving everything
@@ -37,27 +38,23 @@ and display colour spaces just to be merged away again. Editing a copy of the ba
 config with OCIO's Config API does exactly this job in a few calls, and everything not
 added is the base's own objects, untouched.
 
-Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`,
-:func:`bake_into`, :func:`write_archive`, :func:`bake_archive`.
+Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`.
 """
 
 from __future__ import annotations
 
 import copy
-import shutil
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import ParameterError, atomic_directory, atomic_file, check_writable
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["load_base", "interchange", "colorspace_transform", "match_displays", "merge_config",
-           "bake_into", "write_archive", "bake_archive", "MERGED_VIEWS", "HOST_OCIO",
-           "profile_readers"]
+           "MERGED_VIEWS", "HOST_OCIO", "profile_readers"]
 
 #: Hosts and the newest config profile their OCIO reads (an older OCIO refuses a newer
 #: profile outright): Debian's Blender 3.4 and OCIO tools, and Blender 3.x, are OCIO 2.1;
@@ -384,78 +381,3 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     return cfg, {name: data.luts[name] for name in names}, matches
 
 
-def _copy_base_files(base, source, directory):
-    """A base config file's relative search-path folders, copied next to the result."""
-    if str(source).startswith("ocio://"):
-        return
-    root = Path(source).resolve().parent
-    for entry in list(base.getSearchPaths()):
-        if not entry or Path(entry).is_absolute() or "$" in entry:
-            continue
-        src, dst = root / entry, Path(directory) / entry
-        if src.is_dir() and src.resolve() != root and not dst.exists():
-            shutil.copytree(src, dst)
-
-
-def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
-    """Write the merged config (``config.ocio``, ``luts/``) into the existing
-    ``directory``; returns (config path, display matches)."""
-    ocio = ocio_ops.module()
-    base = load_base(source)
-    cfg, luts, matches = merge_config(base, clip_size=clip_size)
-    directory = Path(directory)
-    _copy_base_files(base, source, directory)
-    (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
-    raw = ocio.Config.CreateRaw()
-    for filename, transform in sorted(luts.items()):
-        transform.write("Academy/ASC Common LUT Format",
-                        str(directory / config.LUT_DIRECTORY / filename), raw)
-    cfg.setWorkingDir(str(directory))
-    cfg.validate()
-    for display in matches:
-        for view in cfg.getViews(display):
-            cfg.getProcessor(dict(cfg.getRoles())["cie_xyz_d65_interchange"], display, view,
-                             ocio.TRANSFORM_DIR_FORWARD)
-    for name in cfg.getNamedTransformNames():
-        cfg.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD)
-    path = directory / "config.ocio"
-    text = cfg.serialize()
-    path.write_text(text if text.endswith("\n") else text + "\n")
-    return path, matches
-
-
-def write_archive(config_path, out):
-    """Archive the config folder of ``config_path`` as ``out`` (``.ocioz``, OCIO >= 2.2
-    to read), atomically."""
-    ocio = ocio_ops.module()
-    cfg = ocio.Config.CreateFromFile(str(config_path))
-    if not cfg.isArchivable():
-        raise ValueError(f"{config_path}: not archivable (absolute or parent search paths "
-                         "or LUT paths)")
-    with atomic_file(Path(out)) as tmp:
-        cfg.archive(str(tmp))
-    return Path(out)
-
-
-def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
-    """``ocio-thinfilm bake --into SOURCE --out OUT``: a folder or an ``.ocioz``."""
-    out = Path(out)
-    check_writable(out.parent if str(out.parent) else Path("."))
-    if out.suffix.lower() == ".ocioz":
-        with tempfile.TemporaryDirectory() as tmp:
-            path, _ = write_merged(source, tmp, clip_size=clip_size)
-            return write_archive(path, out)
-    if out.exists() and not out.is_dir():
-        raise ParameterError("out", f" {out}: not a directory")
-    with atomic_directory(out) as tmp:
-        write_merged(source, tmp, clip_size=clip_size)
-    return out / "config.ocio"
-
-
-def bake_archive(out, *, clip_size=clip_lut.CLIP_SIZE):
-    """``ocio-thinfilm bake --out thinfilm.ocioz``: the project's config as an archive."""
-    out = Path(out)
-    check_writable(out.parent if str(out.parent) else Path("."))
-    with tempfile.TemporaryDirectory() as tmp:
-        path = config.write_config(tmp, clip_size=clip_size)
-        return write_archive(path, out)

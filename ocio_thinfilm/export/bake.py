@@ -1,8 +1,8 @@
 """``ocio-thinfilm bake``: the config folder (and the standalone LUT set), written safely.
 
 :func:`bake` writes ``config.ocio`` and its ``luts/*.clf``
-(:func:`ocio_thinfilm.config.generate.write_config`) and, with ``luts``, the standalone
-set (:func:`ocio_thinfilm.export.files.export_set`), into directories it owns
+(:func:`write_config`) and, with ``luts``, the standalone set (:func:`export_set`), into
+directories it owns
 (:func:`ocio_thinfilm.io.claim_directory`), as one transaction.
 """
 
@@ -14,11 +14,14 @@ import shutil
 from pathlib import Path
 
 from ocio_thinfilm import config, registry
-from ocio_thinfilm.export.files import FORMATS, export_set, progress_bar
+from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.export import view as export_view
+from ocio_thinfilm.export.files import FORMATS, lut_contents, progress_bar, write_lut
 from ocio_thinfilm.io import ParameterError, check_xml, claim_directory, transaction
-from ocio_thinfilm.lut import clip_lut
+from ocio_thinfilm.lut import clip_lut, tables
 
-__all__ = ["DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "CLIP_SIZES", "check_clip_size", "bake"]
+__all__ = ["DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "CLIP_SIZES", "check_clip_size",
+           "write_config", "export_set", "EXPORT_SET_VIEWS", "bake"]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
 DEFAULT_LUTS_DIR = "luts"
@@ -82,6 +85,89 @@ def _check_staged_clfs(directory, final):
         check_xml(path, Path(final) / path.relative_to(directory))
 
 
+def write_config(directory, *, clip_size: int = clip_lut.CLIP_SIZE,
+                 film_size: int = tables.FILM_SIZE, morpho_size: int = tables.MORPHO_SIZE,
+                 progress=None) -> Path:
+    """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
+
+    ``progress``: optional callable ``progress(step_name)`` called once per file.
+    Returns the config path. The files carry no timestamps: equal inputs give equal
+    bytes.
+    """
+    import PyOpenColorIO as ocio
+
+    directory = Path(directory)
+    data = config.config_data(clip_size=clip_size, film_size=film_size,
+                              morpho_size=morpho_size)
+    (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
+    raw = ocio.Config.CreateRaw()
+    for filename, transform in sorted(data.luts.items()):
+        transform.write("Academy/ASC Common LUT Format",
+                        str(directory / config.LUT_DIRECTORY / filename), raw)
+        if progress:
+            progress(filename)
+    cfg = config.generate_config(data, validate=False, working_dir=directory)
+    cfg.validate()
+    # Check that every FileTransform resolves and every processor builds.
+    for display in cfg.getDisplays():
+        for view in cfg.getViews(display):
+            cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+    for name in cfg.getColorSpaceNames():
+        cfg.getProcessor(name, "CIE-XYZ-D65")
+    path = directory / "config.ocio"
+    text = cfg.serialize()
+    path.write_text(text if text.endswith("\n") else text + "\n")
+    if progress:
+        progress("config.ocio")
+    return path
+
+
+#: Display LUTs in the shipped set: (input space, view, formats), for every display.
+EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
+
+
+def export_set(directory, *, show_progress=False) -> list[Path]:
+    """The standalone set shipped in ``luts/``: every table in every format that can
+    hold it with its domain, plus the common display LUTs
+    (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
+    a plain 65^3 .cube over [0, 1], which every reader applies alike), into
+    ``directory``, which must exist."""
+    jobs = []
+    for fmt in FORMATS:
+        for kind in colorimetry.FILM_KINDS:
+            if 1 in FORMATS[fmt][2]:
+                jobs.append(("film", dict(kind=kind), fmt))
+        if 1 in FORMATS[fmt][2]:
+            jobs.append(("morpho", {}, fmt))
+        # (the clip over display-linear RGB, `export clip`, is not shipped: a grid over
+        # linear RGB cannot resolve dark saturated colours; the display LUTs below are
+        # what to take)
+    views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
+             for display in clip.DISPLAYS for fmt in fmts]
+    written = []
+    bar = progress_bar(show_progress, total=len(jobs) + len(views), desc="export luts")
+    cache = {}
+    for table, kw, fmt in jobs:
+        key = (table, tuple(sorted(kw.items())))
+        if key not in cache:
+            cache[key] = lut_contents(table, **kw)
+        values, lut, meta = cache[key]
+        path = Path(directory) / f"{meta['name']}.{FORMATS[fmt][1]}"
+        write_lut(path, fmt, values, lut, meta)
+        written.append(path)
+        if bar:
+            bar.update(1)
+    for source, display, view, fmt in views:
+        name = export_view.set_name(source, display, view) + "." + fmt
+        written += export_view.export_view(source, display, view, Path(directory) / name,
+                                           size=export_view.DEFAULT_VIEW_SIZE)
+        if bar:
+            bar.update(1)
+    if bar:
+        bar.close()
+    return written
+
+
 def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=False,
          luts=None) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) to ``out`` and, with
@@ -109,7 +195,7 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=
         with transaction() as tx:
             stage = tx.directory(claim)
             try:
-                config.write_config(stage, clip_size=int(clip_size),
+                write_config(stage, clip_size=int(clip_size),
                                     progress=(lambda name: bar.update(1)) if bar else None)
             except OSError as error:
                 raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None

@@ -27,8 +27,8 @@ the pixel as it is.
   colour spaces, input the raw pixel values of that space, output display code
   values.
 
-Functions: :func:`lut_contents`, :func:`write_lut`, :func:`export_lut`, :func:`export_set`,
-:func:`progress_bar`.
+Functions: :func:`lut_contents`, :func:`write_lut`, :func:`export_lut`, :func:`progress_bar`
+(the shipped set, ``luts/``: :func:`ocio_thinfilm.export.bake.export_set`).
 """
 
 from __future__ import annotations
@@ -47,7 +47,7 @@ from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm.physics.sampling import as_pair, as_real
 
 __all__ = ["FORMATS", "TABLES", "DEFAULT_SIZE", "DEFAULT_RANGE", "lut_contents", "write_lut",
-           "export_lut", "export_set", "EXPORT_SET_VIEWS", "progress_bar"]
+           "export_lut", "progress_bar"]
 
 #: Format name -> (OCIO writer format, file extension, LUT dimensions it can hold).
 FORMATS = {
@@ -296,54 +296,6 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
         if bar:
             bar.close()
     return out
-
-
-def export_set(directory, *, show_progress=False) -> list[Path]:
-    """The standalone set shipped in ``luts/``: every table in every format that can
-    hold it with its domain, plus the common display LUTs
-    (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
-    a plain 65^3 .cube over [0, 1], which every reader applies alike), into
-    ``directory``, which must exist."""
-    from ocio_thinfilm.export import view as export_view
-
-    jobs = []
-    for fmt in FORMATS:
-        for kind in colorimetry.FILM_KINDS:
-            if 1 in FORMATS[fmt][2]:
-                jobs.append(("film", dict(kind=kind), fmt))
-        if 1 in FORMATS[fmt][2]:
-            jobs.append(("morpho", {}, fmt))
-        # (the clip over display-linear RGB, `export clip`, is not shipped: a grid over
-        # linear RGB cannot resolve dark saturated colours; the display LUTs below are
-        # what to take)
-    views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
-             for display in clip.DISPLAYS for fmt in fmts]
-    written = []
-    bar = progress_bar(show_progress, total=len(jobs) + len(views), desc="export luts")
-    cache = {}
-    for table, kw, fmt in jobs:
-        key = (table, tuple(sorted(kw.items())))
-        if key not in cache:
-            cache[key] = lut_contents(table, **kw)
-        values, lut, meta = cache[key]
-        path = Path(directory) / f"{meta['name']}.{FORMATS[fmt][1]}"
-        write_lut(path, fmt, values, lut, meta)
-        written.append(path)
-        if bar:
-            bar.update(1)
-    for source, display, view, fmt in views:
-        name = export_view.set_name(source, display, view) + "." + fmt
-        written += export_view.export_view(source, display, view, Path(directory) / name,
-                                           size=export_view.DEFAULT_VIEW_SIZE)
-        if bar:
-            bar.update(1)
-    if bar:
-        bar.close()
-    return written
-
-
-#: Display LUTs in the shipped set: (input space, view, formats), for every display.
-EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
 
 
 def progress_bar(show, total, desc):
