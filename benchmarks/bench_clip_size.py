@@ -82,9 +82,12 @@ def accuracy(display, chain, sets):
         truth = clip.clip_XYZ(XYZ, display)
         de = colorimetry.delta_E2000(truth, got)
         inside = clip.in_gamut(XYZ @ M.T)
-        out[name] = dict(p99=float(np.percentile(de, 99)), max=float(de.max()),
-                         dY=float(np.abs(got[:, 1] - truth[:, 1]).max()),
-                         inside_max=float(de[inside].max()) if inside.any() else 0.0)
+        out[name] = dict(
+            p99=float(np.percentile(de, 99)),
+            max=float(de.max()),
+            dY=float(np.abs(got[:, 1] - truth[:, 1]).max()),
+            inside_max=float(de[inside].max()) if inside.any() else 0.0,
+        )
     return out
 
 
@@ -101,9 +104,16 @@ def measure(pairs, displays):
             lut = CL.clip_lut(display, black, white)
             with tempfile.TemporaryDirectory() as tmp:
                 chain, size = chain_from_files(lut, tmp)
-                rows.append(dict(display=display, black=black, white=white, MB=size / 1e6,
-                                 load_ms=load_ms(chain),
-                                 accuracy=accuracy(display, chain, sets)))
+                rows.append(
+                    dict(
+                        display=display,
+                        black=black,
+                        white=white,
+                        MB=size / 1e6,
+                        load_ms=load_ms(chain),
+                        accuracy=accuracy(display, chain, sets),
+                    )
+                )
             print(markdown_row(rows[-1]), flush=True)
     return rows
 
@@ -118,8 +128,11 @@ def parse_cost():
     values = np.random.default_rng(0).integers(0, 256, (65, 65, 65, 3)) / 255.0
     out = {}
     with tempfile.TemporaryDirectory() as tmp:
-        for name, depth in (("8-bit", ocio.BIT_DEPTH_UINT8), ("16-bit", ocio.BIT_DEPTH_UINT16),
-                            ("half float", ocio.BIT_DEPTH_F16)):
+        for name, depth in (
+            ("8-bit", ocio.BIT_DEPTH_UINT8),
+            ("16-bit", ocio.BIT_DEPTH_UINT16),
+            ("half float", ocio.BIT_DEPTH_F16),
+        ):
             lut = ocio.Lut3DTransform()
             lut.setGridSize(65)
             lut.setData(np.ascontiguousarray(values, np.float32).ravel())
@@ -128,11 +141,19 @@ def parse_cost():
             group.appendTransform(lut)
             path = Path(tmp) / f"{name}.clf"
             group.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
-            code = ("import time, PyOpenColorIO as o; t = time.perf_counter(); "
-                    f"o.Config.CreateRaw().getProcessor(o.FileTransform({str(path)!r})); "
-                    "print(time.perf_counter() - t)")
-            ms = min(float(subprocess.run([sys.executable, "-c", code], capture_output=True,
-                                          text=True, check=True).stdout) for _ in range(3))
+            code = (
+                "import time, PyOpenColorIO as o; t = time.perf_counter(); "
+                f"o.Config.CreateRaw().getProcessor(o.FileTransform({str(path)!r})); "
+                "print(time.perf_counter() - t)"
+            )
+            ms = min(
+                float(
+                    subprocess.run(
+                        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+                    ).stdout
+                )
+                for _ in range(3)
+            )
             out[name] = (path.stat().st_size / 1e6, ms * 1e3)
     return out
 
@@ -159,8 +180,10 @@ def plain_cube_curve(sizes):
             export_view("ACEScct", "sRGB", "Constant-Lightness Clip", path, size=n)
             _, p99, worst = _stats(_dE(_ocio_apply([path], cct), XYZ, "sRGB"))
             out[n] = (path.stat().st_size / 1e6, float(p99), float(worst))
-            print(f"plain .cube {n}^3: {out[n][0]:.1f} MB, p99 {p99:.2f} / max {worst:.2f}",
-                  flush=True)
+            print(
+                f"plain .cube {n}^3: {out[n][0]:.1f} MB, p99 {p99:.2f} / max {worst:.2f}",
+                flush=True,
+            )
     return out
 
 
@@ -168,39 +191,57 @@ def markdown_row(r):
     cells = " | ".join(f"{m['p99']:.2f} / {m['max']:.2f}" for m in r["accuracy"].values())
     dY = max(m["dY"] for m in r["accuracy"].values())
     inside = max(m["inside_max"] for m in r["accuracy"].values())
-    return (f"| {r['display']} | {r['black']}³ + {r['white']}³ | {r['MB']:.1f} | "
-            f"{r['load_ms']:.0f} | {cells} | {dY:.1e} | {inside:.3f} |")
+    return (
+        f"| {r['display']} | {r['black']}³ + {r['white']}³ | {r['MB']:.1f} | "
+        f"{r['load_ms']:.0f} | {cells} | {dY:.1e} | {inside:.3f} |"
+    )
 
 
 def extras_markdown(parse, cubes):
-    lines = ["", "Building a processor from one 65³ Lut3D CLF (random values, fresh process, "
-             "best of 3): " + "; ".join(f"{name} {mb:.1f} MB, {ms:.0f} ms"
-                                      for name, (mb, ms) in parse.items()) + ".",
-             "", "The plain ACEScct → sRGB `.cube` of `luts/` by edge length (object colours "
-             "inside AP1, applied by OCIO, ΔE2000 p99 / max; three displays' files make "
-             "`luts/`): " + "; ".join(f"{n}³ {mb:.1f} MB, {p99:.2f} / {mx:.2f}"
-                                      for n, (mb, p99, mx) in cubes.items()) + "."]
+    lines = [
+        "",
+        "Building a processor from one 65³ Lut3D CLF (random values, fresh process, "
+        "best of 3): "
+        + "; ".join(f"{name} {mb:.1f} MB, {ms:.0f} ms" for name, (mb, ms) in parse.items())
+        + ".",
+        "",
+        "The plain ACEScct → sRGB `.cube` of `luts/` by edge length (object colours "
+        "inside AP1, applied by OCIO, ΔE2000 p99 / max; three displays' files make "
+        "`luts/`): "
+        + "; ".join(f"{n}³ {mb:.1f} MB, {p99:.2f} / {mx:.2f}" for n, (mb, p99, mx) in cubes.items())
+        + ".",
+    ]
     return "\n".join(lines) + "\n"
 
 
 def markdown(rows, sets, ocio_version):
-    head = ("| display | black + white | MB | load ms | "
-            + " | ".join(f"{s} p99 / max" for s in sets) + " | max \\|dY\\| | in-gamut max |")
-    lines = ["# bench_clip_size: the clip LUTs' accuracy, size and load time by edge length",
-             "",
-             f"Written by `python benchmarks/bench_clip_size.py` (OCIO {ocio_version}). "
-             "MB: both passes' CLF text for one display (the config holds three, plus "
-             "0.7 MB of thin-film tables; budget 25 MB); load ms: a CPU processor of the "
-             "chain built from those files; accuracy: dE2000 against the analytic clip.",
-             "", head, "|" + "---|" * (6 + len(sets))]
+    head = (
+        "| display | black + white | MB | load ms | "
+        + " | ".join(f"{s} p99 / max" for s in sets)
+        + " | max \\|dY\\| | in-gamut max |"
+    )
+    lines = [
+        "# bench_clip_size: the clip LUTs' accuracy, size and load time by edge length",
+        "",
+        f"Written by `python benchmarks/bench_clip_size.py` (OCIO {ocio_version}). "
+        "MB: both passes' CLF text for one display (the config holds three, plus "
+        "0.7 MB of thin-film tables; budget 25 MB); load ms: a CPU processor of the "
+        "chain built from those files; accuracy: dE2000 against the analytic clip.",
+        "",
+        head,
+        "|" + "---|" * (6 + len(sets)),
+    ]
     lines += [markdown_row(r) for r in rows]
     config_mb = {}
     for r in rows:
         config_mb.setdefault((r["black"], r["white"]), 0.0)
         config_mb[r["black"], r["white"]] += r["MB"]
-    lines += ["", "Config size (three displays' clip LUTs + 0.7 MB of tables): "
-              + "; ".join(f"{b}³ + {w}³: {mb + 0.7:.1f} MB" for (b, w), mb in config_mb.items())
-              + "."]
+    lines += [
+        "",
+        "Config size (three displays' clip LUTs + 0.7 MB of tables): "
+        + "; ".join(f"{b}³ + {w}³: {mb + 0.7:.1f} MB" for (b, w), mb in config_mb.items())
+        + ".",
+    ]
     return "\n".join(lines) + "\n"
 
 
@@ -208,11 +249,20 @@ def main(argv=None):
     import PyOpenColorIO as ocio
 
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--pairs", nargs="+", default=list(DEFAULT_PAIRS),
-                   help="BLACK:WHITE edge pairs (default: %(default)s)")
+    p.add_argument(
+        "--pairs",
+        nargs="+",
+        default=list(DEFAULT_PAIRS),
+        help="BLACK:WHITE edge pairs (default: %(default)s)",
+    )
     p.add_argument("--displays", nargs="+", default=["sRGB", "Display P3", "Rec.2020"])
-    p.add_argument("--cube-sizes", type=int, nargs="+", default=[49, 55, 65],
-                   help="edges of the plain display .cube to measure (default: %(default)s)")
+    p.add_argument(
+        "--cube-sizes",
+        type=int,
+        nargs="+",
+        default=[49, 55, 65],
+        help="edges of the plain display .cube to measure (default: %(default)s)",
+    )
     args = p.parse_args(argv)
     pairs = []
     for pair in args.pairs:
@@ -224,11 +274,21 @@ def main(argv=None):
     rows = measure(pairs, args.displays)
     parse, cubes = parse_cost(), plain_cube_curve(args.cube_sizes)
     sets = list(rows[0]["accuracy"])
-    (ROOT / "reports" / "bench_clip_size.json").write_text(json.dumps(
-        {"ocio": ocio.__version__, "rows": rows, "parse_cost": parse,
-         "plain_cube": {str(n): v for n, v in cubes.items()}}, indent=1) + "\n")
+    (ROOT / "reports" / "bench_clip_size.json").write_text(
+        json.dumps(
+            {
+                "ocio": ocio.__version__,
+                "rows": rows,
+                "parse_cost": parse,
+                "plain_cube": {str(n): v for n, v in cubes.items()},
+            },
+            indent=1,
+        )
+        + "\n"
+    )
     (ROOT / "reports" / "bench_clip_size.md").write_text(
-        markdown(rows, sets, ocio.__version__) + extras_markdown(parse, cubes))
+        markdown(rows, sets, ocio.__version__) + extras_markdown(parse, cubes)
+    )
     print(f"wrote {ROOT / 'reports' / 'bench_clip_size.md'}")
 
 

@@ -60,20 +60,27 @@ def defaults_table(sets):
     cube = rng.uniform(0.0, 1.0, (200000, 3))
     for display in clip.DISPLAYS:
         d_cube = boundary_distance(cube, display)
-        rgb = {name: colorimetry.XYZ_to_RGB(sets[name], display)
-               for name in ("object", "monochromatic", "ap0")}
+        rgb = {
+            name: colorimetry.XYZ_to_RGB(sets[name], display)
+            for name in ("object", "monochromatic", "ap0")
+        }
         d = {name: boundary_distance(v, display) for name, v in rgb.items()}
         inside_objects = d["object"][d["object"] <= 1.0]
         in_rgb = rgb["object"][d["object"] <= 1.0]
         for thr, lim in CANDIDATES:
             moved = colorimetry.delta_E2000(
                 colorimetry.RGB_to_XYZ(compress_RGB(in_rgb, display, thr, lim), display),
-                colorimetry.RGB_to_XYZ(in_rgb, display))
-            row = dict(display=display, threshold=thr, limit=lim,
-                       cube_untouched=float(np.nanmean(d_cube <= thr)),
-                       objects_untouched=float(np.mean(inside_objects <= thr)),
-                       objects_moved_p99=float(np.percentile(moved, 99)),
-                       objects_moved_max=float(moved.max()))
+                colorimetry.RGB_to_XYZ(in_rgb, display),
+            )
+            row = dict(
+                display=display,
+                threshold=thr,
+                limit=lim,
+                cube_untouched=float(np.nanmean(d_cube <= thr)),
+                objects_untouched=float(np.mean(inside_objects <= thr)),
+                objects_moved_p99=float(np.percentile(moved, 99)),
+                objects_moved_max=float(moved.max()),
+            )
             for name in ("monochromatic", "ap0"):
                 v = d[name][np.isfinite(d[name])]
                 row[f"{name}_shaded"] = float(np.mean((v > 1.0) & (v < lim)))
@@ -111,48 +118,77 @@ def accuracy_table(sets, pairs, progress):
                 black, white = (int(v) for v in pair.split(":"))
                 soft = compress_lut.compress_lut(display, black, white)
                 chain = _chain(soft)
-                row = dict(display=display, black=black, white=white,
-                           mb=_clf_bytes(soft, tmp) / 1e6)
+                row = dict(
+                    display=display, black=black, white=white, mb=_clf_bytes(soft, tmp) / 1e6
+                )
                 for name, XYZ in sets.items():
                     rgb = ocio_ops.apply(chain, XYZ).astype(np.float64)
                     truth = compress.compress_XYZ(XYZ, display)
                     de = colorimetry.delta_E2000(truth, rgb @ np.linalg.inv(M).T)
-                    row[name] = dict(p99=float(np.percentile(de, 99)), max=float(de.max()),
-                                     dY=float(np.abs((rgb @ np.linalg.inv(M).T)[:, 1]
-                                                     - truth[:, 1]).max()))
+                    row[name] = dict(
+                        p99=float(np.percentile(de, 99)),
+                        max=float(de.max()),
+                        dY=float(np.abs((rgb @ np.linalg.inv(M).T)[:, 1] - truth[:, 1]).max()),
+                    )
                 rows.append(row)
                 progress(f"accuracy {display} {pair}: {row['mb']:.2f} MB")
     return rows
 
 
 def _markdown(defaults, accuracy, ramp):
-    lines = ["# bench_compress", "", "## Defaults: shares of each set per (threshold, limit)",
-             "", "| display | threshold | limit | gamut cube untouched | in-gamut object colours "
-             "untouched | their dE2000 moved p99 / max | monochromatic shaded / clipped | "
-             "AP0 shaded / clipped |",
-             "|---|---|---|---|---|---|---|---|"]
+    lines = [
+        "# bench_compress",
+        "",
+        "## Defaults: shares of each set per (threshold, limit)",
+        "",
+        "| display | threshold | limit | gamut cube untouched | in-gamut object colours "
+        "untouched | their dE2000 moved p99 / max | monochromatic shaded / clipped | "
+        "AP0 shaded / clipped |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
     for r in defaults:
-        lines.append(f"| {r['display']} | {r['threshold']} | {r['limit']} | "
-                     f"{r['cube_untouched']:.1%} | {r['objects_untouched']:.1%} | "
-                     f"{r['objects_moved_p99']:.2f} / {r['objects_moved_max']:.2f} | "
-                     f"{r['monochromatic_shaded']:.0%} / {r['monochromatic_clipped']:.0%} | "
-                     f"{r['ap0_shaded']:.0%} / {r['ap0_clipped']:.0%} |")
-    lines += ["", "## The view's LUTs: size against accuracy (dE2000 p99 / max, |dY| max)", "",
-              "| display | S_b | S_w | MB | object | monochromatic | AP0 | mixtures |",
-              "|---|---|---|---|---|---|---|---|"]
+        lines.append(
+            f"| {r['display']} | {r['threshold']} | {r['limit']} | "
+            f"{r['cube_untouched']:.1%} | {r['objects_untouched']:.1%} | "
+            f"{r['objects_moved_p99']:.2f} / {r['objects_moved_max']:.2f} | "
+            f"{r['monochromatic_shaded']:.0%} / {r['monochromatic_clipped']:.0%} | "
+            f"{r['ap0_shaded']:.0%} / {r['ap0_clipped']:.0%} |"
+        )
+    lines += [
+        "",
+        "## The view's LUTs: size against accuracy (dE2000 p99 / max, |dY| max)",
+        "",
+        "| display | S_b | S_w | MB | object | monochromatic | AP0 | mixtures |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
     for r in accuracy:
-        cells = [f"{r[s]['p99']:.2f} / {r[s]['max']:.2f}, {r[s]['dY']:.1e}"
-                 for s in ("object", "monochromatic", "ap0", "mixtures")]
-        lines.append(f"| {r['display']} | {r['black']} | {r['white']} | {r['mb']:.2f} | "
-                     + " | ".join(cells) + " |")
-    lines += ["", f"## Ramps ({ramp['display']}, Y = 0.2, 450-650 nm)", "",
-              "| view | strictly rising to the limit | smallest step | spread of output "
-              "past the boundary | max abs(dY) |", "|---|---|---|---|---|"]
-    for view in ("Constant-Lightness Compress", "Constant-Lightness Clip",
-                 "ACES Gamut Compression"):
+        cells = [
+            f"{r[s]['p99']:.2f} / {r[s]['max']:.2f}, {r[s]['dY']:.1e}"
+            for s in ("object", "monochromatic", "ap0", "mixtures")
+        ]
+        lines.append(
+            f"| {r['display']} | {r['black']} | {r['white']} | {r['mb']:.2f} | "
+            + " | ".join(cells)
+            + " |"
+        )
+    lines += [
+        "",
+        f"## Ramps ({ramp['display']}, Y = 0.2, 450-650 nm)",
+        "",
+        "| view | strictly rising to the limit | smallest step | spread of output "
+        "past the boundary | max abs(dY) |",
+        "|---|---|---|---|---|",
+    ]
+    for view in (
+        "Constant-Lightness Compress",
+        "Constant-Lightness Clip",
+        "ACES Gamut Compression",
+    ):
         v = ramp[view]
-        lines.append(f"| {view} | {v['strictly_rising']} | {v['min_step']:.4f} | "
-                     f"{v['spread_past_boundary']:.3f} | {v['dY']:.1e} |")
+        lines.append(
+            f"| {view} | {v['strictly_rising']} | {v['min_step']:.4f} | "
+            f"{v['spread_past_boundary']:.3f} | {v['dY']:.1e} |"
+        )
     return "\n".join(lines) + "\n"
 
 
@@ -164,9 +200,14 @@ def shipped_markdown(result):
     for r in result["accuracy"]:
         if (r["black"], r["white"]) != (compress_lut.SOFT_SIZE, compress_lut.SOFT_WHITE_SIZE):
             continue
-        out.append(f"| {r['display']} | " + " | ".join(
-            f"{r[s]['p99']:.2f} / {r[s]['max']:.2f}, {r[s]['dY']:.1e}"
-            for s in ("object", "monochromatic", "ap0", "mixtures")) + " |")
+        out.append(
+            f"| {r['display']} | "
+            + " | ".join(
+                f"{r[s]['p99']:.2f} / {r[s]['max']:.2f}, {r[s]['dY']:.1e}"
+                for s in ("object", "monochromatic", "ap0", "mixtures")
+            )
+            + " |"
+        )
     return "\n".join(out)
 
 
@@ -175,14 +216,19 @@ def update_doc(result, path=DOC):
     if BEGIN not in text:
         raise SystemExit(f"{path} has no {BEGIN} marker")
     block = f"{BEGIN}\n{shipped_markdown(result)}\n{END}"
-    path.write_text(re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text,
-                           flags=re.S))
+    path.write_text(
+        re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
+    )
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--pairs", nargs="+", default=list(DEFAULT_PAIRS),
-                        help="edge pairs S_b:S_w of the squeezes' Lut3Ds")
+    parser.add_argument(
+        "--pairs",
+        nargs="+",
+        default=list(DEFAULT_PAIRS),
+        help="edge pairs S_b:S_w of the squeezes' Lut3Ds",
+    )
     parser.add_argument("--plot", default=str(ROOT / "docs" / "compress_ramps.png"))
     args = parser.parse_args(argv)
 
@@ -200,17 +246,26 @@ def main(argv=None):
 
     ramp, rgb_out = ramps.ramp_table()
     ramps.plot(ramp, rgb_out).savefig(args.plot, dpi=110)
-    report = dict(defaults=defaults, accuracy=accuracy,
-                  ramps={k: (v if not isinstance(v, dict) else
-                             {kk: vv for kk, vv in v.items() if kk != "output"})
-                         for k, v in ramp.items() if k != "input"})
+    report = dict(
+        defaults=defaults,
+        accuracy=accuracy,
+        ramps={
+            k: (
+                v if not isinstance(v, dict) else {kk: vv for kk, vv in v.items() if kk != "output"}
+            )
+            for k, v in ramp.items()
+            if k != "input"
+        },
+    )
     (ROOT / "reports" / "bench_compress.json").write_text(json.dumps(report, indent=1) + "\n")
     text = _markdown(defaults, accuracy, ramp)
     (ROOT / "reports" / "bench_compress.md").write_text(text)
     update_doc(report)
     print(text)
-    print(f"wrote reports/bench_compress.md, reports/bench_compress.json, {args.plot}, "
-          f"and the accuracy table of {DOC.relative_to(ROOT)}")
+    print(
+        f"wrote reports/bench_compress.md, reports/bench_compress.json, {args.plot}, "
+        f"and the accuracy table of {DOC.relative_to(ROOT)}"
+    )
 
 
 if __name__ == "__main__":

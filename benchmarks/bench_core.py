@@ -56,15 +56,22 @@ def bench_spectra(repeats):
     t_airy, R_airy = best_of(lambda: exact.airy_reflectance(thickness, wl, n_film), repeats)
     t_tmm, (R_tmm, _) = best_of(
         lambda: colour.phenomena.thin_film_tmm([1.0, n_film, 1.0], thickness, wl),
-        max(2, repeats // 2))
+        max(2, repeats // 2),
+    )
     R_tmm = R_tmm.mean(axis=-1)[:, 0, :].T  # (W, A, T, 2) -> (T, W), unpolarised
-    print(f"Single film, {thickness.size} thicknesses x {wl.size} wavelengths "
-          f"({thickness.size * wl.size / 1e6:.2f} M spectral samples), n = {n_film}:")
+    print(
+        f"Single film, {thickness.size} thicknesses x {wl.size} wavelengths "
+        f"({thickness.size * wl.size / 1e6:.2f} M spectral samples), n = {n_film}:"
+    )
     print(f"  colour.phenomena.thin_film_tmm       {t_tmm * 1e3:9.1f} ms")
-    print(f"  spectra.two_beam_reflectance (Eq. 7) {t_two_beam * 1e3:9.1f} ms   "
-          f"{t_tmm / t_two_beam:6.1f}x faster  (issue: >= 20x)")
-    print(f"  exact.airy_reflectance (exact)     {t_airy * 1e3:9.1f} ms   "
-          f"{t_tmm / t_airy:6.1f}x faster")
+    print(
+        f"  spectra.two_beam_reflectance (Eq. 7) {t_two_beam * 1e3:9.1f} ms   "
+        f"{t_tmm / t_two_beam:6.1f}x faster  (issue: >= 20x)"
+    )
+    print(
+        f"  exact.airy_reflectance (exact)     {t_airy * 1e3:9.1f} ms   "
+        f"{t_tmm / t_airy:6.1f}x faster"
+    )
     print(f"  max |R_airy - R_tmm| = {np.abs(R_airy - R_tmm).max():.2e}")
     return t_tmm / t_two_beam, t_tmm / t_airy
 
@@ -80,13 +87,17 @@ def bench_clip(repeats):
     RGB = colorimetry.XYZ_to_RGB(XYZ).astype(np.float32)
     outside = np.mean(~clip.in_gamut(RGB))
     mpix = height * width / 1e6
-    print(f"Clip, {width} x {height} float32 image ({mpix:.1f} Mpixel, "
-          f"{outside:.0%} of pixels outside sRGB):")
+    print(
+        f"Clip, {width} x {height} float32 image ({mpix:.1f} Mpixel, "
+        f"{outside:.0%} of pixels outside sRGB):"
+    )
     results = {}
-    for name, fn in (("clip_XYZ (paper's XYZ form)", lambda: clip.clip_XYZ(XYZ)),
-                     ("clip_RGB (RGB form)", lambda: clip.clip_RGB(RGB)),
-                     ("clamp_RGB (baseline)", lambda: clip.clamp_RGB(RGB)),
-                     ("memory copy", lambda: RGB.copy())):
+    for name, fn in (
+        ("clip_XYZ (paper's XYZ form)", lambda: clip.clip_XYZ(XYZ)),
+        ("clip_RGB (RGB form)", lambda: clip.clip_RGB(RGB)),
+        ("clamp_RGB (baseline)", lambda: clip.clamp_RGB(RGB)),
+        ("memory copy", lambda: RGB.copy()),
+    ):
         seconds, _ = best_of(fn, repeats)
         results[name] = mpix / seconds
         print(f"  {name:30s} {seconds * 1e3:8.1f} ms  {mpix / seconds:8.1f} Mpixel/s")
@@ -97,15 +108,19 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5, help="timed repeats (best is kept)")
     args = parser.parse_args(argv)
-    print(f"python {platform.python_version()}, numpy {np.__version__}, "
-          f"{os.cpu_count()} CPUs, {platform.machine()}")
+    print(
+        f"python {platform.python_version()}, numpy {np.__version__}, "
+        f"{os.cpu_count()} CPUs, {platform.machine()}"
+    )
     ratio_closed, ratio_airy = bench_spectra(args.repeats)
     print()
     bench_clip(max(1, args.repeats // 2))
     print()
     verdict = "PASS" if ratio_closed >= 20 else "FAIL"
-    print(f"closed form vs thin_film_tmm: {ratio_closed:.1f}x ({verdict}, issue asks >= 20x); "
-          f"Airy: {ratio_airy:.1f}x")
+    print(
+        f"closed form vs thin_film_tmm: {ratio_closed:.1f}x ({verdict}, issue asks >= 20x); "
+        f"Airy: {ratio_airy:.1f}x"
+    )
     return 0
 
 

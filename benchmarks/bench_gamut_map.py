@@ -57,11 +57,17 @@ def datasets(n):
     oil = picture.xyz.reshape(-1, 3)
     colours = np.concatenate([object_colours(), spectral_colours(0.6)])
     colours = np.resize(colours, (n, 3))
-    ap0 = rng.uniform(0.0, 1.0, (2 * n, 3)) @ np.linalg.inv(
-        colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
+    ap0 = (
+        rng.uniform(0.0, 1.0, (2 * n, 3))
+        @ np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T
+    )
     ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:n]
-    return {"uniform XYZ": uniform, "oil scene": oil, "object + spectral": colours,
-            "random AP0": np.resize(ap0, (n, 3))}
+    return {
+        "uniform XYZ": uniform,
+        "oil scene": oil,
+        "object + spectral": colours,
+        "random AP0": np.resize(ap0, (n, 3)),
+    }
 
 
 def processors():
@@ -71,30 +77,49 @@ def processors():
     from ocio_thinfilm.lut import clip_lut, display_transforms, ocio_ops
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))
-    view = lambda v: cfg.getProcessor("CIE-XYZ-D65", "sRGB", v,  # noqa: E731
-                                      ocio.TRANSFORM_DIR_FORWARD)
-    bare = ocio_ops.group([display_transforms.display_matrix_transform("sRGB"),
-                           display_transforms.aces_gamut_compression_transform(),
-                           ocio_ops.range_(0.0, 1.0),
-                           display_transforms.display_encoding_transform("sRGB")])
+
+    def view(v):
+        return cfg.getProcessor("CIE-XYZ-D65", "sRGB", v, ocio.TRANSFORM_DIR_FORWARD)
+
+    bare = ocio_ops.group(
+        [
+            display_transforms.display_matrix_transform("sRGB"),
+            display_transforms.aces_gamut_compression_transform(),
+            ocio_ops.range_(0.0, 1.0),
+            display_transforms.display_encoding_transform("sRGB"),
+        ]
+    )
     g = np.linspace(0.0, 1.0, 65)
     values = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) ** 0.9
     lut = ocio_ops.lut3d_transform(values)
-    one_lut = ocio_ops.group([clip_lut.xyz_limit_transform(), ocio_ops.matrix(np.eye(3)),
-                              clip_lut.xyY_forward_transform(), ocio_ops.lut3d_transform(values),
-                              display_transforms.display_encoding_transform("sRGB")])
+    one_lut = ocio_ops.group(
+        [
+            clip_lut.xyz_limit_transform(),
+            ocio_ops.matrix(np.eye(3)),
+            clip_lut.xyY_forward_transform(),
+            ocio_ops.lut3d_transform(values),
+            display_transforms.display_encoding_transform("sRGB"),
+        ]
+    )
     raw = ocio.Config.CreateRaw()
-    procs = {"clip": view("Constant-Lightness Clip"), "aces": view("ACES Gamut Compression"),
-             "aces bare": raw.getProcessor(bare), "lut65": raw.getProcessor(lut),
-             "one-LUT chain": raw.getProcessor(one_lut)}
+    procs = {
+        "clip": view("Constant-Lightness Clip"),
+        "aces": view("ACES Gamut Compression"),
+        "aces bare": raw.getProcessor(bare),
+        "lut65": raw.getProcessor(lut),
+        "one-LUT chain": raw.getProcessor(one_lut),
+    }
     del clip
-    return {k: p.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
-                                          ocio.OPTIMIZATION_DEFAULT) for k, p in procs.items()}
+    return {
+        k: p.getOptimizedCPUProcessor(
+            ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, ocio.OPTIMIZATION_DEFAULT
+        )
+        for k, p in procs.items()
+    }
 
 
 def measure(size=1024, repeats=7):
-    data = {k: np.ascontiguousarray(v, dtype=np.float32)
-            for k, v in datasets(size * size).items()}
+    data = {k: np.ascontiguousarray(v, dtype=np.float32) for k, v in datasets(size * size).items()}
     procs = processors()
     best = {(d, p): np.inf for d in data for p in procs}
     for _ in range(repeats):
@@ -108,12 +133,18 @@ def measure(size=1024, repeats=7):
     for d, pixels in data.items():
         mpx = {p: len(pixels) / best[d, p] / 1e6 for p in procs}
         aces = max(mpx["aces"], mpx["aces bare"])
-        rows.append(dict(dataset=d, pixels=len(pixels), mpix_per_s=mpx,
-                         clip_over_aces=mpx["clip"] / mpx["aces"],
-                         clip_over_aces_bare=mpx["clip"] / mpx["aces bare"],
-                         clip_over_fastest_aces=mpx["clip"] / aces,
-                         clip_over_lut65=mpx["clip"] / mpx["lut65"],
-                         one_lut_chain_over_aces=mpx["one-LUT chain"] / mpx["aces"]))
+        rows.append(
+            dict(
+                dataset=d,
+                pixels=len(pixels),
+                mpix_per_s=mpx,
+                clip_over_aces=mpx["clip"] / mpx["aces"],
+                clip_over_aces_bare=mpx["clip"] / mpx["aces bare"],
+                clip_over_fastest_aces=mpx["clip"] / aces,
+                clip_over_lut65=mpx["clip"] / mpx["lut65"],
+                one_lut_chain_over_aces=mpx["one-LUT chain"] / mpx["aces"],
+            )
+        )
     return rows
 
 
@@ -139,11 +170,15 @@ def accuracy():
             de = colorimetry.delta_E2000(truth, got)
             inside = clip.in_gamut(XYZ @ M.T)
             out[display][name] = dict(
-                n=len(XYZ), mean=float(de.mean()), p99=float(np.percentile(de, 99)),
-                max=float(de.max()), dY_max=float(np.abs(got[:, 1] - truth[:, 1]).max()),
+                n=len(XYZ),
+                mean=float(de.mean()),
+                p99=float(np.percentile(de, 99)),
+                max=float(de.max()),
+                dY_max=float(np.abs(got[:, 1] - truth[:, 1]).max()),
                 in_gamut_n=int(inside.sum()),
                 in_gamut_max=float(de[inside].max()) if inside.any() else 0.0,
-                in_gamut_p99=float(np.percentile(de[inside], 99)) if inside.any() else 0.0)
+                in_gamut_p99=float(np.percentile(de[inside], 99)) if inside.any() else 0.0,
+            )
     return out
 
 
@@ -152,27 +187,38 @@ BEGIN, END = "<!-- bench_gamut_map:begin -->", "<!-- bench_gamut_map:end -->"
 
 def numbers_markdown(result):
     """The measured tables of docs/gamut_map.md, from the benchmark's JSON."""
-    out = ["| display | set | colours | dE2000 mean | p99 | max | max \\|dY\\| | in-gamut max |",
-           "|---|---|---|---|---|---|---|---|"]
+    out = [
+        "| display | set | colours | dE2000 mean | p99 | max | max \\|dY\\| | in-gamut max |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
     for display, sets in result["accuracy"].items():
         for name, m in sets.items():
-            out.append(f"| {display} | {name} | {m['n']} | {m['mean']:.3f} | {m['p99']:.3f} | "
-                       f"{m['max']:.3f} | {m['dY_max']:.1e} | {m['in_gamut_max']:.3f} |")
+            out.append(
+                f"| {display} | {name} | {m['n']} | {m['mean']:.3f} | {m['p99']:.3f} | "
+                f"{m['max']:.3f} | {m['dY_max']:.1e} | {m['in_gamut_max']:.3f} |"
+            )
     if result.get("speed"):
-        out += ["", "| data set | clip | ACES view | ACES bare | 65³ Lut3D | one-LUT chain | "
-                "clip / ACES view | clip / ACES bare | clip / Lut3D | one-LUT chain / ACES view |",
-                "|---|---|---|---|---|---|---|---|---|---|"]
+        out += [
+            "",
+            "| data set | clip | ACES view | ACES bare | 65³ Lut3D | one-LUT chain | "
+            "clip / ACES view | clip / ACES bare | clip / Lut3D | one-LUT chain / ACES view |",
+            "|---|---|---|---|---|---|---|---|---|---|",
+        ]
         for r in result["speed"]:
             m = r["mpix_per_s"]
-            out.append(f"| {r['dataset']} | {m['clip']:.1f} | {m['aces']:.1f} | "
-                       f"{m['aces bare']:.1f} | {m['lut65']:.1f} | {m['one-LUT chain']:.1f} | "
-                       f"{r['clip_over_aces']:.2f}× | {r['clip_over_aces_bare']:.2f}× | "
-                       f"{r['clip_over_lut65']:.2f}× | {r['one_lut_chain_over_aces']:.2f}× |")
+            out.append(
+                f"| {r['dataset']} | {m['clip']:.1f} | {m['aces']:.1f} | "
+                f"{m['aces bare']:.1f} | {m['lut65']:.1f} | {m['one-LUT chain']:.1f} | "
+                f"{r['clip_over_aces']:.2f}× | {r['clip_over_aces_bare']:.2f}× | "
+                f"{r['clip_over_lut65']:.2f}× | {r['one_lut_chain_over_aces']:.2f}× |"
+            )
     return "\n".join(out)
 
 
-TARGETS_BEGIN, TARGETS_END = ("<!-- bench_gamut_map:targets:begin -->",
-                               "<!-- bench_gamut_map:targets:end -->")
+TARGETS_BEGIN, TARGETS_END = (
+    "<!-- bench_gamut_map:targets:begin -->",
+    "<!-- bench_gamut_map:targets:end -->",
+)
 #: The targets for the clip views against the analytic clip.
 TARGETS = {"p99": 0.5, "max": 1.5, "dY_max": 1e-3, "in_gamut_max": 0.1, "speed": 1.0}
 
@@ -183,24 +229,34 @@ def targets_markdown(result):
     met, missed = [], []
     for name in next(iter(acc.values())):
         rows = [acc[d][name] for d in acc]
-        for key, label, fmt in (("p99", "p99", ".2f"), ("max", "max", ".2f"),
-                                ("dY_max", "|ΔY|", ".1e")):
+        for key, label, fmt in (
+            ("p99", "p99", ".2f"),
+            ("max", "max", ".2f"),
+            ("dY_max", "|ΔY|", ".1e"),
+        ):
             worst = max(m[key] for m in rows)
             line = f"{name} {label} ≤ {format(worst, fmt)} (target {TARGETS[key]:g})"
             (met if worst <= TARGETS[key] else missed).append(line)
-    worst = max(m["in_gamut_max"] for by_set in acc.values() for m in by_set.values()
-                if m["in_gamut_n"])
+    worst = max(
+        m["in_gamut_max"] for by_set in acc.values() for m in by_set.values() if m["in_gamut_n"]
+    )
     line = f"in-gamut colours move by ≤ {worst:.2f} ΔE2000 (target {TARGETS['in_gamut_max']:g})"
     (met if worst <= TARGETS["in_gamut_max"] else missed).append(line)
     for r in result.get("speed") or []:
         line = f"speed on {r['dataset']}: {r['clip_over_aces']:.2f}× the ACES view"
         (met if r["clip_over_aces"] >= TARGETS["speed"] else missed).append(line)
-    return "\n".join([f"- **Met** (worst display): {'; '.join(met)}.",
-                      f"- **Not met** (worst display): {'; '.join(missed) or 'none'}."])
+    return "\n".join(
+        [
+            f"- **Met** (worst display): {'; '.join(met)}.",
+            f"- **Not met** (worst display): {'; '.join(missed) or 'none'}.",
+        ]
+    )
 
 
-STATUS_BEGIN, STATUS_END = ("<!-- bench_gamut_map:status:begin -->",
-                             "<!-- bench_gamut_map:status:end -->")
+STATUS_BEGIN, STATUS_END = (
+    "<!-- bench_gamut_map:status:begin -->",
+    "<!-- bench_gamut_map:status:end -->",
+)
 
 
 def status_markdown(result):
@@ -216,16 +272,21 @@ def status_markdown(result):
         f"{max(m['in_gamut_max'] for m in every):.2f}, |ΔY| ≤ {max(dY.values()):.1e}, in "
         "gamut, every processor finite at "
         "every OCIO optimisation level; half-float GPU textures within 2/255 of the CPU "
-        "(asserted by tests/test_gpu.py, which prints what it measures)")
-    missed = [f"max ΔE2000 ≤ 1.5 on {name} ({v:.2f})" for name, v in worst.items()
-              if v > TARGETS["max"]]
-    missed += [f"|ΔY| ≤ 1e-3 on {name} ({v:.1e})" for name, v in dY.items()
-               if v > TARGETS["dY_max"]]
+        "(asserted by tests/test_gpu.py, which prints what it measures)"
+    )
+    missed = [
+        f"max ΔE2000 ≤ 1.5 on {name} ({v:.2f})" for name, v in worst.items() if v > TARGETS["max"]
+    ]
+    missed += [
+        f"|ΔY| ≤ 1e-3 on {name} ({v:.1e})" for name, v in dY.items() if v > TARGETS["dY_max"]
+    ]
     oil = [r for r in result.get("speed") or [] if r["dataset"] == "oil scene"]
     if oil and oil[0]["clip_over_aces"] < TARGETS["speed"]:
-        missed.append("on a mostly in-gamut rendered scene the view runs at "
-                      f"{oil[0]['clip_over_aces']:.2f}× the ACES view")
-    text += (". Not reached: " + "; ".join(missed) if missed else "")
+        missed.append(
+            "on a mostly in-gamut rendered scene the view runs at "
+            f"{oil[0]['clip_over_aces']:.2f}× the ACES view"
+        )
+    text += ". Not reached: " + "; ".join(missed) if missed else ""
     text += ". Details and numbers: [docs/gamut_map.md](docs/gamut_map.md)."
     return text
 
@@ -259,8 +320,10 @@ def main(argv=None):
     print(f"{'display':11s} {'set':14s} {'p99':>6s} {'max':>6s} {'|dY|':>8s} {'in-gamut max':>13s}")
     for display, sets in acc.items():
         for name, m in sets.items():
-            print(f"{display:11s} {name:14s} {m['p99']:6.3f} {m['max']:6.3f} {m['dY_max']:8.1e} "
-                  f"{m['in_gamut_max']:13.3f}")
+            print(
+                f"{display:11s} {name:14s} {m['p99']:6.3f} {m['max']:6.3f} {m['dY_max']:8.1e} "
+                f"{m['in_gamut_max']:13.3f}"
+            )
     result = {"accuracy": acc}
     path = Path(args.json)
     if args.no_speed and path.exists():  # keep the last speed run
@@ -273,13 +336,17 @@ def main(argv=None):
             update_markdown(doc, result)
         return
     rows = measure(args.size, args.repeats)
-    print(f"{'data set':20s} {'clip':>7s} {'aces':>7s} {'bare':>7s} {'lut65':>7s}   "
-          "clip/aces  clip/bare  clip/lut65   (Mpixel/s, one thread)")
+    print(
+        f"{'data set':20s} {'clip':>7s} {'aces':>7s} {'bare':>7s} {'lut65':>7s}   "
+        "clip/aces  clip/bare  clip/lut65   (Mpixel/s, one thread)"
+    )
     for r in rows:
         m = r["mpix_per_s"]
-        print(f"{r['dataset']:20s} {m['clip']:7.1f} {m['aces']:7.1f} {m['aces bare']:7.1f} "
-              f"{m['lut65']:7.1f}   {r['clip_over_aces']:9.2f}  {r['clip_over_aces_bare']:9.2f}"
-              f"  {r['clip_over_lut65']:10.2f}")
+        print(
+            f"{r['dataset']:20s} {m['clip']:7.1f} {m['aces']:7.1f} {m['aces bare']:7.1f} "
+            f"{m['lut65']:7.1f}   {r['clip_over_aces']:9.2f}  {r['clip_over_aces_bare']:9.2f}"
+            f"  {r['clip_over_lut65']:10.2f}"
+        )
     result["speed"] = rows
     path.write_text(json.dumps(result, indent=2) + "\n")
     print(f"wrote {path}")

@@ -57,11 +57,15 @@ def _lut_megabytes(display, view):
     compression reads those and its own two)."""
     from ocio_thinfilm import registry
 
-    stems = {"Constant-Lightness Clip": (registry.clip_lut_stem,),
-             "Constant-Lightness Compress": (registry.clip_lut_stem,
-                                             registry.compress_lut_stem)}.get(view, ())
-    files = [CONFIG.parent / "luts" / f"{stem(display, white)}.clf"
-             for stem in stems for white in (False, True)]
+    stems = {
+        "Constant-Lightness Clip": (registry.clip_lut_stem,),
+        "Constant-Lightness Compress": (registry.clip_lut_stem, registry.compress_lut_stem),
+    }.get(view, ())
+    files = [
+        CONFIG.parent / "luts" / f"{stem(display, white)}.clf"
+        for stem in stems
+        for white in (False, True)
+    ]
     return sum(f.stat().st_size for f in files) / 1e6
 
 
@@ -77,10 +81,23 @@ def measure(repeats=9, frame=2048, display="sRGB"):
         _write_exr(tmp / "small.exr", rng.uniform(0.0, 1.0, (16, 16, 3)))
         picture, _ = render.render_scene("oil", (frame, frame), view="Raw")
         _write_exr(tmp / "frame.exr", picture.xyz.reshape(frame, frame, 3))
-        jobs = {(job, view): [oiiotool, "--colorconfig", str(CONFIG), str(tmp / f"{job}.exr"),
-                              "--iscolorspace", "CIE-XYZ-D65", "--ociodisplay", display, view,
-                              "-o", str(tmp / f"{job}.png")]
-                for job in ("small", "frame") for view in VIEWS}
+        jobs = {
+            (job, view): [
+                oiiotool,
+                "--colorconfig",
+                str(CONFIG),
+                str(tmp / f"{job}.exr"),
+                "--iscolorspace",
+                "CIE-XYZ-D65",
+                "--ociodisplay",
+                display,
+                view,
+                "-o",
+                str(tmp / f"{job}.png"),
+            ]
+            for job in ("small", "frame")
+            for view in VIEWS
+        }
         times = {key: [] for key in jobs}
         for k in range(repeats):
             for key, argv in jobs.items():
@@ -91,35 +108,55 @@ def measure(repeats=9, frame=2048, display="sRGB"):
     rows = []
     for job in ("small", "frame"):
         med = {v: statistics.median(times[job, v]) for v in VIEWS}
-        rows.append(dict(job=job, pixels=16 * 16 if job == "small" else frame * frame,
-                         median_s=med, best_s={v: min(times[job, v]) for v in VIEWS},
-                         clip_over_aces=med[VIEWS[0]] / med[VIEWS[1]],
-                         compress_over_aces=med[VIEWS[2]] / med[VIEWS[1]], goal=GOALS[job]))
+        rows.append(
+            dict(
+                job=job,
+                pixels=16 * 16 if job == "small" else frame * frame,
+                median_s=med,
+                best_s={v: min(times[job, v]) for v in VIEWS},
+                clip_over_aces=med[VIEWS[0]] / med[VIEWS[1]],
+                compress_over_aces=med[VIEWS[2]] / med[VIEWS[1]],
+                goal=GOALS[job],
+            )
+        )
     import OpenImageIO as oiio
     import PyOpenColorIO as ocio
 
-    return dict(display=display, repeats=repeats, rows=rows,
-                clip_lut_mb=_lut_megabytes(display, VIEWS[0]),
-                compress_lut_mb=_lut_megabytes(display, VIEWS[2]),
-                versions=dict(ocio=ocio.__version__, oiio=oiio.__version__))
+    return dict(
+        display=display,
+        repeats=repeats,
+        rows=rows,
+        clip_lut_mb=_lut_megabytes(display, VIEWS[0]),
+        compress_lut_mb=_lut_megabytes(display, VIEWS[2]),
+        versions=dict(ocio=ocio.__version__, oiio=oiio.__version__),
+    )
 
 
 def markdown(result):
-    out = [f"| job ({result['display']}, oiiotool, median of {result['repeats']}) | clip s | "
-           "ACES s | clip / ACES | goal | compress s | compress / ACES |",
-           "|---|---|---|---|---|---|---|"]
+    out = [
+        f"| job ({result['display']}, oiiotool, median of {result['repeats']}) | clip s | "
+        "ACES s | clip / ACES | goal | compress s | compress / ACES |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for r in result["rows"]:
-        name = ("16×16 EXR → PNG (start-up + processor)" if r["job"] == "small"
-                else f"{int(r['pixels'] ** 0.5)}² oil scene → PNG")
+        name = (
+            "16×16 EXR → PNG (start-up + processor)"
+            if r["job"] == "small"
+            else f"{int(r['pixels'] ** 0.5)}² oil scene → PNG"
+        )
         ratio = r["clip_over_aces"]
-        out.append(f"| {name} | {r['median_s']['Constant-Lightness Clip']:.3f} | "
-                   f"{r['median_s']['ACES Gamut Compression']:.3f} | {ratio:.2f}× | "
-                   f"≤ {r['goal']:g}× ({'met' if ratio <= r['goal'] else 'not met'}) | "
-                   f"{r['median_s']['Constant-Lightness Compress']:.3f} | "
-                   f"{r['compress_over_aces']:.2f}× |")
-    out.append(f"\nThe clip view reads {result['clip_lut_mb']:.1f} MB of LUT text, the "
-               f"compression view {result['compress_lut_mb']:.1f} MB "
-               f"(OCIO {result['versions']['ocio']}, OpenImageIO {result['versions']['oiio']}).")
+        out.append(
+            f"| {name} | {r['median_s']['Constant-Lightness Clip']:.3f} | "
+            f"{r['median_s']['ACES Gamut Compression']:.3f} | {ratio:.2f}× | "
+            f"≤ {r['goal']:g}× ({'met' if ratio <= r['goal'] else 'not met'}) | "
+            f"{r['median_s']['Constant-Lightness Compress']:.3f} | "
+            f"{r['compress_over_aces']:.2f}× |"
+        )
+    out.append(
+        f"\nThe clip view reads {result['clip_lut_mb']:.1f} MB of LUT text, the "
+        f"compression view {result['compress_lut_mb']:.1f} MB "
+        f"(OCIO {result['versions']['ocio']}, OpenImageIO {result['versions']['oiio']})."
+    )
     return "\n".join(out)
 
 
@@ -127,8 +164,7 @@ def update_doc(result, path=DOC):
     text = path.read_text()
     block = f"{BEGIN}\n{markdown(result)}\n{END}"
     if BEGIN in text:
-        text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text,
-                      flags=re.S)
+        text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
     else:
         raise SystemExit(f"{path} has no {BEGIN} marker")
     path.write_text(text)

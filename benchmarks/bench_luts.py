@@ -50,17 +50,31 @@ def bench_1d(quick):
     for size in uniform_sizes:
         t0 = time.perf_counter()
         nodes = np.linspace(0.0, 1.5, size)
-        table = tables.Table1D(kind=kind, values=colorimetry.film_XYZ(nodes * 1000.0, kind),
-                               encoding="linear", domain_min=0.0, domain_max=1.5,
-                               nodes=nodes, name="uniform")
+        table = tables.Table1D(
+            kind=kind,
+            values=colorimetry.film_XYZ(nodes * 1000.0, kind),
+            encoding="linear",
+            domain_min=0.0,
+            domain_max=1.5,
+            nodes=nodes,
+            name="uniform",
+        )
         bake = time.perf_counter() - t0
         mid = (nodes[:-1] + nodes[1:]) / 2
         direct = colorimetry.film_XYZ(mid * 1000.0, kind)
         de_np = colorimetry.delta_E2000(table.lookup(mid), direct).max()
         de_ocio = colorimetry.delta_E2000(
-            ocio_ops.apply(table.transform(), grey(mid)).astype(np.float64), direct).max()
-        rows.append(dict(spacing="uniform 0-1.5 um", size=size, max_dE_numpy=de_np,
-                         max_dE_ocio=de_ocio, bake_s=bake))
+            ocio_ops.apply(table.transform(), grey(mid)).astype(np.float64), direct
+        ).max()
+        rows.append(
+            dict(
+                spacing="uniform 0-1.5 um",
+                size=size,
+                max_dE_numpy=de_np,
+                max_dE_ocio=de_ocio,
+                bake_s=bake,
+            )
+        )
     log_sizes = (2048, 4096, 8192) if quick else (2048, 4096, 8192, 16384, 65536)
     for size in log_sizes:
         t0 = time.perf_counter()
@@ -71,20 +85,34 @@ def bench_1d(quick):
         direct = colorimetry.film_XYZ(mid * 1000.0, kind)
         de_np = colorimetry.delta_E2000(table.lookup(mid), direct).max()
         de_ocio = colorimetry.delta_E2000(
-            ocio_ops.apply(table.transform(), grey(mid)).astype(np.float64), direct).max()
-        rows.append(dict(spacing="log2 shaper t0=1 um, 0-100 um", size=size,
-                         max_dE_numpy=de_np, max_dE_ocio=de_ocio, bake_s=bake))
+            ocio_ops.apply(table.transform(), grey(mid)).astype(np.float64), direct
+        ).max()
+        rows.append(
+            dict(
+                spacing="log2 shaper t0=1 um, 0-100 um",
+                size=size,
+                max_dE_numpy=de_np,
+                max_dE_ocio=de_ocio,
+                bake_s=bake,
+            )
+        )
     for size in (512, 1024, 4096):
         t0 = time.perf_counter()
         table = tables.morpho_table(size)
         bake = time.perf_counter() - t0
         c = (np.arange(size - 1) + 0.5) / (size - 1)
         direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(c)))
-        rows.append(dict(spacing="Morpho, uniform cos(theta)", size=size,
-                         max_dE_numpy=colorimetry.delta_E2000(table.lookup(c), direct).max(),
-                         max_dE_ocio=colorimetry.delta_E2000(ocio_ops.apply(
-                             table.transform(), grey(c)).astype(np.float64), direct).max(),
-                         bake_s=bake))
+        rows.append(
+            dict(
+                spacing="Morpho, uniform cos(theta)",
+                size=size,
+                max_dE_numpy=colorimetry.delta_E2000(table.lookup(c), direct).max(),
+                max_dE_ocio=colorimetry.delta_E2000(
+                    ocio_ops.apply(table.transform(), grey(c)).astype(np.float64), direct
+                ).max(),
+                bake_s=bake,
+            )
+        )
     return rows
 
 
@@ -97,8 +125,9 @@ def naive_xyz(display, size):
     g = np.linspace(0, 1, size)
     P = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1) * W
     V = colorimetry.XYZ_to_RGB(clip.clip_XYZ(P, display), display)
-    return ocio_ops.group([ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V),
-                           ocio_ops.range_(0, 1)])
+    return ocio_ops.group(
+        [ocio_ops.matrix(np.diag(1 / W)), ocio_ops.lut3d_transform(V), ocio_ops.range_(0, 1)]
+    )
 
 
 def uvY_uniform(display, size):
@@ -121,11 +150,18 @@ def uvY_uniform(display, size):
     fwd = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_uvY)
     inv.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return ocio_ops.group([clip_lut.xyz_limit_transform(), fwd,
-                           ocio_ops.matrix(np.diag(1 / hi)), ocio_ops.lut3d_transform(uvY / hi),
-                           ocio_ops.matrix(np.diag(hi)), inv,
-                           display_transforms.display_matrix_transform(display),
-                           ocio_ops.range_(0, 1)])
+    return ocio_ops.group(
+        [
+            clip_lut.xyz_limit_transform(),
+            fwd,
+            ocio_ops.matrix(np.diag(1 / hi)),
+            ocio_ops.lut3d_transform(uvY / hi),
+            ocio_ops.matrix(np.diag(hi)),
+            inv,
+            display_transforms.display_matrix_transform(display),
+            ocio_ops.range_(0, 1),
+        ]
+    )
 
 
 def options(quick):
@@ -143,10 +179,15 @@ def options(quick):
     half-float textures (the shaper's outputs place colours only to 1/30 of a cell).
     """
     sizes = (33, 49, 65) if quick else (33, 41, 49, 57, 65)
-    return [("naive XYZ/white (baseline)", naive_xyz, (33, 65)),
-            ("u'v'Y uniform", uvY_uniform, (33, 65)),
-            ("two passes: black faces over a chart, white faces over encoded RGB (shipped)",
-             lambda d, n: clip_lut.clip_transform(d, n), sizes)]
+    return [
+        ("naive XYZ/white (baseline)", naive_xyz, (33, 65)),
+        ("u'v'Y uniform", uvY_uniform, (33, 65)),
+        (
+            "two passes: black faces over a chart, white faces over encoded RGB (shipped)",
+            lambda d, n: clip_lut.clip_transform(d, n),
+            sizes,
+        ),
+    ]
 
 
 def clf_size(transform):
@@ -154,8 +195,9 @@ def clf_size(transform):
     CLF-writable around it)."""
     import PyOpenColorIO as ocio
 
-    writable = ocio_ops.group([t for t in _flatten(transform)
-                               if not isinstance(t, ocio.FixedFunctionTransform)])
+    writable = ocio_ops.group(
+        [t for t in _flatten(transform) if not isinstance(t, ocio.FixedFunctionTransform)]
+    )
     with tempfile.TemporaryDirectory() as d:
         path = Path(d) / "x.clf"
         writable.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
@@ -165,8 +207,10 @@ def clf_size(transform):
 def _flatten(transform):
     import PyOpenColorIO as ocio
 
-    if isinstance(transform, ocio.GroupTransform) and \
-            transform.getDirection() == ocio.TRANSFORM_DIR_FORWARD:
+    if (
+        isinstance(transform, ocio.GroupTransform)
+        and transform.getDirection() == ocio.TRANSFORM_DIR_FORWARD
+    ):
         for t in transform:
             yield from _flatten(t)
     else:
@@ -191,25 +235,37 @@ def bench_3d(displays, quick):
                 de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(out, display))
                 lo = ocio_ops.apply(transform, locus).astype(np.float64)
                 Y = colorimetry.RGB_to_XYZ(lo, display)[:, 1]
-                de_locus = colorimetry.delta_E2000(clip.clip_XYZ(locus, display),
-                                                   colorimetry.RGB_to_XYZ(lo, display))
-                rows.append(dict(display=display, option=label, size=size,
-                                 mean=de.mean(), p99=np.percentile(de, 99), max=de.max(),
-                                 locus_dY=np.abs(Y - locus[:, 1]).max(),
-                                 locus_dY_rel=np.abs(Y / locus[:, 1] - 1).max(),
-                                 locus_in_gamut=bool(clip.in_gamut(lo, 1e-6).all()),
-                                 locus_p99=np.percentile(de_locus, 99),
-                                 bake_s=bake, clf_MB=clf_size(transform) / 1e6))
+                de_locus = colorimetry.delta_E2000(
+                    clip.clip_XYZ(locus, display), colorimetry.RGB_to_XYZ(lo, display)
+                )
+                rows.append(
+                    dict(
+                        display=display,
+                        option=label,
+                        size=size,
+                        mean=de.mean(),
+                        p99=np.percentile(de, 99),
+                        max=de.max(),
+                        locus_dY=np.abs(Y - locus[:, 1]).max(),
+                        locus_dY_rel=np.abs(Y / locus[:, 1] - 1).max(),
+                        locus_in_gamut=bool(clip.in_gamut(lo, 1e-6).all()),
+                        locus_p99=np.percentile(de_locus, 99),
+                        bake_s=bake,
+                        clf_MB=clf_size(transform) / 1e6,
+                    )
+                )
                 print(_fmt3d(rows[-1]), flush=True)
     return rows
 
 
 def _fmt3d(r):
-    return (f"| {r['display']} | {r['option']} | {r['size']} | {r['mean']:.3f} | "
-            f"{r['p99']:.3f} | {r['max']:.3f} | {r['locus_dY']:.1e} | "
-            f"{r['locus_dY_rel']:.1e} | {'yes' if r['locus_in_gamut'] else 'NO'} | "
-            f"{r['locus_p99']:.2f} | "
-            f"{r['bake_s']:.2f} | {r['clf_MB']:.2f} |")
+    return (
+        f"| {r['display']} | {r['option']} | {r['size']} | {r['mean']:.3f} | "
+        f"{r['p99']:.3f} | {r['max']:.3f} | {r['locus_dY']:.1e} | "
+        f"{r['locus_dY_rel']:.1e} | {'yes' if r['locus_in_gamut'] else 'NO'} | "
+        f"{r['locus_p99']:.2f} | "
+        f"{r['bake_s']:.2f} | {r['clf_MB']:.2f} |"
+    )
 
 
 def main(argv=None):
@@ -225,17 +281,24 @@ def main(argv=None):
     colorimetry.film_XYZ(np.zeros(1))  # import colour-science before timing
     rows1 = bench_1d(args.quick)
     for r in rows1:
-        print(f"| {r['spacing']} | {r['size']} | {r['max_dE_numpy']:.4f} | "
-              f"{r['max_dE_ocio']:.4f} | {r['bake_s']:.2f} |")
-    print("\n## 3D clip LUT options, dE2000 vs analytic clip on object colours; "
-          "spectral colours Y <= 0.6\n")
-    print("| display | option | size | mean | p99 | max | locus |dY| | locus |dY|/Y | "
-          "locus in gamut | locus p99 dE | bake s | CLF MB |")
+        print(
+            f"| {r['spacing']} | {r['size']} | {r['max_dE_numpy']:.4f} | "
+            f"{r['max_dE_ocio']:.4f} | {r['bake_s']:.2f} |"
+        )
+    print(
+        "\n## 3D clip LUT options, dE2000 vs analytic clip on object colours; "
+        "spectral colours Y <= 0.6\n"
+    )
+    print(
+        "| display | option | size | mean | p99 | max | locus |dY| | locus |dY|/Y | "
+        "locus in gamut | locus p99 dE | bake s | CLF MB |"
+    )
     print("|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|")
     rows3 = bench_3d(args.displays, args.quick)
     if args.json:
-        Path(args.json).write_text(json.dumps({"table1d": rows1, "clip3d": rows3}, indent=1,
-                                              default=float))
+        Path(args.json).write_text(
+            json.dumps({"table1d": rows1, "clip3d": rows3}, indent=1, default=float)
+        )
     return 0
 
 

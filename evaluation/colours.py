@@ -46,15 +46,21 @@ def object_colours(seed: int = 0, n_random: int = 4000) -> np.ndarray:
     checker = []
     for name in sorted(colour.SDS_COLOURCHECKERS):
         for sd in colour.SDS_COLOURCHECKERS[name].values():
-            checker.append(colour.sd_to_XYZ(sd.copy().align(shape),
-                                            illuminant=colour.SDS_ILLUMINANTS["D65"]) / 100)
+            checker.append(
+                colour.sd_to_XYZ(sd.copy().align(shape), illuminant=colour.SDS_ILLUMINANTS["D65"])
+                / 100
+            )
     munsell = np.array([v[1] for v in MUNSELL_COLOURS_REAL], dtype=np.float64)
     munsell[:, 2] /= 100.0
     munsell = colour.xyY_to_XYZ(munsell[munsell[:, 2] <= 1.0])
     t = np.linspace(0.0, 3000.0, 3000)
-    films = np.concatenate([colorimetry.film_XYZ(t, "phase-change"),
-                            colorimetry.film_XYZ(t, "no-phase-change"),
-                            colorimetry.morpho_XYZ(np.linspace(0.0, 89.0, 500))])
+    films = np.concatenate(
+        [
+            colorimetry.film_XYZ(t, "phase-change"),
+            colorimetry.film_XYZ(t, "no-phase-change"),
+            colorimetry.morpho_XYZ(np.linspace(0.0, 89.0, 500)),
+        ]
+    )
     return np.concatenate([random_XYZ, np.array(checker), munsell, films])
 
 
@@ -89,7 +95,12 @@ def gamut_map_sets() -> dict:
     ap0_to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1"))
     ap0 = rng.uniform(0.0, 1.0, (60000, 3)) @ ap0_to_xyz.T
     ap0 = ap0[(ap0[:, 1] >= 0.0) & (ap0[:, 1] <= 1.0)][:20000]
-    locus = np.concatenate([colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0))
-                            for Y in (0.02, 0.1, 0.3, 0.6)])
-    return {"object": object_colours(), "monochromatic": locus, "ap0": ap0,
-            "mixtures": spectral_mixtures()}
+    locus = np.concatenate(
+        [colorimetry.spectral_locus_XYZ(Y, np.arange(380.0, 701.0)) for Y in (0.02, 0.1, 0.3, 0.6)]
+    )
+    return {
+        "object": object_colours(),
+        "monochromatic": locus,
+        "ap0": ap0,
+        "mixtures": spectral_mixtures(),
+    }

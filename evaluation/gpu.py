@@ -220,8 +220,9 @@ class GpuProgram:
             self.language = ocio.GPU_LANGUAGE_GLSL_4_0
         headers = _languages()
         if self.language not in headers:
-            raise ValueError(f"unsupported GPU language {self.language}; "
-                             f"use one of {list(headers)}")
+            raise ValueError(
+                f"unsupported GPU language {self.language}; use one of {list(headers)}"
+            )
         version, precision = headers[self.language]
 
         gpu = self.processor
@@ -302,8 +303,9 @@ class GpuProgram:
 
         for lut in self.shader_desc.getTextures():
             if lut.dimensions != ocio.GpuShaderDesc.TEXTURE_2D:
-                raise NotImplementedError(f"{lut.textureName}: 1D textures are not supported "
-                                          "by moderngl")
+                raise NotImplementedError(
+                    f"{lut.textureName}: 1D textures are not supported by moderngl"
+                )
             channels = 1 if lut.channel == ocio.GpuShaderDesc.TEXTURE_RED_CHANNEL else 3
             width, height = lut.width, max(lut.height, 1)
             data = _texture_bytes(lut.getValues(), texture_dtype)

@@ -32,8 +32,16 @@ from evaluation.formatting import fmt
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 
-__all__ = ["Case", "Row", "limit_along", "xyz_cases", "physics_rows", "ocio_clip_rows",
-           "poisoned", "spectral_white_XYZ"]
+__all__ = [
+    "Case",
+    "Row",
+    "limit_along",
+    "xyz_cases",
+    "physics_rows",
+    "ocio_clip_rows",
+    "poisoned",
+    "spectral_white_XYZ",
+]
 
 
 @dataclass(frozen=True)
@@ -88,6 +96,7 @@ def _nan_check():
         err = float(np.abs(out[1] - alone).max())
         ok = bool(np.all(np.isnan(out[0])) and err <= 1e-15)
         return ok, f"pixel 0 NaN: {bool(np.all(np.isnan(out[0])))}; pixel 1 vs alone |Δ| {fmt(err)}"
+
     return check
 
 
@@ -113,10 +122,17 @@ def _near_parallel_check(M, Minv):
     def check(out):
         xyz = _near_parallel(M, Minv)
         rgb = out @ M.T
-        ok = bool(np.all(np.isfinite(out)) and rgb.min() > -1e-12 and rgb.max() < 1 + 1e-12
-                  and np.allclose(out[:, 1], xyz[:, 1], rtol=1e-9))
-        return ok, (f"RGB in [{fmt(float(rgb.min()))}, {fmt(float(rgb.max()), 6)}], "
-                    f"max |ΔY| {fmt(float(np.abs(out[:, 1] - xyz[:, 1]).max()))}")
+        ok = bool(
+            np.all(np.isfinite(out))
+            and rgb.min() > -1e-12
+            and rgb.max() < 1 + 1e-12
+            and np.allclose(out[:, 1], xyz[:, 1], rtol=1e-9)
+        )
+        return ok, (
+            f"RGB in [{fmt(float(rgb.min()))}, {fmt(float(rgb.max()), 6)}], "
+            f"max |ΔY| {fmt(float(np.abs(out[:, 1] - xyz[:, 1]).max()))}"
+        )
+
     return check
 
 
@@ -131,48 +147,100 @@ def xyz_cases(W=None) -> list[Case]:
     def in_gamut_keep_Y(Y):
         def check(out):
             rgb = out @ M.T
-            ok = bool(np.all(np.isfinite(out)) and np.all(rgb > -1e-9) and np.all(rgb < 1 + 1e-9)
-                      and np.allclose(out[..., 1], Y, rtol=1e-9, atol=1e-12))
+            ok = bool(
+                np.all(np.isfinite(out))
+                and np.all(rgb > -1e-9)
+                and np.all(rgb < 1 + 1e-9)
+                and np.allclose(out[..., 1], Y, rtol=1e-9, atol=1e-12)
+            )
             rgb_text = ", ".join(fmt(float(v), 4) for v in np.ravel(rgb)[:3])
             return ok, f"RGB [{rgb_text}], Y {fmt(float(np.ravel(out)[1]), 6)}"
+
         return check
 
     def equals(target, tol, label):
         def check(out):
             err = float(np.max(np.abs(np.asarray(out) - target)))
             return err <= tol, f"{label}: |Δ| {fmt(err)}"
+
         return check
 
     cases = [
-        ("XYZ negative (−0.1, −0.2, −0.1)", [-0.1, -0.2, -0.1], "black (Y ≤ 0)",
-         equals(0.0, 0.0, "black"), "test_xyz_negative_and_zero_give_black"),
-        ("XYZ zero", [0.0, 0.0, 0.0], "black", equals(0.0, 0.0, "black"),
-         "test_xyz_negative_and_zero_give_black"),
-        ("XYZ above white: 2·white and (0.5, 1.5, 0.5)", [2 * W, [0.5, 1.5, 0.5]],
-         "white (Y ≥ Y_white)", equals(W, 1e-12, "white"), "test_xyz_above_white_gives_white"),
-        ("XYZ (1e30, 0.5, 0.5)", [1e30, 0.5, 0.5],
-         "finite, in gamut, Y = 0.5: the boundary point from grey along +X",
-         equals(grey_dir_limit, 1e-9, "vs limit"), "test_xyz_huge_and_infinite_components"),
-        ("XYZ (+Inf, 0.5, 0.5)", [np.inf, 0.5, 0.5], "same as the 1e30 limit",
-         equals(grey_dir_limit, 1e-9, "vs limit"), "test_xyz_huge_and_infinite_components"),
-        ("XYZ (−Inf, 0.5, 0.5)", [-np.inf, 0.5, 0.5], "finite, in gamut, Y = 0.5",
-         in_gamut_keep_Y(0.5), "test_xyz_huge_and_infinite_components"),
-        ("XYZ (0.3, +Inf, 0.3) / (0.3, −Inf, 0.3)", [[0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]],
-         "white / black", equals(np.array([W, np.zeros(3)]), 1e-12, "white/black"),
-         "test_xyz_infinite_luminance"),
-        ("XYZ NaN in one pixel of two", [[np.nan, 0.5, 0.5], [0.2, 0.3, 0.9]],
-         "NaN in that pixel only; the other as if clipped alone (≤ 1e-15)",
-         _nan_check(), "test_xyz_nan_stays_in_its_pixel"),
-        ("XYZ on faces and edges (RGB channels exactly 0 or 1)", _faces_edges() @ Minv.T,
-         "unchanged (≤ 1e-12: only the XYZ↔RGB round-off)",
-         equals(_faces_edges() @ Minv.T, 1e-12, "moved"), "test_xyz_on_faces_and_edges_unchanged"),
-        ("rays nearly parallel to a face (R − grey = ±1e-15…1e-6, G far out)",
-         _near_parallel(M, Minv),
-         "finite, in gamut, Y preserved to 1e-9", _near_parallel_check(M, Minv),
-         "test_rays_nearly_parallel_to_a_face"),
+        (
+            "XYZ negative (−0.1, −0.2, −0.1)",
+            [-0.1, -0.2, -0.1],
+            "black (Y ≤ 0)",
+            equals(0.0, 0.0, "black"),
+            "test_xyz_negative_and_zero_give_black",
+        ),
+        (
+            "XYZ zero",
+            [0.0, 0.0, 0.0],
+            "black",
+            equals(0.0, 0.0, "black"),
+            "test_xyz_negative_and_zero_give_black",
+        ),
+        (
+            "XYZ above white: 2·white and (0.5, 1.5, 0.5)",
+            [2 * W, [0.5, 1.5, 0.5]],
+            "white (Y ≥ Y_white)",
+            equals(W, 1e-12, "white"),
+            "test_xyz_above_white_gives_white",
+        ),
+        (
+            "XYZ (1e30, 0.5, 0.5)",
+            [1e30, 0.5, 0.5],
+            "finite, in gamut, Y = 0.5: the boundary point from grey along +X",
+            equals(grey_dir_limit, 1e-9, "vs limit"),
+            "test_xyz_huge_and_infinite_components",
+        ),
+        (
+            "XYZ (+Inf, 0.5, 0.5)",
+            [np.inf, 0.5, 0.5],
+            "same as the 1e30 limit",
+            equals(grey_dir_limit, 1e-9, "vs limit"),
+            "test_xyz_huge_and_infinite_components",
+        ),
+        (
+            "XYZ (−Inf, 0.5, 0.5)",
+            [-np.inf, 0.5, 0.5],
+            "finite, in gamut, Y = 0.5",
+            in_gamut_keep_Y(0.5),
+            "test_xyz_huge_and_infinite_components",
+        ),
+        (
+            "XYZ (0.3, +Inf, 0.3) / (0.3, −Inf, 0.3)",
+            [[0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]],
+            "white / black",
+            equals(np.array([W, np.zeros(3)]), 1e-12, "white/black"),
+            "test_xyz_infinite_luminance",
+        ),
+        (
+            "XYZ NaN in one pixel of two",
+            [[np.nan, 0.5, 0.5], [0.2, 0.3, 0.9]],
+            "NaN in that pixel only; the other as if clipped alone (≤ 1e-15)",
+            _nan_check(),
+            "test_xyz_nan_stays_in_its_pixel",
+        ),
+        (
+            "XYZ on faces and edges (RGB channels exactly 0 or 1)",
+            _faces_edges() @ Minv.T,
+            "unchanged (≤ 1e-12: only the XYZ↔RGB round-off)",
+            equals(_faces_edges() @ Minv.T, 1e-12, "moved"),
+            "test_xyz_on_faces_and_edges_unchanged",
+        ),
+        (
+            "rays nearly parallel to a face (R − grey = ±1e-15…1e-6, G far out)",
+            _near_parallel(M, Minv),
+            "finite, in gamut, Y preserved to 1e-9",
+            _near_parallel_check(M, Minv),
+            "test_rays_nearly_parallel_to_a_face",
+        ),
     ]
-    return [Case(name, np.asarray(xyz, dtype=np.float64), expected, check, test)
-            for name, xyz, expected, check, test in cases]
+    return [
+        Case(name, np.asarray(xyz, dtype=np.float64), expected, check, test)
+        for name, xyz, expected, check, test in cases
+    ]
 
 
 # --------------------------------------------------------------------------- #
@@ -206,8 +274,11 @@ def _spectral_white_XYZ():
     cmfs = colour.MSDS_CMFS[colorimetry.DEFAULT_OBSERVER]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        xyz = colour.sd_to_XYZ(colour.sd_ones(), cmfs,
-                               illuminant=colour.SDS_ILLUMINANTS[colorimetry.DEFAULT_ILLUMINANT])
+        xyz = colour.sd_to_XYZ(
+            colour.sd_ones(),
+            cmfs,
+            illuminant=colour.SDS_ILLUMINANTS[colorimetry.DEFAULT_ILLUMINANT],
+        )
     return np.asarray(xyz) / xyz[1]
 
 
@@ -241,8 +312,9 @@ def _wl():
 
 def _thick_check(m):
     de = [_dE_from_half_white(x) for x in m["XYZ"]]
-    return bool(max(de) < 0.5) and bool(np.all(np.isfinite(de))), \
-        "ΔE2000 " + ", ".join(fmt(v) for v in de)
+    return bool(max(de) < 0.5) and bool(np.all(np.isfinite(de))), "ΔE2000 " + ", ".join(
+        fmt(v) for v in de
+    )
 
 
 def _sweep_check(m):
@@ -276,40 +348,53 @@ def _grazing_tmm_check(m):
     ra = m["R"]
     diff = float(np.abs(ra - R.mean(-1)[:, 0, :].T).max())
     ok = np.all(np.isfinite(ra)) and ra.min() >= 0 and ra.max() <= 1 and diff < 1e-9
-    return bool(ok), (f"R in [{fmt(float(ra.min()), 6)}, {fmt(float(ra.max()), 6)}], "
-                      f"|ΔR| {fmt(diff)}")
+    return bool(ok), (
+        f"R in [{fmt(float(ra.min()), 6)}, {fmt(float(ra.max()), 6)}], |ΔR| {fmt(diff)}"
+    )
 
 
 def _grazing_band_check(m):
     rb = m["R"]
-    return (bool(rb.min() >= -1e-9 and rb.max() <= 1 + 1e-9),
-            f"R in [{fmt(float(rb.min()), 4)}, {fmt(float(rb.max()), 4)}]")
+    return (
+        bool(rb.min() >= -1e-9 and rb.max() <= 1 + 1e-9),
+        f"R in [{fmt(float(rb.min()), 4)}, {fmt(float(rb.max()), 4)}]",
+    )
 
 
 def _ninety_check(m):
     r90 = m["R"]
-    return (bool(np.allclose(r90, 1.0, atol=1e-12)),
-            f"R in [{fmt(float(r90.min()))}, {fmt(float(r90.max()))}]")
+    return (
+        bool(np.allclose(r90, 1.0, atol=1e-12)),
+        f"R in [{fmt(float(r90.min()))}, {fmt(float(r90.max()))}]",
+    )
 
 
 def _ninety_tm_check(m):
     t90 = m["R"]
-    return (bool(np.allclose(t90, 1.0, atol=1e-9)),
-            f"{'NaN' if np.isnan(t90).any() else 'R ' + fmt(float(np.nanmin(t90)))}")
+    return (
+        bool(np.allclose(t90, 1.0, atol=1e-9)),
+        f"{'NaN' if np.isnan(t90).any() else 'R ' + fmt(float(np.nanmin(t90)))}",
+    )
 
 
 def _tir_check(m):
-    worst = float(np.max([np.abs(m[k] - 1).max() for k in ("airy", "airy_band_limited",
-                                                            "transfer_matrix")]))
+    worst = float(
+        np.max([np.abs(m[k] - 1).max() for k in ("airy", "airy_band_limited", "transfer_matrix")])
+    )
     return bool(worst < 1e-12), f"max |R−1| {fmt(worst)}"
 
 
 def _frustrated_check(m):
     fa, ft = m["airy"], m["transfer_matrix"]
-    ok = (np.all(np.diff(fa.mean(1)) > 0) and abs(fa[-1].mean() - 1) < 1e-6
-          and np.abs(fa - ft).max() < 1e-9)
-    return bool(ok), (f"mean R {', '.join(fmt(float(v), 4) for v in fa.mean(1))}; "
-                      f"|Δ| {fmt(float(np.abs(fa - ft).max()))}")
+    ok = (
+        np.all(np.diff(fa.mean(1)) > 0)
+        and abs(fa[-1].mean() - 1) < 1e-6
+        and np.abs(fa - ft).max() < 1e-9
+    )
+    return bool(ok), (
+        f"mean R {', '.join(fmt(float(v), 4) for v in fa.mean(1))}; "
+        f"|Δ| {fmt(float(np.abs(fa - ft).max()))}"
+    )
 
 
 _EQ9_T = 226.5
@@ -325,8 +410,11 @@ def _eq9_points():
 
 
 def _eq9_measure():
-    return {"R": np.concatenate([spectra.multilayer_reflectance(_EQ9_T, lams, layers)
-                                 for layers, lams in _eq9_points()])}
+    return {
+        "R": np.concatenate(
+            [spectra.multilayer_reflectance(_EQ9_T, lams, layers) for layers, lams in _eq9_points()]
+        )
+    }
 
 
 def _eq9_check(m):
@@ -349,8 +437,12 @@ def _eq9_check(m):
 def _float32_measure():
     rgb64 = np.random.default_rng(5).uniform(-2, 3, (10000, 3))
     t = np.linspace(0, 1500, 64)
-    return {"clip64": clip.clip_RGB(rgb64), "clip32": clip.clip_RGB(rgb64.astype(np.float32)),
-            "film64": colorimetry.film_XYZ(t), "film32": colorimetry.film_XYZ(t.astype(np.float32))}
+    return {
+        "clip64": clip.clip_RGB(rgb64),
+        "clip32": clip.clip_RGB(rgb64.astype(np.float32)),
+        "film64": colorimetry.film_XYZ(t),
+        "film32": colorimetry.film_XYZ(t.astype(np.float32)),
+    }
 
 
 def _float32_check(m):
@@ -373,61 +465,131 @@ def physics_rows() -> list[Row]:
     """
     wl = _wl()
     return [
-        Row("thick film t' = 10, 30, 100 µm (default band-limited 5 nm)",
+        Row(
+            "thick film t' = 10, 30, 100 µm (default band-limited 5 nm)",
             "incoherent limit ½·white, ΔE2000 < 0.5",
             lambda: {"XYZ": np.stack([colorimetry.film_XYZ(x) for x in _THICK])},
-            _thick_check, "test_thick_film_tends_to_half_white"),
-        Row("thick films, 401 t' in 20–100 µm, band-limited", "all ΔE2000 < 0.5 from ½·white",
+            _thick_check,
+            "test_thick_film_tends_to_half_white",
+        ),
+        Row(
+            "thick films, 401 t' in 20–100 µm, band-limited",
+            "all ΔE2000 < 0.5 from ½·white",
             lambda: {"XYZ": colorimetry.film_XYZ(np.linspace(2e4, 1e5, 401))},
-            _sweep_check, "test_stability_row"),
-        Row("thick film 100 µm, point-sampled 5 nm (contrast)",
+            _sweep_check,
+            "test_stability_row",
+        ),
+        Row(
+            "thick film 100 µm, point-sampled 5 nm (contrast)",
             "aliasing: false colour (why band-limiting is the default)",
             lambda: {"XYZ": colorimetry.film_XYZ(1e5, band_limited=False)},
-            _aliasing_check, "test_stability_row"),
-        Row("t = 0, Eq. 7 / Eq. 8", "black (0, 0, 0) / the perfect reflector (ΔE2000 < 0.02 "
+            _aliasing_check,
+            "test_stability_row",
+        ),
+        Row(
+            "t = 0, Eq. 7 / Eq. 8",
+            "black (0, 0, 0) / the perfect reflector (ΔE2000 < 0.02 "
             "from colour's `sd_to_XYZ` of D65)",
-            lambda: {"Eq7": colorimetry.film_XYZ(0.0),
-                     "Eq8": colorimetry.film_XYZ(0.0, kind="no-phase-change")},
-            _zero_check, "test_zero_thickness"),
-        Row("t = 0, exact film air|1.33|air and on glass 1.5",
+            lambda: {
+                "Eq7": colorimetry.film_XYZ(0.0),
+                "Eq8": colorimetry.film_XYZ(0.0, kind="no-phase-change"),
+            },
+            _zero_check,
+            "test_zero_thickness",
+        ),
+        Row(
+            "t = 0, exact film air|1.33|air and on glass 1.5",
             "R = 0 and bare-glass Fresnel ((1.5−1)/2.5)² = 0.04",
-            lambda: {"air": exact.airy_reflectance(0.0, wl, 1.33),
-                     "glass": exact.airy_reflectance(0.0, wl, 1.33, n_substrate=1.5)},
-            _zero_exact_check, "test_zero_thickness_exact_film"),
-        Row("grazing 89.9°, film 1.33, 100/300/3000 nm", "finite, in [0, 1], = colour TMM",
+            lambda: {
+                "air": exact.airy_reflectance(0.0, wl, 1.33),
+                "glass": exact.airy_reflectance(0.0, wl, 1.33, n_substrate=1.5),
+            },
+            _zero_exact_check,
+            "test_zero_thickness_exact_film",
+        ),
+        Row(
+            "grazing 89.9°, film 1.33, 100/300/3000 nm",
+            "finite, in [0, 1], = colour TMM",
             lambda: {"R": exact.airy_reflectance(_GRAZING_D, wl, 1.33, 89.9)},
-            _grazing_tmm_check, "test_grazing_matches_colour_tmm"),
-        Row("grazing 80/89/89.9°, exact film, band-limited", "bin averages of R stay in [0, 1]",
-            lambda: {"R": np.concatenate([
-                exact.airy_reflectance(_GRAZING_D, wl, 1.33, th, band_limited=True).ravel()
-                for th in (80.0, 89.0, 89.9)])},
-            _grazing_band_check, "test_stability_row"),
-        Row("exactly 90°, exact film", "R = 1 (grazing limit)",
+            _grazing_tmm_check,
+            "test_grazing_matches_colour_tmm",
+        ),
+        Row(
+            "grazing 80/89/89.9°, exact film, band-limited",
+            "bin averages of R stay in [0, 1]",
+            lambda: {
+                "R": np.concatenate(
+                    [
+                        exact.airy_reflectance(_GRAZING_D, wl, 1.33, th, band_limited=True).ravel()
+                        for th in (80.0, 89.0, 89.9)
+                    ]
+                )
+            },
+            _grazing_band_check,
+            "test_stability_row",
+        ),
+        Row(
+            "exactly 90°, exact film",
+            "R = 1 (grazing limit)",
             lambda: {"R": exact.airy_reflectance(_GRAZING_D, wl, 1.33, 90.0)},
-            _ninety_check, "test_stability_row"),
-        Row("exactly 90°, transfer_matrix_reflectance", "R = 1 (grazing limit)",
+            _ninety_check,
+            "test_stability_row",
+        ),
+        Row(
+            "exactly 90°, transfer_matrix_reflectance",
+            "R = 1 (grazing limit)",
             lambda: {"R": exact.transfer_matrix_reflectance([1.33], [300.0], wl, 90.0)},
-            _ninety_tm_check, "test_stability_row"),
-        Row("TIR: glass 1.5 → film 1.0 → 1.0 at 60° (> 41.8°)", "R = 1 exactly (all three paths)",
-            lambda: {"airy": exact.airy_reflectance(_TIR_D, wl, 1.0, 60.0, n_incident=1.5),
-                     "airy_band_limited": exact.airy_reflectance(
-                         _TIR_D, wl, 1.0, 60.0, n_incident=1.5, band_limited=True),
-                     "transfer_matrix": exact.transfer_matrix_reflectance(
-                         [1.0], [300.0], wl, 60.0, n_incident=1.5)},
-            _tir_check, "test_total_internal_reflection"),
-        Row("frustrated TIR: 1.5 | gap 1.0 | 1.5 at 60°, gaps 10/300/3000 nm",
+            _ninety_tm_check,
+            "test_stability_row",
+        ),
+        Row(
+            "TIR: glass 1.5 → film 1.0 → 1.0 at 60° (> 41.8°)",
+            "R = 1 exactly (all three paths)",
+            lambda: {
+                "airy": exact.airy_reflectance(_TIR_D, wl, 1.0, 60.0, n_incident=1.5),
+                "airy_band_limited": exact.airy_reflectance(
+                    _TIR_D, wl, 1.0, 60.0, n_incident=1.5, band_limited=True
+                ),
+                "transfer_matrix": exact.transfer_matrix_reflectance(
+                    [1.0], [300.0], wl, 60.0, n_incident=1.5
+                ),
+            },
+            _tir_check,
+            "test_total_internal_reflection",
+        ),
+        Row(
+            "frustrated TIR: 1.5 | gap 1.0 | 1.5 at 60°, gaps 10/300/3000 nm",
             "R rises to 1 with the gap; Airy = transfer matrix",
-            lambda: {"airy": exact.airy_reflectance(_GAPS, wl, 1.0, 60.0, n_incident=1.5,
-                                                      n_substrate=1.5),
-                     "transfer_matrix": np.stack([exact.transfer_matrix_reflectance(
-                         [1.0], [g], wl, 60.0, n_incident=1.5, n_substrate=1.5) for g in _GAPS])},
-            _frustrated_check, "test_frustrated_tir"),
-        Row("Eq. 9, l = 1…100 layers, λ at and 1e-15…1e-3 (relative) off sin(2πt/λ) = 0",
+            lambda: {
+                "airy": exact.airy_reflectance(
+                    _GAPS, wl, 1.0, 60.0, n_incident=1.5, n_substrate=1.5
+                ),
+                "transfer_matrix": np.stack(
+                    [
+                        exact.transfer_matrix_reflectance(
+                            [1.0], [g], wl, 60.0, n_incident=1.5, n_substrate=1.5
+                        )
+                        for g in _GAPS
+                    ]
+                ),
+            },
+            _frustrated_check,
+            "test_frustrated_tir",
+        ),
+        Row(
+            "Eq. 9, l = 1…100 layers, λ at and 1e-15…1e-3 (relative) off sin(2πt/λ) = 0",
             "= (sin((l+1)x)/sin x)²/(l+1)² to 1e-9 (mpmath, 50 digits); peak 1",
-            _eq9_measure, _eq9_check, "test_eq9_near_singular_points"),
-        Row("float32 vs float64 (clip_RGB on 10⁴ colours; film_XYZ)",
+            _eq9_measure,
+            _eq9_check,
+            "test_eq9_near_singular_points",
+        ),
+        Row(
+            "float32 vs float64 (clip_RGB on 10⁴ colours; film_XYZ)",
             "float32 out for float32 in; |Δ| ≤ 1e-6 (float32 rounding)",
-            _float32_measure, _float32_check, "test_float32_vs_float64"),
+            _float32_measure,
+            _float32_check,
+            "test_float32_vs_float64",
+        ),
     ]
 
 
@@ -438,8 +600,9 @@ def _shipped_clip_transform():
 
 def _through_ocio(x):
     """XYZ through the shipped OCIO clip transform (sRGB), as float64 display RGB."""
-    return ocio_ops.apply(_shipped_clip_transform(),
-                          np.asarray(x, dtype=np.float64)).astype(np.float64)
+    return ocio_ops.apply(_shipped_clip_transform(), np.asarray(x, dtype=np.float64)).astype(
+        np.float64
+    )
 
 
 def _ocio_limit_inputs(sign):
@@ -456,9 +619,14 @@ def _ocio_limit_check(sign, hue):
         xyz = out @ Minv.T
         de = colorimetry.delta_E2000(xyz, clip.clip_XYZ(_ocio_limit_inputs(sign)))
         dY = np.abs(xyz[:, 1] - 0.5).max()
-        ok = bool(np.all(np.isfinite(out)) and out.min() >= 0 and out.max() <= 1
-                  and (de.max() < 5 if hue else dY <= 1e-3))
+        ok = bool(
+            np.all(np.isfinite(out))
+            and out.min() >= 0
+            and out.max() <= 1
+            and (de.max() < 5 if hue else dY <= 1e-3)
+        )
         return ok, f"ΔE2000 {', '.join(fmt(float(v)) for v in de)}, |ΔY| {fmt(float(dY))}"
+
     return check
 
 
@@ -476,10 +644,19 @@ def ocio_clip_rows(W=None) -> list[Row]:
         Black and white, +X and −X at 1e30 and infinity, NaN components.
     """
     W = colorimetry.white_XYZ("sRGB") if W is None else np.asarray(W, dtype=np.float64)
-    bw_in = np.array([[-0.1, -0.2, -0.1], [0.0, 0.0, 0.0], 2 * W, [0.5, 1.5, 0.5],
-                      [0.3, np.inf, 0.3], [0.3, -np.inf, 0.3]])
-    bw_expected = np.array([[0, 0, 0], [0, 0, 0], [1, 1, 1], [1, 1, 1], [1, 1, 1], [0, 0, 0]],
-                           float)
+    bw_in = np.array(
+        [
+            [-0.1, -0.2, -0.1],
+            [0.0, 0.0, 0.0],
+            2 * W,
+            [0.5, 1.5, 0.5],
+            [0.3, np.inf, 0.3],
+            [0.3, -np.inf, 0.3],
+        ]
+    )
+    bw_expected = np.array(
+        [[0, 0, 0], [0, 0, 0], [1, 1, 1], [1, 1, 1], [1, 1, 1], [0, 0, 0]], float
+    )
 
     def bw_check(m):
         err = float(np.abs(m["RGB"] - bw_expected).max())
@@ -489,25 +666,48 @@ def ocio_clip_rows(W=None) -> list[Row]:
 
     def nan_check(m):
         out = m["RGB"]
-        return (bool(np.all(np.isfinite(out)) and out.min() >= 0 and out.max() <= 1),
-                f"{np.round(out, 3).tolist()}")
+        return (
+            bool(np.all(np.isfinite(out)) and out.min() >= 0 and out.max() <= 1),
+            f"{np.round(out, 3).tolist()}",
+        )
 
-    rows = [Row("OCIO clip_transform (shipped LUT): negative, zero, 2·white, Y > 1, Y = ±Inf",
-                "RGB black, black, white, white, white, black (|Δ| ≤ 1e-3)",
-                lambda: {"RGB": _through_ocio(bw_in)}, bw_check, "test_stability_row")]
+    rows = [
+        Row(
+            "OCIO clip_transform (shipped LUT): negative, zero, 2·white, Y > 1, Y = ±Inf",
+            "RGB black, black, white, white, white, black (|Δ| ≤ 1e-3)",
+            lambda: {"RGB": _through_ocio(bw_in)},
+            bw_check,
+            "test_stability_row",
+        )
+    ]
     # +X: an imaginary colour redder than AP0, outside the black pass's chart (clamped to
     # its edge: Y kept, hue approximate); -X: clamped to X = 0 first
-    for sign, test, hue in ((1.0, "test_stability_row", False),
-                            (-1.0, "test_ocio_clip_negative_infinite_component", True)):
+    for sign, test, hue in (
+        (1.0, "test_stability_row", False),
+        (-1.0, "test_ocio_clip_negative_infinite_component", True),
+    ):
         s = "+" if sign > 0 else "−"
-        rows.append(Row(
-            f"OCIO clip_transform: X = {s}1e30, {s}Inf (Y = 0.5)",
-            "finite, in gamut, " + ("ΔE2000 < 5 from the analytic clip's limit" if hue
-                                    else "Y kept within 1e-3 (outside the chart: hue approximate)"),
-            (lambda sign: lambda: {"RGB": _through_ocio(_ocio_limit_inputs(sign))})(sign),  # noqa: B023
-            _ocio_limit_check(sign, hue), test))
-    rows.append(Row("OCIO clip_transform: NaN components",
-                    "finite and in gamut (the transform's documented policy: NaN → finite)",
-                    lambda: {"RGB": _through_ocio([[np.nan, 0.5, 0.5], [0.5, np.nan, 0.5]])},
-                    nan_check, "test_ocio_clip_nan_is_finite"))
+        rows.append(
+            Row(
+                f"OCIO clip_transform: X = {s}1e30, {s}Inf (Y = 0.5)",
+                "finite, in gamut, "
+                + (
+                    "ΔE2000 < 5 from the analytic clip's limit"
+                    if hue
+                    else "Y kept within 1e-3 (outside the chart: hue approximate)"
+                ),
+                (lambda sign: lambda: {"RGB": _through_ocio(_ocio_limit_inputs(sign))})(sign),  # noqa: B023
+                _ocio_limit_check(sign, hue),
+                test,
+            )
+        )
+    rows.append(
+        Row(
+            "OCIO clip_transform: NaN components",
+            "finite and in gamut (the transform's documented policy: NaN → finite)",
+            lambda: {"RGB": _through_ocio([[np.nan, 0.5, 0.5], [0.5, np.nan, 0.5]])},
+            nan_check,
+            "test_ocio_clip_nan_is_finite",
+        )
+    )
     return rows

@@ -98,9 +98,9 @@ def memoize(maxsize: int = 128, *, forget=None):
     ``forget``: a callable that removes the function's persistent entries (see
     :func:`clear`).
     """
+
     def decorate(function):
-        memo = Memo(function, maxsize, f"{function.__module__}.{function.__qualname__}",
-                    forget)
+        memo = Memo(function, maxsize, f"{function.__module__}.{function.__qualname__}", forget)
         with _STORE_LOCK:
             _STORE[memo.name] = memo
         return memo
@@ -131,8 +131,11 @@ def entries(prefix: str = "") -> dict:
     """``{name: keys}`` of the memos whose name starts with ``prefix`` and that hold
     at least one value (e.g. ``entries("ocio_thinfilm.lut.")``: the tables and clip
     LUTs computed in this process and still cached)."""
-    return {name: memo.keys() for name, memo in _memos().items()
-            if name.startswith(prefix) and memo.keys()}
+    return {
+        name: memo.keys()
+        for name, memo in _memos().items()
+        if name.startswith(prefix) and memo.keys()
+    }
 
 
 def names() -> tuple:

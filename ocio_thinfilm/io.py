@@ -43,11 +43,25 @@ import threading
 from pathlib import Path
 from typing import Any
 
-__all__ = ["UsageError", "ParameterError", "MARKER", "TMP_PREFIX", "Transaction", "transaction",
-           "atomic_file",
-           "atomic_directory", "claim_directory", "check_writable", "check_output_file",
-           "clean_stale", "is_stdout",
-           "write_bytes", "write_image", "read_image", "deferred_signals"]
+__all__ = [
+    "UsageError",
+    "ParameterError",
+    "MARKER",
+    "TMP_PREFIX",
+    "Transaction",
+    "transaction",
+    "atomic_file",
+    "atomic_directory",
+    "claim_directory",
+    "check_writable",
+    "check_output_file",
+    "clean_stale",
+    "is_stdout",
+    "write_bytes",
+    "write_image",
+    "read_image",
+    "deferred_signals",
+]
 
 #: Prefix of every temporary file or directory this package creates.
 TMP_PREFIX = ".ocio-thinfilm-tmp-"
@@ -90,7 +104,7 @@ def _start_time(pid: int) -> str:
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             data = f.read()
-        return data[data.rindex(b")") + 2:].split()[19].decode()
+        return data[data.rindex(b")") + 2 :].split()[19].decode()
     except (OSError, ValueError, IndexError):
         return ""
 
@@ -234,16 +248,18 @@ def write_bytes(path, data: bytes) -> None:
     os.close(fd)
 
 
-_SIGNALS = tuple(getattr(signal, s) for s in ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT")
-                 if hasattr(signal, s))
+_SIGNALS = tuple(
+    getattr(signal, s) for s in ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT") if hasattr(signal, s)
+)
 
 
 @contextlib.contextmanager
 def deferred_signals():
     """Hold SIGINT/SIGTERM/SIGHUP/SIGQUIT back for the duration (main thread only):
     the renames of a commit run to the end; a pending signal is delivered after."""
-    if threading.current_thread() is not threading.main_thread() \
-            or not hasattr(signal, "pthread_sigmask"):
+    if threading.current_thread() is not threading.main_thread() or not hasattr(
+        signal, "pthread_sigmask"
+    ):
         yield
         return
     old = signal.pthread_sigmask(signal.SIG_BLOCK, _SIGNALS)
@@ -262,8 +278,9 @@ def check_xml(path, name=None) -> None:
         for _ in ET.iterparse(path, events=("end",)):
             pass
     except ET.ParseError as error:
-        raise OSError(f"cannot write {name or path}: incomplete file ({error}); "
-                      "disk full?") from None
+        raise OSError(
+            f"cannot write {name or path}: incomplete file ({error}); disk full?"
+        ) from None
 
 
 def _cannot_write(dest, error: OSError) -> OSError:
@@ -272,8 +289,11 @@ def _cannot_write(dest, error: OSError) -> OSError:
     if text.startswith("cannot write"):
         return error
     reason = error.strerror or text
-    return OSError(error.errno, f"cannot write {dest}: {reason}") if error.errno \
+    return (
+        OSError(error.errno, f"cannot write {dest}: {reason}")
+        if error.errno
         else OSError(f"cannot write {dest}: {reason}")
+    )
 
 
 #: Checks run on a staged file before it is committed, by suffix.
@@ -299,8 +319,11 @@ def _fd_alias(p: Path):
     m = _FD_ALIAS.fullmatch(os.path.abspath(p))
     if not m:
         return None
-    fd = {"stdin": 0, "stdout": 1, "stderr": 2}[m.group(1)] if m.group(1) \
+    fd = (
+        {"stdin": 0, "stdout": 1, "stderr": 2}[m.group(1)]
+        if m.group(1)
         else int(m.group(2) or m.group(3))
+    )
     try:
         os.fstat(fd)
     except OSError:
@@ -316,8 +339,7 @@ def _via_proc(p: Path) -> bool:
             return True
         if not os.path.islink(current):
             return False
-        current = os.path.normpath(os.path.join(os.path.dirname(current),
-                                                os.readlink(current)))
+        current = os.path.normpath(os.path.join(os.path.dirname(current), os.readlink(current)))
     return False
 
 
@@ -328,8 +350,11 @@ def is_stdout(path) -> bool:
         a, b = os.stat(path), os.fstat(1)
     except (OSError, ValueError):
         return False
-    return _fd_alias(Path(path)) == 1 or (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino) and \
-        not stat.S_ISCHR(a.st_mode)
+    return (
+        _fd_alias(Path(path)) == 1
+        or (a.st_dev, a.st_ino) == (b.st_dev, b.st_ino)
+        and not stat.S_ISCHR(a.st_mode)
+    )
 
 
 def _destination(path) -> tuple[str, Path]:
@@ -460,8 +485,11 @@ class Transaction:
             except OSError as error:
                 raise _cannot_write(e.dest, error) from None
         for claim, stage in self._dirs:
-            files = sorted(p.relative_to(stage).as_posix() for p in stage.rglob("*")
-                           if p.is_file() or p.is_symlink())
+            files = sorted(
+                p.relative_to(stage).as_posix()
+                for p in stage.rglob("*")
+                if p.is_file() or p.is_symlink()
+            )
             for rel in files:
                 if not (stage / rel).is_file():
                     raise OSError(f"cannot write {claim.path / rel}: not a regular file")
@@ -472,10 +500,16 @@ class Transaction:
                     _fsync_file(stage / rel)
                 except OSError as error:
                     raise _cannot_write(target, error) from None
-                if claim.exists and rel not in claim.owned and (
-                        target.exists() or target.is_symlink()):
-                    raise ParameterError(claim.parameter, f" {claim.path}: {rel} exists and was "
-                                         "not written by ocio-thinfilm; not replacing it")
+                if (
+                    claim.exists
+                    and rel not in claim.owned
+                    and (target.exists() or target.is_symlink())
+                ):
+                    raise ParameterError(
+                        claim.parameter,
+                        f" {claim.path}: {rel} exists and was "
+                        "not written by ocio-thinfilm; not replacing it",
+                    )
                 if claim.exists and (target.is_dir() and not target.is_symlink()):
                     raise ParameterError(claim.parameter, f" {claim.path}: {rel} is a directory")
             plans.append((claim, stage, files))
@@ -628,9 +662,12 @@ def claim_directory(path, *, parameter: str = "out", legacy=None, last=()) -> Cl
     else:
         owned = legacy(p) if legacy else None
         if owned is None:
-            raise ParameterError(parameter, f" {p}: directory is not empty and was not written "
-                                            f"by ocio-thinfilm (no {MARKER}); give a new or "
-                                            "empty directory")
+            raise ParameterError(
+                parameter,
+                f" {p}: directory is not empty and was not written "
+                f"by ocio-thinfilm (no {MARKER}); give a new or "
+                "empty directory",
+            )
     return Claim(p, True, set(owned), parameter, last)
 
 
@@ -661,8 +698,9 @@ def _commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> Non
             claim.exists = True  # created meanwhile: fall back to file-by-file
             names = [n for n in os.listdir(claim.path) if not n.startswith(TMP_PREFIX)]
             if names:
-                raise ParameterError(claim.parameter, f" {claim.path}: appeared while writing; "
-                                                      "nothing replaced") from None
+                raise ParameterError(
+                    claim.parameter, f" {claim.path}: appeared while writing; nothing replaced"
+                ) from None
             (stage / MARKER).unlink()
     import fcntl
 
@@ -756,8 +794,14 @@ def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None
     """
     if tx is None:
         with transaction() as own:
-            return write_image(path, pixels, channel_names=channel_names, dtype=dtype,
-                               attributes=attributes, tx=own)
+            return write_image(
+                path,
+                pixels,
+                channel_names=channel_names,
+                dtype=dtype,
+                attributes=attributes,
+                tx=own,
+            )
     import numpy as np
     import OpenImageIO as oiio
 
@@ -806,19 +850,26 @@ def _check_image_file(tmp, path, shape) -> None:
     h, w, c = shape
     inp = oiio.ImageInput.open(str(tmp))
     if inp is None:
-        raise OSError(f"cannot write {path}: the written file does not read back "
-                      f"({(oiio.geterror() or 'unreadable').strip().splitlines()[0]}); "
-                      "disk full?")
+        raise OSError(
+            f"cannot write {path}: the written file does not read back "
+            f"({(oiio.geterror() or 'unreadable').strip().splitlines()[0]}); "
+            "disk full?"
+        )
     try:
         spec = inp.spec()
-        data = inp.read_image(0, 0, 0, c, "uint8") if (spec.width, spec.height,
-                                                          spec.nchannels) == (w, h, c) else None
+        data = (
+            inp.read_image(0, 0, 0, c, "uint8")
+            if (spec.width, spec.height, spec.nchannels) == (w, h, c)
+            else None
+        )
         problem = inp.geterror()
     finally:
         inp.close()
     if data is None or problem or _np_shape(data) != (h, w, c):
-        raise OSError(f"cannot write {path}: the written file is incomplete "
-                      f"({(problem or 'wrong size').strip().splitlines()[0]}); disk full?")
+        raise OSError(
+            f"cannot write {path}: the written file is incomplete "
+            f"({(problem or 'wrong size').strip().splitlines()[0]}); disk full?"
+        )
 
 
 def _np_shape(a):

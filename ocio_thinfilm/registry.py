@@ -19,12 +19,33 @@ from dataclasses import dataclass
 
 from ocio_thinfilm.colour import colorimetry
 
-__all__ = ["Display", "HDRDisplay", "View", "ThinFilmSpace", "DISPLAY_LIST",
-           "HDR_DISPLAY_LIST", "VIEW_LIST", "THIN_FILM_LIST", "DISPLAYS", "HDR_DISPLAYS",
-           "ALL_DISPLAYS", "VIEWS", "THIN_FILM_SPACES", "display", "hdr_display", "is_hdr",
-           "gamut_of", "HDR_REFERENCE_WHITE", "OCIO_XYZ_UNIT", "thin_film_space_for_kind",
-           "CLIP_FILE_STEM", "clip_lut_stem", "COMPRESS_FILE_STEM", "compress_lut_stem",
-           "validate"]
+__all__ = [
+    "Display",
+    "HDRDisplay",
+    "View",
+    "ThinFilmSpace",
+    "DISPLAY_LIST",
+    "HDR_DISPLAY_LIST",
+    "VIEW_LIST",
+    "THIN_FILM_LIST",
+    "DISPLAYS",
+    "HDR_DISPLAYS",
+    "ALL_DISPLAYS",
+    "VIEWS",
+    "THIN_FILM_SPACES",
+    "display",
+    "hdr_display",
+    "is_hdr",
+    "gamut_of",
+    "HDR_REFERENCE_WHITE",
+    "OCIO_XYZ_UNIT",
+    "thin_film_space_for_kind",
+    "CLIP_FILE_STEM",
+    "clip_lut_stem",
+    "COMPRESS_FILE_STEM",
+    "compress_lut_stem",
+    "validate",
+]
 
 
 @dataclass(frozen=True)
@@ -124,62 +145,122 @@ class ThinFilmSpace:
 _SRGB_PIECEWISE = ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055)
 
 DISPLAY_LIST = (
-    Display("sRGB", "sRGB", "sRGB - Display",
-            "sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, sRGB piecewise encoding",
-            _SRGB_PIECEWISE, "sRGB", "srgb_rec709_display"),
-    Display("Display P3", "Display P3", "Display P3 - Display",
-            "Apple Display P3: P3 primaries, D65, sRGB piecewise encoding",
-            _SRGB_PIECEWISE, "DisplayP3", "srgb_p3d65_display"),
-    Display("Rec.2020", "Rec.2020", "Rec.1886 Rec.2020 - Display",
-            "ITU-R BT.2020 primaries, D65, BT.1886 gamma 2.4 encoding",
-            ("BT.1886 gamma 2.4", 2.4, None), "Rec2020", "g24_rec2020_display"),
+    Display(
+        "sRGB",
+        "sRGB",
+        "sRGB - Display",
+        "sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, sRGB piecewise encoding",
+        _SRGB_PIECEWISE,
+        "sRGB",
+        "srgb_rec709_display",
+    ),
+    Display(
+        "Display P3",
+        "Display P3",
+        "Display P3 - Display",
+        "Apple Display P3: P3 primaries, D65, sRGB piecewise encoding",
+        _SRGB_PIECEWISE,
+        "DisplayP3",
+        "srgb_p3d65_display",
+    ),
+    Display(
+        "Rec.2020",
+        "Rec.2020",
+        "Rec.1886 Rec.2020 - Display",
+        "ITU-R BT.2020 primaries, D65, BT.1886 gamma 2.4 encoding",
+        ("BT.1886 gamma 2.4", 2.4, None),
+        "Rec2020",
+        "g24_rec2020_display",
+    ),
 )
 
 HDR_DISPLAY_LIST = (
-    HDRDisplay("Rec.2100-PQ", "Rec.2020", "Rec.2100-PQ - Display",
-               "ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 encoding, "
-               "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
-               "PQ", "DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ", 1000.0, "Rec2100PQ",
-               "pq_rec2020_display"),
-    HDRDisplay("Rec.2100-HLG", "Rec.2020", "Rec.2100-HLG - Display",
-               "ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the BT.2100 "
-               "OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
-               "reference white)",
-               "HLG", "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit", 1000.0,
-               "Rec2100HLG", "hlg_rec2020_display"),
-    HDRDisplay("P3-D65 PQ", "Display P3", "ST2084-P3-D65 - Display",
-               "P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, 1000 cd/m2 "
-               "peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
-               "PQ", "DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65", 1000.0, "P3D65PQ",
-               "pq_p3d65_display"),
+    HDRDisplay(
+        "Rec.2100-PQ",
+        "Rec.2020",
+        "Rec.2100-PQ - Display",
+        "ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 encoding, "
+        "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
+        "PQ",
+        "DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ",
+        1000.0,
+        "Rec2100PQ",
+        "pq_rec2020_display",
+    ),
+    HDRDisplay(
+        "Rec.2100-HLG",
+        "Rec.2020",
+        "Rec.2100-HLG - Display",
+        "ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the BT.2100 "
+        "OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
+        "reference white)",
+        "HLG",
+        "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit",
+        1000.0,
+        "Rec2100HLG",
+        "hlg_rec2020_display",
+    ),
+    HDRDisplay(
+        "P3-D65 PQ",
+        "Display P3",
+        "ST2084-P3-D65 - Display",
+        "P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, 1000 cd/m2 "
+        "peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
+        "PQ",
+        "DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65",
+        1000.0,
+        "P3D65PQ",
+        "pq_p3d65_display",
+    ),
 )
 
 VIEW_LIST = (
-    View("Constant-Lightness Clip",
-         "Smits & Meyer 1990 Section 3.2: display-linear RGB clipped at constant luminance "
-         "Y towards the display's neutral axis (two 3D LUTs, faces through black then "
-         "through white); scene-linear 1.0 is display white, above white gives white, no "
-         "tone mapping."),
-    View("Constant-Lightness Compress",
-         "Soft constant-lightness gamut compression: along the same ray as the clip "
-         "(towards the grey of the same luminance Y, which it keeps exactly), colours "
-         "beyond 0.8 of the distance to the gamut boundary are compressed by the ACES 1.3 "
-         "power curve so that 1.3 boundary distances reach the boundary; further out, the "
-         "clip. Smooth where the clip is flat (four 3D LUTs, two of them the clip's)."),
+    View(
+        "Constant-Lightness Clip",
+        "Smits & Meyer 1990 Section 3.2: display-linear RGB clipped at constant luminance "
+        "Y towards the display's neutral axis (two 3D LUTs, faces through black then "
+        "through white); scene-linear 1.0 is display white, above white gives white, no "
+        "tone mapping.",
+    ),
+    View(
+        "Constant-Lightness Compress",
+        "Soft constant-lightness gamut compression: along the same ray as the clip "
+        "(towards the grey of the same luminance Y, which it keeps exactly), colours "
+        "beyond 0.8 of the distance to the gamut boundary are compressed by the ACES 1.3 "
+        "power curve so that 1.3 boundary distances reach the boundary; further out, the "
+        "clip. Smooth where the clip is flat (four 3D LUTs, two of them the clip's).",
+    ),
     View("Channel Clamp", "Baseline: display-linear RGB clamped per channel to [0, 1]."),
-    View("ACES Gamut Compression",
-         "Baseline: OCIO's ACES 1.3 reference gamut compression (ACES_GamutComp13) in "
-         "display-linear RGB, then a clamp to [0, 1]."),
+    View(
+        "ACES Gamut Compression",
+        "Baseline: OCIO's ACES 1.3 reference gamut compression (ACES_GamutComp13) in "
+        "display-linear RGB, then a clamp to [0, 1].",
+    ),
     View("Raw", raw=True),
 )
 
 THIN_FILM_LIST = (
-    ThinFilmSpace("Thin Film Phase-Change Thickness", "film", ("phase-change",),
-                  "ThinFilm_PhaseChange_Thickness", "ThinFilm_PhaseChange"),
-    ThinFilmSpace("Thin Film No-Phase-Change Thickness", "film", ("no-phase-change",),
-                  "ThinFilm_NoPhaseChange_Thickness", "ThinFilm_NoPhaseChange"),
-    ThinFilmSpace("Thin Film Morpho Iridescence", "morpho", (), "ThinFilm_Morpho_Iridescence",
-                  "ThinFilm_Morpho"),
+    ThinFilmSpace(
+        "Thin Film Phase-Change Thickness",
+        "film",
+        ("phase-change",),
+        "ThinFilm_PhaseChange_Thickness",
+        "ThinFilm_PhaseChange",
+    ),
+    ThinFilmSpace(
+        "Thin Film No-Phase-Change Thickness",
+        "film",
+        ("no-phase-change",),
+        "ThinFilm_NoPhaseChange_Thickness",
+        "ThinFilm_NoPhaseChange",
+    ),
+    ThinFilmSpace(
+        "Thin Film Morpho Iridescence",
+        "morpho",
+        (),
+        "ThinFilm_Morpho_Iridescence",
+        "ThinFilm_Morpho",
+    ),
 )
 
 #: Names, in order (DISPLAYS: the SDR displays, the gamuts the clip is baked for).
@@ -247,8 +328,9 @@ def clip_lut_stem(name: str, white: bool = False) -> str:
     >>> clip_lut_stem("Display P3", white=True)
     'ConstantLightnessClip_DisplayP3_WhiteFaces'
     """
-    return (f"{CLIP_FILE_STEM}_{display(name).lut_stem}"
-            + ("_WhiteFaces" if white else "_BlackFaces"))
+    return f"{CLIP_FILE_STEM}_{display(name).lut_stem}" + (
+        "_WhiteFaces" if white else "_BlackFaces"
+    )
 
 
 #: File stem of the compression's own LUT files (the config's squeezes).
@@ -262,8 +344,9 @@ def compress_lut_stem(name: str, white: bool = False) -> str:
     >>> compress_lut_stem("sRGB")
     'ConstantLightnessCompress_sRGB_BlackFaces'
     """
-    return (f"{COMPRESS_FILE_STEM}_{display(name).lut_stem}"
-            + ("_WhiteFaces" if white else "_BlackFaces"))
+    return f"{COMPRESS_FILE_STEM}_{display(name).lut_stem}" + (
+        "_WhiteFaces" if white else "_BlackFaces"
+    )
 
 
 def validate() -> None:
@@ -273,13 +356,18 @@ def validate() -> None:
     the display's name, so a display's name must equal its colorimetry space."""
     import re
 
-    for kind, names in (("display", DISPLAYS + HDR_DISPLAYS), ("view", VIEWS),
-                        ("thin-film space", THIN_FILM_SPACES)):
+    for kind, names in (
+        ("display", DISPLAYS + HDR_DISPLAYS),
+        ("view", VIEWS),
+        ("thin-film space", THIN_FILM_SPACES),
+    ):
         if len(set(names)) != len(names) or not all(names):
             raise ValueError(f"registry: {kind} names must be unique and non-empty: {names}")
-    stems = ([d.lut_stem for d in DISPLAY_LIST + HDR_DISPLAY_LIST]
-             + [s.lut_stem for s in THIN_FILM_LIST]
-             + [s.file_stem for s in THIN_FILM_LIST])
+    stems = (
+        [d.lut_stem for d in DISPLAY_LIST + HDR_DISPLAY_LIST]
+        + [s.lut_stem for s in THIN_FILM_LIST]
+        + [s.file_stem for s in THIN_FILM_LIST]
+    )
     if len(set(stems)) != len(stems):
         raise ValueError(f"registry: LUT file stems must be unique: {stems}")
     for stem in stems:
@@ -287,11 +375,14 @@ def validate() -> None:
             raise ValueError(f"registry: LUT file stem {stem!r} is not file-name safe")
     for d in DISPLAY_LIST:
         if d.colorimetry not in colorimetry.RGB_SPACES:
-            raise ValueError(f"registry: display {d.name!r}: unknown colorimetry space "
-                             f"{d.colorimetry!r}")
+            raise ValueError(
+                f"registry: display {d.name!r}: unknown colorimetry space {d.colorimetry!r}"
+            )
         if d.colorimetry != d.name:
-            raise ValueError(f"registry: display {d.name!r}: the clip looks its matrix up by "
-                             f"name, so its colorimetry space must be {d.name!r}")
+            raise ValueError(
+                f"registry: display {d.name!r}: the clip looks its matrix up by "
+                f"name, so its colorimetry space must be {d.name!r}"
+            )
         text, gamma, offset = d.encoding
         if not text or not gamma > 0 or not (offset is None or 0 < offset < 1):
             raise ValueError(f"registry: display {d.name!r}: bad encoding {d.encoding!r}")
@@ -301,9 +392,13 @@ def validate() -> None:
     if len(set(spaces)) != len(spaces):
         raise ValueError(f"registry: display colour spaces must be unique: {spaces}")
     for h in HDR_DISPLAY_LIST:
-        if (h.gamut not in DISPLAYS or h.transfer not in ("PQ", "HLG")
-                or not h.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
-                or not h.peak > HDR_REFERENCE_WHITE or not h.png_colorspace):
+        if (
+            h.gamut not in DISPLAYS
+            or h.transfer not in ("PQ", "HLG")
+            or not h.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
+            or not h.peak > HDR_REFERENCE_WHITE
+            or not h.png_colorspace
+        ):
             raise ValueError(f"registry: HDR display {h.name!r}: bad entry {h!r}")
     if [v.name for v in VIEW_LIST if v.raw] != [VIEW_LIST[-1].name]:
         raise ValueError("registry: exactly one raw view, listed last")
@@ -313,12 +408,14 @@ def validate() -> None:
     if len(set(kinds)) != len(kinds):
         raise ValueError(f"registry: one thin-film space per table kind: {kinds}")
     for s in THIN_FILM_LIST:
-        if s.table not in ("film", "morpho") or (
-                s.table == "film" and (len(s.args) != 1
-                                       or s.args[0] not in colorimetry.FILM_KINDS)) or (
-                s.table == "morpho" and s.args):
-            raise ValueError(f"registry: thin-film space {s.name!r}: bad table "
-                             f"{s.table!r} {s.args!r}")
+        if (
+            s.table not in ("film", "morpho")
+            or (s.table == "film" and (len(s.args) != 1 or s.args[0] not in colorimetry.FILM_KINDS))
+            or (s.table == "morpho" and s.args)
+        ):
+            raise ValueError(
+                f"registry: thin-film space {s.name!r}: bad table {s.table!r} {s.args!r}"
+            )
 
 
 validate()

@@ -66,8 +66,9 @@ def colour_thin_film_R(n_stack, thickness, wavelengths, theta):
     """
     import colour
 
-    R, _ = colour.phenomena.thin_film_tmm(n_stack, np.atleast_1d(thickness),
-                                          np.atleast_1d(wavelengths), np.atleast_1d(theta))
+    R, _ = colour.phenomena.thin_film_tmm(
+        n_stack, np.atleast_1d(thickness), np.atleast_1d(wavelengths), np.atleast_1d(theta)
+    )
     return np.transpose(R.mean(axis=-1), (1, 2, 0))
 
 
@@ -75,8 +76,9 @@ def colour_multilayer_R(n_stack, thicknesses, wavelengths, theta):
     """colour-science's ``multilayer_tmm``, unpolarised, shape (A, W)."""
     import colour
 
-    R, _ = colour.phenomena.multilayer_tmm(n_stack, thicknesses, np.atleast_1d(wavelengths),
-                                           np.atleast_1d(theta))
+    R, _ = colour.phenomena.multilayer_tmm(
+        n_stack, thicknesses, np.atleast_1d(wavelengths), np.atleast_1d(theta)
+    )
     return np.transpose(R.mean(axis=-1)[:, :, 0], (1, 0))
 
 

@@ -32,46 +32,53 @@ def test_single_wavelength_is_a_point_evaluation():
     """One sample: XYZ = R(l) cmf(l) / ybar(l) (the perfect reflector has Y = 1; the
     illuminant cancels)."""
     cmf = _cmf(550)
-    np.testing.assert_allclose(colorimetry.spectral_weights([550.0])[0], cmf / cmf[1],
-                               rtol=1e-6)
+    np.testing.assert_allclose(colorimetry.spectral_weights([550.0])[0], cmf / cmf[1], rtol=1e-6)
     R = np.sin(2 * np.pi * 300.0 / 550.0) ** 2
-    np.testing.assert_allclose(colorimetry.film_XYZ(300.0, wavelengths=[550.0],
-                                                    band_limited=False),
-                               R * cmf / cmf[1], rtol=1e-6)
+    np.testing.assert_allclose(
+        colorimetry.film_XYZ(300.0, wavelengths=[550.0], band_limited=False),
+        R * cmf / cmf[1],
+        rtol=1e-6,
+    )
 
 
-@pytest.mark.parametrize("call,name", [
-    (lambda: colorimetry.film_XYZ(300, step=1000), "step"),
-    (lambda: colorimetry.film_XYZ(300, step=0), "step"),
-    (lambda: colorimetry.film_XYZ(300, step=np.nan), "step"),
-    (lambda: sampling.wavelength_grid(stop=np.inf), "stop"),
-    (lambda: sampling.wavelength_grid(start=np.nan), "start"),
-    (lambda: sampling.wavelength_grid(step=3e-5), "samples"),  # 14 million > the limit
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], np.inf), "layers"),
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], np.nan), "layers"),
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], 200_000), "layers"),
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], 2.5), "layers"),
-    (lambda: spectra.multilayer_reflectance(100.0, [500.0], True), "layers"),
-    (lambda: exact.airy_reflectance(100.0, [500.0], 1.33, harmonics=np.inf), "harmonics"),
-    (lambda: colorimetry.spectral_locus_XYZ(Y=np.nan), "Y"),
-    (lambda: colorimetry.spectral_locus_XYZ(Y=-1.0), "Y"),
-    (lambda: colorimetry.spectral_locus_XYZ(Y=np.inf), "Y"),
-])
+@pytest.mark.parametrize(
+    "call,name",
+    [
+        (lambda: colorimetry.film_XYZ(300, step=1000), "step"),
+        (lambda: colorimetry.film_XYZ(300, step=0), "step"),
+        (lambda: colorimetry.film_XYZ(300, step=np.nan), "step"),
+        (lambda: sampling.wavelength_grid(stop=np.inf), "stop"),
+        (lambda: sampling.wavelength_grid(start=np.nan), "start"),
+        (lambda: sampling.wavelength_grid(step=3e-5), "samples"),  # 14 million > the limit
+        (lambda: spectra.multilayer_reflectance(100.0, [500.0], np.inf), "layers"),
+        (lambda: spectra.multilayer_reflectance(100.0, [500.0], np.nan), "layers"),
+        (lambda: spectra.multilayer_reflectance(100.0, [500.0], 200_000), "layers"),
+        (lambda: spectra.multilayer_reflectance(100.0, [500.0], 2.5), "layers"),
+        (lambda: spectra.multilayer_reflectance(100.0, [500.0], True), "layers"),
+        (lambda: exact.airy_reflectance(100.0, [500.0], 1.33, harmonics=np.inf), "harmonics"),
+        (lambda: colorimetry.spectral_locus_XYZ(Y=np.nan), "Y"),
+        (lambda: colorimetry.spectral_locus_XYZ(Y=-1.0), "Y"),
+        (lambda: colorimetry.spectral_locus_XYZ(Y=np.inf), "Y"),
+    ],
+)
 def test_bad_parameters_raise_value_error_naming_them(call, name):
     with pytest.raises(ValueError, match=name):
         call()
 
 
-@pytest.mark.parametrize("call, name", [
-    (lambda: spectra.optical_thickness(300.0, "1.33"), "n"),
-    (lambda: spectra.optical_thickness("300", 1.33), "thickness"),
-    (lambda: spectra.two_beam_reflectance(100.0, ["500"]), "wavelengths"),
-    (lambda: spectra.two_beam_reflectance(None, [500.0]), "optical_thickness"),
-    (lambda: sampling.wavelength_grid(step="5"), "step"),
-    (lambda: sampling.wavelength_grid(start=None), "start"),
-    (lambda: colorimetry.film_XYZ([100.0], step="5"), "step"),
-    (lambda: colorimetry.spectral_locus_XYZ(Y="1"), "Y"),
-])
+@pytest.mark.parametrize(
+    "call, name",
+    [
+        (lambda: spectra.optical_thickness(300.0, "1.33"), "n"),
+        (lambda: spectra.optical_thickness("300", 1.33), "thickness"),
+        (lambda: spectra.two_beam_reflectance(100.0, ["500"]), "wavelengths"),
+        (lambda: spectra.two_beam_reflectance(None, [500.0]), "optical_thickness"),
+        (lambda: sampling.wavelength_grid(step="5"), "step"),
+        (lambda: sampling.wavelength_grid(start=None), "start"),
+        (lambda: colorimetry.film_XYZ([100.0], step="5"), "step"),
+        (lambda: colorimetry.spectral_locus_XYZ(Y="1"), "Y"),
+    ],
+)
 def test_numbers_of_the_wrong_type_raise_type_error_naming_them(call, name):
     """A string is refused, not parsed (``n='1.33'`` used to return numbers)."""
     with pytest.raises(TypeError, match=rf"^{name} must be a number"):
@@ -111,24 +118,33 @@ def test_reflectances_stay_within_0_and_1():
 def _ocio_aces(rgb):
     import PyOpenColorIO as ocio
 
-    t = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
-                                    list(clip.ACES_GAMUT_COMP13_PARAMS))
+    t = ocio.FixedFunctionTransform(
+        ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, list(clip.ACES_GAMUT_COMP13_PARAMS)
+    )
     px = np.array(rgb, dtype=np.float32).reshape(-1, 3)
     ocio.Config.CreateRaw().getProcessor(t).getDefaultCPUProcessor().applyRGB(px)
     return np.clip(px, 0.0, 1.0)
 
 
 def test_aces_gamut_compress_huge_components_and_no_mutation():
-    huge = np.array([[-1e30, 0.5, 0.5], [-3e38, 0.2, 0.9], [0.4, -1e30, -1e30],
-                     [-np.inf, 0.5, 0.5]], dtype=np.float32)
+    huge = np.array(
+        [[-1e30, 0.5, 0.5], [-3e38, 0.2, 0.9], [0.4, -1e30, -1e30], [-np.inf, 0.5, 0.5]],
+        dtype=np.float32,
+    )
     keep = huge.copy()
     out = clip.aces_gamut_compress_RGB(huge)
     assert np.array_equal(huge, keep, equal_nan=True)  # not modified in place
     assert out.dtype == np.float32 and np.all(np.isfinite(out))
     # beyond a distance of 1e6 the compression curve has reached its limit: the same
     # colours with -1e6 * max instead, through OCIO directly
-    moderate = np.array([[-1e6 * 0.5, 0.5, 0.5], [-1e6 * 0.9, 0.2, 0.9],
-                         [0.4, -1e6 * 0.4, -1e6 * 0.4], [-1e6 * 0.5, 0.5, 0.5]])
+    moderate = np.array(
+        [
+            [-1e6 * 0.5, 0.5, 0.5],
+            [-1e6 * 0.9, 0.2, 0.9],
+            [0.4, -1e6 * 0.4, -1e6 * 0.4],
+            [-1e6 * 0.5, 0.5, 0.5],
+        ]
+    )
     np.testing.assert_allclose(out, _ocio_aces(moderate), atol=1e-6)
     # ordinary colours: exactly OCIO's result
     rng = np.random.default_rng(3)
@@ -149,23 +165,32 @@ def baked_config(tmp_path_factory):
     return ocio.Config.CreateFromFile(str(out / "config.ocio"))
 
 
-@pytest.mark.parametrize("space", ["Thin Film Phase-Change Thickness",
-                                   "Thin Film No-Phase-Change Thickness"])
-@pytest.mark.parametrize("level", ["OPTIMIZATION_NONE", "OPTIMIZATION_LOSSLESS",
-                                   "OPTIMIZATION_DEFAULT", "OPTIMIZATION_GOOD",
-                                   "OPTIMIZATION_DRAFT"])
+@pytest.mark.parametrize(
+    "space", ["Thin Film Phase-Change Thickness", "Thin Film No-Phase-Change Thickness"]
+)
+@pytest.mark.parametrize(
+    "level",
+    [
+        "OPTIMIZATION_NONE",
+        "OPTIMIZATION_LOSSLESS",
+        "OPTIMIZATION_DEFAULT",
+        "OPTIMIZATION_GOOD",
+        "OPTIMIZATION_DRAFT",
+    ],
+)
 def test_thickness_spaces_black_below_zero(baked_config, space, level):
     import colour
     import PyOpenColorIO as ocio
 
-    values = np.array([-0.5, -1.0, -1e30, -np.inf, np.nan, np.inf, 1e30, 0.0],
-                      dtype=np.float32)
+    values = np.array([-0.5, -1.0, -1e30, -np.inf, np.nan, np.inf, 1e30, 0.0], dtype=np.float32)
     cpu = baked_config.getProcessor(space, "CIE-XYZ-D65").getOptimizedCPUProcessor(
-        ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, level))
+        ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, level)
+    )
     px = np.ascontiguousarray(np.repeat(values[:, None], 3, axis=1))
     cpu.applyRGB(px)
-    white = colour.xy_to_XYZ(colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]
-                             ["D65"])  # the perfect reflector under D65, Y = 1
+    white = colour.xy_to_XYZ(
+        colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+    )  # the perfect reflector under D65, Y = 1
     np.testing.assert_allclose(px[:5], 0.0, atol=1e-6)  # negative, -inf, NaN: black
     np.testing.assert_allclose(px[5:7], np.repeat(0.5 * white[None], 2, 0), atol=2e-3)
     at_zero = np.zeros(3) if "No-Phase" not in space else white  # sin^2(0), cos^2(0)

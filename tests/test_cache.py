@@ -24,8 +24,10 @@ def _memoised_functions():
             continue
         module = importlib.import_module(info.name)
         for value in vars(module).values():
-            if isinstance(value, (functools._lru_cache_wrapper, cache.Memo)) and \
-                    value.__module__ == module.__name__:
+            if (
+                isinstance(value, (functools._lru_cache_wrapper, cache.Memo))
+                and value.__module__ == module.__name__
+            ):
                 found[f"{value.__module__}.{value.__qualname__}"] = value
     return found
 
@@ -55,9 +57,11 @@ def test_clear_empties_every_cache_and_results_do_not_change():
     assert np.array_equal(again.values, film.values)  # ... to the same values
     assert np.array_equal(tables.morpho_table(41).values, morpho.values)
     assert cache.entries("ocio_thinfilm.lut.tables.") == {
-        "ocio_thinfilm.lut.tables._film_table": (("no-phase-change", 37, tables.FILM_TMAX_UM,
-                                                  tables.FILM_T0_UM, tables.SPECTRAL_STEP),),
-        "ocio_thinfilm.lut.tables._morpho_table": ((41, tables.SPECTRAL_STEP),)}
+        "ocio_thinfilm.lut.tables._film_table": (
+            ("no-phase-change", 37, tables.FILM_TMAX_UM, tables.FILM_T0_UM, tables.SPECTRAL_STEP),
+        ),
+        "ocio_thinfilm.lut.tables._morpho_table": ((41, tables.SPECTRAL_STEP),),
+    }
 
 
 def test_colorimetry_matrices_survive_a_clear():
@@ -78,8 +82,10 @@ def test_a_memo_holds_at_most_maxsize_values_newest_kept():
     assert calls == [1, 2, 3, 2]  # 2 was the least recently used when 3 came
     assert square.keys() == ((1,), (2,))
     assert square.cache_info() == cache.CacheInfo(hits=2, misses=4, maxsize=2, currsize=2)
-    assert "test_cache.test_a_memo_holds_at_most_maxsize_values_newest_kept.<locals>.square" \
+    assert (
+        "test_cache.test_a_memo_holds_at_most_maxsize_values_newest_kept.<locals>.square"
         in " ".join(cache.names())
+    )
 
 
 def test_clear_persistent_removes_the_disk_entries_too(tmp_path, monkeypatch):
@@ -90,7 +96,7 @@ def test_clear_persistent_removes_the_disk_entries_too(tmp_path, monkeypatch):
 
     def cubed(x):
         calls.append(x)
-        return np.arange(3.0) * x ** 3
+        return np.arange(3.0) * x**3
 
     memo = colorimetry.persistent(cubed)
     memo(2.0)

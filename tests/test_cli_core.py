@@ -87,9 +87,15 @@ def test_demo_prints_the_soap_film_colour(demo_run, colour):
 
     wl = np.arange(360.0, 781.0)
     R = np.sin(2 * np.pi * 1.33 * 300.0 / wl) ** 2
-    XYZ = colour.sd_to_XYZ(colour.SpectralDistribution(R, wl),
-                           colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"],
-                           colour.SDS_ILLUMINANTS["D65"], method="Integration") / 100
+    XYZ = (
+        colour.sd_to_XYZ(
+            colour.SpectralDistribution(R, wl),
+            colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"],
+            colour.SDS_ILLUMINANTS["D65"],
+            method="Integration",
+        )
+        / 100
+    )
     np.testing.assert_allclose(printed(r"XYZ \(D65, Y_white = 1\)"), XYZ, atol=1.5e-3)
     cs = colour.RGB_COLOURSPACES["sRGB"].copy()
     cs.use_derived_transformation_matrices(True)
@@ -102,13 +108,16 @@ def test_demo_prints_the_soap_film_colour(demo_run, colour):
     assert re.search(r"sRGB-encoded\s+#[0-9A-F]{6}\b", p.stdout)
 
 
-@pytest.mark.parametrize("args,needle", [
-    (["demo", "--thickness", "-5", "--out", "x.png"], "thickness"),
-    (["demo", "--thickness", "abc"], "--thickness"),
-    (["demo", "--thickness", "nan", "--out", "x.png"], "thickness"),
-    (["no-such-command"], "no-such-command"),
-    (["demo", "--out", "/proc/forbidden/x.png"], "/proc/forbidden"),
-])
+@pytest.mark.parametrize(
+    "args,needle",
+    [
+        (["demo", "--thickness", "-5", "--out", "x.png"], "thickness"),
+        (["demo", "--thickness", "abc"], "--thickness"),
+        (["demo", "--thickness", "nan", "--out", "x.png"], "thickness"),
+        (["no-such-command"], "no-such-command"),
+        (["demo", "--out", "/proc/forbidden/x.png"], "/proc/forbidden"),
+    ],
+)
 def test_bad_arguments_exit_2_with_one_line_error(tmp_path, args, needle):
     """Reference: the CLI contract -- exit code 2, the error on one line of stderr
     (after argparse's usage line for syntax errors), naming the culprit, no

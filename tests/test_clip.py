@@ -65,7 +65,8 @@ def random_XYZ(rng, n, scale):
     mix = rng.uniform(0.0, 1.0, (k, 1))
     white = colorimetry.white_XYZ()
     near = (mix * locus[rng.integers(0, len(locus), k)] + (1 - mix) * white) * rng.uniform(
-        0.0, 1.1, (k, 1))
+        0.0, 1.1, (k, 1)
+    )
     return np.concatenate([box, heavy, spectral, near])
 
 
@@ -85,8 +86,9 @@ def test_xyz_and_rgb_forms_agree(display):
     rng = np.random.default_rng(1)
     XYZ = random_XYZ(rng, 40_000, 1.0)
     a = clip.clip_XYZ(XYZ, display)
-    b = colorimetry.RGB_to_XYZ(clip.clip_RGB(colorimetry.XYZ_to_RGB(XYZ, display), display),
-                               display)
+    b = colorimetry.RGB_to_XYZ(
+        clip.clip_RGB(colorimetry.XYZ_to_RGB(XYZ, display), display), display
+    )
     np.testing.assert_allclose(a, b, rtol=0, atol=1e-9)
 
 
@@ -96,8 +98,7 @@ def test_clip_matches_bisection_reference(display):
     rng = np.random.default_rng(2)
     XYZ = random_XYZ(rng, 20_000, 1.0)
     _, _, white = reference_matrices(display)
-    XYZ = XYZ[(XYZ[:, 1] > 1e-6) & (XYZ[:, 1] < white[1] - 1e-6)
-              & (np.abs(XYZ).max(axis=1) < 1e3)]
+    XYZ = XYZ[(XYZ[:, 1] > 1e-6) & (XYZ[:, 1] < white[1] - 1e-6) & (np.abs(XYZ).max(axis=1) < 1e3)]
     expected = reference_clip_XYZ(XYZ, display)
     np.testing.assert_allclose(clip.clip_XYZ(XYZ, display), expected, rtol=0, atol=1e-9)
 
@@ -126,9 +127,12 @@ def test_in_gamut_unchanged_bit_for_bit(dtype):
     rng = np.random.default_rng(3)
     rgb = rng.uniform(0.0, 1.0, (5000, 3)).astype(dtype)
     faces = rng.uniform(0.0, 1.0, (600, 3)).astype(dtype)
-    faces[:100, 0] = 0; faces[100:200, 1] = 1; faces[200:300, 2] = 0   # faces  # noqa: E702
-    faces[300:400, :2] = 1; faces[400:500, 1:] = 0                     # edges  # noqa: E702
-    faces[500:, :] = rng.integers(0, 2, (100, 3))                      # vertices
+    faces[:100, 0] = 0
+    faces[100:200, 1] = 1
+    faces[200:300, 2] = 0  # faces  # noqa: E702
+    faces[300:400, :2] = 1
+    faces[400:500, 1:] = 0  # edges  # noqa: E702
+    faces[500:, :] = rng.integers(0, 2, (100, 3))  # vertices
     rgb = np.concatenate([rgb, faces])
     out = clip.clip_RGB(rgb)
     assert out.dtype == dtype and np.array_equal(out, rgb)
@@ -147,16 +151,35 @@ def test_non_positive_Y_is_black_and_Y_above_white_is_white(display):
     """Reference: the issue's definition -- Y <= 0 gives black, Y >= Y_white gives
     the display white (RGB = 1), whatever X and Z are."""
     _, rgb_to_xyz, white = reference_matrices(display)
-    XYZ = np.array([[0.3, 0.0, 0.2], [-5.0, 0.0, 7.0], [0.2, -0.1, 0.4], [1e30, -1e-300, 0.0],
-                    [white[0], white[1], white[2]], [0.1, white[1], 3.0], [5.0, 2.0, -1.0],
-                    [-1e30, 1e30, 1.0]])
+    XYZ = np.array(
+        [
+            [0.3, 0.0, 0.2],
+            [-5.0, 0.0, 7.0],
+            [0.2, -0.1, 0.4],
+            [1e30, -1e-300, 0.0],
+            [white[0], white[1], white[2]],
+            [0.1, white[1], 3.0],
+            [5.0, 2.0, -1.0],
+            [-1e30, 1e30, 1.0],
+        ]
+    )
     out = clip.clip_XYZ(XYZ, display)
     assert np.all(out[:4] == 0.0)
     np.testing.assert_allclose(out[4:], np.broadcast_to(white, (4, 3)), rtol=1e-12)
     # RGB form: its own luminance Y = (RGB -> XYZ row 2) . RGB decides.
     luminance = rgb_to_xyz[1]
-    rgb = np.array([[0.0, 0.0, 0.0], [-1.0, 0.1, 0.1], [0.5, -1.0, 0.5], [-1e30, 1.0, 1.0],
-                    [1.0, 1.0, 1.0], [3.0, 1.0, 0.5], [1e30, -1.0, 2.0], [0.2, 5.0, -3.0]])
+    rgb = np.array(
+        [
+            [0.0, 0.0, 0.0],
+            [-1.0, 0.1, 0.1],
+            [0.5, -1.0, 0.5],
+            [-1e30, 1.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [3.0, 1.0, 0.5],
+            [1e30, -1.0, 2.0],
+            [0.2, 5.0, -3.0],
+        ]
+    )
     Y = rgb @ luminance
     assert np.all(Y[:4] <= 0) and np.all(Y[4:] >= luminance.sum() * (1 - 1e-15))
     out_rgb = clip.clip_RGB(rgb, display)
@@ -204,13 +227,28 @@ def test_infinities_and_huge_values_give_finite_in_gamut_colours():
     np.testing.assert_allclose(groups[:, 0], groups[:, 1], atol=1e-9)
     np.testing.assert_allclose(groups[:, 0], groups[:, 2], atol=1e-9)
     # Y itself infinite: white or black.
-    out = clip.clip_XYZ(np.array([[0.1, np.inf, 0.2], [0.1, -np.inf, 0.2],
-                                  [np.inf, np.inf, -np.inf], [1e308, 1e308, 1e308]]))
+    out = clip.clip_XYZ(
+        np.array(
+            [
+                [0.1, np.inf, 0.2],
+                [0.1, -np.inf, 0.2],
+                [np.inf, np.inf, -np.inf],
+                [1e308, 1e308, 1e308],
+            ]
+        )
+    )
     np.testing.assert_allclose(out[[0, 2, 3]], np.broadcast_to(colorimetry.white_XYZ(), (3, 3)))
     assert np.all(out[1] == 0)
     # RGB form: every channel combination of +-Inf / 1e30 with finite Y.
-    rgb = np.array([[np.inf, 0.5, 0.2], [-np.inf, 0.5, 0.9], [0.2, 1e30, -1e30],
-                    [np.inf, -np.inf, 0.5], [-1e30, 0.5, 0.5]])
+    rgb = np.array(
+        [
+            [np.inf, 0.5, 0.2],
+            [-np.inf, 0.5, 0.9],
+            [0.2, 1e30, -1e30],
+            [np.inf, -np.inf, 0.5],
+            [-1e30, 0.5, 0.5],
+        ]
+    )
     out = clip.clip_RGB(rgb)
     assert np.all(np.isfinite(out)) and np.all((out >= 0) & (out <= 1))
 
@@ -251,8 +289,15 @@ def test_rays_nearly_parallel_to_a_face(display):
 def test_tiny_and_subnormal_luminance():
     """Reference: the invariants (finite, in gamut, Y kept or black) near black,
     where the grey point is tiny or subnormal and every division is by tiny values."""
-    XYZ = np.array([[1.0, 1e-300, -1.0], [-1e-3, 5e-324, 1e-3], [1e-310, 1e-310, -1e-310],
-                    [0.5, 1e-12, 0.5], [-2.0, 1e-200, 2.0]])
+    XYZ = np.array(
+        [
+            [1.0, 1e-300, -1.0],
+            [-1e-3, 5e-324, 1e-3],
+            [1e-310, 1e-310, -1e-310],
+            [0.5, 1e-12, 0.5],
+            [-2.0, 1e-200, 2.0],
+        ]
+    )
     out = clip.clip_XYZ(XYZ)
     assert np.all(np.isfinite(out))
     assert np.all(in_gamut_rgb(out, "sRGB", 1e-9))
@@ -261,8 +306,15 @@ def test_tiny_and_subnormal_luminance():
     # includes the rounding of that dot product.
     _, rgb_to_xyz, _ = reference_matrices("sRGB")
     lum = rgb_to_xyz[1]
-    rgb = np.array([[1.0, -0.2973, 0.0], [1e-300, 1e-300, 1e-300], [3e-12, -1e-12, 2e-12],
-                    [5e-324, 0.0, 0.0], [2.0, -0.6, 0.1]])
+    rgb = np.array(
+        [
+            [1.0, -0.2973, 0.0],
+            [1e-300, 1e-300, 1e-300],
+            [3e-12, -1e-12, 2e-12],
+            [5e-324, 0.0, 0.0],
+            [2.0, -0.6, 0.1],
+        ]
+    )
     out = clip.clip_RGB(rgb)
     assert np.all(np.isfinite(out)) and np.all((out >= 0) & (out <= 1))
     Y_in = rgb @ lum
@@ -305,9 +357,11 @@ def _grey(XYZ, display):
 
 
 @settings(max_examples=12)
-@given(seed=st.integers(0, 2**32 - 1),
-       scale=st.sampled_from([0.01, 0.3, 1.0, 3.0, 1e3, 1e8]),
-       display=st.sampled_from(DISPLAYS))
+@given(
+    seed=st.integers(0, 2**32 - 1),
+    scale=st.sampled_from([0.01, 0.3, 1.0, 3.0, 1e3, 1e8]),
+    display=st.sampled_from(DISPLAYS),
+)
 def test_clip_properties(seed, scale, display):
     """Reference: the issue's definitions, checked with matrices built here from
     colour's primaries: output in the gamut (1e-6), Y preserved for 0 <= Y <= Y_white,
@@ -384,8 +438,9 @@ def _aces_reference(rgb, params=clip.ACES_GAMUT_COMP13_PARAMS):
     with np.errstate(divide="ignore", invalid="ignore"):
         dist = np.where(ach == 0, 0.0, (ach - rgb) / np.abs(ach))
     nd = (dist - thr) / scale
-    cdist = np.where(dist < thr, dist,
-                     thr + scale * nd / np.power(1.0 + np.power(np.abs(nd), pwr), 1.0 / pwr))
+    cdist = np.where(
+        dist < thr, dist, thr + scale * nd / np.power(1.0 + np.power(np.abs(nd), pwr), 1.0 / pwr)
+    )
     return ach - cdist * np.abs(ach)
 
 
@@ -393,8 +448,12 @@ def test_aces_gamut_compress_baseline():
     """Reference: the ACES 1.3 gamut compression formula in numpy; OCIO's
     FixedFunction ACES_GamutComp13 (float32) then the clamp must match it."""
     rng = np.random.default_rng(6)
-    rgb = np.concatenate([rng.uniform(-0.3, 1.2, (2000, 3)),
-                          colorimetry.XYZ_to_RGB(colorimetry.spectral_locus_XYZ(0.3))])
+    rgb = np.concatenate(
+        [
+            rng.uniform(-0.3, 1.2, (2000, 3)),
+            colorimetry.XYZ_to_RGB(colorimetry.spectral_locus_XYZ(0.3)),
+        ]
+    )
     out = clip.aces_gamut_compress_RGB(rgb)
     assert out.shape == rgb.shape and out.dtype == np.float32
     expected = np.clip(_aces_reference(rgb), 0.0, 1.0)

@@ -22,8 +22,12 @@ D65_XY = np.array([0.3127, 0.3290])
 def colour_XYZ(colour, R, wl, observer=OBS, illuminant="D65", method="Integration"):
     """colour-science's integrator on our spectral data, rescaled to Y_white = 1."""
     sd = colour.SpectralDistribution(np.asarray(R, dtype=float), wl)
-    return colour.sd_to_XYZ(sd, colour.MSDS_CMFS[observer], colour.SDS_ILLUMINANTS[illuminant],
-                            method=method) / 100.0
+    return (
+        colour.sd_to_XYZ(
+            sd, colour.MSDS_CMFS[observer], colour.SDS_ILLUMINANTS[illuminant], method=method
+        )
+        / 100.0
+    )
 
 
 # --------------------------------------------------------------------------- #
@@ -64,43 +68,55 @@ def test_film_XYZ_is_the_integral_of_the_model(colour):
         np.testing.assert_allclose(got[i], colour_XYZ(colour, R, wl), atol=2e-5)
 
 
-@pytest.mark.parametrize("observer,illuminant", [
-    ("CIE 1964 10 Degree Standard Observer", "D65"),
-    (OBS, "A"),
-    (OBS, "D50"),
-    ("CIE 1964 10 Degree Standard Observer", "FL2"),
-])
+@pytest.mark.parametrize(
+    "observer,illuminant",
+    [
+        ("CIE 1964 10 Degree Standard Observer", "D65"),
+        (OBS, "A"),
+        (OBS, "D50"),
+        ("CIE 1964 10 Degree Standard Observer", "FL2"),
+    ],
+)
 def test_other_observers_and_illuminants(colour, observer, illuminant):
     """Reference: colour.sd_to_XYZ with the same observer and illuminant."""
     wl = sampling.wavelength_grid(step=1.0)
     white = colorimetry.reflectance_to_XYZ(np.ones(wl.size), wl, observer, illuminant)
     assert white[1] == pytest.approx(1.0, abs=1e-12)
-    np.testing.assert_allclose(white, colour_XYZ(colour, np.ones(wl.size), wl, observer,
-                                                 illuminant), atol=2e-4)
+    np.testing.assert_allclose(
+        white, colour_XYZ(colour, np.ones(wl.size), wl, observer, illuminant), atol=2e-4
+    )
     R = spectra.two_beam_reflectance(420.0, wl)
-    got = colorimetry.film_XYZ(420.0, wavelengths=wl, band_limited=False, observer=observer,
-                               illuminant=illuminant)
+    got = colorimetry.film_XYZ(
+        420.0, wavelengths=wl, band_limited=False, observer=observer, illuminant=illuminant
+    )
     np.testing.assert_allclose(got, colour_XYZ(colour, R, wl, observer, illuminant), atol=2e-4)
     # ... and it really is different from the default.
     point = colorimetry.film_XYZ(420.0, wavelengths=wl, band_limited=False)
     assert np.abs(got - point).max() > 1e-3
 
 
-@pytest.mark.parametrize("call,name", [
-    (lambda: colorimetry.spectral_weights(sampling.wavelength_grid(), observer="Martian"),
-     "observer"),
-    (lambda: colorimetry.spectral_weights(sampling.wavelength_grid(), illuminant="D66"),
-     "illuminant"),
-    (lambda: colorimetry.matrix_XYZ_to_RGB("sRGBish"), "space"),
-    (lambda: colorimetry.XYZ_to_RGB([0.2, 0.3, 0.4], "Adobe RGB 9000"), "space"),
-    (lambda: colorimetry.film_XYZ(100.0, kind="soapy"), "kind"),
-    (lambda: colorimetry.film_XYZ(-1.0), "optical_thickness"),
-    (lambda: colorimetry.film_XYZ(100.0, wavelengths=[500.0, 400.0]), "wavelengths"),
-    (lambda: colorimetry.film_XYZ(100.0, step=-5.0), "step"),
-    (lambda: colorimetry.morpho_XYZ(95.0), "theta"),
-    (lambda: colorimetry.morpho_XYZ(10.0, layers=0), "layers"),
-    (lambda: colorimetry.morpho_XYZ(10.0, n=0.0), "n"),
-])
+@pytest.mark.parametrize(
+    "call,name",
+    [
+        (
+            lambda: colorimetry.spectral_weights(sampling.wavelength_grid(), observer="Martian"),
+            "observer",
+        ),
+        (
+            lambda: colorimetry.spectral_weights(sampling.wavelength_grid(), illuminant="D66"),
+            "illuminant",
+        ),
+        (lambda: colorimetry.matrix_XYZ_to_RGB("sRGBish"), "space"),
+        (lambda: colorimetry.XYZ_to_RGB([0.2, 0.3, 0.4], "Adobe RGB 9000"), "space"),
+        (lambda: colorimetry.film_XYZ(100.0, kind="soapy"), "kind"),
+        (lambda: colorimetry.film_XYZ(-1.0), "optical_thickness"),
+        (lambda: colorimetry.film_XYZ(100.0, wavelengths=[500.0, 400.0]), "wavelengths"),
+        (lambda: colorimetry.film_XYZ(100.0, step=-5.0), "step"),
+        (lambda: colorimetry.morpho_XYZ(95.0), "theta"),
+        (lambda: colorimetry.morpho_XYZ(10.0, layers=0), "layers"),
+        (lambda: colorimetry.morpho_XYZ(10.0, n=0.0), "n"),
+    ],
+)
 def test_bad_names_and_values_raise(call, name):
     """Reference: the issue's contract -- ValueError naming the parameter."""
     with pytest.raises(ValueError, match=name):
@@ -110,9 +126,16 @@ def test_bad_names_and_values_raise(call, name):
 # --------------------------------------------------------------------------- #
 # XYZ -> RGB
 # --------------------------------------------------------------------------- #
-@pytest.mark.parametrize("ours,theirs", [("sRGB", "sRGB"), ("Rec.709", "ITU-R BT.709"),
-                                         ("Display P3", "Display P3"),
-                                         ("Rec.2020", "ITU-R BT.2020"), ("ACEScg", "ACEScg")])
+@pytest.mark.parametrize(
+    "ours,theirs",
+    [
+        ("sRGB", "sRGB"),
+        ("Rec.709", "ITU-R BT.709"),
+        ("Display P3", "Display P3"),
+        ("Rec.2020", "ITU-R BT.2020"),
+        ("ACEScg", "ACEScg"),
+    ],
+)
 def test_rgb_matrices_match_colour(colour, ours, theirs):
     """Reference: colour.XYZ_to_RGB from D65 XYZ (Bradford adaptation where the
     space's white is not D65, as for ACEScg), with matrices derived from the
@@ -121,13 +144,15 @@ def test_rgb_matrices_match_colour(colour, ours, theirs):
     XYZ = rng.uniform(-0.2, 1.2, (200, 3))
     cs = colour.RGB_COLOURSPACES[theirs].copy()
     cs.use_derived_transformation_matrices(True)
-    expected = colour.XYZ_to_RGB(XYZ, cs, illuminant=D65_XY,
-                                 chromatic_adaptation_transform="Bradford")
+    expected = colour.XYZ_to_RGB(
+        XYZ, cs, illuminant=D65_XY, chromatic_adaptation_transform="Bradford"
+    )
     got = colorimetry.XYZ_to_RGB(XYZ, ours)
     np.testing.assert_allclose(got, expected, atol=1e-9)
     np.testing.assert_allclose(colorimetry.RGB_to_XYZ(got, ours), XYZ, atol=1e-12)
-    np.testing.assert_allclose(colorimetry.XYZ_to_RGB(colorimetry.white_XYZ(ours), ours),
-                               1.0, atol=1e-12)
+    np.testing.assert_allclose(
+        colorimetry.XYZ_to_RGB(colorimetry.white_XYZ(ours), ours), 1.0, atol=1e-12
+    )
 
 
 def test_srgb_matrix_close_to_the_published_iec_matrix(colour):
@@ -147,9 +172,11 @@ def test_white_is_d65_for_every_display(colour):
 
 def test_delta_E2000_matches_published_data(colour):
     """Reference: Sharma, Wu & Dalal (2005) CIEDE2000 test pairs (Lab, D65 white)."""
-    pairs = [((50.0, 2.6772, -79.7751), (50.0, 0.0, -82.7485), 2.0425),
-             ((50.0, 2.5, 0.0), (73.0, 25.0, -18.0), 27.1492),
-             ((60.2574, -34.0099, 36.2677), (60.4626, -34.1751, 39.4387), 1.2644)]
+    pairs = [
+        ((50.0, 2.6772, -79.7751), (50.0, 0.0, -82.7485), 2.0425),
+        ((50.0, 2.5, 0.0), (73.0, 25.0, -18.0), 27.1492),
+        ((60.2574, -34.0099, 36.2677), (60.4626, -34.1751, 39.4387), 1.2644),
+    ]
     for lab_a, lab_b, expected in pairs:
         a = colour.Lab_to_XYZ(np.array(lab_a), D65_XY)
         b = colour.Lab_to_XYZ(np.array(lab_b), D65_XY)
@@ -201,7 +228,7 @@ def test_naive_5nm_sampling_fails_on_thick_films(thick_scan, kind):
     colours far above any visible threshold (the test the band limiting exists for)."""
     t, out = thick_scan
     _, naive = out[kind]
-    assert naive[-1] > 5.0      # at t' = 100 um
+    assert naive[-1] > 5.0  # at t' = 100 um
     assert naive.max() > 10.0
     assert np.mean(naive[t > 20_000] > 1.0) > 0.5
 
@@ -209,8 +236,9 @@ def test_naive_5nm_sampling_fails_on_thick_films(thick_scan, kind):
 def test_reference_grid_has_converged():
     """Reference: 0.05 nm sampling; the 0.1 nm reference is converged at 100 um."""
     t = np.array([60_000.0, 99_000.0, 100_000.0])
-    fine = colorimetry.film_XYZ(t, wavelengths=sampling.wavelength_grid(step=0.05),
-                                band_limited=False)
+    fine = colorimetry.film_XYZ(
+        t, wavelengths=sampling.wavelength_grid(step=0.05), band_limited=False
+    )
     ref = colorimetry.film_XYZ(t, wavelengths=REF_WL, band_limited=False)
     assert colorimetry.delta_E2000(fine, ref).max() < 0.01
 
@@ -250,7 +278,7 @@ def _incoherent_airy(n1, n2, theta):
     rp12 = (n2 * c1 - n1 * c2) / (n2 * c1 + n1 * c2)
     total = 0.0
     for r01, r12 in ((rs01, rs12), (rp01, rp12)):
-        R01, R12 = r01 ** 2, r12 ** 2
+        R01, R12 = r01**2, r12**2
         total += 0.5 * (R01 + (1 - R01) ** 2 * R12 / (1 - R01 * R12))
     return total
 
@@ -260,8 +288,9 @@ def test_band_limited_airy_thick_film_is_incoherent(n1, n2, theta):
     """Reference: the textbook incoherent sum of intensities (no phases at all)."""
     wl = sampling.wavelength_grid(step=5.0)
     white = colorimetry.reflectance_to_XYZ(np.ones(wl.size), wl)
-    R = exact.airy_reflectance(np.array([2e5, 5e5]), wl, n1, theta, n_substrate=n2,
-                                 band_limited=True)
+    R = exact.airy_reflectance(
+        np.array([2e5, 5e5]), wl, n1, theta, n_substrate=n2, band_limited=True
+    )
     XYZ = colorimetry.reflectance_to_XYZ(R, wl)
     expected = _incoherent_airy(n1, n2, theta) * white
     assert colorimetry.delta_E2000(XYZ, expected).max() < 0.5
@@ -274,7 +303,8 @@ def test_band_limited_airy_matches_dense_reference():
     wl5 = sampling.wavelength_grid(step=5.0)
     dense = colorimetry.reflectance_to_XYZ(exact.airy_reflectance(d, REF_WL, 1.4), REF_WL)
     band = colorimetry.reflectance_to_XYZ(
-        exact.airy_reflectance(d, wl5, 1.4, band_limited=True), wl5)
+        exact.airy_reflectance(d, wl5, 1.4, band_limited=True), wl5
+    )
     naive = colorimetry.reflectance_to_XYZ(exact.airy_reflectance(d, wl5, 1.4), wl5)
     assert colorimetry.delta_E2000(band, dense).max() <= 0.5
     assert colorimetry.delta_E2000(naive, dense).max() > 1.0
@@ -291,7 +321,7 @@ def test_morpho_colour_is_blue_and_matches_colour(colour):
     got = colorimetry.morpho_XYZ(np.array([0.0, 20.0]), wavelengths=wl, band_limited=False)
     for i, theta in enumerate((0.0, 20.0)):
         th = np.deg2rad(theta)
-        t = 150.0 * np.cos(th) + 50.0 * np.sqrt(1.53 ** 2 - np.sin(th) ** 2)
+        t = 150.0 * np.cos(th) + 50.0 * np.sqrt(1.53**2 - np.sin(th) ** 2)
         x = 2 * np.pi * t / wl
         with np.errstate(all="ignore"):
             R = (np.sin(13 * x) / np.sin(x)) ** 2 / 169.0

@@ -110,25 +110,40 @@ def test_curve_is_smooth_at_the_threshold_and_strictly_increasing_to_the_limit()
     assert np.all(f(np.array([lim + 0.01, 2.0, 1e6, np.inf])) == 1.0)
     np.testing.assert_allclose(f(d), _aces_curve(d, thr, lim), rtol=1e-13)
     y = np.linspace(0.0, 0.999, 500)
-    np.testing.assert_allclose(f(compress.compression_curve_inverse(y), clipped=False), y,
-                               atol=1e-12)
+    np.testing.assert_allclose(
+        f(compress.compression_curve_inverse(y), clipped=False), y, atol=1e-12
+    )
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_compress_edges(display):
-    out = compress.compress_RGB(np.array([[np.nan, 0.2, 0.3], [np.inf, 0.0, 0.0],
-                                          [-0.1, -0.2, -0.3], [2.0, 2.0, 2.0],
-                                          [1e300, -1e300, 5.0]]), display)
+    out = compress.compress_RGB(
+        np.array(
+            [
+                [np.nan, 0.2, 0.3],
+                [np.inf, 0.0, 0.0],
+                [-0.1, -0.2, -0.3],
+                [2.0, 2.0, 2.0],
+                [1e300, -1e300, 5.0],
+            ]
+        ),
+        display,
+    )
     assert np.isnan(out[0]).all()
     assert np.isfinite(out[1:]).all() and np.all((out[1:] >= 0) & (out[1:] <= 1))
     assert out[2].tolist() == [0.0, 0.0, 0.0] and out[3].tolist() == [1.0, 1.0, 1.0]
     assert compress.compress_RGB(np.float32([[1.2, 0.3, 0.1]]), display).dtype == np.float32
 
 
-@pytest.mark.parametrize("kwargs, name", [(dict(threshold=1.0), "threshold"),
-                                          (dict(threshold=0.0), "threshold"),
-                                          (dict(limit=1.0), "limit"),
-                                          (dict(power=-1.0), "power")])
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(threshold=1.0), "threshold"),
+        (dict(threshold=0.0), "threshold"),
+        (dict(limit=1.0), "limit"),
+        (dict(power=-1.0), "power"),
+    ],
+)
 def test_compress_parameters_refused(kwargs, name):
     with pytest.raises(ValueError, match=name):
         compress.compress_RGB([0.5, 0.5, 0.5], **kwargs)
@@ -138,8 +153,9 @@ def test_compress_parameters_refused(kwargs, name):
 def test_lut_factorisation_is_the_analytic_map(display):
     """U o S_w o L o S_b, each evaluated analytically, is compress_RGB (the LUT chain
     only adds interpolation)."""
-    rgb = np.concatenate([_random_rgb(display, seed=2),
-                          colorimetry.XYZ_to_RGB(object_colours()[:3000], display)])
+    rgb = np.concatenate(
+        [_random_rgb(display, seed=2), colorimetry.XYZ_to_RGB(object_colours()[:3000], display)]
+    )
     a = compress_lut.soft_black_RGB(rgb, display)
     a = clip_lut.clip_black_faces_RGB(a, display)
     a = compress_lut.soft_white_RGB(a, display)
@@ -168,8 +184,11 @@ def measured(cfg):
             rgb = _decode(_apply(cfg, display, XYZ), display)
             truth = compress.compress_XYZ(XYZ, display)
             de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
-            out[display, name] = dict(p99=float(np.percentile(de, 99)), max=float(de.max()),
-                                      dY=float(np.abs(rgb @ w - truth[:, 1]).max()))
+            out[display, name] = dict(
+                p99=float(np.percentile(de, 99)),
+                max=float(de.max()),
+                dY=float(np.abs(rgb @ w - truth[:, 1]).max()),
+            )
     return out
 
 
@@ -181,16 +200,32 @@ def test_view_against_the_analytic_compression(measured, display, name):
     assert m["p99"] <= 0.5 and m["max"] <= 1.5 and m["dY"] <= 1e-3, m
 
 
-LEVELS = ["OPTIMIZATION_NONE", "OPTIMIZATION_DEFAULT", "OPTIMIZATION_LOSSLESS",
-          "OPTIMIZATION_VERY_GOOD", "OPTIMIZATION_GOOD", "OPTIMIZATION_DRAFT"]
+LEVELS = [
+    "OPTIMIZATION_NONE",
+    "OPTIMIZATION_DEFAULT",
+    "OPTIMIZATION_LOSSLESS",
+    "OPTIMIZATION_VERY_GOOD",
+    "OPTIMIZATION_GOOD",
+    "OPTIMIZATION_DRAFT",
+]
 
 
 @pytest.mark.parametrize("level", LEVELS)
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_view_finite_and_in_range_at_every_optimisation_level(cfg, display, level):
     big = np.float32(3.0e38)
-    px = np.array([[big, big, big], [-big, big, -big], [np.inf, 0, 0], [0, -np.inf, 1],
-                   [1e30, 1e-30, 0], [0.2, 0.3, 0.1], [0.0, 0.0, 0.0], [5.0, 1.0, 0.0]])
+    px = np.array(
+        [
+            [big, big, big],
+            [-big, big, -big],
+            [np.inf, 0, 0],
+            [0, -np.inf, 1],
+            [1e30, 1e-30, 0],
+            [0.2, 0.3, 0.1],
+            [0.0, 0.0, 0.0],
+            [5.0, 1.0, 0.0],
+        ]
+    )
     out = _apply(cfg, display, px, optimization=getattr(ocio, level))
     # 1e-4: the tolerance of the clip's views (test_gamut_map), float32 ops after the LUTs
     assert np.isfinite(out).all() and out.min() >= -1e-4 and out.max() <= 1.0 + 1e-4
@@ -226,10 +261,14 @@ def ramp_distances(cfg):
         ramps, dist = _ramps(display)
         M = colorimetry.matrix_XYZ_to_RGB(display)
         analytic = compress.compress_XYZ(ramps.reshape(-1, 3), display) @ M.T
-        views = [_decode(_apply(cfg, display, ramps.reshape(-1, 3), view), display)
-                 for view in (VIEW, "Constant-Lightness Clip")]
-        out[display] = (dist, *[_ray_distance(rgb, w).reshape(dist.shape)
-                                for rgb in [analytic] + views])
+        views = [
+            _decode(_apply(cfg, display, ramps.reshape(-1, 3), view), display)
+            for view in (VIEW, "Constant-Lightness Clip")
+        ]
+        out[display] = (
+            dist,
+            *[_ray_distance(rgb, w).reshape(dist.shape) for rgb in [analytic] + views],
+        )
     return out
 
 
@@ -281,6 +320,9 @@ def test_documented_accuracy_comes_from_the_benchmark(load_benchmark, marked):
     result = json.loads((root / "reports" / "bench_compress.json").read_text())
     doc = (root / "docs" / "compress.md").read_text()
     assert marked(doc, bench.BEGIN, bench.END) == bench.shipped_markdown(result)
-    shipped = [r for r in result["accuracy"] if (r["black"], r["white"]) == (
-        compress_lut.SOFT_SIZE, compress_lut.SOFT_WHITE_SIZE)]
+    shipped = [
+        r
+        for r in result["accuracy"]
+        if (r["black"], r["white"]) == (compress_lut.SOFT_SIZE, compress_lut.SOFT_WHITE_SIZE)
+    ]
     assert len(shipped) == len(DISPLAYS)

@@ -21,13 +21,36 @@ ROOT = Path(__file__).resolve().parents[1]
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 OCIO21_CHECK = Path("/usr/bin/ociocheck")  # Debian opencolorio-tools (OCIO 2.1)
 
-ROLES = ("scene_linear", "data", "default", "color_picking", "texture_paint", "matte_paint",
-         "compositing_log", "color_timing", "aces_interchange", "cie_xyz_d65_interchange",
-         "default_byte", "default_float", "default_sequencer")
-SPACES = ("CIE-XYZ-D65", "ACES2065-1", "ACEScg", "Linear Rec.709 (sRGB)", "Linear P3-D65",
-          "Linear Rec.2020", "Raw", "Thin Film Phase-Change Thickness",
-          "Thin Film No-Phase-Change Thickness", "Thin Film Morpho Iridescence",
-          "sRGB - Display", "Display P3 - Display", "Rec.1886 Rec.2020 - Display")
+ROLES = (
+    "scene_linear",
+    "data",
+    "default",
+    "color_picking",
+    "texture_paint",
+    "matte_paint",
+    "compositing_log",
+    "color_timing",
+    "aces_interchange",
+    "cie_xyz_d65_interchange",
+    "default_byte",
+    "default_float",
+    "default_sequencer",
+)
+SPACES = (
+    "CIE-XYZ-D65",
+    "ACES2065-1",
+    "ACEScg",
+    "Linear Rec.709 (sRGB)",
+    "Linear P3-D65",
+    "Linear Rec.2020",
+    "Raw",
+    "Thin Film Phase-Change Thickness",
+    "Thin Film No-Phase-Change Thickness",
+    "Thin Film Morpho Iridescence",
+    "sRGB - Display",
+    "Display P3 - Display",
+    "Rec.1886 Rec.2020 - Display",
+)
 
 
 @pytest.fixture(scope="module")
@@ -53,8 +76,9 @@ def test_generate_config_in_memory_validates():
 
     c = config.generate_config(config.config_data(inline=True))
     c.validate()
-    c.getProcessor("CIE-XYZ-D65", "sRGB", "Constant-Lightness Clip",
-                   ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
+    c.getProcessor(
+        "CIE-XYZ-D65", "sRGB", "Constant-Lightness Clip", ocio.TRANSFORM_DIR_FORWARD
+    ).getDefaultCPUProcessor()
 
 
 def test_roles(cfg):
@@ -72,8 +96,14 @@ def test_colour_spaces_displays_views(cfg):
     names = list(cfg.getColorSpaceNames())
     for name in SPACES:
         assert name in names, name
-    assert list(cfg.getDisplays()) == ["sRGB", "Display P3", "Rec.2020", "Rec.2100-PQ",
-                                       "Rec.2100-HLG", "P3-D65 PQ"]
+    assert list(cfg.getDisplays()) == [
+        "sRGB",
+        "Display P3",
+        "Rec.2020",
+        "Rec.2100-PQ",
+        "Rec.2100-HLG",
+        "P3-D65 PQ",
+    ]
     for display in cfg.getDisplays():
         assert list(cfg.getViews(display)) == list(registry.VIEWS)
 
@@ -81,6 +111,7 @@ def test_colour_spaces_displays_views(cfg):
 def test_file_rules_present(cfg):
     rules = cfg.getFileRules()
     assert rules.getNumEntries() >= 2
+
     def space(path):
         return cfg.getColorSpace(cfg.getColorSpaceFromFilepath(path)[0]).getName()
 
@@ -92,15 +123,17 @@ def test_file_rules_present(cfg):
 def test_every_processor_builds(cfg, ocio):
     for display in cfg.getDisplays():
         for view in cfg.getViews(display):
-            cfg.getProcessor("Thin Film Phase-Change Thickness", display, view,
-                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
+            cfg.getProcessor(
+                "Thin Film Phase-Change Thickness", display, view, ocio.TRANSFORM_DIR_FORWARD
+            ).getDefaultCPUProcessor()
     for name in cfg.getColorSpaceNames():
         cfg.getProcessor(name, "CIE-XYZ-D65").getDefaultCPUProcessor()
 
 
 def _run_check(tool):
-    result = subprocess.run([str(tool), "--iconfig", str(CONFIG)], capture_output=True,
-                            text=True, timeout=120)
+    result = subprocess.run(
+        [str(tool), "--iconfig", str(CONFIG)], capture_output=True, text=True, timeout=120
+    )
     text = result.stdout + result.stderr
     return result.returncode, text
 
@@ -115,21 +148,28 @@ def test_ociocheck_pypi():
     assert "ERROR" not in text.upper().replace("ERRORS: 0", ""), text
 
 
-@pytest.mark.skipif(not OCIO21_CHECK.exists(),
-                    reason="Debian opencolorio-tools (OCIO 2.1) not installed: "
-                           "apt-get install opencolorio-tools")
+@pytest.mark.skipif(
+    not OCIO21_CHECK.exists(),
+    reason="Debian opencolorio-tools (OCIO 2.1) not installed: apt-get install opencolorio-tools",
+)
 def test_ociocheck_ocio21():
     code, text = _run_check(OCIO21_CHECK)
     assert code == 0, text
     assert "passed" in text and "ERROR" not in text.upper(), text
 
 
-@pytest.mark.skipif(not Path("/usr/bin/ociochecklut").exists(),
-                    reason="Debian opencolorio-tools (OCIO 2.1) not installed")
+@pytest.mark.skipif(
+    not Path("/usr/bin/ociochecklut").exists(),
+    reason="Debian opencolorio-tools (OCIO 2.1) not installed",
+)
 def test_ocio21_reads_every_config_lut():
     for path in sorted((CONFIG.parent / "luts").glob("*.clf")):
-        result = subprocess.run(["/usr/bin/ociochecklut", str(path), "0.3", "0.3", "0.3"],
-                                capture_output=True, text=True, timeout=60)
+        result = subprocess.run(
+            ["/usr/bin/ociochecklut", str(path), "0.3", "0.3", "0.3"],
+            capture_output=True,
+            text=True,
+            timeout=60,
+        )
         assert result.returncode == 0, result.stdout + result.stderr
         values = [float(v) for v in result.stdout.split()[-3:]]
         assert np.all(np.isfinite(values))
@@ -147,16 +187,18 @@ def test_clf_metadata(ocio):
 def test_thin_film_spaces_through_config(cfg):
     t = np.linspace(0.0, 3.0, 3001)
     px = np.repeat(t[:, None], 3, 1).astype(np.float32)
-    cpu = cfg.getProcessor("Thin Film Phase-Change Thickness",
-                           "CIE-XYZ-D65").getDefaultCPUProcessor()
+    cpu = cfg.getProcessor(
+        "Thin Film Phase-Change Thickness", "CIE-XYZ-D65"
+    ).getDefaultCPUProcessor()
     out = px.copy()
     cpu.applyRGB(out)
     direct = colorimetry.film_XYZ(t * 1000.0, "phase-change")
     assert colorimetry.delta_E2000(out.astype(np.float64), direct).max() <= 0.05
     cos = np.linspace(0, 1, 501)
     px = np.repeat(cos[:, None], 3, 1).astype(np.float32)
-    cfg.getProcessor("Thin Film Morpho Iridescence",
-                     "CIE-XYZ-D65").getDefaultCPUProcessor().applyRGB(px)
+    cfg.getProcessor(
+        "Thin Film Morpho Iridescence", "CIE-XYZ-D65"
+    ).getDefaultCPUProcessor().applyRGB(px)
     direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(cos)))
     assert colorimetry.delta_E2000(px.astype(np.float64), direct).max() <= 0.05
 
@@ -166,8 +208,9 @@ def test_config_views_equal_package_view_transforms(cfg, ocio):
     for display in clip.DISPLAYS:
         for view in registry.VIEWS:
             out = X.astype(np.float32).copy()
-            cfg.getProcessor("CIE-XYZ-D65", display, view,
-                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(out)
+            cfg.getProcessor(
+                "CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD
+            ).getDefaultCPUProcessor().applyRGB(out)
             ref = ocio_ops.apply(view_transforms.view_transform(display, view), X)
             # 3e-4: code values near black through BT.1886's pure power (one Rec.2020
             # compression pixel at 2.3e-4 = a linear 1e-9, file vs in-memory LUT ops)
@@ -193,15 +236,17 @@ def test_scene_linear_white_is_display_white(cfg, ocio):
         hdr = registry.is_hdr(display)
         for view in registry.VIEWS[:3]:
             px = np.ones((1, 3), np.float32)
-            cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
-                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
+            cfg.getProcessor(
+                "Linear Rec.709 (sRGB)", display, view, ocio.TRANSFORM_DIR_FORWARD
+            ).getDefaultCPUProcessor().applyRGB(px)
             if hdr:  # 0.25/255 of an sRGB code at white is 2.3e-3 of its light
                 np.testing.assert_allclose(_hdr_nits(display, px), 203.0, rtol=2.5e-3)
             else:
                 np.testing.assert_allclose(px, 1.0, atol=0.25 / 255)  # clip: see test_tables
             px = np.full((1, 3), 4.0 * (5.0 if hdr else 1.0), np.float32)  # above white
-            cfg.getProcessor("Linear Rec.709 (sRGB)", display, view,
-                             ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor().applyRGB(px)
+            cfg.getProcessor(
+                "Linear Rec.709 (sRGB)", display, view, ocio.TRANSFORM_DIR_FORWARD
+            ).getDefaultCPUProcessor().applyRGB(px)
             if hdr:
                 np.testing.assert_allclose(_hdr_nits(display, px), 1000.0, rtol=1e-3)
             elif view == "Constant-Lightness Clip":
@@ -234,10 +279,16 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
         "s.view_settings.view_transform)\n"
         "img = bpy.data.images.new('t', 4, 1, float_buffer=True)\n"
         "img.colorspace_settings.name = 'Thin Film Phase-Change Thickness'\n"
-        "print('IMAGE', img.colorspace_settings.name)\n")
+        "print('IMAGE', img.colorspace_settings.name)\n"
+    )
     env = {"OCIO": str(CONFIG), "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)}
-    result = subprocess.run([BLENDER, "-b", "--factory-startup", "--python", str(script)],
-                            capture_output=True, text=True, timeout=300, env=env)
+    result = subprocess.run(
+        [BLENDER, "-b", "--factory-startup", "--python", str(script)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        env=env,
+    )
     text = result.stdout + result.stderr
     assert "Color management: Error" not in text, text
     for display in registry.ALL_DISPLAYS:

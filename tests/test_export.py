@@ -26,8 +26,11 @@ LUTS_DIR = ROOT / "luts"
 
 def _tree(directory):
     """Every file under ``directory`` except the bake's ownership marker (not committed)."""
-    return sorted(p.relative_to(directory).as_posix() for p in Path(directory).rglob("*")
-                  if p.is_file() and p.name != MARKER)
+    return sorted(
+        p.relative_to(directory).as_posix()
+        for p in Path(directory).rglob("*")
+        if p.is_file() and p.name != MARKER
+    )
 
 
 _NUMBER = re.compile(rb"-?\d+\.?\d*(?:[eE][-+]?\d+)?")
@@ -48,7 +51,7 @@ def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
     b = np.array([float(t) for t in ty])
     integer = np.array([b"." not in t and b"e" not in t.lower() for t in ty])
     half = b"16f" in y  # a CLF holding half floats
-    step = np.where(integer, 1.0, 1.5e-7 + (2.0 ** -10 if half else 1e-7) * np.abs(b))
+    step = np.where(integer, 1.0, 1.5e-7 + (2.0**-10 if half else 1e-7) * np.abs(b))
     return bool(np.all(np.abs(a - b) <= step))
 
 
@@ -64,8 +67,10 @@ def _assert_identical_trees(a, b):
         assert _one_rounding_step_apart(x, y), f"{rel} differs from the committed file"
         drifted.append(rel)
     if drifted:
-        pytest.xfail(f"{len(drifted)} file(s) differ from the committed ones by one "
-                     f"7-decimal rounding step only (CPU-dependent SIMD): {drifted[:3]}")
+        pytest.xfail(
+            f"{len(drifted)} file(s) differ from the committed ones by one "
+            f"7-decimal rounding step only (CPU-dependent SIMD): {drifted[:3]}"
+        )
 
 
 # --------------------------------------------------------------------------- #
@@ -99,11 +104,13 @@ def test_export_set_covers_every_table_display_and_format(exported_set):
         # the clip over display-linear RGB is not shipped (export clip still writes it)
         assert not any(n.startswith(f"ConstantLightnessClip_{display}") for n in names)
         assert f"ACEScct_to_{display}_ConstantLightnessClip.cube" in names  # display LUTs
-    tables_size = sum((exported_set / n).stat().st_size for n in names
-                      if not n.startswith("ACEScct_to_"))
+    tables_size = sum(
+        (exported_set / n).stat().st_size for n in names if not n.startswith("ACEScct_to_")
+    )
     assert tables_size < 2_000_000  # the tables stay small
-    views_size = sum((exported_set / n).stat().st_size for n in names
-                     if n.startswith("ACEScct_to_"))
+    views_size = sum(
+        (exported_set / n).stat().st_size for n in names if n.startswith("ACEScct_to_")
+    )
     assert tables_size + views_size <= 15_000_000  # the size budget of luts/ (committed)
 
 
@@ -117,8 +124,11 @@ def test_committed_config_size():
     assert _config_size() <= 39_000_000
 
 
-@pytest.mark.xfail(strict=True, reason="the compression view's LUTs (4.5 MB per display) "
-                                       "take the config past the clip issue's 25 MB budget")
+@pytest.mark.xfail(
+    strict=True,
+    reason="the compression view's LUTs (4.5 MB per display) "
+    "take the config past the clip issue's 25 MB budget",
+)
 def test_committed_config_within_size_budget():
     assert _config_size() <= 25_000_000
 
@@ -126,17 +136,22 @@ def test_committed_config_within_size_budget():
 # --------------------------------------------------------------------------- #
 # Every LUT passes ociochecklut (PyPI and, if installed, OCIO 2.1)
 # --------------------------------------------------------------------------- #
-CHECKERS = [c for c in (shutil.which("ociochecklut"), "/usr/bin/ociochecklut")
-            if c and Path(c).exists()]
+CHECKERS = [
+    c for c in (shutil.which("ociochecklut"), "/usr/bin/ociochecklut") if c and Path(c).exists()
+]
 
 
 @pytest.mark.skipif(not CHECKERS, reason="ociochecklut not installed")
-@pytest.mark.parametrize("path", sorted(LUTS_DIR.glob("[!.]*")) +
-                         sorted((CONFIG_DIR / "luts").glob("*.clf")), ids=lambda p: p.name)
+@pytest.mark.parametrize(
+    "path",
+    sorted(LUTS_DIR.glob("[!.]*")) + sorted((CONFIG_DIR / "luts").glob("*.clf")),
+    ids=lambda p: p.name,
+)
 def test_ociochecklut(path):
     for checker in dict.fromkeys(CHECKERS):
-        result = subprocess.run([checker, str(path), "0.25", "0.5", "0.75"],
-                                capture_output=True, text=True, timeout=60)
+        result = subprocess.run(
+            [checker, str(path), "0.25", "0.5", "0.75"], capture_output=True, text=True, timeout=60
+        )
         assert result.returncode == 0, (checker, result.stdout + result.stderr)
         values = [float(v) for v in result.stdout.split()[-3:]]
         assert np.all(np.isfinite(values)), (checker, result.stdout)
@@ -149,8 +164,9 @@ def _apply_ocio(path, values):
     import PyOpenColorIO as ocio
 
     px = np.ascontiguousarray(np.asarray(values, dtype=np.float32)).copy()
-    ocio.Config.CreateRaw().getProcessor(ocio.FileTransform(str(path))) \
-        .getDefaultCPUProcessor().applyRGB(px)
+    ocio.Config.CreateRaw().getProcessor(
+        ocio.FileTransform(str(path))
+    ).getDefaultCPUProcessor().applyRGB(px)
     return px.astype(np.float64)
 
 
@@ -164,9 +180,16 @@ APPLIERS = {"ocio": _apply_ocio, "colour": _apply_colour}
 
 
 @pytest.mark.parametrize("consumer", APPLIERS)
-@pytest.mark.parametrize("name", ["ThinFilm_PhaseChange.cube", "ThinFilm_PhaseChange.spi1d",
-                                  "ThinFilm_PhaseChange.clf", "ThinFilm_NoPhaseChange.cube",
-                                  "ThinFilm_NoPhaseChange.spi1d"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "ThinFilm_PhaseChange.cube",
+        "ThinFilm_PhaseChange.spi1d",
+        "ThinFilm_PhaseChange.clf",
+        "ThinFilm_NoPhaseChange.cube",
+        "ThinFilm_NoPhaseChange.spi1d",
+    ],
+)
 def test_film_files_take_thickness_in_micrometres(exported_set, name, consumer):
     """t' itself (0-1.5 um, between and on the nodes) against film_XYZ. Threshold
     0.05: linear interpolation of a 4096-entry table (node spacing 0.37 nm of t')
@@ -182,8 +205,9 @@ def test_film_files_take_thickness_in_micrometres(exported_set, name, consumer):
 
 
 @pytest.mark.parametrize("consumer", APPLIERS)
-@pytest.mark.parametrize("name", ["ThinFilm_Morpho.cube", "ThinFilm_Morpho.spi1d",
-                                  "ThinFilm_Morpho.clf"])
+@pytest.mark.parametrize(
+    "name", ["ThinFilm_Morpho.cube", "ThinFilm_Morpho.spi1d", "ThinFilm_Morpho.clf"]
+)
 def test_morpho_files_take_cos_theta(exported_set, name, consumer):
     """cos(theta) itself against morpho_XYZ. Threshold 0.2: 1024 entries over
     cos(theta) 0-1, where the colour changes fastest near grazing; measured max
@@ -200,19 +224,29 @@ def test_morpho_files_take_cos_theta(exported_set, name, consumer):
 def clip_files(tmp_path_factory):
     """`export clip` files (17^3, default range), written the way a user would."""
     d = tmp_path_factory.mktemp("clip")
-    for name in ("ConstantLightnessClip_sRGB.cube", "ConstantLightnessClip_DisplayP3.csp",
-                 "ConstantLightnessClip_Rec2020.cube", "ConstantLightnessClip_sRGB.clf"):
-        display = {"sRGB": "sRGB", "DisplayP3": "Display P3",
-                   "Rec2020": "Rec.2020"}[name.split("_")[1].split(".")[0]]
+    for name in (
+        "ConstantLightnessClip_sRGB.cube",
+        "ConstantLightnessClip_DisplayP3.csp",
+        "ConstantLightnessClip_Rec2020.cube",
+        "ConstantLightnessClip_sRGB.clf",
+    ):
+        display = {"sRGB": "sRGB", "DisplayP3": "Display P3", "Rec2020": "Rec.2020"}[
+            name.split("_")[1].split(".")[0]
+        ]
         export.export_lut("clip", d / name, display=display, size=17)
     return d
 
 
 @pytest.mark.parametrize("consumer", APPLIERS)
-@pytest.mark.parametrize("name", ["ConstantLightnessClip_sRGB.cube",
-                                  "ConstantLightnessClip_DisplayP3.csp",
-                                  "ConstantLightnessClip_Rec2020.cube",
-                                  "ConstantLightnessClip_sRGB.clf"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "ConstantLightnessClip_sRGB.cube",
+        "ConstantLightnessClip_DisplayP3.csp",
+        "ConstantLightnessClip_Rec2020.cube",
+        "ConstantLightnessClip_sRGB.clf",
+    ],
+)
 def test_clip_files_take_display_linear_rgb(clip_files, name, consumer):
     """Display-linear RGB itself, -0.5..1.5: in-gamut colours come back unchanged
     (0 and 1 are grid nodes and the clip is the identity there: tolerance 2e-6 for
@@ -224,8 +258,9 @@ def test_clip_files_take_display_linear_rgb(clip_files, name, consumer):
     accurate ones.)"""
     from ocio_thinfilm.colour import clip
 
-    display = {"sRGB": "sRGB", "DisplayP3": "Display P3",
-               "Rec2020": "Rec.2020"}[name.split("_")[1].split(".")[0]]
+    display = {"sRGB": "sRGB", "DisplayP3": "Display P3", "Rec2020": "Rec.2020"}[
+        name.split("_")[1].split(".")[0]
+    ]
     rgb = np.random.default_rng(1).uniform(-0.5, 1.5, (4000, 3))
     if consumer == "colour" and name.endswith(".clf"):
         pytest.skip("colour-science 0.4.7 reads no CLF")
@@ -246,20 +281,28 @@ def test_spi3d_refused_for_clip_off_unit_domain(tmp_path):
     with pytest.raises(ValueError, match="no input domain.*use clf, cube, csp"):
         export.export_lut("clip", tmp_path / "c.spi3d", display="sRGB")
     # over exactly 0..1 the format is exact and allowed
-    path = export.export_lut("clip", tmp_path / "c.spi3d", display="sRGB", size=5,
-                             value_range=(0.0, 1.0))
+    path = export.export_lut(
+        "clip", tmp_path / "c.spi3d", display="sRGB", size=5, value_range=(0.0, 1.0)
+    )
     assert path.exists()
 
 
 def test_clf_export_takes_thickness_in_micrometres(tmp_path):
     import PyOpenColorIO as ocio
 
-    path = export.export_lut("film", tmp_path / "t.clf", kind="phase-change", index=1.33,
-                             value_range=(0.1, 0.9), size=2001)
+    path = export.export_lut(
+        "film",
+        tmp_path / "t.clf",
+        kind="phase-change",
+        index=1.33,
+        value_range=(0.1, 0.9),
+        size=2001,
+    )
     t = np.linspace(0.1, 0.9, 2001)
     px = np.repeat(t[:, None], 3, 1).astype(np.float32)
-    ocio.Config.CreateRaw().getProcessor(ocio.FileTransform(str(path))) \
-        .getDefaultCPUProcessor().applyRGB(px)
+    ocio.Config.CreateRaw().getProcessor(
+        ocio.FileTransform(str(path))
+    ).getDefaultCPUProcessor().applyRGB(px)
     direct = colorimetry.film_XYZ(1.33 * t * 1000.0, "phase-change")
     assert colorimetry.delta_E2000(px.astype(np.float64), direct).max() < 0.01
     text = path.read_text()
@@ -274,8 +317,9 @@ def test_clip_export_reproduces_in_gamut_exactly_and_clips(tmp_path):
     path = export.export_lut("clip", tmp_path / "c.clf", display="sRGB", size=17)
     rgb = np.random.default_rng(0).uniform(-0.5, 1.5, (4000, 3))
     out = rgb.astype(np.float32).copy()
-    ocio.Config.CreateRaw().getProcessor(ocio.FileTransform(str(path))) \
-        .getDefaultCPUProcessor().applyRGB(out)
+    ocio.Config.CreateRaw().getProcessor(
+        ocio.FileTransform(str(path))
+    ).getDefaultCPUProcessor().applyRGB(out)
     inside = clip.in_gamut(rgb)
     np.testing.assert_allclose(out[inside], rgb[inside], atol=1e-5)
     assert clip.in_gamut(out, 1e-6).all()
@@ -341,11 +385,12 @@ def _argv(kwargs):
     return argv + ["--out", kwargs.get("out", "x.clf")]
 
 
-@pytest.mark.parametrize("kwargs, parameter, option", NAMED,
-                         ids=[f"{k['table']}-{p}" for k, p, _ in NAMED])
-def test_library_errors_name_the_parameter_and_the_cli_its_option(kwargs, parameter, option,
-                                                                tmp_path, capsys,
-                                                                monkeypatch):
+@pytest.mark.parametrize(
+    "kwargs, parameter, option", NAMED, ids=[f"{k['table']}-{p}" for k, p, _ in NAMED]
+)
+def test_library_errors_name_the_parameter_and_the_cli_its_option(
+    kwargs, parameter, option, tmp_path, capsys, monkeypatch
+):
     monkeypatch.chdir(tmp_path)
     call = dict(kwargs)
     with pytest.raises(ValueError) as raised:
@@ -356,7 +401,7 @@ def test_library_errors_name_the_parameter_and_the_cli_its_option(kwargs, parame
     err = capsys.readouterr().err.strip()
     assert err.startswith(f"ocio-thinfilm export: error: {option}"), err
     assert parameter == option.lstrip("-") or parameter not in err, err
-    assert err.endswith(message[len(parameter):]), (err, message)
+    assert err.endswith(message[len(parameter) :]), (err, message)
     assert list(tmp_path.iterdir()) == []
 
 
@@ -369,11 +414,19 @@ def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
     foreign.mkdir()
     (foreign / "notes.txt").write_text("not ours")
     cases = [
-        (dict(out=tmp_path / "a", clip_size=1), ["--out", str(tmp_path / "a"), "--clip-size", "1"],
-         "clip_size must be an integer in [9, 129], got 1", "--clip-size"),
+        (
+            dict(out=tmp_path / "a", clip_size=1),
+            ["--out", str(tmp_path / "a"), "--clip-size", "1"],
+            "clip_size must be an integer in [9, 129], got 1",
+            "--clip-size",
+        ),
         (dict(out=foreign), ["--out", str(foreign)], "out ", "--out"),
-        (dict(out=tmp_path / "b", luts=tmp_path / "b"),
-         ["--out", str(tmp_path / "b"), "--luts", str(tmp_path / "b")], "luts ", "--luts"),
+        (
+            dict(out=tmp_path / "b", luts=tmp_path / "b"),
+            ["--out", str(tmp_path / "b"), "--luts", str(tmp_path / "b")],
+            "luts ",
+            "--luts",
+        ),
     ]
     for kwargs, argv, start, option in cases:
         with pytest.raises(ValueError) as raised:
@@ -389,13 +442,16 @@ def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
     assert [p.name for p in foreign.iterdir()] == ["notes.txt"]
 
 
-@pytest.mark.parametrize("kwargs, message", [
-    (dict(size="64"), "size must be an integer, got '64'"),
-    (dict(size=64.0), "size must be an integer, got 64.0"),
-    (dict(index="1.33"), "index must be a number, got '1.33'"),
-    (dict(value_range="0 1"), r"value_range must be two numbers \(lo, hi\), got '0 1'"),
-    (dict(value_range=(0, "1")), "value_range must be a number, got '1'"),
-])
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        (dict(size="64"), "size must be an integer, got '64'"),
+        (dict(size=64.0), "size must be an integer, got 64.0"),
+        (dict(index="1.33"), "index must be a number, got '1.33'"),
+        (dict(value_range="0 1"), r"value_range must be two numbers \(lo, hi\), got '0 1'"),
+        (dict(value_range=(0, "1")), "value_range must be a number, got '1'"),
+    ],
+)
 def test_arguments_of_the_wrong_type_are_type_errors_naming_them(kwargs, message, tmp_path):
     with pytest.raises(TypeError, match=f"^{message}"):
         export.export_lut("film", tmp_path / "t.clf", **kwargs)
@@ -405,8 +461,10 @@ def test_arguments_of_the_wrong_type_are_type_errors_naming_them(kwargs, message
 def test_unwritable_output_directory(tmp_path, capsys):
     blocker = tmp_path / "file"
     blocker.write_text("not a directory")
-    for argv in (["bake", "--out", str(blocker / "cfg")],
-                 ["export", "film", "--out", str(blocker / "t.clf")]):
+    for argv in (
+        ["bake", "--out", str(blocker / "cfg")],
+        ["export", "film", "--out", str(blocker / "t.clf")],
+    ):
         assert cli.main(argv + ["--quiet"]) == 2
         err = capsys.readouterr().err.strip()
         assert len(err.splitlines()) == 1, err
@@ -451,8 +509,12 @@ def test_progress_bar_on_a_terminal_only(tmp_path):
     fcntl.ioctl(follower, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 100, 0, 0))
     chunks = []
     try:
-        proc = subprocess.Popen(cmd + ["--out", str(tmp_path / "f.spi1d")],
-                                stdout=subprocess.PIPE, stderr=follower, cwd=ROOT)
+        proc = subprocess.Popen(
+            cmd + ["--out", str(tmp_path / "f.spi1d")],
+            stdout=subprocess.PIPE,
+            stderr=follower,
+            cwd=ROOT,
+        )
         # read while it runs (the follower stays open here, so the leader never hits
         # EOF and drops what is buffered); then drain what is left
         while True:
@@ -469,12 +531,23 @@ def test_progress_bar_on_a_terminal_only(tmp_path):
     terminal = b"".join(chunks).decode(errors="replace")
     assert returncode == 0
     assert "export f.spi1d:" in terminal and "%|" in terminal
-    piped = subprocess.run(cmd + ["--out", str(tmp_path / "g.spi1d")],
-                           capture_output=True, text=True, timeout=120, cwd=ROOT)
+    piped = subprocess.run(
+        cmd + ["--out", str(tmp_path / "g.spi1d")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=ROOT,
+    )
     assert piped.returncode == 0, piped.stderr
     assert piped.stderr == "" and (tmp_path / "g.spi1d").exists()
-    full = subprocess.run(cmd + ["--format", "spi1d", "--out", "/dev/full"],
-                          capture_output=True, text=True, timeout=120, cwd=ROOT)
+    full = subprocess.run(
+        cmd + ["--format", "spi1d", "--out", "/dev/full"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=ROOT,
+    )
     assert full.returncode == 2
     assert full.stderr.splitlines() == [
-        "ocio-thinfilm export: error: cannot write /dev/full: No space left on device"]
+        "ocio-thinfilm export: error: cannot write /dev/full: No space left on device"
+    ]

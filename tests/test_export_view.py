@@ -48,8 +48,9 @@ def _colour_rgb(XYZ, name):
     import colour
 
     d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
-    return colour.XYZ_to_RGB(XYZ, colour.RGB_COLOURSPACES[name], d65,
-                             chromatic_adaptation_transform="Bradford")
+    return colour.XYZ_to_RGB(
+        XYZ, colour.RGB_COLOURSPACES[name], d65, chromatic_adaptation_transform="Bradford"
+    )
 
 
 def _decode(code, display):
@@ -57,7 +58,7 @@ def _decode(code, display):
 
     code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
     if display == "Rec.2020":
-        return code ** 2.4  # BT.1886 with a zero black level
+        return code**2.4  # BT.1886 with a zero black level
     return colour.cctf_decoding(code, "sRGB")
 
 
@@ -115,9 +116,30 @@ def ffmpeg_apply(path, values):
     img = img.reshape(h, w, 3)
     planes = np.stack([img[..., 1], img[..., 2], img[..., 0]])  # gbrp plane order
     result = subprocess.run(
-        [FFMPEG, "-v", "error", "-f", "rawvideo", "-pix_fmt", "gbrpf32le", "-s", f"{w}x{h}",
-         "-i", "-", "-vf", f"lut3d=file={path}", "-f", "rawvideo", "-pix_fmt", "gbrpf32le",
-         "-"], input=planes.astype("<f4").tobytes(), capture_output=True, timeout=120)
+        [
+            FFMPEG,
+            "-v",
+            "error",
+            "-f",
+            "rawvideo",
+            "-pix_fmt",
+            "gbrpf32le",
+            "-s",
+            f"{w}x{h}",
+            "-i",
+            "-",
+            "-vf",
+            f"lut3d=file={path}",
+            "-f",
+            "rawvideo",
+            "-pix_fmt",
+            "gbrpf32le",
+            "-",
+        ],
+        input=planes.astype("<f4").tobytes(),
+        capture_output=True,
+        timeout=120,
+    )
     assert result.returncode == 0, result.stderr.decode()
     out = np.frombuffer(result.stdout, "<f4").reshape(3, h, w)
     return np.stack([out[2], out[0], out[1]], axis=-1).reshape(-1, 3)[:n].astype(np.float64)
@@ -149,10 +171,11 @@ def acescct_luts(tmp_path_factory):
     for display in clip.DISPLAYS:
         for fmt in ("cube", "csp", "clf", "spi3d"):
             files[display, fmt] = export_view.export_view(
-                "ACEScct", display, CLC, d / f"{display.replace(' ', '')}.{fmt}")
+                "ACEScct", display, CLC, d / f"{display.replace(' ', '')}.{fmt}"
+            )
         files[display, "cube-resolve"] = export_view.export_view(
-            "ACEScct", display, CLC, d / f"{display.replace(' ', '')}-resolve.cube",
-            shaper=True)
+            "ACEScct", display, CLC, d / f"{display.replace(' ', '')}-resolve.cube", shaper=True
+        )
     return files
 
 
@@ -170,14 +193,17 @@ def test_acescct_srgb_resolve_cube_meets_target_in_colour_science(acescct_luts, 
     dE = _dE(code, XYZ, "sRGB")
     mean, p99, worst = _stats(dE)
     inside = clip.in_gamut(colorimetry.XYZ_to_RGB(XYZ, "sRGB"))
-    print(f"ACEScct->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} "
-          f"max {worst:.3f}; in gamut p99 {np.percentile(dE[inside], 99):.3f} "
-          f"max {dE[inside].max():.3f}")
+    print(
+        f"ACEScct->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} "
+        f"max {worst:.3f}; in gamut p99 {np.percentile(dE[inside], 99):.3f} "
+        f"max {dE[inside].max():.3f}"
+    )
     assert p99 <= 1.0 and worst <= 3.0
     assert np.percentile(dE[inside], 99) <= 0.5
     # docs/gamut_map.md quotes these figures: they are what this test measures
-    assert _quoted(r"applied by colour-science,\s+is within ΔE2000 p99 ([\d.]+) / max ([\d.]+)") \
-        == pytest.approx((p99, worst), abs=0.006)
+    assert _quoted(
+        r"applied by colour-science,\s+is within ΔE2000 p99 ([\d.]+) / max ([\d.]+)"
+    ) == pytest.approx((p99, worst), abs=0.006)
     # grey ramp: neutral in, neutral out (the old files took 0.18 to black)
     g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 0.9, 1.0])
     grey = _colour_apply([path], np.repeat(colour_acescct(g)[:, None], 3, axis=1))
@@ -196,16 +222,28 @@ def colour_acescct(linear):
 #: The issue's target for every display, format and consumer: dE2000 p99 <= 1.0 and
 #: max <= 3.0 (measured p99 0.12-0.61, max 1.8-2.5).
 TARGET_P99, TARGET_MAX = 1.0, 3.0
-CASES = [("sRGB", fmt, consumer) for fmt, consumer in
-         (("cube-resolve", "ocio"), ("csp", "colour"), ("csp", "ocio"), ("clf", "ocio"),
-          ("spi3d", "colour"), ("spi3d", "ocio"))]
-CASES += [(display, fmt, consumer) for display in ("Display P3", "Rec.2020")
-          for fmt, consumer in (("cube-resolve", "colour"), ("csp", "ocio"), ("clf", "ocio"))]
+CASES = [
+    ("sRGB", fmt, consumer)
+    for fmt, consumer in (
+        ("cube-resolve", "ocio"),
+        ("csp", "colour"),
+        ("csp", "ocio"),
+        ("clf", "ocio"),
+        ("spi3d", "colour"),
+        ("spi3d", "ocio"),
+    )
+]
+CASES += [
+    (display, fmt, consumer)
+    for display in ("Display P3", "Rec.2020")
+    for fmt, consumer in (("cube-resolve", "colour"), ("csp", "ocio"), ("clf", "ocio"))
+]
 
 
 @pytest.mark.parametrize("display,fmt,consumer", CASES, ids=lambda v: str(v))
-def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, display, fmt,
-                                                     consumer):
+def test_acescct_view_luts_in_independent_consumers(
+    acescct_luts, inside_AP1, display, fmt, consumer
+):
     XYZ, cct = inside_AP1
     paths = acescct_luts[display, fmt]
     if fmt == "spi3d":  # the companion shaper goes first
@@ -213,12 +251,12 @@ def test_acescct_view_luts_in_independent_consumers(acescct_luts, inside_AP1, di
         paths = paths[::-1]
     code = (_colour_apply if consumer == "colour" else _ocio_apply)(paths, cct)
     mean, p99, worst = _stats(_dE(code, XYZ, display))
-    print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
-          f"max {worst:.3f}")
+    print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
     assert p99 <= TARGET_P99 and worst <= TARGET_MAX
     if (display, fmt, consumer) == ("sRGB", "cube-resolve", "ocio"):  # quoted in docs
-        assert _quoted(r"\(through OCIO ([\d.]+) / ([\d.]+);") == \
-            pytest.approx((p99, worst), abs=0.006)
+        assert _quoted(r"\(through OCIO ([\d.]+) / ([\d.]+);") == pytest.approx(
+            (p99, worst), abs=0.006
+        )
 
 
 def _quoted(pattern):
@@ -239,21 +277,25 @@ def test_compress_display_luts(tmp_path, inside_AP1, display):
     targets for the shaper forms (dE2000 p99 <= 1.0, max <= 3.0)."""
     XYZ, cct = inside_AP1
     name = display.replace(" ", "")
-    (resolve,) = export_view.export_view("ACEScct", display, CLS, tmp_path / f"{name}-r.cube",
-                                         shaper=True)
+    (resolve,) = export_view.export_view(
+        "ACEScct", display, CLS, tmp_path / f"{name}-r.cube", shaper=True
+    )
     (csp,) = export_view.export_view("ACEScct", display, CLS, tmp_path / f"{name}.csp")
     (plain,) = export_view.export_view("ACEScct", display, CLS, tmp_path / f"{name}.cube")
     assert "Constant-Lightness Compress" in plain.read_text().splitlines()[0]
-    results = {"resolve cube (colour)": _colour_apply([resolve], cct),
-               "csp (ocio)": _ocio_apply([csp], cct)}
+    results = {
+        "resolve cube (colour)": _colour_apply([resolve], cct),
+        "csp (ocio)": _ocio_apply([csp], cct),
+    }
     if FFMPEG is not None:
         results["csp (ffmpeg)"] = ffmpeg_apply(csp, cct)
     for what, code in results.items():
         mean, p99, worst = _stats(_dE(code, XYZ, display, CLS))
         print(f"ACEScct->{display} compress {what}: p99 {p99:.3f} max {worst:.3f}")
         assert p99 <= TARGET_P99 and worst <= TARGET_MAX, what
-    np.testing.assert_allclose(_colour_tetrahedral(plain, cct), _ocio_apply([plain], cct),
-                               atol=1e-5)
+    np.testing.assert_allclose(
+        _colour_tetrahedral(plain, cct), _ocio_apply([plain], cct), atol=1e-5
+    )
 
 
 @pytest.mark.skipif(FFMPEG is None, reason="ffmpeg not installed (Debian package ffmpeg)")
@@ -275,13 +317,14 @@ def _colour_tetrahedral(path, values):
     import colour
 
     lut = colour.read_LUT(str(path))
-    return lut.apply(np.asarray(values, dtype=np.float64),
-                     interpolator=colour.algebra.table_interpolation_tetrahedral)
+    return lut.apply(
+        np.asarray(values, dtype=np.float64),
+        interpolator=colour.algebra.table_interpolation_tetrahedral,
+    )
 
 
 @pytest.mark.parametrize("display", clip.DISPLAYS)
-def test_plain_cube_is_one_3d_table_every_reader_applies_alike(acescct_luts, inside_AP1,
-                                                               display):
+def test_plain_cube_is_one_3d_table_every_reader_applies_alike(acescct_luts, inside_AP1, display):
     """The default ACEScct .cube: LUT_3D_SIZE and the table only (no 1D shaper, no
     DOMAIN lines, which ffmpeg, OpenShot and three.js ignore), its TITLE saying so;
     OCIO, colour-science and ffmpeg (where installed) give the same code values on
@@ -325,14 +368,19 @@ def _plain_stats(acescct_luts, inside_AP1, display):
 @pytest.mark.parametrize("display", clip.DISPLAYS)
 def test_plain_cube_accuracy(acescct_luts, inside_AP1, display):
     mean, p99, worst, in_p99, in_max = _plain_stats(acescct_luts, inside_AP1, display)
-    print(f"ACEScct->{display} plain .cube (OCIO): mean {mean:.3f} p99 {p99:.3f} "
-          f"max {worst:.3f}; inside {display}: p99 {in_p99:.3f} max {in_max:.3f}")
+    print(
+        f"ACEScct->{display} plain .cube (OCIO): mean {mean:.3f} p99 {p99:.3f} "
+        f"max {worst:.3f}; inside {display}: p99 {in_p99:.3f} max {in_max:.3f}"
+    )
     assert p99 <= PLAIN_LIMITS[display][0] and worst <= PLAIN_LIMITS[display][1]
 
 
-@pytest.mark.xfail(strict=True, reason="target for the plain .cube (p99 1.0, "
-                   "max 3.0 on object colours inside AP1) is not reached by a 65^3 grid "
-                   "uniform in ACEScct; the Resolve form and .csp reach it")
+@pytest.mark.xfail(
+    strict=True,
+    reason="target for the plain .cube (p99 1.0, "
+    "max 3.0 on object colours inside AP1) is not reached by a 65^3 grid "
+    "uniform in ACEScct; the Resolve form and .csp reach it",
+)
 def test_plain_cube_meets_issue_target(acescct_luts, inside_AP1):
     _, p99, worst, _, _ = _plain_stats(acescct_luts, inside_AP1, "sRGB")
     assert p99 <= 1.0 and worst <= 3.0
@@ -341,11 +389,14 @@ def test_plain_cube_meets_issue_target(acescct_luts, inside_AP1):
 # --------------------------------------------------------------------------- #
 # Other inputs
 # --------------------------------------------------------------------------- #
-@pytest.mark.parametrize("source,name,limits", [
-    ("ACEScg", "ACEScg", (1.0, 3.0)),  # measured 0.68 / 2.2
-    ("Linear Rec.709 (sRGB)", "ITU-R BT.709", (1.8, 7.0)),  # measured 1.19 / 4.7
-    ("CIE-XYZ-D65", None, (2.8, 9.0)),  # measured 1.85 / 6.5
-])
+@pytest.mark.parametrize(
+    "source,name,limits",
+    [
+        ("ACEScg", "ACEScg", (1.0, 3.0)),  # measured 0.68 / 2.2
+        ("Linear Rec.709 (sRGB)", "ITU-R BT.709", (1.8, 7.0)),  # measured 1.19 / 4.7
+        ("CIE-XYZ-D65", None, (2.8, 9.0)),  # measured 1.85 / 6.5
+    ],
+)
 def test_linear_inputs_cube(tmp_path, object_XYZ, source, name, limits):
     (path,) = export_view.export_view(source, "sRGB", CLC, tmp_path / "v.cube", size=65)
     XYZ = object_XYZ
@@ -354,16 +405,16 @@ def test_linear_inputs_cube(tmp_path, object_XYZ, source, name, limits):
         keep = (values >= 0).all(axis=1)
         XYZ, values = XYZ[keep], values[keep]
     mean, p99, worst = _stats(_dE(_colour_apply([path], values), XYZ, "sRGB"))
-    print(f"{source}->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} "
-          f"max {worst:.3f}")
+    print(f"{source}->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
     assert p99 <= limits[0] and worst <= limits[1]
 
 
 def test_thin_film_input_is_a_1d_lut_over_thickness(tmp_path):
     """Thickness in um in, sRGB code values out: against the analytic film colour
     clipped analytically."""
-    (path,) = export_view.export_view("Thin Film Phase-Change Thickness", "sRGB", CLC,
-                                      tmp_path / "f.cube")
+    (path,) = export_view.export_view(
+        "Thin Film Phase-Change Thickness", "sRGB", CLC, tmp_path / "f.cube"
+    )
     assert "LUT_1D_INPUT_RANGE 0.000000 1.500000" in path.read_text()
     t = np.linspace(0.0, 1.5, 1501)
     XYZ = colorimetry.film_XYZ(t * 1000.0, "phase-change")
@@ -375,8 +426,9 @@ def test_thin_film_input_is_a_1d_lut_over_thickness(tmp_path):
 
 
 def test_channel_clamp_clf_is_the_exact_chain(tmp_path, object_XYZ):
-    (path,) = export_view.export_view("Linear Rec.709 (sRGB)", "Display P3", "Channel Clamp",
-                                      tmp_path / "c.clf")
+    (path,) = export_view.export_view(
+        "Linear Rec.709 (sRGB)", "Display P3", "Channel Clamp", tmp_path / "c.clf"
+    )
     text = path.read_text()
     assert "<LUT3D" not in text and "<InputDescriptor>" in text
     code = _ocio_apply([path], _colour_rgb(object_XYZ, "ITU-R BT.709"))
@@ -396,26 +448,96 @@ def test_ctf_holds_the_exact_constant_lightness_chain(tmp_path, inside_AP1):
 # --------------------------------------------------------------------------- #
 BAD_VIEW = [  # (argv, what the one-line error says)
     (["export", "view", "--display", "sRGB", "--view", CLC], "--from is needed"),
-    (["export", "view", "--from", "Nope", "--display", "sRGB", "--view", CLC],
-     "unknown colour space 'Nope'"),
+    (
+        ["export", "view", "--from", "Nope", "--display", "sRGB", "--view", CLC],
+        "unknown colour space 'Nope'",
+    ),
     (["export", "view", "--from", "ACEScct", "--view", CLC], "--display is needed"),
-    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", "Nope"],
-     "unknown view 'Nope'"),
-    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
-      "--format", "spi1d"], "needs a 3D LUT"),
-    (["export", "view", "--from", "Thin Film Morpho Iridescence", "--display", "sRGB",
-      "--view", CLC, "--format", "csp"], "a 1D LUT"),
-    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
-      "--size", "1000"], "--size must be in [2, "),
-    (["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", CLC,
-      "--range", "0", "2"], "--range applies to the thin-film inputs only"),
-    (["export", "view", "--from", "Thin Film Morpho Iridescence", "--display", "sRGB",
-      "--view", CLC, "--resolve-shaper"], "--resolve-shaper applies to 3D LUTs"),
+    (
+        ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", "Nope"],
+        "unknown view 'Nope'",
+    ),
+    (
+        [
+            "export",
+            "view",
+            "--from",
+            "ACEScct",
+            "--display",
+            "sRGB",
+            "--view",
+            CLC,
+            "--format",
+            "spi1d",
+        ],
+        "needs a 3D LUT",
+    ),
+    (
+        [
+            "export",
+            "view",
+            "--from",
+            "Thin Film Morpho Iridescence",
+            "--display",
+            "sRGB",
+            "--view",
+            CLC,
+            "--format",
+            "csp",
+        ],
+        "a 1D LUT",
+    ),
+    (
+        [
+            "export",
+            "view",
+            "--from",
+            "ACEScct",
+            "--display",
+            "sRGB",
+            "--view",
+            CLC,
+            "--size",
+            "1000",
+        ],
+        "--size must be in [2, ",
+    ),
+    (
+        [
+            "export",
+            "view",
+            "--from",
+            "ACEScct",
+            "--display",
+            "sRGB",
+            "--view",
+            CLC,
+            "--range",
+            "0",
+            "2",
+        ],
+        "--range applies to the thin-film inputs only",
+    ),
+    (
+        [
+            "export",
+            "view",
+            "--from",
+            "Thin Film Morpho Iridescence",
+            "--display",
+            "sRGB",
+            "--view",
+            CLC,
+            "--resolve-shaper",
+        ],
+        "--resolve-shaper applies to 3D LUTs",
+    ),
 ]
 
 
-@pytest.mark.parametrize("argv, says", BAD_VIEW, ids=lambda a: " ".join(a[2:])
-                         if isinstance(a, list) else "")
+@pytest.mark.parametrize(
+    "argv, says", BAD_VIEW, ids=lambda a: " ".join(a[2:]) if isinstance(a, list) else ""
+)
 def test_bad_view_arguments(argv, says, tmp_path, capsys):
     out = tmp_path / "out" / ("x" if "--format" in argv else "x.cube")
     assert cli.main(argv + ["--out", str(out), "--quiet"]) == 2
@@ -425,41 +547,69 @@ def test_bad_view_arguments(argv, says, tmp_path, capsys):
     assert list(tmp_path.rglob("*")) == []
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    (dict(source=None), "source is needed"),
-    (dict(display=None), "display is needed"),
-    (dict(view=None), "view is needed"),
-    (dict(size=1000), "size must be in [2, "),
-    (dict(value_range=(0.0, 2.0)), "value_range applies to the thin-film inputs only"),
-    (dict(fmt="spi3d", shaper=True), "shaper applies to .cube files"),
-    (dict(out="v.lut"), "fmt is needed: no format can be told from 'v.lut'"),
-])
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        (dict(source=None), "source is needed"),
+        (dict(display=None), "display is needed"),
+        (dict(view=None), "view is needed"),
+        (dict(size=1000), "size must be in [2, "),
+        (dict(value_range=(0.0, 2.0)), "value_range applies to the thin-film inputs only"),
+        (dict(fmt="spi3d", shaper=True), "shaper applies to .cube files"),
+        (dict(out="v.lut"), "fmt is needed: no format can be told from 'v.lut'"),
+    ],
+)
 def test_the_library_names_its_parameters(kwargs, parameter, tmp_path, monkeypatch):
     """Reference: the parameter names of export_view's signature."""
     monkeypatch.chdir(tmp_path)
     call = dict(source="ACEScct", display="sRGB", view=CLC, out="v.cube") | kwargs
     with pytest.raises(ValueError) as raised:
-        export_view.export_view(call.pop("source"), call.pop("display"), call.pop("view"),
-                                call.pop("out"), **call)
+        export_view.export_view(
+            call.pop("source"), call.pop("display"), call.pop("view"), call.pop("out"), **call
+        )
     assert str(raised.value).startswith(parameter) and "--" not in str(raised.value)
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("kwargs", [dict(size="9"), dict(size=9.0),
-                                    dict(source="Thin Film Phase-Change Thickness",
-                                         value_range=("0", "1"))])
+@pytest.mark.parametrize(
+    "kwargs",
+    [
+        dict(size="9"),
+        dict(size=9.0),
+        dict(source="Thin Film Phase-Change Thickness", value_range=("0", "1")),
+    ],
+)
 def test_arguments_of_the_wrong_type_are_type_errors(kwargs, tmp_path):
     call = dict(source="ACEScct", display="sRGB", view=CLC) | kwargs
     with pytest.raises(TypeError, match=f"^{'size' if 'size' in kwargs else 'value_range'} "):
-        export_view.export_view(call.pop("source"), call.pop("display"), call.pop("view"),
-                                tmp_path / "v.cube", **call)
+        export_view.export_view(
+            call.pop("source"), call.pop("display"), call.pop("view"), tmp_path / "v.cube", **call
+        )
     assert list(tmp_path.iterdir()) == []
 
 
 def test_cli_export_view_writes_file(tmp_path, capsys):
     out = tmp_path / "v.csp"
-    assert cli.main(["export", "view", "--from", "ACEScg", "--display", "Rec.2020", "--view",
-                     CLC, "--size", "9", "--out", str(out), "--quiet"]) == 0
+    assert (
+        cli.main(
+            [
+                "export",
+                "view",
+                "--from",
+                "ACEScg",
+                "--display",
+                "Rec.2020",
+                "--view",
+                CLC,
+                "--size",
+                "9",
+                "--out",
+                str(out),
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     assert "wrote" in capsys.readouterr().out
     assert out.read_text().startswith("CSPLUTV100")
 
@@ -481,8 +631,11 @@ def _hdr_dE(code, XYZ, display):
 
     entry = registry.hdr_display(display)
     code = np.asarray(code, dtype=np.float64)
-    nits = (colour.models.eotf_ST2084(code) if entry.transfer == "PQ" else
-            colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0))
+    nits = (
+        colour.models.eotf_ST2084(code)
+        if entry.transfer == "PQ"
+        else colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0)
+    )
     got = colorimetry.RGB_to_XYZ(nits / 203.0, entry.gamut)
     return colorimetry.delta_E2000(got / HDR_K, clip.clip_XYZ(XYZ / HDR_K, entry.gamut))
 
@@ -494,10 +647,12 @@ def hdr_luts(tmp_path_factory):
     for display in ("Rec.2100-PQ", "P3-D65 PQ"):
         stem = display.replace(" ", "").replace(".", "")
         for fmt in ("cube", "csp"):
-            files[display, fmt] = export_view.export_view("ACEScct", display, CLC,
-                                                          d / f"{stem}.{fmt}")
+            files[display, fmt] = export_view.export_view(
+                "ACEScct", display, CLC, d / f"{stem}.{fmt}"
+            )
         files[display, "cube-resolve"] = export_view.export_view(
-            "ACEScct", display, CLC, d / f"{stem}-resolve.cube", shaper=True)
+            "ACEScct", display, CLC, d / f"{stem}-resolve.cube", shaper=True
+        )
     return files
 
 
@@ -513,8 +668,10 @@ HDR_LIMITS = {"cube-resolve": (1.0, 3.0), "csp": (1.0, 3.0), "cube": (5.5, 12.0)
 
 
 @pytest.mark.parametrize("display", ["Rec.2100-PQ", "P3-D65 PQ"])
-@pytest.mark.parametrize("fmt, consumer", [("cube-resolve", "colour"), ("csp", "ocio"),
-                                           ("cube", "ocio"), ("cube", "colour")])
+@pytest.mark.parametrize(
+    "fmt, consumer",
+    [("cube-resolve", "colour"), ("csp", "ocio"), ("cube", "ocio"), ("cube", "colour")],
+)
 def test_acescct_hdr_view_luts(hdr_luts, inside_AP1, display, fmt, consumer):
     """ACEScct -> an HDR display: the file's codes, applied by colour-science or OCIO
     and decoded with colour-science's ST 2084 EOTF, against the analytic clip scaled
@@ -525,21 +682,30 @@ def test_acescct_hdr_view_luts(hdr_luts, inside_AP1, display, fmt, consumer):
 
     XYZ, cct = inside_AP1
     XYZ = np.vstack([XYZ, XYZ * HDR_K])
-    cct = np.vstack([cct, colour.models.log_encoding_ACEScct(
-        _colour_rgb(XYZ[len(cct):], "ACEScg"))])
+    cct = np.vstack(
+        [cct, colour.models.log_encoding_ACEScct(_colour_rgb(XYZ[len(cct) :], "ACEScg"))]
+    )
     (path,) = hdr_luts[display, fmt]
     if fmt == "cube":
         assert 'TITLE "ACEScct to ' + display in path.read_text().splitlines()[0]
-    apply = _colour_tetrahedral if (fmt, consumer) == ("cube", "colour") else (
-        (lambda p, v: _colour_apply([p], v)) if consumer == "colour"
-        else (lambda p, v: _ocio_apply([p], v)))
+    apply = (
+        _colour_tetrahedral
+        if (fmt, consumer) == ("cube", "colour")
+        else (
+            (lambda p, v: _colour_apply([p], v))
+            if consumer == "colour"
+            else (lambda p, v: _ocio_apply([p], v))
+        )
+    )
     dE = _hdr_dE(apply(path, cct), XYZ, display)
     mean, p99, worst = _stats(dE)
     n = len(dE) // 2
-    print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
-          f"max {worst:.3f} (diffuse p99 {np.percentile(dE[:n], 99):.3f} max "
-          f"{dE[:n].max():.3f}; highlights p99 {np.percentile(dE[n:], 99):.3f} max "
-          f"{dE[n:].max():.3f})")
+    print(
+        f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
+        f"max {worst:.3f} (diffuse p99 {np.percentile(dE[:n], 99):.3f} max "
+        f"{dE[:n].max():.3f}; highlights p99 {np.percentile(dE[n:], 99):.3f} max "
+        f"{dE[n:].max():.3f})"
+    )
     assert p99 <= HDR_LIMITS[fmt][0] and worst <= HDR_LIMITS[fmt][1]
     # grey ramp up to the peak: neutral, at 203 Y cd/m2 (dE2000 relative to the peak, as
     # the SDR files' grey ramp relative to their white)

@@ -48,9 +48,11 @@ def _decode(code, display):
 def _apply_view(cfg, display, XYZ, optimization=None, view=VIEW):
     """The config's ``view`` of ``display`` on CIE-XYZ-D65 (float32 code values)."""
     proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-    cpu = (proc.getDefaultCPUProcessor() if optimization is None else
-           proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
-                                         optimization))
+    cpu = (
+        proc.getDefaultCPUProcessor()
+        if optimization is None
+        else proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, optimization)
+    )
     px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
     cpu.applyRGB(px)
     return px
@@ -72,10 +74,12 @@ def measured(cfg):
             de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
             inside = clip.in_gamut(XYZ @ M.T)
             out[display, name] = dict(
-                p99=float(np.percentile(de, 99)), max=float(de.max()),
+                p99=float(np.percentile(de, 99)),
+                max=float(de.max()),
                 dY=float(np.abs(colorimetry.RGB_to_XYZ(rgb, display)[:, 1] - truth[:, 1]).max()),
                 inside_max=float(de[inside].max()) if inside.any() else 0.0,
-                in_gamut=bool(np.all((code >= 0.0) & (code <= 1.0 + TOL))))
+                in_gamut=bool(np.all((code >= 0.0) & (code <= 1.0 + TOL))),
+            )
     return out
 
 
@@ -87,16 +91,20 @@ TOL = 1e-4
 TARGET = (0.5, 1.5, 1e-3, 0.1)
 #: What the design reaches, per set (same order), measured on these sets: all three
 #: displays are within these numbers.
-REACHED = {"object": (0.5, 1.5, 1e-3, 0.1),
-           "monochromatic": (0.5, 1.5, 1e-3, 0.1),
-           "ap0": (0.5, 1.6, 1e-3, 0.1),
-           "mixtures": (0.5, 1.5, 1e-3, 0.1)}
+REACHED = {
+    "object": (0.5, 1.5, 1e-3, 0.1),
+    "monochromatic": (0.5, 1.5, 1e-3, 0.1),
+    "ap0": (0.5, 1.6, 1e-3, 0.1),
+    "mixtures": (0.5, 1.5, 1e-3, 0.1),
+}
 #: (display, set) pairs that miss TARGET (a strict xfail each, so it turns into a
 #: failure once met): the dark violet beyond the blue primary (AP0 at Y ~ 0.05, where
 #: the interpolant between points on two faces still cuts the triangle's corner a
 #: little after the fit of the outside nodes).
-MISSES = {("sRGB", "ap0"): "max dE2000 1.57 (dark violet beyond the blue primary)",
-          ("Display P3", "ap0"): "max dE2000 1.504 (dark violet beyond the blue primary)"}
+MISSES = {
+    ("sRGB", "ap0"): "max dE2000 1.57 (dark violet beyond the blue primary)",
+    ("Display P3", "ap0"): "max dE2000 1.504 (dark violet beyond the blue primary)",
+}
 
 
 def _check(m, limits):
@@ -112,15 +120,27 @@ def _check(m, limits):
 @pytest.mark.parametrize("name", list(REACHED))
 def test_view_against_the_analytic_clip(measured, display, name):
     m = measured[display, name]
-    print(f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
-          f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}")
+    print(
+        f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
+        f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}"
+    )
     _check(m, REACHED[name])
 
 
-@pytest.mark.parametrize("display, name", [
-    pytest.param(d, n, marks=[pytest.mark.xfail(strict=True, reason=f"target not reached: "
-                                                f"{MISSES[d, n]}")] if (d, n) in MISSES else [])
-    for d in DISPLAYS for n in REACHED])
+@pytest.mark.parametrize(
+    "display, name",
+    [
+        pytest.param(
+            d,
+            n,
+            marks=[pytest.mark.xfail(strict=True, reason=f"target not reached: {MISSES[d, n]}")]
+            if (d, n) in MISSES
+            else [],
+        )
+        for d in DISPLAYS
+        for n in REACHED
+    ],
+)
 def test_view_target(measured, display, name):
     _check(measured[display, name], TARGET)
 
@@ -129,13 +149,33 @@ def test_view_target(measured, display, name):
 # (d) extremes, every optimisation level
 # --------------------------------------------------------------------------- #
 F32_MAX = float(np.finfo(np.float32).max)
-EXTREMES = np.array([
-    [0, 0, 0], [1e-40, 1e-40, 1e-40], [0, 0, 1e-40], [-1, -1, -1], [-1, 0.5, 0.5],
-    [0.5, -3, 0.5], [2, 2, 2], [0.95, 1.5, 1.09], [1e4, 1e4, 1e4], [1e30, 0.5, 0.5],
-    [-1e30, 0.5, 0.5], [0.5, 1e30, 0.5], [0.5, 0.5, 1e30], [F32_MAX] * 3, [-F32_MAX] * 3,
-    [F32_MAX, -F32_MAX, F32_MAX], [1e-30, 1.0, 1e30]], dtype=np.float32)
-LEVELS = {"NONE": "OPTIMIZATION_NONE", "DRAFT": "OPTIMIZATION_DRAFT",
-          "DEFAULT": "OPTIMIZATION_DEFAULT"}
+EXTREMES = np.array(
+    [
+        [0, 0, 0],
+        [1e-40, 1e-40, 1e-40],
+        [0, 0, 1e-40],
+        [-1, -1, -1],
+        [-1, 0.5, 0.5],
+        [0.5, -3, 0.5],
+        [2, 2, 2],
+        [0.95, 1.5, 1.09],
+        [1e4, 1e4, 1e4],
+        [1e30, 0.5, 0.5],
+        [-1e30, 0.5, 0.5],
+        [0.5, 1e30, 0.5],
+        [0.5, 0.5, 1e30],
+        [F32_MAX] * 3,
+        [-F32_MAX] * 3,
+        [F32_MAX, -F32_MAX, F32_MAX],
+        [1e-30, 1.0, 1e30],
+    ],
+    dtype=np.float32,
+)
+LEVELS = {
+    "NONE": "OPTIMIZATION_NONE",
+    "DRAFT": "OPTIMIZATION_DRAFT",
+    "DEFAULT": "OPTIMIZATION_DEFAULT",
+}
 
 
 @pytest.mark.parametrize("level", LEVELS)
@@ -151,8 +191,29 @@ def test_extremes_finite_and_in_gamut(cfg, display, level):
 
 def _finite_probe():
     """Finite values every input space can hold, huge and tiny included."""
-    v = np.array([0.0, 1e-40, 1e-30, 1e-6, 0.18, 0.5, 1.0, 4.0, 100.0, 1e4, 1e30,
-                  F32_MAX, -1e-6, -0.5, -1.0, -100.0, -1e30, -F32_MAX], dtype=np.float32)
+    v = np.array(
+        [
+            0.0,
+            1e-40,
+            1e-30,
+            1e-6,
+            0.18,
+            0.5,
+            1.0,
+            4.0,
+            100.0,
+            1e4,
+            1e30,
+            F32_MAX,
+            -1e-6,
+            -0.5,
+            -1.0,
+            -100.0,
+            -1e30,
+            -F32_MAX,
+        ],
+        dtype=np.float32,
+    )
     grid = np.stack(np.meshgrid(v, v, v, indexing="ij"), axis=-1).reshape(-1, 3)
     return np.ascontiguousarray(grid)
 
@@ -162,8 +223,11 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
     """Finite, in-range output from finite input for every (input space,
     display, view) of the config, at OCIO's NONE, DRAFT and DEFAULT optimisation."""
     probe = _finite_probe()
-    spaces = [cs.getName() for cs in cfg.getColorSpaces()
-              if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_SCENE and not cs.isData()]
+    spaces = [
+        cs.getName()
+        for cs in cfg.getColorSpaces()
+        if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_SCENE and not cs.isData()
+    ]
     bad = []
     for src in spaces:
         for display in cfg.getDisplays():
@@ -171,8 +235,9 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
                 if view == "Raw":
                     continue
                 proc = cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)
-                cpu = proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32,
-                                                    getattr(ocio, LEVELS[level]))
+                cpu = proc.getOptimizedCPUProcessor(
+                    ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, LEVELS[level])
+                )
                 px = probe.copy()
                 cpu.applyRGB(px)
                 if not (np.all(np.isfinite(px)) and px.min() >= -TOL and px.max() <= 1.0 + TOL):
@@ -210,6 +275,8 @@ def test_load_benchmark_table_comes_from_its_json(load_benchmark, marked):
     for row in result["rows"]:
         med = row["median_s"]
         assert row["clip_over_aces"] == pytest.approx(
-            med["Constant-Lightness Clip"] / med["ACES Gamut Compression"])
+            med["Constant-Lightness Clip"] / med["ACES Gamut Compression"]
+        )
         assert row["compress_over_aces"] == pytest.approx(
-            med["Constant-Lightness Compress"] / med["ACES Gamut Compression"])
+            med["Constant-Lightness Compress"] / med["ACES Gamut Compression"]
+        )

@@ -39,10 +39,12 @@ TOL = 2.0 / 255.0
 #: (the clip's black pass, the compression's squeezes) leave 1e-5 of white (4e-6 of the
 #: peak) above it reaches 2.29/255 (P3-D65 PQ clip), 3.31/255 (P3-D65 PQ compression)
 #: and 2.34/255 (Rec.2100-PQ compression), 0.002-0.004 cd/m2 of light.
-REACHED = {("Rec.2020", "Constant-Lightness Compress", "f2"): 2.2 / 255.0,
-           ("P3-D65 PQ", "Constant-Lightness Clip", "f2"): 2.35 / 255.0,
-           ("P3-D65 PQ", "Constant-Lightness Compress", "f2"): 3.4 / 255.0,
-           ("Rec.2100-PQ", "Constant-Lightness Compress", "f2"): 2.4 / 255.0}
+REACHED = {
+    ("Rec.2020", "Constant-Lightness Compress", "f2"): 2.2 / 255.0,
+    ("P3-D65 PQ", "Constant-Lightness Clip", "f2"): 2.35 / 255.0,
+    ("P3-D65 PQ", "Constant-Lightness Compress", "f2"): 3.4 / 255.0,
+    ("Rec.2100-PQ", "Constant-Lightness Compress", "f2"): 2.4 / 255.0,
+}
 MODERATE = (-20.0, 100.0)
 SOURCES = [
     "CIE-XYZ-D65",
@@ -57,9 +59,9 @@ SOURCES = [
 THIN_FILM = {s for s in SOURCES if s.startswith("Thin Film")}
 DTYPES = ("f4", "f2")
 F32_MAX = float(np.finfo(np.float32).max)
-PRECISE = ocio.OptimizationFlags(int(ocio.OPTIMIZATION_DEFAULT)
-                                 & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW))
-
+PRECISE = ocio.OptimizationFlags(
+    int(ocio.OPTIMIZATION_DEFAULT) & ~int(ocio.OPTIMIZATION_FAST_LOG_EXP_POW)
+)
 
 
 @pytest.fixture(scope="module")
@@ -82,6 +84,7 @@ def gl():
 # ---------------------------------------------------------------------------------------------
 # The harness on analytic transforms (cannot pass by accident: each expected value is numpy's)
 # ---------------------------------------------------------------------------------------------
+
 
 def _run(gl, transform, x, dtype="f4"):
     from evaluation import gpu
@@ -130,10 +133,13 @@ def test_harness_lut3d(gl, dtype):
     exactly by any interpolation.
     """
     n = 17
-    affine = lambda r, g, b: (0.2 + 0.5 * r + 0.25 * g + 0.05 * b,  # noqa: E731
-                              0.9 * g - 0.3 * b + 0.1,
-                              0.4 * r + 0.6 * b)
-    curved = lambda r, g, b: (r * r + 0.1 * g, np.sqrt(g) * (1 - 0.5 * b), np.sin(3 * b) + 0.2 * r)  # noqa: E731
+
+    def affine(r, g, b):
+        return (0.2 + 0.5 * r + 0.25 * g + 0.05 * b, 0.9 * g - 0.3 * b + 0.1, 0.4 * r + 0.6 * b)
+
+    def curved(r, g, b):
+        return (r * r + 0.1 * g, np.sqrt(g) * (1 - 0.5 * b), np.sin(3 * b) + 0.2 * r)
+
     grid = np.linspace(0, 1, n)
     r, g, b = (a.ravel() for a in np.meshgrid(grid, grid, grid, indexing="ij"))
     lattice = np.stack([r, g, b], -1).astype(np.float32)
@@ -157,7 +163,7 @@ def test_harness_lut3d(gl, dtype):
     if dtype == "f4":
         assert err < 2e-6
     else:  # half-float lattice values: error of the order of their rounding, no more
-        assert 1e-5 < err <= 2.0 ** -11
+        assert 1e-5 < err <= 2.0**-11
 
 
 @pytest.mark.parametrize("dtype", DTYPES)
@@ -167,9 +173,9 @@ def test_harness_lut1d(gl, dtype, size, mono):
     t = ocio.Lut1DTransform(length=size)
     x_grid = np.linspace(0, 1, size)
     if mono:
-        vals = np.stack([x_grid ** 2] * 3, -1)
+        vals = np.stack([x_grid**2] * 3, -1)
     else:
-        vals = np.stack([x_grid ** 2, 1 - x_grid, np.sqrt(x_grid)], -1)
+        vals = np.stack([x_grid**2, 1 - x_grid, np.sqrt(x_grid)], -1)
     t.setData(vals.astype(np.float32).ravel())
     x = np.random.default_rng(3).uniform(0, 1, (3000, 3)).astype(np.float32)
     prog, y = _run(gl, t, x, dtype)
@@ -199,8 +205,9 @@ def test_harness_uniforms(gl):
     curve.red = ocio.GradingBSplineCurve([0, 0, 0.3, 0.45, 0.7, 0.6, 1, 1])
     curve.blue = ocio.GradingBSplineCurve([0, 0.05, 0.5, 0.4, 1, 0.95])
     transforms = [
-        ocio.ExposureContrastTransform(exposure=1.5, contrast=1.2, pivot=0.18,
-                                       dynamicExposure=True, dynamicContrast=True),
+        ocio.ExposureContrastTransform(
+            exposure=1.5, contrast=1.2, pivot=0.18, dynamicExposure=True, dynamicContrast=True
+        ),
         ocio.GradingPrimaryTransform(gp, ocio.GRADING_LOG, dynamic=True),
         ocio.GradingRGBCurveTransform(curve, ocio.GRADING_LOG, dynamic=True),
     ]
@@ -214,13 +221,19 @@ def test_harness_uniforms(gl):
         kinds |= {u.type for _, u in prog.shader_desc.getUniforms()}
         assert np.abs(cpu - x).max() > 0.1  # the transform does something
         np.testing.assert_allclose(y, cpu, atol=1e-4)
-    assert kinds >= {ocio.UNIFORM_DOUBLE, ocio.UNIFORM_FLOAT3, ocio.UNIFORM_BOOL,
-                     ocio.UNIFORM_VECTOR_FLOAT, ocio.UNIFORM_VECTOR_INT}
+    assert kinds >= {
+        ocio.UNIFORM_DOUBLE,
+        ocio.UNIFORM_FLOAT3,
+        ocio.UNIFORM_BOOL,
+        ocio.UNIFORM_VECTOR_FLOAT,
+        ocio.UNIFORM_VECTOR_INT,
+    }
 
 
 # ---------------------------------------------------------------------------------------------
 # The baked config
 # ---------------------------------------------------------------------------------------------
+
 
 @pytest.fixture(scope="module")
 def config():
@@ -242,8 +255,10 @@ except Exception:  # config missing or unreadable: the config fixture skips
 
 def _extremes():
     """Every combination of negative, above-white and huge values up to float32 max."""
-    v = np.array([-F32_MAX, -1e30, -1e4, -100, -20, -1, 0, 0.5, 1, 20, 100, 1e4, 1e30, F32_MAX],
-                 dtype=np.float32)
+    v = np.array(
+        [-F32_MAX, -1e30, -1e4, -100, -20, -1, 0, 0.5, 1, 20, 100, 1e4, 1e30, F32_MAX],
+        dtype=np.float32,
+    )
     return np.stack(np.meshgrid(v, v, v, indexing="ij"), -1).reshape(-1, 3)
 
 
@@ -291,11 +306,11 @@ def _moderate(cfg, src, x):
 
 @dataclass
 class Case:
-    x: np.ndarray          # inputs (N, 3)
-    moderate: np.ndarray   # (N,) bool
-    cpu: np.ndarray        # getDefaultCPUProcessor()
-    precise: np.ndarray    # getOptimizedCPUProcessor(PRECISE)
-    gpu: dict              # texture dtype -> (N, 3)
+    x: np.ndarray  # inputs (N, 3)
+    moderate: np.ndarray  # (N,) bool
+    cpu: np.ndarray  # getDefaultCPUProcessor()
+    precise: np.ndarray  # getOptimizedCPUProcessor(PRECISE)
+    gpu: dict  # texture dtype -> (N, 3)
 
 
 def _diffs(case, dtype):
@@ -355,8 +370,11 @@ def results(gl, config, request):
     res = Results(gl, config)
     yield res
     # Report the max |GPU - CPU| per view and texture type (code values /255).
-    lines = ["", "GPU vs CPU, max |diff| in /255 code values (vs nearer CPU path, asserted <= 2; "
-             f"vs default CPU), inputs within {MODERATE}; {res.seconds:.1f} s of GPU+CPU work:"]
+    lines = [
+        "",
+        "GPU vs CPU, max |diff| in /255 code values (vs nearer CPU path, asserted <= 2; "
+        f"vs default CPU), inputs within {MODERATE}; {res.seconds:.1f} s of GPU+CPU work:",
+    ]
     for display, view in VIEWS:
         cells = []
         for dt in DTYPES:
@@ -366,8 +384,10 @@ def results(gl, config, request):
                     worst.append((*_diffs(res.cache[(display, view, src)], dt), src))
             d_default = max(w[0] for w in worst)
             d_asserted, where = max((w[1], w[2]) for w in worst)
-            cells.append(f"{dt} {d_asserted * 255:7.3f} (default CPU {d_default * 255:7.3f})"
-                         + (f" worst: {where}" if d_asserted > TOL else ""))
+            cells.append(
+                f"{dt} {d_asserted * 255:7.3f} (default CPU {d_default * 255:7.3f})"
+                + (f" worst: {where}" if d_asserted > TOL else "")
+            )
         lines.append(f"  {display:10s} {view:24s} " + "   ".join(cells))
     capture = request.config.pluginmanager.getplugin("capturemanager")
     if capture is not None:  # show the table without -s
@@ -405,12 +425,24 @@ def test_gpu_matches_cpu(results, display, view, dtype, request):
     over = {s: round(d * 255, 3) for s, d in worst.items() if d > (reached or TOL)}
     assert not over, f"max |GPU - CPU| over {(reached or TOL) * 255:.2f}/255 (in /255): {over}"
     if reached is not None and max(worst.values()) > TOL:
-        pytest.xfail(f"{display} / {view} with {dtype} textures: "
-                     f"{max(worst.values()) * 255:.2f}/255 (target 2/255)")
+        pytest.xfail(
+            f"{display} / {view} with {dtype} textures: "
+            f"{max(worst.values()) * 255:.2f}/255 (target 2/255)"
+        )
 
 
-NONFINITE = np.array([[np.nan] * 3, [np.inf] * 3, [-np.inf] * 3, [np.nan, 0.5, 0.5],
-                      [np.inf, 0.5, 0.5], [-np.inf, 0.5, 0.5], [0.5, np.inf, 0.5]], np.float32)
+NONFINITE = np.array(
+    [
+        [np.nan] * 3,
+        [np.inf] * 3,
+        [-np.inf] * 3,
+        [np.nan, 0.5, 0.5],
+        [np.inf, 0.5, 0.5],
+        [-np.inf, 0.5, 0.5],
+        [0.5, np.inf, 0.5],
+    ],
+    np.float32,
+)
 
 
 @pytest.mark.parametrize("display,view", VIEWS)
@@ -438,8 +470,10 @@ def test_gpu_nonfinite_inputs(gl, config, display, view):
         finally:
             prog.release()
         same = {dt: bool(np.array_equal(out[dt], cpu, equal_nan=True)) for dt in DTYPES}
-        print(f"{display} / {view} / {src}: GPU == CPU {same}; CPU {cpu.tolist()}; "
-              f"GPU f4 {out['f4'].tolist()}")
+        print(
+            f"{display} / {view} / {src}: GPU == CPU {same}; CPU {cpu.tolist()}; "
+            f"GPU f4 {out['f4'].tolist()}"
+        )
         if view == "Raw":
             for y in (cpu, *out.values()):
                 np.testing.assert_array_equal(y, NONFINITE)

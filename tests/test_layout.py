@@ -17,8 +17,18 @@ from pathlib import Path
 import pytest
 
 PACKAGE = Path(__file__).resolve().parents[1] / "ocio_thinfilm"
-STAGES = ["cache", "io", "physics", "colour", "registry", "lut", "config", "export", "render",
-          "cli"]
+STAGES = [
+    "cache",
+    "io",
+    "physics",
+    "colour",
+    "registry",
+    "lut",
+    "config",
+    "export",
+    "render",
+    "cli",
+]
 RANK = {name: rank for rank, name in enumerate(STAGES)}
 RANK.update(cache=0, io=0, colour=3, registry=3)  # leaves; registry beside colorimetry
 
@@ -37,8 +47,12 @@ def _imports(path: Path):
     """(line, imported module) of every ``ocio_thinfilm`` import in ``path``."""
     tree = ast.parse(path.read_text())
     for node in ast.walk(tree):
-        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0 \
-                and node.module.startswith("ocio_thinfilm"):
+        if (
+            isinstance(node, ast.ImportFrom)
+            and node.module
+            and node.level == 0
+            and node.module.startswith("ocio_thinfilm")
+        ):
             if node.module == "ocio_thinfilm":
                 for alias in node.names:
                     yield node.lineno, f"ocio_thinfilm.{alias.name}"
@@ -55,10 +69,17 @@ def _imports(path: Path):
 def _imports_evaluation(path: Path) -> list[int]:
     """Lines of ``path`` that import the top-level ``evaluation`` package."""
     tree = ast.parse(path.read_text())
-    names = [(node.lineno, node.module) for node in ast.walk(tree)
-             if isinstance(node, ast.ImportFrom) and node.module and node.level == 0]
-    names += [(node.lineno, alias.name) for node in ast.walk(tree)
-              if isinstance(node, ast.Import) for alias in node.names]
+    names = [
+        (node.lineno, node.module)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0
+    ]
+    names += [
+        (node.lineno, alias.name)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Import)
+        for alias in node.names
+    ]
     return [line for line, name in names if name.split(".")[0] == "evaluation"]
 
 
@@ -73,7 +94,8 @@ def test_no_module_imports_a_later_stage(path):
         if stage in ("", "__version__"):
             continue
         assert RANK[stage] <= RANK[source], (
-            f"{rel}.py:{line} imports {target}: stage {stage!r} comes after {source!r}")
+            f"{rel}.py:{line} imports {target}: stage {stage!r} comes after {source!r}"
+        )
 
 
 def test_every_stage_is_known_and_the_check_can_fail(tmp_path):
@@ -112,8 +134,12 @@ def _edges(path: Path):
     known = {_module_name(p) for p in _modules()}
     tree = ast.parse(path.read_text())
     for node in ast.walk(tree):
-        if isinstance(node, ast.ImportFrom) and node.module and node.level == 0 \
-                and node.module.startswith("ocio_thinfilm"):
+        if (
+            isinstance(node, ast.ImportFrom)
+            and node.module
+            and node.level == 0
+            and node.module.startswith("ocio_thinfilm")
+        ):
             for alias in node.names:
                 sub = f"{node.module}.{alias.name}"
                 yield sub if sub in known else node.module
@@ -132,7 +158,7 @@ def _cycles(graph: dict) -> list:
         stack.append(node)
         for nxt in sorted(graph.get(node, ())):
             if state.get(nxt) == "open":
-                found.append(stack[stack.index(nxt):] + [nxt])
+                found.append(stack[stack.index(nxt) :] + [nxt])
             elif nxt not in state:
                 visit(nxt, stack)
         stack.pop()
@@ -148,8 +174,7 @@ def test_no_import_cycles(tmp_path):
     """No module reaches itself through the package's imports (lazy ones included): one
     writer per kind of file, called in one direction (export.bake -> export.view ->
     export.files)."""
-    graph = {_module_name(p): {t for t in _edges(p) if t != _module_name(p)}
-             for p in _modules()}
+    graph = {_module_name(p): {t for t in _edges(p) if t != _module_name(p)} for p in _modules()}
     # a package's __init__ re-exporting its submodules is not a cycle of those submodules
     for name in list(graph):
         graph[name] = {t for t in graph[name] if not name.startswith(t + ".")}
@@ -158,8 +183,19 @@ def test_no_import_cycles(tmp_path):
 
 
 #: Calls that write files (methods and functions).
-WRITERS = {"write", "write_text", "write_bytes", "mkdir", "copytree", "archive", "open",
-           "atomic_file", "atomic_directory", "claim_directory", "transaction"}
+WRITERS = {
+    "write",
+    "write_text",
+    "write_bytes",
+    "mkdir",
+    "copytree",
+    "archive",
+    "open",
+    "atomic_file",
+    "atomic_directory",
+    "claim_directory",
+    "transaction",
+}
 
 
 def _writes(path: Path) -> list:
@@ -177,8 +213,9 @@ def _writes(path: Path) -> list:
 def test_the_config_stage_writes_no_files(tmp_path):
     """``config/`` turns data into OCIO ``Config`` objects and nothing else: the files are
     written by ``export/`` (export.bake.write_config, export.merged)."""
-    offenders = {str(p.relative_to(PACKAGE)): _writes(p)
-                 for p in sorted((PACKAGE / "config").glob("*.py"))}
+    offenders = {
+        str(p.relative_to(PACKAGE)): _writes(p) for p in sorted((PACKAGE / "config").glob("*.py"))
+    }
     assert {k: v for k, v in offenders.items() if v} == {}
     bad = tmp_path / "bad.py"
     bad.write_text("def f(p, t):\n    p.write_text(t)\n")

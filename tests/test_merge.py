@@ -33,22 +33,37 @@ LATEST = "ocio://studio-config-latest"
 #: The SDR displays with sRGB / Rec.709, P3-D65 or Rec.2020 primaries and D65 white, by
 #: their published names (P3-D60 and P3-DCI have other whites), and the HDR displays
 #: BT.2100 PQ / HLG and P3-D65 PQ (not Display P3 HDR, Apple's extended sRGB curve).
-_HDR = {"Rec.2100-HLG - Display": "Rec.2100-HLG", "Rec.2100-PQ - Display": "Rec.2100-PQ",
-        "ST2084-P3-D65 - Display": "P3-D65 PQ"}
+_HDR = {
+    "Rec.2100-HLG - Display": "Rec.2100-HLG",
+    "Rec.2100-PQ - Display": "Rec.2100-PQ",
+    "ST2084-P3-D65 - Display": "P3-D65 PQ",
+}
 EXPECTED = {
-    BASE21: {"sRGB - Display": "sRGB", "Rec.1886 Rec.709 - Display": "sRGB",
-             "Rec.1886 Rec.2020 - Display": "Rec.2020", "P3-D65 - Display": "Display P3",
-             **_HDR},
-    LATEST: {"sRGB - Display": "sRGB", "Display P3 - Display": "Display P3",
-             "Gamma 2.2 Rec.709 - Display": "sRGB",
-             "Gamma 2.6 P3-D65 - Display": "Display P3",
-             "Rec.1886 Rec.709 - Display": "sRGB", **_HDR},
+    BASE21: {
+        "sRGB - Display": "sRGB",
+        "Rec.1886 Rec.709 - Display": "sRGB",
+        "Rec.1886 Rec.2020 - Display": "Rec.2020",
+        "P3-D65 - Display": "Display P3",
+        **_HDR,
+    },
+    LATEST: {
+        "sRGB - Display": "sRGB",
+        "Display P3 - Display": "Display P3",
+        "Gamma 2.2 Rec.709 - Display": "sRGB",
+        "Gamma 2.6 P3-D65 - Display": "Display P3",
+        "Rec.1886 Rec.709 - Display": "sRGB",
+        **_HDR,
+    },
 }
 #: (merged display, project display) pairs with the same encoding, for oiiotool.
-SAME_ENCODING = {BASE21: [("sRGB - Display", "sRGB"), ("Rec.1886 Rec.2020 - Display",
-                                                           "Rec.2020"), *_HDR.items()],
-                 LATEST: [("sRGB - Display", "sRGB"), ("Display P3 - Display",
-                                                          "Display P3"), *_HDR.items()]}
+SAME_ENCODING = {
+    BASE21: [
+        ("sRGB - Display", "sRGB"),
+        ("Rec.1886 Rec.2020 - Display", "Rec.2020"),
+        *_HDR.items(),
+    ],
+    LATEST: [("sRGB - Display", "sRGB"), ("Display P3 - Display", "Display P3"), *_HDR.items()],
+}
 
 
 #: What ``bake --into`` printed, per base config (filled by the ``merged`` fixture).
@@ -79,15 +94,19 @@ def test_merged_validates_and_keeps_profile(merged):
     uri, path, cfg = merged
     base = ocio.Config.CreateFromFile(uri)
     cfg.validate()
-    assert (cfg.getMajorVersion(), cfg.getMinorVersion()) == (base.getMajorVersion(),
-                                                              base.getMinorVersion())
+    assert (cfg.getMajorVersion(), cfg.getMinorVersion()) == (
+        base.getMajorVersion(),
+        base.getMinorVersion(),
+    )
     assert path.read_text().startswith(
-        f"ocio_profile_version: {base.getMajorVersion()}.{base.getMinorVersion()}\n")
+        f"ocio_profile_version: {base.getMajorVersion()}.{base.getMinorVersion()}\n"
+    )
 
 
 def _ociocheck(tool, path):
-    result = subprocess.run([str(tool), "--iconfig", str(path)], capture_output=True,
-                            text=True, timeout=120)
+    result = subprocess.run(
+        [str(tool), "--iconfig", str(path)], capture_output=True, text=True, timeout=120
+    )
     return result.returncode, result.stdout + result.stderr
 
 
@@ -110,8 +129,9 @@ def test_merged_21_passes_debian_ociocheck(merged):
     if uri != BASE21:
         pytest.skip("Debian's OCIO 2.1 reads profile 2.1 configs only")
     if not OCIO21_CHECK.exists():
-        pytest.skip("Debian opencolorio-tools (OCIO 2.1) not installed: "
-                    "apt-get install opencolorio-tools")
+        pytest.skip(
+            "Debian opencolorio-tools (OCIO 2.1) not installed: apt-get install opencolorio-tools"
+        )
     code, text = _ociocheck(OCIO21_CHECK, path)
     assert code == 0 and "passed" in text and "ERROR" not in text.upper(), text
 
@@ -126,11 +146,14 @@ def test_merged_contents(merged):
         if display in EXPECTED[uri]:
             assert added[:2] == ["Constant-Lightness Clip", "Constant-Lightness Compress"]
             assert "ACES Gamut Compression" in added
-            assert (cfg.getDisplayViewTransformName(display, added[0])
-                    == f"Constant-Lightness Clip - {EXPECTED[uri][display]}")
+            assert (
+                cfg.getDisplayViewTransformName(display, added[0])
+                == f"Constant-Lightness Clip - {EXPECTED[uri][display]}"
+            )
             # views appended, the base's own views first and unchanged in order
-            assert list(cfg.getViews(display))[:len(base.getViews(display))] == list(
-                base.getViews(display))
+            assert list(cfg.getViews(display))[: len(base.getViews(display))] == list(
+                base.getViews(display)
+            )
         else:
             assert added == [], display
     assert "Constant-Lightness Clip" in list(cfg.getActiveViews())
@@ -138,9 +161,14 @@ def test_merged_contents(merged):
     assert dict(cfg.getRoles()) == dict(base.getRoles())
     gamuts = {registry.gamut_of(d) for d in EXPECTED[uri].values()}
     nts = set(cfg.getNamedTransformNames()) - set(base.getNamedTransformNames())
-    assert nts == ({f"Constant-Lightness {v} - {g} (display-linear)" for g in gamuts
-                    for v in ("Clip", "Compress")}
-                   | {f"{s} to CIE-XYZ-D65" for s in registry.THIN_FILM_SPACES})
+    assert nts == (
+        {
+            f"Constant-Lightness {v} - {g} (display-linear)"
+            for g in gamuts
+            for v in ("Clip", "Compress")
+        }
+        | {f"{s} to CIE-XYZ-D65" for s in registry.THIN_FILM_SPACES}
+    )
     luts = {p.name for p in (path.parent / "luts").iterdir()}
     assert len(luts) == 3 + 4 * len(gamuts)  # tables; per gamut the clip's 2 and 2 squeezes
 
@@ -163,9 +191,26 @@ def _oiiotool(cfg_path, src, space, display, view, out):
     tool = shutil.which("oiiotool")
     if tool is None:
         pytest.skip("oiiotool (PyPI openimageio) not on PATH")
-    result = subprocess.run([tool, "--colorconfig", str(cfg_path), str(src), "--iscolorspace",
-                             space, "--ociodisplay", display, view, "-d", "float", "-o",
-                             str(out)], capture_output=True, text=True, timeout=120)
+    result = subprocess.run(
+        [
+            tool,
+            "--colorconfig",
+            str(cfg_path),
+            str(src),
+            "--iscolorspace",
+            space,
+            "--ociodisplay",
+            display,
+            view,
+            "-d",
+            "float",
+            "-o",
+            str(out),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     if "not able to load that config version" in result.stderr + result.stdout:
         # PyPI OpenImageIO bundles an older OCIO (2.5) than PyPI OCIO (2.6): apply the
         # view with PyOpenColorIO's CPU processor, which is what oiiotool runs
@@ -176,8 +221,6 @@ def _oiiotool(cfg_path, src, space, display, view, out):
     return _read_exr(out)
 
 
-
-
 def test_oiiotool_clip_view_matches_project_config(merged, tmp_path, colour):
     """The merged clip view equals the project config's, through oiiotool: on the SDR
     displays for colours up to white, on the HDR ones (the base's built-in PQ / HLG
@@ -186,24 +229,29 @@ def test_oiiotool_clip_view_matches_project_config(merged, tmp_path, colour):
     uri, path, _ = merged
     if not PROJECT.exists():
         pytest.skip("configs/thinfilm not baked")
-    X = np.vstack([object_colours(n_random=300)[::2],
-                   spectral_colours(max_Y=0.6, levels=8)])
+    X = np.vstack([object_colours(n_random=300)[::2], spectral_colours(max_Y=0.6, levels=8)])
     # ACES2065-1 from colour-science (Bradford D65 -> ACES white), not from our code
     D65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     files = {}
     for hdr, scale in ((False, 1.0), (True, 1000.0 / 203.0)):
         xyz, ap0 = tmp_path / f"xyz{int(hdr)}.exr", tmp_path / f"ap0{int(hdr)}.exr"
         _write_exr(xyz, X * scale)
-        _write_exr(ap0, colour.XYZ_to_RGB(X * scale, "ACES2065-1", illuminant=D65,
-                                          chromatic_adaptation_transform="Bradford"))
+        _write_exr(
+            ap0,
+            colour.XYZ_to_RGB(
+                X * scale, "ACES2065-1", illuminant=D65, chromatic_adaptation_transform="Bradford"
+            ),
+        )
         files[hdr] = (xyz, ap0)
     for display, ours in SAME_ENCODING[uri]:
         xyz, ap0 = files[registry.is_hdr(ours)]
-        expected = _oiiotool(PROJECT, xyz, "CIE-XYZ-D65", ours, "Constant-Lightness Clip",
-                             tmp_path / "e.exr")
+        expected = _oiiotool(
+            PROJECT, xyz, "CIE-XYZ-D65", ours, "Constant-Lightness Clip", tmp_path / "e.exr"
+        )
         for src, space in ((xyz, "cie_xyz_d65_interchange"), (ap0, "ACES2065-1")):
-            got = _oiiotool(path, src, space, display, "Constant-Lightness Clip",
-                            tmp_path / "g.exr")
+            got = _oiiotool(
+                path, src, space, display, "Constant-Lightness Clip", tmp_path / "g.exr"
+            )
             diff = np.abs(got - expected).max()
             print(f"{uri} {display} from {space}: max |code difference| {diff:.2e}")
             assert diff <= 1.0 / 255.0, (display, space, diff)
@@ -239,8 +287,10 @@ def _check_clip_named_transform(cfg, display, kind="Clip"):
         np.testing.assert_allclose(_apply(proc, inside), inside, atol=2e-3)
     else:  # the compression moves those near the boundary: within its accuracy target
         got = _apply(proc, inside).astype(np.float64)
-        dE = colorimetry.delta_E2000(colorimetry.RGB_to_XYZ(got, display),
-                                     colorimetry.RGB_to_XYZ(analytic(inside, display), display))
+        dE = colorimetry.delta_E2000(
+            colorimetry.RGB_to_XYZ(got, display),
+            colorimetry.RGB_to_XYZ(analytic(inside, display), display),
+        )
         assert dE.max() <= 1.5, dE.max()
     out = _apply(proc, rgb).astype(np.float64)
     assert out.min() >= -1e-6 and out.max() <= 1.0 + 1e-4
@@ -254,13 +304,19 @@ def _check_clip_named_transform(cfg, display, kind="Clip"):
 def _check_table_named_transforms(cfg):
     t = np.linspace(0.0, 3.0, 601)
     px = np.repeat(t[:, None], 3, 1)
-    out = _apply(cfg.getProcessor("Thin Film Phase-Change Thickness to CIE-XYZ-D65",
-                                  ocio.TRANSFORM_DIR_FORWARD), px)
+    out = _apply(
+        cfg.getProcessor(
+            "Thin Film Phase-Change Thickness to CIE-XYZ-D65", ocio.TRANSFORM_DIR_FORWARD
+        ),
+        px,
+    )
     direct = colorimetry.film_XYZ(t * 1000.0, "phase-change")
     assert colorimetry.delta_E2000(out.astype(np.float64), direct).max() <= 0.05
     cos = np.linspace(0.0, 1.0, 101)
-    out = _apply(cfg.getProcessor("Thin Film Morpho Iridescence to CIE-XYZ-D65",
-                                  ocio.TRANSFORM_DIR_FORWARD), np.repeat(cos[:, None], 3, 1))
+    out = _apply(
+        cfg.getProcessor("Thin Film Morpho Iridescence to CIE-XYZ-D65", ocio.TRANSFORM_DIR_FORWARD),
+        np.repeat(cos[:, None], 3, 1),
+    )
     direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(cos)))
     assert colorimetry.delta_E2000(out.astype(np.float64), direct).max() <= 0.05
 
@@ -284,8 +340,10 @@ def test_named_transforms_in_project_config():
 def test_thin_film_space_in_merged_config_reaches_xyz(merged):
     uri, _, cfg = merged
     t = np.linspace(0.0, 2.0, 201)
-    out = _apply(cfg.getProcessor("Thin Film Phase-Change Thickness",
-                                  "cie_xyz_d65_interchange"), np.repeat(t[:, None], 3, 1))
+    out = _apply(
+        cfg.getProcessor("Thin Film Phase-Change Thickness", "cie_xyz_d65_interchange"),
+        np.repeat(t[:, None], 3, 1),
+    )
     direct = colorimetry.film_XYZ(t * 1000.0, "phase-change")
     assert colorimetry.delta_E2000(out.astype(np.float64), direct).max() <= 0.05
 
@@ -317,52 +375,60 @@ def test_ocioz_gives_the_folders_output(tmp_path):
             pb = b.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
             assert _apply(pa, px).tobytes() == _apply(pb, px).tobytes()
     for name in a.getNamedTransformNames():
-        assert (_apply(a.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
-                == _apply(b.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes())
+        assert (
+            _apply(a.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
+            == _apply(b.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
+        )
     for name in registry.THIN_FILM_SPACES:
-        assert (_apply(a.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
-                == _apply(b.getProcessor(name, "CIE-XYZ-D65"), px).tobytes())
+        assert (
+            _apply(a.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
+            == _apply(b.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
+        )
 
 
 def test_into_refuses_config_without_interchange_or_display(tmp_path, capsys):
     raw = ocio.Config.CreateRaw()
     raw.setVersion(2, 1)
     (tmp_path / "raw.ocio").write_text(raw.serialize())
-    code = main(["bake", "--into", str(tmp_path / "raw.ocio"), "--out",
-                 str(tmp_path / "a"), "--quiet"])
+    code = main(
+        ["bake", "--into", str(tmp_path / "raw.ocio"), "--out", str(tmp_path / "a"), "--quiet"]
+    )
     err = capsys.readouterr().err
     assert code == 2 and "cie_xyz_d65_interchange" in err and len(err.splitlines()) == 1
     raw.setRole("cie_xyz_d65_interchange", "raw")  # scene-referred, no view transform
     (tmp_path / "role.ocio").write_text(raw.serialize())
-    code = main(["bake", "--into", str(tmp_path / "role.ocio"), "--out",
-                 str(tmp_path / "b"), "--quiet"])
+    code = main(
+        ["bake", "--into", str(tmp_path / "role.ocio"), "--out", str(tmp_path / "b"), "--quiet"]
+    )
     err = capsys.readouterr().err
     assert code == 2 and len(err.splitlines()) == 1, err
     # an ACES config whose only display is P3-DCI (DCI white): nothing to add to
     dci = ocio.Config.CreateFromFile(BASE21)
     dci.clearDisplays()
-    dci.addDisplayView("P3-DCI - Display", "Un-tone-mapped", "Un-tone-mapped",
-                       "P3-DCI - Display", "", "", "")
+    dci.addDisplayView(
+        "P3-DCI - Display", "Un-tone-mapped", "Un-tone-mapped", "P3-DCI - Display", "", "", ""
+    )
     dci.setActiveDisplays("")
     dci.setActiveViews("")
     dci.validate()
     (tmp_path / "dci.ocio").write_text(dci.serialize())
-    code = main(["bake", "--into", str(tmp_path / "dci.ocio"), "--out",
-                 str(tmp_path / "c"), "--quiet"])
+    code = main(
+        ["bake", "--into", str(tmp_path / "dci.ocio"), "--out", str(tmp_path / "c"), "--quiet"]
+    )
     err = capsys.readouterr().err
     assert code == 2 and "no SDR display" in err and len(err.splitlines()) == 1, err
     assert not any((tmp_path / d).exists() for d in "abc")
 
 
-def test_a_missing_base_is_named_source_by_the_library_and_into_by_the_cli(tmp_path,
-                                                                           capsys):
+def test_a_missing_base_is_named_source_by_the_library_and_into_by_the_cli(tmp_path, capsys):
     missing = tmp_path / "no" / "such.ocio"
     with pytest.raises(ValueError, match=r"^source .*such\.ocio: no such config file"):
         export_merged.bake_into(missing, tmp_path / "a")
     assert main(["bake", "--into", str(missing), "--out", str(tmp_path / "a"), "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
-    assert err == f"ocio-thinfilm bake: error: --into {missing}: no such config file " \
-                  "(or ocio:// URI)", err
+    assert (
+        err == f"ocio-thinfilm bake: error: --into {missing}: no such config file (or ocio:// URI)"
+    ), err
     blocker = tmp_path / "file"
     blocker.write_text("x")
     with pytest.raises(ValueError, match=r"^out .*file: not a directory"):
@@ -385,10 +451,25 @@ def test_bake_into_says_which_ocio_reads_the_result(merged, tmp_path):
     version = subprocess.run([oiiotool, "--version"], capture_output=True, text=True).stdout
     if not version.startswith("3.2."):
         pytest.skip(f"oiiotool {version.strip()} is not OpenImageIO 3.2 (OCIO 2.5)")
-    run = subprocess.run([oiiotool, "--pattern", "constant:color=0.5,0.5,0.5", "4x4", "3",
-                          "--colorconfig", str(path), "--colorconvert", "sRGB - Display",
-                          "sRGB - Display", "-o", str(tmp_path / "o.exr")],
-                         capture_output=True, text=True, timeout=60)
+    run = subprocess.run(
+        [
+            oiiotool,
+            "--pattern",
+            "constant:color=0.5,0.5,0.5",
+            "4x4",
+            "3",
+            "--colorconfig",
+            str(path),
+            "--colorconvert",
+            "sRGB - Display",
+            "sRGB - Display",
+            "-o",
+            str(tmp_path / "o.exr"),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     refused = "not able to load that config version" in run.stdout + run.stderr
     assert refused == ("OpenImageIO 3.2's oiiotool" in line)
     assert refused == ((major, minor) > (2, 5))
@@ -400,8 +481,11 @@ def test_docs_table_of_builtin_configs_matches_ocio():
     text = (Path(__file__).resolve().parents[1] / "docs" / "studio.md").read_text()
     block = text.split("<!-- builtin-configs:begin -->", 1)[1]
     rows = block.split("<!-- builtin-configs:end -->")[0].strip().splitlines()[2:]
-    studio = [item[0] for item in ocio.BuiltinConfigRegistry().getBuiltinConfigs()
-              if item[0].startswith("studio-config-")]
+    studio = [
+        item[0]
+        for item in ocio.BuiltinConfigRegistry().getBuiltinConfigs()
+        if item[0].startswith("studio-config-")
+    ]
     assert len(rows) == len(studio)
     for row, name in zip(rows, sorted(studio), strict=True):
         cells = [c.strip() for c in row.strip("|").split("|")]

@@ -61,9 +61,11 @@ def test_2d_fast_path_equals_the_general_hash():
 
 def test_turbulence_is_the_octave_sum():
     x, y = _grid(128, 1 / 13)
-    expected = sum(np.abs(noise.noise(x * 2**i + np.float32(17.31 * i),
-                                      y * 2**i + np.float32(17.31 * i))) / 2**i
-                   for i in range(4))
+    expected = sum(
+        np.abs(noise.noise(x * 2**i + np.float32(17.31 * i), y * 2**i + np.float32(17.31 * i)))
+        / 2**i
+        for i in range(4)
+    )
     got = noise.turbulence(x, y, octaves=4)
     assert np.allclose(got, expected, atol=1e-5)
     assert got.min() >= 0 and got.max() < 2
@@ -78,8 +80,9 @@ def test_turbulence_band_limit_fades_fine_octaves_to_their_mean():
     assert abs(float(sharp.mean() - soft.mean())) < 0.03
     assert np.abs(np.diff(soft, axis=1)).mean() < 0.6 * np.abs(np.diff(sharp, axis=1)).mean()
     # A filter width of 0 is no filter at all.
-    assert np.allclose(noise.turbulence(x, y, octaves=3, filter_width=0.0),
-                       noise.turbulence(x, y, octaves=3))
+    assert np.allclose(
+        noise.turbulence(x, y, octaves=3, filter_width=0.0), noise.turbulence(x, y, octaves=3)
+    )
 
 
 @pytest.mark.parametrize("kwargs", [{"seed": -1}, {"seed": 1.5}, {"octaves": 0}])

@@ -33,8 +33,12 @@ EXACT_MAX = 0.05  # matrix / clamp / ACES GC views: only table interpolation and
 
 
 def oiiotool(*args):
-    result = subprocess.run([OIIOTOOL, "--colorconfig", str(CONFIG), *map(str, args)],
-                            capture_output=True, text=True, timeout=120)
+    result = subprocess.run(
+        [OIIOTOOL, "--colorconfig", str(CONFIG), *map(str, args)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert result.returncode == 0, result.stdout + result.stderr
     return result
 
@@ -71,8 +75,7 @@ def thickness_ramp(tmp_path_factory):
 @pytest.fixture(scope="module")
 def colour_chart(tmp_path_factory):
     """An XYZ EXR: spectral colours at Y <= 0.6 and object colours."""
-    xyz = np.concatenate([spectral_colours(0.6, 30),
-                          object_colours(n_random=1000)])
+    xyz = np.concatenate([spectral_colours(0.6, 30), object_colours(n_random=1000)])
     width = 128
     rows = -(-len(xyz) // width)
     pad = np.zeros((rows * width - len(xyz), 3))
@@ -101,16 +104,28 @@ def analytic(XYZ, display, view):
 def test_thickness_ramp_through_every_display_and_view(thickness_ramp, tmp_path, display, view):
     src, t = thickness_ramp
     out = tmp_path / "out.exr"
-    oiiotool(src, "--iscolorspace", "Thin Film Phase-Change Thickness",
-             "--ociodisplay", display, view, "-d", "float", "-o", out)
+    oiiotool(
+        src,
+        "--iscolorspace",
+        "Thin Film Phase-Change Thickness",
+        "--ociodisplay",
+        display,
+        view,
+        "-d",
+        "float",
+        "-o",
+        out,
+    )
     got = read_image(out)[0].astype(np.float64)
     XYZ = colorimetry.film_XYZ(t * 1000.0, "phase-change")
     if view == "Raw":  # data: passed through unchanged
         np.testing.assert_allclose(got, np.repeat(t[:, None], 3, 1), atol=1e-6)
         return
     want = analytic(XYZ, display, view)
-    de = colorimetry.delta_E2000(colorimetry.RGB_to_XYZ(decode(got, display), display),
-                                 colorimetry.RGB_to_XYZ(decode(want, display), display))
+    de = colorimetry.delta_E2000(
+        colorimetry.RGB_to_XYZ(decode(got, display), display),
+        colorimetry.RGB_to_XYZ(decode(want, display), display),
+    )
     if view.startswith("Constant-Lightness"):
         assert np.percentile(de, 99) <= CLIP_P99 and de.max() <= CLIP_MAX, de.max()
     else:
@@ -122,8 +137,18 @@ def test_thickness_ramp_through_every_display_and_view(thickness_ramp, tmp_path,
 def test_xyz_chart_through_constant_lightness_clip(colour_chart, tmp_path, display):
     src, xyz, n_spectral = colour_chart
     out = tmp_path / "out.exr"
-    oiiotool(src, "--iscolorspace", "CIE-XYZ-D65", "--ociodisplay", display,
-             "Constant-Lightness Clip", "-d", "float", "-o", out)
+    oiiotool(
+        src,
+        "--iscolorspace",
+        "CIE-XYZ-D65",
+        "--ociodisplay",
+        display,
+        "Constant-Lightness Clip",
+        "-d",
+        "float",
+        "-o",
+        out,
+    )
     got = read_image(out).reshape(-1, 3)[: len(xyz)].astype(np.float64)
     linear = decode(got, display)
     # Promise 1: in gamut (code values and display-linear RGB in [0, 1]).
@@ -135,19 +160,30 @@ def test_xyz_chart_through_constant_lightness_clip(colour_chart, tmp_path, displ
     assert np.abs(Y_out - Y_in).max() <= 1e-3
     # Agreement with the analytic clip (targets: p99 <= 0.5, max <= 1.5 per set).
     want = colorimetry.XYZ_to_RGB(clip.clip_XYZ(xyz, display), display)
-    de = colorimetry.delta_E2000(colorimetry.RGB_to_XYZ(linear, display),
-                                 colorimetry.RGB_to_XYZ(want, display))
+    de = colorimetry.delta_E2000(
+        colorimetry.RGB_to_XYZ(linear, display), colorimetry.RGB_to_XYZ(want, display)
+    )
     spectral = slice(0, n_spectral)
     for part in (de[n_spectral:], de[spectral]):
         assert np.percentile(part, 99) <= 0.5 and part.max() <= 1.6, (
-            np.percentile(part, 99), part.max())
+            np.percentile(part, 99),
+            part.max(),
+        )
 
 
 def test_colorconvert_and_thin_film_space(thickness_ramp, tmp_path):
     src, t = thickness_ramp
     out = tmp_path / "xyz.exr"
-    oiiotool(src, "--colorconvert", "Thin Film Phase-Change Thickness", "CIE-XYZ-D65",
-             "-d", "float", "-o", out)
+    oiiotool(
+        src,
+        "--colorconvert",
+        "Thin Film Phase-Change Thickness",
+        "CIE-XYZ-D65",
+        "-d",
+        "float",
+        "-o",
+        out,
+    )
     got = read_image(out)[0].astype(np.float64)
     direct = colorimetry.film_XYZ(t * 1000.0, "phase-change")
     assert colorimetry.delta_E2000(got, direct).max() <= 0.05

@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 # an environment without it, and colour-science takes its no-SciPy path.
 _HIDE_SCIPY = 'import sys; sys.modules["scipy"] = None\n'
 
-_PRODUCT_CALLS = '''
+_PRODUCT_CALLS = """
 import json, sys
 import numpy as np
 from ocio_thinfilm.colour import colorimetry
@@ -52,14 +52,18 @@ for space in colorimetry.RGB_SPACES:
 out = {k: np.asarray(v, np.float64).tolist() for k, v in out.items()}
 out["scipy"] = type(sys.modules.get("scipy")).__name__
 print(json.dumps(out))
-'''
+"""
 
 
 def _child(code: str) -> subprocess.CompletedProcess:
-    env = dict(os.environ, OCIO_THINFILM_CACHE="0",  # compute, do not read the disk cache
-               PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          env=env, cwd=ROOT, timeout=300)
+    env = dict(
+        os.environ,
+        OCIO_THINFILM_CACHE="0",  # compute, do not read the disk cache
+        PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""),
+    )
+    return subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=ROOT, timeout=300
+    )
 
 
 def test_the_package_needs_no_scipy():
@@ -79,14 +83,14 @@ def test_the_package_needs_no_scipy():
 def test_the_tests_reference_integrator_needs_scipy():
     """colour-science's ``sd_to_XYZ`` of a spectrum on a 0.1 nm grid (as
     tests/test_colorimetry.py calls it) fails without SciPy: why the ``test`` extra has it."""
-    code = '''
+    code = """
 import numpy as np, colour
 from ocio_thinfilm.physics import sampling
 wl = sampling.wavelength_grid(step=0.1)
 sd = colour.SpectralDistribution(np.ones(wl.size), wl)
 print(colour.sd_to_XYZ(sd, colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"],
                        colour.SDS_ILLUMINANTS["D65"], method="Integration"))
-'''
+"""
     assert _child(code).returncode == 0
     hidden = _child(_HIDE_SCIPY + code)
     assert hidden.returncode != 0 and "Mock" in hidden.stderr, hidden.stderr[-2000:]
@@ -96,8 +100,13 @@ print(colour.sd_to_XYZ(sd, colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer
 # The wheel: built once per session with ``python -m build`` (the test extra has it)
 
 #: import name -> distribution of the runtime requirements
-RUNTIME = {"numpy": "numpy", "colour": "colour-science", "PyOpenColorIO": "opencolorio",
-           "OpenImageIO": "openimageio", "tqdm": "tqdm"}
+RUNTIME = {
+    "numpy": "numpy",
+    "colour": "colour-science",
+    "PyOpenColorIO": "opencolorio",
+    "OpenImageIO": "openimageio",
+    "tqdm": "tqdm",
+}
 
 
 @pytest.fixture(scope="session")
@@ -107,8 +116,12 @@ def built(tmp_path_factory):
     if not (ROOT / "configs" / "thinfilm" / "config.ocio").is_file():
         pytest.skip("no baked configs/thinfilm to package (run ocio-thinfilm bake)")
     out = tmp_path_factory.mktemp("dist")
-    run = subprocess.run([sys.executable, "-m", "build", "--outdir", str(out), str(ROOT)],
-                         capture_output=True, text=True, timeout=600)
+    run = subprocess.run(
+        [sys.executable, "-m", "build", "--outdir", str(out), str(ROOT)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
     assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
     sdists, wheels = sorted(out.glob("*.tar.gz")), sorted(out.glob("*.whl"))
     assert len(sdists) == 1 and len(wheels) == 1, sorted(out.iterdir())
@@ -143,8 +156,9 @@ def test_the_wheel_holds_the_package_and_its_config_only(built):
     # every module of the package, and nothing else: no evaluation, benchmarks or tests
     assert code == _source_modules()
     assert top_level.decode().split() == ["ocio_thinfilm"]
-    assert not any(part in ("evaluation", "benchmarks", "tests")
-                   for n in names for part in n.split("/"))
+    assert not any(
+        part in ("evaluation", "benchmarks", "tests") for n in names for part in n.split("/")
+    )
     # the baked config as package data, byte for byte the checkout's configs/thinfilm
     config = ROOT / "configs" / "thinfilm"
     expected = ["config.ocio"] + [f"luts/{p.name}" for p in sorted((config / "luts").glob("*.clf"))]
@@ -166,8 +180,11 @@ def test_the_wheel_requires_what_the_package_imports(built):
     _, wheel = built
     with zipfile.ZipFile(wheel) as archive:
         meta = archive.read(next(n for n in archive.namelist() if n.endswith("METADATA")))
-    requires = [line.split(":", 1)[1].strip() for line in meta.decode().splitlines()
-                if line.startswith("Requires-Dist:")]
+    requires = [
+        line.split(":", 1)[1].strip()
+        for line in meta.decode().splitlines()
+        if line.startswith("Requires-Dist:")
+    ]
     runtime = {re.split(r"[<>=!~;\[ ]", r)[0].lower() for r in requires if "extra ==" not in r}
     assert _third_party_imports() == set(RUNTIME)
     assert runtime == set(RUNTIME.values())
@@ -178,8 +195,9 @@ def test_the_wheel_requires_what_the_package_imports(built):
             extras.setdefault(extra, set()).add(re.split(r"[<>=!~;\[ ]", r)[0].lower())
     assert extras["report"] == {"matplotlib", "mpmath"}
     assert extras["gpu"] == {"moderngl"}
-    assert {"pytest", "hypothesis", "scipy", "build"} | extras["report"] | extras["gpu"] \
-        <= extras["test"]
+    assert {"pytest", "hypothesis", "scipy", "build"} | extras["report"] | extras["gpu"] <= extras[
+        "test"
+    ]
 
 
 @pytest.mark.slow
@@ -194,39 +212,84 @@ def test_the_installed_wheel_renders_from_an_empty_directory(built, tmp_path):
 
     _, wheel = built
     venv = tmp_path / "venv"
-    subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)],
-                   check=True, timeout=300)
+    subprocess.run(
+        [sys.executable, "-m", "venv", "--system-site-packages", str(venv)], check=True, timeout=300
+    )
     python = venv / "bin" / "python"
-    install = subprocess.run([str(python), "-m", "pip", "install", "-q", "--no-deps",
-                              "--no-index", "--ignore-installed", str(wheel)],
-                             capture_output=True, text=True, timeout=300)
+    install = subprocess.run(
+        [
+            str(python),
+            "-m",
+            "pip",
+            "install",
+            "-q",
+            "--no-deps",
+            "--no-index",
+            "--ignore-installed",
+            str(wheel),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert install.returncode == 0, install.stderr
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["OCIO_THINFILM_CACHE"] = str(tmp_path / "cache")
-    where = subprocess.run([str(python), "-c",
-                            "import ocio_thinfilm; print(ocio_thinfilm.__file__)"],
-                           capture_output=True, text=True, env=env, cwd=tmp_path, check=True)
+    where = subprocess.run(
+        [str(python), "-c", "import ocio_thinfilm; print(ocio_thinfilm.__file__)"],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        check=True,
+    )
     site = Path(where.stdout.strip()).parents[1]
     assert venv in site.parents
     before = {p for p in site.rglob("*") if "__pycache__" not in p.parts}
     empty = tmp_path / "empty"
     empty.mkdir()
     exe = venv / "bin" / "ocio-thinfilm"
-    run = subprocess.run([str(exe), "render", "oil", "--size", "64", "--out", "R", "--quiet"],
-                         capture_output=True, text=True, env=env, cwd=empty, timeout=600)
+    run = subprocess.run(
+        [str(exe), "render", "oil", "--size", "64", "--out", "R", "--quiet"],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=empty,
+        timeout=600,
+    )
     assert run.returncode == 0 and run.stderr == "", run.stderr
     assert sorted(p.name for p in (empty / "R").iterdir()) == ["oil.exr", "oil.png"]
     assert sorted(p.name for p in empty.iterdir()) == ["R"]
     assert {p for p in site.rglob("*") if "__pycache__" not in p.parts} == before
     # the report is not in the wheel: one line, exit 2, no traceback
-    report = subprocess.run([str(exe), "report", "--out", "rep"], capture_output=True,
-                            text=True, env=env, cwd=empty, timeout=300)
+    report = subprocess.run(
+        [str(exe), "report", "--out", "rep"],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=empty,
+        timeout=300,
+    )
     assert report.returncode == 2 and len(report.stderr.strip().splitlines()) == 1, report.stderr
     assert not (empty / "rep").exists()
     # the same render through the checkout's config (in this process)
     ref = tmp_path / "ref"
-    assert cli.main(["render", "oil", "--size", "64", "--out", str(ref), "--quiet",
-                     "--config", str(ROOT / "configs" / "thinfilm" / "config.ocio")]) == 0
+    assert (
+        cli.main(
+            [
+                "render",
+                "oil",
+                "--size",
+                "64",
+                "--out",
+                str(ref),
+                "--quiet",
+                "--config",
+                str(ROOT / "configs" / "thinfilm" / "config.ocio"),
+            ]
+        )
+        == 0
+    )
     assert np.array_equal(read_image(empty / "R" / "oil.png"), read_image(ref / "oil.png"))
 
 
@@ -234,8 +297,7 @@ def test_a_checkout_renders_through_its_configs_thinfilm():
     from ocio_thinfilm.render import processors
 
     assert processors.DEFAULT_CONFIG == ROOT / "configs" / "thinfilm" / "config.ocio"
-    assert processors.PACKAGE_CONFIG == ROOT / "ocio_thinfilm" / "data" / "thinfilm" / \
-        "config.ocio"
+    assert processors.PACKAGE_CONFIG == ROOT / "ocio_thinfilm" / "data" / "thinfilm" / "config.ocio"
 
 
 def test_a_missing_installed_config_is_an_error_not_a_bake(tmp_path, monkeypatch):
@@ -247,7 +309,8 @@ def test_a_missing_installed_config_is_an_error_not_a_bake(tmp_path, monkeypatch
     installed = tmp_path / "site" / "ocio_thinfilm" / "data" / "thinfilm" / "config.ocio"
     monkeypatch.setattr(processors, "PACKAGE_CONFIG", installed)
     monkeypatch.setattr(processors, "DEFAULT_CONFIG", installed)
-    with pytest.raises(ParameterError, match="^config is needed: the package's config .* is "
-                                             "missing"):
+    with pytest.raises(
+        ParameterError, match="^config is needed: the package's config .* is missing"
+    ):
         processors.load_config()
     assert list(tmp_path.iterdir()) == []

@@ -28,8 +28,11 @@ def test_readme_first_look_is_what_the_demo_prints(tmp_path, capsys):
     path instead of docs/)."""
     from ocio_thinfilm.cli import main as cli
 
-    block = re.search(r"```console\n\$ ocio-thinfilm demo\n(.*?)```", README.read_text(),
-                      flags=re.S).group(1).splitlines()
+    block = (
+        re.search(r"```console\n\$ ocio-thinfilm demo\n(.*?)```", README.read_text(), flags=re.S)
+        .group(1)
+        .splitlines()
+    )
     assert cli.main(["demo", "--out", str(tmp_path / "strip.png")]) == 0
     printed = capsys.readouterr().out.splitlines()
     assert printed[:-1] == block[:-1]

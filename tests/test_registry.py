@@ -23,19 +23,25 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
-    assert registry.VIEWS == ("Constant-Lightness Clip", "Constant-Lightness Compress",
-                              "Channel Clamp", "ACES Gamut Compression", "Raw")
-    assert registry.ALL_DISPLAYS == registry.DISPLAYS + ("Rec.2100-PQ", "Rec.2100-HLG",
-                                                        "P3-D65 PQ")
+    assert registry.VIEWS == (
+        "Constant-Lightness Clip",
+        "Constant-Lightness Compress",
+        "Channel Clamp",
+        "ACES Gamut Compression",
+        "Raw",
+    )
+    assert registry.ALL_DISPLAYS == registry.DISPLAYS + ("Rec.2100-PQ", "Rec.2100-HLG", "P3-D65 PQ")
     assert list(config.DISPLAY_SPACES) == list(registry.ALL_DISPLAYS)
     assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
     assert list(render.PNG_COLORSPACE) == list(registry.ALL_DISPLAYS)
     data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
-    assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == \
-        list(registry.THIN_FILM_SPACES)
+    assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == list(
+        registry.THIN_FILM_SPACES
+    )
     assert list(data.displays) == list(registry.ALL_DISPLAYS)
-    assert all([v["name"] for v in views] == list(registry.VIEWS)
-               for views in data.displays.values())
+    assert all(
+        [v["name"] for v in views] == list(registry.VIEWS) for views in data.displays.values()
+    )
 
 
 def test_the_baked_config_has_exactly_the_registrys_entries():
@@ -52,11 +58,15 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
             assert (ROOT / "configs" / "thinfilm" / "luts" / f"{stem}.clf").is_file()
     # HDR displays reuse their gamut's LUT files: none of their own
     luts = {p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir()}
-    assert luts == ({f"{registry.clip_lut_stem(d, w)}.clf" for d in registry.DISPLAYS
-                     for w in (False, True)}
-                    | {f"{registry.compress_lut_stem(d, w)}.clf" for d in registry.DISPLAYS
-                       for w in (False, True)}
-                    | {f"{s.lut_stem}.clf" for s in registry.THIN_FILM_LIST})
+    assert luts == (
+        {f"{registry.clip_lut_stem(d, w)}.clf" for d in registry.DISPLAYS for w in (False, True)}
+        | {
+            f"{registry.compress_lut_stem(d, w)}.clf"
+            for d in registry.DISPLAYS
+            for w in (False, True)
+        }
+        | {f"{s.lut_stem}.clf" for s in registry.THIN_FILM_LIST}
+    )
     for s in registry.THIN_FILM_LIST:
         assert cfg.getColorSpace(s.name).getFamily() == "Thin Film"
         assert (ROOT / "configs" / "thinfilm" / "luts" / f"{s.lut_stem}.clf").is_file()
@@ -76,18 +86,37 @@ def test_entries_are_frozen():
         registry.DISPLAY_LIST[0].name = "other"
 
 
-@pytest.mark.parametrize("attr, value, message", [
-    ("DISPLAYS", ("sRGB", "sRGB", "Rec.2020"), "unique"),
-    ("DISPLAY_LIST", registry.DISPLAY_LIST[:2] + (dataclasses.replace(
-        registry.DISPLAY_LIST[2], colorimetry="Rec.2100"),), "colorimetry"),
-    ("DISPLAY_LIST", registry.DISPLAY_LIST[:2] + (dataclasses.replace(
-        registry.DISPLAY_LIST[2], lut_stem="Rec.2020"),), "file-name safe"),
-    ("DISPLAY_LIST", registry.DISPLAY_LIST[:2] + (dataclasses.replace(
-        registry.DISPLAY_LIST[2], encoding=("BT.1886", 0.0, None)),), "encoding"),
-    ("VIEW_LIST", registry.VIEW_LIST[::-1], "raw view"),
-    ("THIN_FILM_LIST", registry.THIN_FILM_LIST[:2] + (dataclasses.replace(
-        registry.THIN_FILM_LIST[2], table="film", args=("thick",)),), "bad table"),
-])
+@pytest.mark.parametrize(
+    "attr, value, message",
+    [
+        ("DISPLAYS", ("sRGB", "sRGB", "Rec.2020"), "unique"),
+        (
+            "DISPLAY_LIST",
+            registry.DISPLAY_LIST[:2]
+            + (dataclasses.replace(registry.DISPLAY_LIST[2], colorimetry="Rec.2100"),),
+            "colorimetry",
+        ),
+        (
+            "DISPLAY_LIST",
+            registry.DISPLAY_LIST[:2]
+            + (dataclasses.replace(registry.DISPLAY_LIST[2], lut_stem="Rec.2020"),),
+            "file-name safe",
+        ),
+        (
+            "DISPLAY_LIST",
+            registry.DISPLAY_LIST[:2]
+            + (dataclasses.replace(registry.DISPLAY_LIST[2], encoding=("BT.1886", 0.0, None)),),
+            "encoding",
+        ),
+        ("VIEW_LIST", registry.VIEW_LIST[::-1], "raw view"),
+        (
+            "THIN_FILM_LIST",
+            registry.THIN_FILM_LIST[:2]
+            + (dataclasses.replace(registry.THIN_FILM_LIST[2], table="film", args=("thick",)),),
+            "bad table",
+        ),
+    ],
+)
 def test_validation_rejects_bad_entries(monkeypatch, attr, value, message):
     monkeypatch.setattr(registry, attr, value)
     with pytest.raises(ValueError, match=message):
@@ -98,14 +127,15 @@ def test_adding_a_display_is_one_entry(tmp_path):
     """A copy of the package with one more Display entry (Rec.709) in the registry
     generates a config with that display, its views, clip LUT files and PNG tag."""
     package = tmp_path / "ocio_thinfilm"
-    shutil.copytree(ROOT / "ocio_thinfilm", package,
-                    ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(ROOT / "ocio_thinfilm", package, ignore=shutil.ignore_patterns("__pycache__"))
     source = (package / "registry.py").read_text()
     anchor = "\nDISPLAY_LIST = (\n"
     assert source.count(anchor) == 1
-    entry = ('    Display("Rec.709", "Rec.709", "Rec.1886 Rec.709 - Display", "BT.709 primaries, '
-             'D65, BT.1886 gamma 2.4", ("BT.1886 gamma 2.4", 2.4, None), "Rec709", '
-             '"g24_rec709_display"),\n')
+    entry = (
+        '    Display("Rec.709", "Rec.709", "Rec.1886 Rec.709 - Display", "BT.709 primaries, '
+        'D65, BT.1886 gamma 2.4", ("BT.1886 gamma 2.4", 2.4, None), "Rec709", '
+        '"g24_rec709_display"),\n'
+    )
     (package / "registry.py").write_text(source.replace(anchor, anchor + entry))
     code = (
         "import json; from ocio_thinfilm import config\n"
@@ -116,17 +146,27 @@ def test_adding_a_display_is_one_entry(tmp_path):
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
         "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
         "    render.PNG_COLORSPACE['Rec.709'],\n"
-        "    display_transforms.DISPLAY_ENCODINGS['Rec.709'][0]]))\n")
+        "    display_transforms.DISPLAY_ENCODINGS['Rec.709'][0]]))\n"
+    )
     env = dict(os.environ, PYTHONPATH=str(tmp_path))
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         env=env, cwd=tmp_path, check=True)
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        check=True,
+    )
     displays, views, luts, clip_displays, tag, encoding = json.loads(
-        out.stdout.strip().splitlines()[-1])
+        out.stdout.strip().splitlines()[-1]
+    )
     assert displays[:4] == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
     assert displays[4:] == list(registry.HDR_DISPLAYS)
     assert views == list(registry.VIEWS)
-    assert luts == ["ConstantLightnessClip_Rec709_BlackFaces.clf",
-                    "ConstantLightnessClip_Rec709_WhiteFaces.clf",
-                    "ConstantLightnessCompress_Rec709_BlackFaces.clf",
-                    "ConstantLightnessCompress_Rec709_WhiteFaces.clf"]
+    assert luts == [
+        "ConstantLightnessClip_Rec709_BlackFaces.clf",
+        "ConstantLightnessClip_Rec709_WhiteFaces.clf",
+        "ConstantLightnessCompress_Rec709_BlackFaces.clf",
+        "ConstantLightnessCompress_Rec709_WhiteFaces.clf",
+    ]
     assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"

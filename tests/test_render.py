@@ -35,8 +35,7 @@ from ocio_thinfilm.render import processors, scenes
 
 REFERENCE = Path(__file__).parent / "reference"
 REF_SIZE = "64"
-IDIFF_THRESHOLDS = ["-warn", "0.004", "-fail", "0.02", "-failpercent", "1",
-                    "-hardfail", "0.25"]
+IDIFF_THRESHOLDS = ["-warn", "0.004", "-fail", "0.02", "-failpercent", "1", "-hardfail", "0.25"]
 ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -82,36 +81,43 @@ def test_writes_an_exr_and_a_png_per_scene(stills):
 
 
 def test_output_is_byte_identical_for_the_same_command(stills, tmp_path):
-    assert cli.main(["render", "all", "--size", "48x40", "--out", str(tmp_path),
-                     "--quiet"]) == 0
+    assert cli.main(["render", "all", "--size", "48x40", "--out", str(tmp_path), "--quiet"]) == 0
     for p in stills.iterdir():
         assert (tmp_path / p.name).read_bytes() == p.read_bytes(), p.name
 
 
 def test_seed_changes_the_noise_but_not_the_spectrum(stills, tmp_path):
-    assert cli.main(["render", "all", "--size", "48x40", "--out", str(tmp_path),
-                     "--seed", "5", "--quiet"]) == 0
+    assert (
+        cli.main(
+            ["render", "all", "--size", "48x40", "--out", str(tmp_path), "--seed", "5", "--quiet"]
+        )
+        == 0
+    )
     assert (tmp_path / "spectrum.png").read_bytes() == (stills / "spectrum.png").read_bytes()
     for s in ("oil", "soap", "morpho"):
-        assert not np.array_equal(read_image(tmp_path / f"{s}.exr"),
-                                  read_image(stills / f"{s}.exr")), s
+        assert not np.array_equal(
+            read_image(tmp_path / f"{s}.exr"), read_image(stills / f"{s}.exr")
+        ), s
 
 
-@pytest.mark.parametrize("argv, message", [
-    (["nosuch"], "invalid choice"),
-    (["oil", "--size", "0"], "--size"),
-    (["oil", "--size", "-5"], "--size"),
-    (["oil", "--size", "64x0"], "--size"),
-    (["oil", "--size", "100000"], "--size"),
-    (["oil", "--size", "5000x5000"], "--size"),
-    (["oil", "--size", "big"], "--size"),
-    (["oil", "--frames", "3-1"], "--frames"),
-    (["oil", "--frames", "0-2"], "--frames"),
-    (["oil", "--frames", "1-x"], "--frames"),
-    (["oil", "--seed", "-1"], "--seed"),
-    (["oil", "--display", "CRT"], "--display"),
-    (["oil", "--view", "Filmic"], "--view"),
-])
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["nosuch"], "invalid choice"),
+        (["oil", "--size", "0"], "--size"),
+        (["oil", "--size", "-5"], "--size"),
+        (["oil", "--size", "64x0"], "--size"),
+        (["oil", "--size", "100000"], "--size"),
+        (["oil", "--size", "5000x5000"], "--size"),
+        (["oil", "--size", "big"], "--size"),
+        (["oil", "--frames", "3-1"], "--frames"),
+        (["oil", "--frames", "0-2"], "--frames"),
+        (["oil", "--frames", "1-x"], "--frames"),
+        (["oil", "--seed", "-1"], "--seed"),
+        (["oil", "--display", "CRT"], "--display"),
+        (["oil", "--view", "Filmic"], "--view"),
+    ],
+)
 def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, tmp_path, argv, message):
     out = tmp_path / "out"
     code, stdout, stderr = _cli(capsys, *argv, "--out", str(out))
@@ -154,9 +160,12 @@ def test_failed_write_leaves_no_partial_files(capsys, tmp_path, monkeypatch):
 def test_exr_is_scene_linear_xyz_with_aovs_and_documented(stills):
     import OpenImageIO as oiio
 
-    for name, aovs in (("spectrum", ["angle", "thickness", "wavelength"]),
-                       ("oil", ["angle", "thickness"]),
-                       ("soap", ["angle", "thickness"]), ("morpho", ["angle", "cos_theta"])):
+    for name, aovs in (
+        ("spectrum", ["angle", "thickness", "wavelength"]),
+        ("oil", ["angle", "thickness"]),
+        ("soap", ["angle", "thickness"]),
+        ("morpho", ["angle", "cos_theta"]),
+    ):
         spec = oiio.ImageInput.open(str(stills / f"{name}.exr")).spec()
         assert list(spec.channelnames[:3]) == ["R", "G", "B"]
         assert sorted(spec.channelnames[3:]) == sorted(aovs)
@@ -180,8 +189,22 @@ def test_png_is_the_exr_through_the_chosen_view(stills):
 def test_png_is_tagged_with_its_display(tmp_path, display, tag):
     import OpenImageIO as oiio
 
-    assert cli.main(["render", "morpho", "--size", "16", "--display", display, "--out",
-                     str(tmp_path), "--quiet"]) == 0
+    assert (
+        cli.main(
+            [
+                "render",
+                "morpho",
+                "--size",
+                "16",
+                "--display",
+                display,
+                "--out",
+                str(tmp_path),
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     spec = oiio.ImageInput.open(str(tmp_path / "morpho.png")).spec()
     assert tag in spec.getattribute("oiio:ColorSpace")
 
@@ -204,7 +227,8 @@ def test_spectrum_shows_four_views_side_by_side(tmp_path):
     assert [r[2] for r in picture.regions] == list(scenes.SpectrumScene.VIEWS)
     captions = [label[2] for label in picture.labels]
     assert [c for c in captions if c in scenes.SpectrumScene.VIEWS] == list(
-        scenes.SpectrumScene.VIEWS)
+        scenes.SpectrumScene.VIEWS
+    )
     assert captions.count("spectrum") == captions.count("film") == captions.count("morpho") == 4
     # The same XYZ in each panel, different display colours: the views differ.
     panels = [rgb[60:300, x0:x1] for x0, x1, _ in picture.regions]
@@ -233,7 +257,7 @@ def test_soap_is_black_at_the_top_and_coloured_below():
     t = picture.aovs["thickness"]
     inside = t > 0
     rows = np.nonzero(inside.any(axis=1))[0]
-    top = picture.aovs["thickness"][rows[0]:rows[0] + 6]
+    top = picture.aovs["thickness"][rows[0] : rows[0] + 6]
     assert np.median(top) < 0.03  # the black film: t' under ~30 nm
     band = t[90:110][inside[90:110]]
     assert band.mean() > 0.5
@@ -276,13 +300,16 @@ def test_morpho_uses_only_its_table_and_the_displays_view():
     # The tables and the clip come from the baked config's files: nothing is computed.
     built, created = _built("morpho", display="Display P3")
     assert built == {}
-    assert sorted(created) == sorted(["colorspace:Thin Film Morpho Iridescence",
-                                      "view:Display P3/Constant-Lightness Clip"])
+    assert sorted(created) == sorted(
+        ["colorspace:Thin Film Morpho Iridescence", "view:Display P3/Constant-Lightness Clip"]
+    )
 
 
 def test_a_scene_uses_only_the_view_it_shows():
     assert _built("oil", view="Channel Clamp") == (
-        {}, ["colorspace:Thin Film Phase-Change Thickness", "view:sRGB/Channel Clamp"])
+        {},
+        ["colorspace:Thin Film Phase-Change Thickness", "view:sRGB/Channel Clamp"],
+    )
 
 
 def test_spectrum_uses_both_tables_and_its_four_views():
@@ -290,9 +317,16 @@ def test_spectrum_uses_both_tables_and_its_four_views():
     assert built == {}
     assert sorted(created) == sorted(
         ["colorspace:Thin Film Phase-Change Thickness", "colorspace:Thin Film Morpho Iridescence"]
-        + [f"view:Rec.2020/{v}" for v in ("Constant-Lightness Clip",
-                                          "Constant-Lightness Compress", "Channel Clamp",
-                                          "ACES Gamut Compression")])
+        + [
+            f"view:Rec.2020/{v}"
+            for v in (
+                "Constant-Lightness Clip",
+                "Constant-Lightness Compress",
+                "Channel Clamp",
+                "ACES Gamut Compression",
+            )
+        ]
+    )
 
 
 def _modified_config(tmp_path, *, film=None, view=None):
@@ -324,8 +358,22 @@ def test_render_goes_through_the_configs_thin_film_space(tmp_path):
     m[0], m[5], m[10], m[15] = *scale, 1.0
     config = _modified_config(tmp_path / "cfg", film=ocio.MatrixTransform(m))
     out = tmp_path / "out"
-    assert cli.main(["render", "spectrum", "--size", "96x64", "--config", str(config),
-                     "--out", str(out), "--quiet"]) == 0
+    assert (
+        cli.main(
+            [
+                "render",
+                "spectrum",
+                "--size",
+                "96x64",
+                "--config",
+                str(config),
+                "--out",
+                str(out),
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     ch = _channels(out / "spectrum.exr")
     strip = ch["thickness"] > 0.05
     got = np.stack([ch["R"], ch["G"], ch["B"]], axis=-1)[strip]
@@ -343,8 +391,23 @@ def test_render_goes_through_the_configs_view(tmp_path, colour):
     config = _modified_config(tmp_path / "cfg", view=half)
     out, plain = tmp_path / "out", tmp_path / "plain"
     for directory, extra in ((out, ["--config", str(config)]), (plain, [])):
-        assert cli.main(["render", "oil", "--size", "48", "--view", "Channel Clamp",
-                         "--out", str(directory), "--quiet", *extra]) == 0
+        assert (
+            cli.main(
+                [
+                    "render",
+                    "oil",
+                    "--size",
+                    "48",
+                    "--view",
+                    "Channel Clamp",
+                    "--out",
+                    str(directory),
+                    "--quiet",
+                    *extra,
+                ]
+            )
+            == 0
+        )
     xyz = read_image(out / "oil.exr")[..., :3].astype(np.float64)
     srgb = colour.RGB_COLOURSPACES["sRGB"]
     linear = np.clip(colour.XYZ_to_RGB(0.5 * xyz, srgb, apply_cctf_encoding=False), 0, 1)
@@ -360,9 +423,30 @@ def test_config_option_reaches_frame_children(tmp_path):
     zero = ocio.MatrixTransform([0.0] * 15 + [1.0])
     config = _modified_config(tmp_path / "cfg", view=zero)
     out = tmp_path / "out"
-    subprocess.run([sys.executable, "-m", "ocio_thinfilm", "render", "oil", "--frames", "1-2",
-                    "--size", "16", "--view", "Channel Clamp", "--config", str(config),
-                    "--out", str(out), "--quiet", "--jobs", "2"], check=True, env=_env())
+    subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "ocio_thinfilm",
+            "render",
+            "oil",
+            "--frames",
+            "1-2",
+            "--size",
+            "16",
+            "--view",
+            "Channel Clamp",
+            "--config",
+            str(config),
+            "--out",
+            str(out),
+            "--quiet",
+            "--jobs",
+            "2",
+        ],
+        check=True,
+        env=_env(),
+    )
     for frame in (1, 2):
         assert read_image(out / f"oil.{frame:04d}.png").max() == 0.0
 
@@ -379,19 +463,26 @@ def test_missing_default_config_is_baked_first(tmp_path, monkeypatch):
 
     monkeypatch.setattr(processors, "DEFAULT_CONFIG", tmp_path / "thinfilm" / "config.ocio")
     monkeypatch.setattr(bake_module, "bake", small_bake)
-    assert cli.main(["render", "morpho", "--size", "16", "--out", str(tmp_path / "out"),
-                     "--quiet"]) == 0
+    assert (
+        cli.main(["render", "morpho", "--size", "16", "--out", str(tmp_path / "out"), "--quiet"])
+        == 0
+    )
     assert baked == [tmp_path / "thinfilm"]
     assert (tmp_path / "thinfilm" / "config.ocio").is_file()
     assert (tmp_path / "out" / "morpho.png").is_file()
 
 
-@pytest.mark.parametrize("argv, message", [
-    (["--config", "no/such/config.ocio"], "--config no/such/config.ocio: no such config file"),
-    (["--view", "Channel Clamp", "--config", "{removed}"],
-     "--view 'Channel Clamp': the config's display sRGB has Raw"),
-    (["--display", "CRT", "--config", "{removed}"], "--display 'CRT': the config has sRGB"),
-])
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["--config", "no/such/config.ocio"], "--config no/such/config.ocio: no such config file"),
+        (
+            ["--view", "Channel Clamp", "--config", "{removed}"],
+            "--view 'Channel Clamp': the config's display sRGB has Raw",
+        ),
+        (["--display", "CRT", "--config", "{removed}"], "--display 'CRT': the config has sRGB"),
+    ],
+)
 def test_config_errors_are_one_line_exit_2(capsys, tmp_path, argv, message):
     import PyOpenColorIO as ocio
 
@@ -423,21 +514,43 @@ def test_the_library_names_config_display_and_view(tmp_path):
 # Frames
 # --------------------------------------------------------------------------- #
 def test_frame_range_one_process_per_frame(tmp_path):
-    subprocess.run([sys.executable, "-m", "ocio_thinfilm", "render", "morpho", "--frames",
-                    "2-3", "--size", "24", "--out", str(tmp_path), "--quiet", "--jobs", "2"],
-                   check=True, env=_env())
+    subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "ocio_thinfilm",
+            "render",
+            "morpho",
+            "--frames",
+            "2-3",
+            "--size",
+            "24",
+            "--out",
+            str(tmp_path),
+            "--quiet",
+            "--jobs",
+            "2",
+        ],
+        check=True,
+        env=_env(),
+    )
     names = sorted(p.name for p in tmp_path.iterdir())
     assert names == ["morpho.0002.exr", "morpho.0002.png", "morpho.0003.exr", "morpho.0003.png"]
     # Frames are independent: frame 3 alone (in this process) gives the same bytes.
     alone = tmp_path / "alone"
-    assert cli.main(["render", "morpho", "--frames", "3-3", "--size", "24", "--out",
-                     str(alone), "--quiet"]) == 0
+    assert (
+        cli.main(
+            ["render", "morpho", "--frames", "3-3", "--size", "24", "--out", str(alone), "--quiet"]
+        )
+        == 0
+    )
     assert (alone / "morpho.0003.png").read_bytes() == (tmp_path / "morpho.0003.png").read_bytes()
     assert (alone / "morpho.0003.exr").read_bytes() == (tmp_path / "morpho.0003.exr").read_bytes()
 
 
-@pytest.mark.parametrize("name, aov", [("oil", "thickness"), ("soap", "thickness"),
-                                       ("morpho", "angle")])
+@pytest.mark.parametrize(
+    "name, aov", [("oil", "thickness"), ("soap", "thickness"), ("morpho", "angle")]
+)
 def test_animated_parameters_change_with_the_frame(name, aov):
     a, _ = render.render_scene(name, (48, 48), frame=1)
     b, _ = render.render_scene(name, (48, 48), frame=12)
@@ -469,8 +582,9 @@ def reference_renders(tmp_path_factory):
 def test_matches_the_reference_image(reference_renders, name):
     ref = REFERENCE / f"{name}.png"
     new = reference_renders / f"{name}.png"
-    result = subprocess.run(["idiff", *IDIFF_THRESHOLDS, str(ref), str(new)],
-                            capture_output=True, text=True)
+    result = subprocess.run(
+        ["idiff", *IDIFF_THRESHOLDS, str(ref), str(new)], capture_output=True, text=True
+    )
     assert result.returncode in (0, 1), result.stdout + result.stderr  # 0 pass, 1 warn
 
 
@@ -501,14 +615,19 @@ def test_documented_render_timings_come_from_the_benchmark(load_benchmark, marke
     assert [r["scene"] for r in result["scenes"]] == list(scenes.SCENES)
     for r in result["scenes"]:
         assert r["computed"] == []
-        spaces = {f"colorspace:{processors.table_colorspace(t)}"
-                  for t in scenes.get_scene(r["scene"]).tables}
+        spaces = {
+            f"colorspace:{processors.table_colorspace(t)}"
+            for t in scenes.get_scene(r["scene"]).tables
+        }
         assert spaces <= set(r["processors"])
         assert "view:sRGB/Constant-Lightness Clip" in r["processors"]
 
 
-@pytest.mark.parametrize("base", ["ocio://studio-config-v1.0.0_aces-v1.3_ocio-v2.1",
-                                  "ocio://studio-config-latest"], ids=["aces1.3", "latest"])
+@pytest.mark.parametrize(
+    "base",
+    ["ocio://studio-config-v1.0.0_aces-v1.3_ocio-v2.1", "ocio://studio-config-latest"],
+    ids=["aces1.3", "latest"],
+)
 def test_render_through_a_merged_aces_config(tmp_path, capsys, base):
     """``--config`` takes a studio's ACES config merged with ``bake --into``: it has no
     CIE-XYZ-D65 colour space, so the render reaches XYZ through its
@@ -521,8 +640,24 @@ def test_render_through_a_merged_aces_config(tmp_path, capsys, base):
     config = merged.bake_into(base, tmp_path / "studio")
     ours, theirs = tmp_path / "ours", tmp_path / "theirs"
     assert cli.main(["render", "oil", "--size", "64", "--out", str(ours), "--quiet"]) == 0
-    assert cli.main(["render", "oil", "--size", "64", "--config", str(config), "--display",
-                     "sRGB - Display", "--out", str(theirs), "--quiet"]) == 0
+    assert (
+        cli.main(
+            [
+                "render",
+                "oil",
+                "--size",
+                "64",
+                "--config",
+                str(config),
+                "--display",
+                "sRGB - Display",
+                "--out",
+                str(theirs),
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     a, b = _channels(ours / "oil.exr"), _channels(theirs / "oil.exr")
     for c in "RGB":
         np.testing.assert_allclose(b[c], a[c], rtol=2e-3, atol=1e-5)
@@ -531,8 +666,18 @@ def test_render_through_a_merged_aces_config(tmp_path, capsys, base):
     head_a, head_b = ((d / "oil.png").read_bytes()[:256] for d in (ours, theirs))
     assert b"sRGB" in head_a and b"sRGB" not in head_b  # PNG's sRGB chunk
     capsys.readouterr()
-    code, _, err = _cli(capsys, "spectrum", "--size", "32", "--config", str(config),
-                        "--display", "sRGB - Display", "--out", str(theirs))
+    code, _, err = _cli(
+        capsys,
+        "spectrum",
+        "--size",
+        "32",
+        "--config",
+        str(config),
+        "--display",
+        "sRGB - Display",
+        "--out",
+        str(theirs),
+    )
     assert code == 2 and len(err.strip().splitlines()) == 1 and "Channel Clamp" in err
 
 
@@ -545,23 +690,42 @@ def _png_chunks(path):
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     out, i = [], 8
     while i < len(data):
-        n, kind = struct.unpack(">I4s", data[i:i + 8])
-        out.append((kind.decode("ascii"), data[i + 8:i + 8 + n]))
+        n, kind = struct.unpack(">I4s", data[i : i + 8])
+        out.append((kind.decode("ascii"), data[i + 8 : i + 8 + n]))
         i += 12 + n
     return out
 
 
-@pytest.mark.parametrize("display, cicp", [("Rec.2100-PQ", (9, 16, 0, 1)),
-                                           ("Rec.2100-HLG", (9, 18, 0, 1)),
-                                           ("P3-D65 PQ", (12, 16, 0, 1))])
+@pytest.mark.parametrize(
+    "display, cicp",
+    [
+        ("Rec.2100-PQ", (9, 16, 0, 1)),
+        ("Rec.2100-HLG", (9, 18, 0, 1)),
+        ("P3-D65 PQ", (12, 16, 0, 1)),
+    ],
+)
 def test_hdr_png_is_16_bit_with_its_cicp_chunk(tmp_path, display, cicp):
     """render --display on an HDR display: a 16-bit PNG whose cICP chunk holds the
     ITU-T H.273 code points (BT.2020 = 9 / P3-D65 = 12 primaries, PQ = 16 / HLG = 18,
     RGB matrix 0, full range 1), no sRGB/gAMA chunk claiming otherwise; its pixels
     are the EXR through the view (to 16-bit rounding and the half-float EXR); the EXR
     is as for SDR displays."""
-    assert cli.main(["render", "oil", "--size", "24x16", "--display", display, "--out",
-                     str(tmp_path), "--quiet"]) == 0
+    assert (
+        cli.main(
+            [
+                "render",
+                "oil",
+                "--size",
+                "24x16",
+                "--display",
+                display,
+                "--out",
+                str(tmp_path),
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     chunks = _png_chunks(tmp_path / "oil.png")
     kinds = [k for k, _ in chunks]
     assert tuple(chunks[0][1][8:9]) == (16,)  # IHDR bit depth
@@ -570,9 +734,11 @@ def test_hdr_png_is_16_bit_with_its_cicp_chunk(tmp_path, display, cicp):
     assert not {"sRGB", "gAMA", "iCCP"} & set(kinds)
     exr = read_image(tmp_path / "oil.exr")
     png = read_image(tmp_path / "oil.png")
-    expected = np.clip(ocio_ops.apply(view_transforms.view_transform(display,
-                                                                     render.DEFAULT_VIEW),
-                                      exr[..., :3]), 0, 1)
+    expected = np.clip(
+        ocio_ops.apply(view_transforms.view_transform(display, render.DEFAULT_VIEW), exr[..., :3]),
+        0,
+        1,
+    )
     assert np.abs(expected - png).max() < 2 / 1023
 
 
@@ -589,22 +755,87 @@ def test_hdr_png_encodes_to_hdr10_with_ffmpeg(tmp_path):
     """docs/hdr.md's ffmpeg command: the PQ PNGs of render become a BT.2020 / ST 2084
     stream whose decoded codes are the PNG's (to 10-bit 4:2:0 coding), tagged as such."""
     # morpho: saturated blues, where a wrong (BT.601) matrix shifts the mean by 0.04
-    assert cli.main(["render", "morpho", "--size", "64x48", "--display", "Rec.2100-PQ",
-                     "--out", str(tmp_path), "--quiet"]) == 0
+    assert (
+        cli.main(
+            [
+                "render",
+                "morpho",
+                "--size",
+                "64x48",
+                "--display",
+                "Rec.2100-PQ",
+                "--out",
+                str(tmp_path),
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     ffmpeg, mp4 = shutil.which("ffmpeg"), tmp_path / "out.mp4"
-    subprocess.run([ffmpeg, "-v", "error", "-i", str(tmp_path / "morpho.png"), "-vf",
-                    "scale=out_color_matrix=bt2020:out_range=tv", "-pix_fmt", "yuv420p10le",
-                    "-c:v", "libx265", "-x265-params", "hdr10=1:max-cll=1000,400:crf=4:"
-                    "log-level=error", "-color_primaries", "bt2020", "-color_trc",
-                    "smpte2084", "-colorspace", "bt2020nc", "-color_range", "tv", str(mp4)],
-                   check=True, timeout=120)
-    probe = subprocess.run([shutil.which("ffprobe"), "-v", "error", "-show_entries",
-                            "stream=color_space,color_transfer,color_primaries", "-of",
-                            "compact", str(mp4)], capture_output=True, text=True, check=True)
+    subprocess.run(
+        [
+            ffmpeg,
+            "-v",
+            "error",
+            "-i",
+            str(tmp_path / "morpho.png"),
+            "-vf",
+            "scale=out_color_matrix=bt2020:out_range=tv",
+            "-pix_fmt",
+            "yuv420p10le",
+            "-c:v",
+            "libx265",
+            "-x265-params",
+            "hdr10=1:max-cll=1000,400:crf=4:log-level=error",
+            "-color_primaries",
+            "bt2020",
+            "-color_trc",
+            "smpte2084",
+            "-colorspace",
+            "bt2020nc",
+            "-color_range",
+            "tv",
+            str(mp4),
+        ],
+        check=True,
+        timeout=120,
+    )
+    probe = subprocess.run(
+        [
+            shutil.which("ffprobe"),
+            "-v",
+            "error",
+            "-show_entries",
+            "stream=color_space,color_transfer,color_primaries",
+            "-of",
+            "compact",
+            str(mp4),
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     assert "color_transfer=smpte2084" in probe.stdout and "primaries=bt2020" in probe.stdout
-    back = subprocess.run([ffmpeg, "-v", "error", "-i", str(mp4), "-frames:v", "1", "-vf",
-                           "scale=in_color_matrix=bt2020:in_range=tv", "-pix_fmt", "rgb48le",
-                           "-f", "rawvideo", "-"], capture_output=True, check=True).stdout
+    back = subprocess.run(
+        [
+            ffmpeg,
+            "-v",
+            "error",
+            "-i",
+            str(mp4),
+            "-frames:v",
+            "1",
+            "-vf",
+            "scale=in_color_matrix=bt2020:in_range=tv",
+            "-pix_fmt",
+            "rgb48le",
+            "-f",
+            "rawvideo",
+            "-",
+        ],
+        capture_output=True,
+        check=True,
+    ).stdout
     decoded = np.frombuffer(back, "<u2").reshape(-1, 3) / 65535.0
     png = read_image(tmp_path / "morpho.png").reshape(-1, 3)
     # 4:2:0 chroma at this size blurs edges (median |diff| 0.014); the mean carries no

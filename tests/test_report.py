@@ -42,8 +42,15 @@ def test_quick_report_writes_markdown_plots_and_json(quick_report):
     assert "Skipped" not in md
     # Every referenced figure exists and is a PNG.
     figures = [line.split("](")[1].rstrip(")") for line in md.splitlines() if line.startswith("![")]
-    for name in ["knob_spectral_step.png", "knob_table1d.png", "knob_lut3d.png", "knob_apply.png",
-                 "peers_gamut_spectrum.png", "peers_gaussian_fit.png", "throughput.png"]:
+    for name in [
+        "knob_spectral_step.png",
+        "knob_table1d.png",
+        "knob_lut3d.png",
+        "knob_apply.png",
+        "peers_gamut_spectrum.png",
+        "peers_gaussian_fit.png",
+        "throughput.png",
+    ]:
         assert name in figures
     for name in figures:
         data = (quick_report / name).read_bytes()
@@ -152,8 +159,11 @@ def test_readme_headline_is_the_committed_reports():
     report = (root / "reports" / "report.md").read_text()
     headline = report.split("## Headline\n\n", 1)[1].split("\n\n", 1)[0].strip().split("\n")
     readme = (root / "README.md").read_text()
-    quoted = readme.split("<!-- report:headline:begin -->\n", 1)[1].split(
-        "\n<!-- report:headline:end -->", 1)[0].split("\n")
+    quoted = (
+        readme.split("<!-- report:headline:begin -->\n", 1)[1]
+        .split("\n<!-- report:headline:end -->", 1)[0]
+        .split("\n")
+    )
     assert quoted == [line for line in headline if not line.startswith("- Machine:")]
 
 

@@ -44,8 +44,13 @@ def snapshot(directory) -> dict:
 
 
 def temporaries(*directories) -> list:
-    return [p for d in directories if Path(d).exists() for p in Path(d).rglob("*")
-            if p.name.startswith(io.TMP_PREFIX) or p.name.endswith(".old")]
+    return [
+        p
+        for d in directories
+        if Path(d).exists()
+        for p in Path(d).rglob("*")
+        if p.name.startswith(io.TMP_PREFIX) or p.name.endswith(".old")
+    ]
 
 
 def cli_run(argv, capsys):
@@ -74,8 +79,9 @@ def config_loads(directory) -> None:
         config.getProcessor(name, "CIE-XYZ-D65").getDefaultCPUProcessor()
     for display in config.getDisplays():
         for view in config.getViews(display):
-            config.getProcessor("CIE-XYZ-D65", display, view,
-                                ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
+            config.getProcessor(
+                "CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD
+            ).getDefaultCPUProcessor()
 
 
 def marker_files(directory) -> set:
@@ -85,10 +91,13 @@ def marker_files(directory) -> set:
 
 def files_under(directory) -> set:
     """Files under ``directory`` but the marker and the temporaries of a killed run."""
-    return {p.relative_to(directory).as_posix() for p in Path(directory).rglob("*")
-            if p.is_file() and p.name != io.MARKER
-            and not any(part.startswith(io.TMP_PREFIX)
-                        for part in p.relative_to(directory).parts)}
+    return {
+        p.relative_to(directory).as_posix()
+        for p in Path(directory).rglob("*")
+        if p.is_file()
+        and p.name != io.MARKER
+        and not any(part.startswith(io.TMP_PREFIX) for part in p.relative_to(directory).parts)
+    }
 
 
 # --------------------------------------------------------------------------- #
@@ -100,8 +109,10 @@ def test_bake_refuses_a_directory_holding_a_users_files(tmp_path, capsys):
     (shots / "plate.exr").write_bytes(b"user data")
     (shots / "sub").mkdir()
     before = snapshot(tmp_path)
-    for argv in (["bake", "--out", str(shots)],
-                 ["bake", "--out", str(tmp_path / "cfg"), "--luts", str(shots)]):
+    for argv in (
+        ["bake", "--out", str(shots)],
+        ["bake", "--out", str(tmp_path / "cfg"), "--luts", str(shots)],
+    ):
         code, _, err = cli_run(argv + ["--quiet", "--clip-size", "9"], capsys)
         one_line_error(code, err, str(shots), "not written by ocio-thinfilm")
         assert snapshot(tmp_path) == before
@@ -110,8 +121,19 @@ def test_bake_refuses_a_directory_holding_a_users_files(tmp_path, capsys):
 def test_bake_luts_into_a_users_file_is_refused(tmp_path, capsys):
     user = tmp_path / "notes.txt"
     user.write_text("mine")
-    code, _, err = cli_run(["bake", "--out", str(tmp_path / "cfg"), "--luts", str(user),
-                            "--quiet", "--clip-size", "9"], capsys)
+    code, _, err = cli_run(
+        [
+            "bake",
+            "--out",
+            str(tmp_path / "cfg"),
+            "--luts",
+            str(user),
+            "--quiet",
+            "--clip-size",
+            "9",
+        ],
+        capsys,
+    )
     one_line_error(code, err, "--luts", "not a directory")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
     assert user.read_text() == "mine"
@@ -171,8 +193,10 @@ def test_stale_temporaries_of_dead_processes_are_removed(tmp_path):
     live = os.getppid()  # pytest's parent: alive for the whole test
     stale = tmp_path / f"{io.TMP_PREFIX}{io._self_id().split('-')[0]}-{dead.pid}-1-ab-x.clf"
     stale.write_text("half")
-    keep = tmp_path / f"{io.TMP_PREFIX}{io._self_id().split('-')[0]}-{live}-" \
-                      f"{io._start_time(live)}-cd-y.clf"
+    keep = (
+        tmp_path / f"{io.TMP_PREFIX}{io._self_id().split('-')[0]}-{live}-"
+        f"{io._start_time(live)}-cd-y.clf"
+    )
     keep.write_text("in use")
     foreign = tmp_path / f"{io.TMP_PREFIX}0badf00d-{dead.pid}-1-ef-z.clf"
     foreign.write_text("another host")  # another host's: kept until a day old
@@ -206,8 +230,10 @@ def device_node(tmp_path, name, minor):
 def test_export_to_a_null_device_writes_through(tmp_path, capsys):
     null = device_node(tmp_path, "null", 3)
     before = os.stat(null)
-    code, out, err = cli_run(["export", "morpho", "--size", "8", "--format", "clf",
-                              "--out", str(null), "--quiet"], capsys)
+    code, out, err = cli_run(
+        ["export", "morpho", "--size", "8", "--format", "clf", "--out", str(null), "--quiet"],
+        capsys,
+    )
     assert code == 0, err
     after = os.stat(null)
     assert stat.S_ISCHR(after.st_mode) and after.st_rdev == before.st_rdev
@@ -218,8 +244,10 @@ def test_export_to_a_null_device_writes_through(tmp_path, capsys):
 def test_export_to_a_full_device_fails_in_one_line(tmp_path, capsys):
     full = device_node(tmp_path, "full", 7)
     before = os.stat(full)
-    code, _, err = cli_run(["export", "morpho", "--size", "8", "--format", "cube",
-                            "--out", str(full), "--quiet"], capsys)
+    code, _, err = cli_run(
+        ["export", "morpho", "--size", "8", "--format", "cube", "--out", str(full), "--quiet"],
+        capsys,
+    )
     one_line_error(code, err, str(full))
     after = os.stat(full)
     assert stat.S_ISCHR(after.st_mode) and after.st_rdev == before.st_rdev
@@ -233,8 +261,9 @@ def test_export_into_a_fifo_writes_through(tmp_path, capsys):
     got = []
     reader = threading.Thread(target=lambda: got.append(fifo.read_bytes()), daemon=True)
     reader.start()
-    code, _, err = cli_run(["export", "morpho", "--size", "8", "--out", str(fifo),
-                            "--quiet"], capsys)
+    code, _, err = cli_run(
+        ["export", "morpho", "--size", "8", "--out", str(fifo), "--quiet"], capsys
+    )
     reader.join(30)
     assert code == 0, err
     alive = reader.is_alive()
@@ -252,8 +281,9 @@ def test_export_through_a_symlink_keeps_the_link(tmp_path, capsys):
     target.write_text("old")
     link = tmp_path / "link.cube"
     link.symlink_to(target)
-    code, _, err = cli_run(["export", "morpho", "--size", "8", "--out", str(link),
-                            "--quiet"], capsys)
+    code, _, err = cli_run(
+        ["export", "morpho", "--size", "8", "--out", str(link), "--quiet"], capsys
+    )
     assert code == 0, err
     assert link.is_symlink() and os.readlink(link) == str(target)
     assert "\nLUT_1D_SIZE 8\n" in "\n" + target.read_text()
@@ -273,24 +303,44 @@ def test_export_to_stdout_keeps_the_data_clean(tmp_path, via_link):
         os.symlink("/proc/self/fd/1", target)
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     with open(out, "wb") as f:
-        p = subprocess.run([sys.executable, "-m", "ocio_thinfilm", "export", "morpho",
-                            "--size", "8", "--format", "cube", "--out", target,
-                            "--quiet"], stdout=f, stderr=subprocess.PIPE, text=True,
-                           env=env, timeout=120, cwd=tmp_path)
+        p = subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "ocio_thinfilm",
+                "export",
+                "morpho",
+                "--size",
+                "8",
+                "--format",
+                "cube",
+                "--out",
+                target,
+                "--quiet",
+            ],
+            stdout=f,
+            stderr=subprocess.PIPE,
+            text=True,
+            env=env,
+            timeout=120,
+            cwd=tmp_path,
+        )
     assert p.returncode == 0, p.stderr
     text = out.read_text()
     assert "\nLUT_1D_SIZE 8\n" in "\n" + text and "wrote" not in text
     assert f"wrote {target}" in p.stderr
     if via_link:
         assert os.readlink(target) == "/proc/self/fd/1"
-    assert sorted(x.name for x in tmp_path.iterdir()) == \
-        sorted(["captured.cube"] + (["stdout"] if via_link else []))
+    assert sorted(x.name for x in tmp_path.iterdir()) == sorted(
+        ["captured.cube"] + (["stdout"] if via_link else [])
+    )
 
 
 def test_render_refuses_before_writing_when_an_output_is_a_directory(tmp_path, capsys):
     (tmp_path / "oil.exr").mkdir()
-    code, _, err = cli_run(["render", "oil", "--size", "16", "--out", str(tmp_path),
-                            "--quiet"], capsys)
+    code, _, err = cli_run(
+        ["render", "oil", "--size", "16", "--out", str(tmp_path), "--quiet"], capsys
+    )
     one_line_error(code, err, "oil.exr")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["oil.exr"]
 
@@ -304,13 +354,16 @@ def small_disk(tmp_path):
     mnt = tmp_path / "small"
     mnt.mkdir()
     try:
-        p = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(mnt)],
-                           capture_output=True, text=True, timeout=30)
+        p = subprocess.run(
+            ["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(mnt)],
+            capture_output=True,
+            text=True,
+            timeout=30,
+        )
     except (OSError, subprocess.TimeoutExpired) as error:
         pytest.skip(f"cannot mount a tmpfs here: {error}")
     if p.returncode != 0:
-        pytest.skip(f"cannot mount a tmpfs here (needs root and CAP_SYS_ADMIN): "
-                    f"{p.stderr.strip()}")
+        pytest.skip(f"cannot mount a tmpfs here (needs root and CAP_SYS_ADMIN): {p.stderr.strip()}")
     try:
         yield mnt
     finally:
@@ -335,8 +388,9 @@ def fill(directory, leave=16384):
 
 def test_full_disk_export_fails_and_keeps_the_old_file(small_disk, capsys):
     good = small_disk / "x.clf"
-    assert cli_run(["export", "morpho", "--size", "16", "--out", str(good), "--quiet"],
-                   capsys)[0] == 0
+    assert (
+        cli_run(["export", "morpho", "--size", "16", "--out", str(good), "--quiet"], capsys)[0] == 0
+    )
     before = good.read_bytes()
     fill(small_disk)
     for fmt in ("clf", "cube"):
@@ -354,14 +408,18 @@ def test_full_disk_export_fails_and_keeps_the_old_file(small_disk, capsys):
 def test_full_disk_demo_and_render_keep_the_old_images(small_disk, capsys):
     png = small_disk / "strip.png"
     assert cli_run(["demo", "--out", str(png)], capsys)[0] == 0
-    assert cli_run(["render", "oil", "--size", "64", "--out", str(small_disk), "--quiet"],
-                   capsys)[0] == 0
+    assert (
+        cli_run(["render", "oil", "--size", "64", "--out", str(small_disk), "--quiet"], capsys)[0]
+        == 0
+    )
     before = snapshot(small_disk)
     fill(small_disk, leave=0)
     code, _, err = cli_run(["demo", "--out", str(png)], capsys)
     one_line_error(code, err, "strip.png")
-    code, _, err = cli_run(["render", "oil", "--size", "64", "--seed", "7", "--out",
-                            str(small_disk), "--quiet"], capsys)
+    code, _, err = cli_run(
+        ["render", "oil", "--size", "64", "--seed", "7", "--out", str(small_disk), "--quiet"],
+        capsys,
+    )
     one_line_error(code, err, str(small_disk))
     after = snapshot(small_disk)
     after.pop("filler"), before.pop("filler", None)
@@ -374,15 +432,27 @@ def test_full_disk_bake_luts_leaves_out_as_it_was(small_disk, tmp_path, capsys):
     assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     before = snapshot(cfg)
     fill(small_disk)
-    code, _, err = cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10",
-                            "--luts", str(small_disk / "luts")], capsys)
+    code, _, err = cli_run(
+        [
+            "bake",
+            "--out",
+            str(cfg),
+            "--quiet",
+            "--clip-size",
+            "10",
+            "--luts",
+            str(small_disk / "luts"),
+        ],
+        capsys,
+    )
     one_line_error(code, err)
     assert snapshot(cfg) == before
     assert not (small_disk / "luts").exists()
     assert temporaries(cfg, small_disk) == []
     # and a bake whose own directory is on the full disk: one line, nothing left
-    code, _, err = cli_run(["bake", "--out", str(small_disk / "cfg"), "--quiet",
-                            "--clip-size", "9"], capsys)
+    code, _, err = cli_run(
+        ["bake", "--out", str(small_disk / "cfg"), "--quiet", "--clip-size", "9"], capsys
+    )
     one_line_error(code, err)
     assert "Traceback" not in err
     assert sorted(p.name for p in small_disk.iterdir()) == ["filler"]
@@ -394,8 +464,9 @@ def test_failing_fsync_keeps_the_old_files(tmp_path, capsys, monkeypatch):
     good = tmp_path / "x.clf"
     png = tmp_path / "s.png"
     cfg = tmp_path / "cfg"
-    assert cli_run(["export", "morpho", "--size", "16", "--out", str(good), "--quiet"],
-                   capsys)[0] == 0
+    assert (
+        cli_run(["export", "morpho", "--size", "16", "--out", str(good), "--quiet"], capsys)[0] == 0
+    )
     assert cli_run(["demo", "--out", str(png)], capsys)[0] == 0
     assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     before = snapshot(tmp_path)
@@ -404,9 +475,11 @@ def test_failing_fsync_keeps_the_old_files(tmp_path, capsys, monkeypatch):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
 
     monkeypatch.setattr(io, "_fsync_file", enospc)
-    for argv in (["export", "film", "--out", str(good), "--quiet"],
-                 ["demo", "--out", str(png)],
-                 ["bake", "--out", str(cfg), "--quiet", "--clip-size", "10"]):
+    for argv in (
+        ["export", "film", "--out", str(good), "--quiet"],
+        ["demo", "--out", str(png)],
+        ["bake", "--out", str(cfg), "--quiet", "--clip-size", "10"],
+    ):
         code, _, err = cli_run(argv, capsys)
         one_line_error(code, err, "No space left")
     assert snapshot(tmp_path) == before
@@ -415,8 +488,16 @@ def test_failing_fsync_keeps_the_old_files(tmp_path, capsys, monkeypatch):
 # --------------------------------------------------------------------------- #
 # Kills at every step of a bake's commit, and at random moments
 # --------------------------------------------------------------------------- #
-KILL_POINTS = ["before-commit", "after-marker", "rename-0", "rename-4", "rename-8",
-               "rename-9", "after-renames", "after-commit"]
+KILL_POINTS = [
+    "before-commit",
+    "after-marker",
+    "rename-0",
+    "rename-4",
+    "rename-8",
+    "rename-9",
+    "after-renames",
+    "after-commit",
+]
 
 
 @pytest.fixture(scope="module")
@@ -450,8 +531,9 @@ def test_bake_killed_at_each_commit_step(tmp_path, baked, point):
             devnull = os.open(os.devnull, os.O_WRONLY)
             os.dup2(devnull, 1)
             os.dup2(devnull, 2)
-            code = cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10",
-                             "--luts", str(luts)])
+            code = cli.main(
+                ["bake", "--out", str(cfg), "--quiet", "--clip-size", "10", "--luts", str(luts)]
+            )
         finally:
             os._exit(code)
     _, status = os.waitpid(pid, 0)
@@ -459,8 +541,10 @@ def test_bake_killed_at_each_commit_step(tmp_path, baked, point):
     config_loads(cfg)  # old, new or a mix of complete files: it loads
     assert marker_files(cfg) >= files_under(cfg)  # everything of ours is listed
     # the next run cleans up and completes
-    assert cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10",
-                     "--luts", str(luts)]) == 0
+    assert (
+        cli.main(["bake", "--out", str(cfg), "--quiet", "--clip-size", "10", "--luts", str(luts)])
+        == 0
+    )
     config_loads(cfg)
     assert marker_files(cfg) == files_under(cfg)
     assert temporaries(tmp_path) == []
@@ -473,8 +557,9 @@ def _wait_for_handlers(pid, timeout=20.0):
     while time.monotonic() < deadline:
         try:
             for line in Path(f"/proc/{pid}/status").read_text().splitlines():
-                if line.startswith("SigCgt:") and int(line.split()[1], 16) & \
-                        (1 << (signal.SIGTERM - 1)):
+                if line.startswith("SigCgt:") and int(line.split()[1], 16) & (
+                    1 << (signal.SIGTERM - 1)
+                ):
                     return True
         except (OSError, ValueError):
             return False
@@ -485,13 +570,30 @@ def _wait_for_handlers(pid, timeout=20.0):
 def _bake_process(out, *extra):
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     env.pop("OCIO_THINFILM_FAULT", None)
-    return subprocess.Popen([sys.executable, "-m", "ocio_thinfilm", "bake", "--out", str(out),
-                             "--quiet", "--clip-size", "10", *extra], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    return subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "ocio_thinfilm",
+            "bake",
+            "--out",
+            str(out),
+            "--quiet",
+            "--clip-size",
+            "10",
+            *extra,
+        ],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
 
 
-needs_proc = pytest.mark.skipif(not Path("/proc/self/status").exists(),
-                                reason="needs /proc to see when the handlers are in place")
+needs_proc = pytest.mark.skipif(
+    not Path("/proc/self/status").exists(),
+    reason="needs /proc to see when the handlers are in place",
+)
 
 
 @needs_proc
@@ -544,16 +646,19 @@ def test_signal_gives_one_line_and_128_plus_n(tmp_path, baked, signum, code):
 # --------------------------------------------------------------------------- #
 # One-line errors naming the option
 # --------------------------------------------------------------------------- #
-@pytest.mark.parametrize("argv,needles", [
-    (["demo", "--thickness", "abc"], ["ocio-thinfilm demo:", "--thickness", "number"]),
-    (["export", "film", "--range", "0"], ["ocio-thinfilm export:", "--range", "MIN MAX"]),
-    (["export"], ["ocio-thinfilm export:", "TABLE", "film"]),
-    (["export", "film", "--no-such-option"], ["ocio-thinfilm export:", "--no-such-option"]),
-    (["bake", "--frobnicate"], ["ocio-thinfilm bake:", "--frobnicate"]),
-    (["nosuch"], ["ocio-thinfilm:", "nosuch", "bake"]),
-    ([], ["ocio-thinfilm:", "no command", "export"]),
-    (["render", "oil", "--size", "5x5"], ["ocio-thinfilm render:", "--size"]),
-])
+@pytest.mark.parametrize(
+    "argv,needles",
+    [
+        (["demo", "--thickness", "abc"], ["ocio-thinfilm demo:", "--thickness", "number"]),
+        (["export", "film", "--range", "0"], ["ocio-thinfilm export:", "--range", "MIN MAX"]),
+        (["export"], ["ocio-thinfilm export:", "TABLE", "film"]),
+        (["export", "film", "--no-such-option"], ["ocio-thinfilm export:", "--no-such-option"]),
+        (["bake", "--frobnicate"], ["ocio-thinfilm bake:", "--frobnicate"]),
+        (["nosuch"], ["ocio-thinfilm:", "nosuch", "bake"]),
+        ([], ["ocio-thinfilm:", "no command", "export"]),
+        (["render", "oil", "--size", "5x5"], ["ocio-thinfilm render:", "--size"]),
+    ],
+)
 def test_argument_errors_are_one_line(argv, needles, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     code, out, err = cli_run(argv, capsys)
@@ -564,8 +669,19 @@ def test_argument_errors_are_one_line(argv, needles, capsys, tmp_path, monkeypat
 
 def test_bake_luts_nested_in_out_is_refused(tmp_path, capsys):
     for luts in ("cfg/luts", "cfg", "."):
-        code, _, err = cli_run(["bake", "--out", str(tmp_path / "cfg"), "--luts",
-                                str(tmp_path / luts), "--quiet", "--clip-size", "9"], capsys)
+        code, _, err = cli_run(
+            [
+                "bake",
+                "--out",
+                str(tmp_path / "cfg"),
+                "--luts",
+                str(tmp_path / luts),
+                "--quiet",
+                "--clip-size",
+                "9",
+            ],
+            capsys,
+        )
         one_line_error(code, err, "--luts")
     assert list(tmp_path.iterdir()) == []
 
@@ -578,8 +694,10 @@ def test_leftovers_of_the_old_directory_swap_are_removed(tmp_path, capsys, baked
         (tmp_path / name / io.MARKER).unlink()  # the old versions wrote no marker
     (tmp_path / ".cfg.abcdefgh").mkdir()
     (tmp_path / ".cfg.abcdefgh" / "mine.txt").write_text("the user's")
-    assert cli_run(["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "9"],
-                   capsys)[0] == 0
+    assert (
+        cli_run(["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "9"], capsys)[0]
+        == 0
+    )
     assert sorted(p.name for p in tmp_path.iterdir()) == [".cfg.abcdefgh", "cfg"]
 
 
@@ -588,10 +706,21 @@ def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch)
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
 
     monkeypatch.setattr(io, "_fsync_file", enospc)
-    code, _, err = cli_run(["export", "morpho", "--size", "8", "--out",
-                            str(tmp_path / "a" / "b" / "x.cube"), "--quiet"], capsys)
+    code, _, err = cli_run(
+        [
+            "export",
+            "morpho",
+            "--size",
+            "8",
+            "--out",
+            str(tmp_path / "a" / "b" / "x.cube"),
+            "--quiet",
+        ],
+        capsys,
+    )
     one_line_error(code, err, "x.cube")
-    code, _, err = cli_run(["bake", "--out", str(tmp_path / "c" / "cfg"), "--quiet",
-                            "--clip-size", "9"], capsys)
+    code, _, err = cli_run(
+        ["bake", "--out", str(tmp_path / "c" / "cfg"), "--quiet", "--clip-size", "9"], capsys
+    )
     one_line_error(code, err)
     assert list(tmp_path.iterdir()) == []

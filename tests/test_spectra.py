@@ -52,8 +52,9 @@ def test_thin_soap_film_is_black_and_quarter_wave_is_bright():
     wl = np.array([400.0, 500.0, 600.0])
     assert np.all(spectra.two_beam_reflectance(0.0, wl) == 0.0)
     assert np.all(spectra.two_beam_reflectance(0.0, wl, phase_change=False) == 1.0)
-    np.testing.assert_allclose(spectra.two_beam_reflectance(125.0, np.array([500.0])), 1.0,
-                               atol=1e-15)
+    np.testing.assert_allclose(
+        spectra.two_beam_reflectance(125.0, np.array([500.0])), 1.0, atol=1e-15
+    )
 
 
 # --------------------------------------------------------------------------- #
@@ -64,8 +65,9 @@ def test_optical_thickness_refraction_form_matches_snell():
     t, n = 400.0, 1.33
     theta = np.array([0.0, 10.0, 30.0, 45.0, 60.0, 75.0, 89.0, 90.0])
     theta_t = np.arcsin(np.sin(np.deg2rad(theta)) / n)
-    np.testing.assert_allclose(spectra.optical_thickness(t, n, theta),
-                               t * n * np.cos(theta_t), rtol=1e-13)
+    np.testing.assert_allclose(
+        spectra.optical_thickness(t, n, theta), t * n * np.cos(theta_t), rtol=1e-13
+    )
 
 
 def test_optical_thickness_literal_eq11_differs_away_from_normal():
@@ -129,8 +131,9 @@ def test_multilayer_exact_and_smooth_at_the_poles(layers, m):
             if abs(mp.sin(x)) < mp.mpf(10) ** -30:  # x = m pi up to 50-digit pi
                 expected.append(1.0)
             else:
-                expected.append(float((mp.sin((layers + 1) * x) / mp.sin(x)) ** 2
-                                      / (layers + 1) ** 2))
+                expected.append(
+                    float((mp.sin((layers + 1) * x) / mp.sin(x)) ** 2 / (layers + 1) ** 2)
+                )
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-9)
     assert np.all(got <= 1.0 + 1e-12)
     # Monotone towards the peak from both sides: no spike next to the pole.
@@ -166,7 +169,7 @@ def test_morpho_eq14_and_peak_wavelength():
     degrees, the paper's "about 400 nm"; it leaves the 360 nm grid near 40 degrees)."""
     theta = np.array([0.0, 10.0, 20.0, 30.0, 35.0])
     th = np.deg2rad(theta)
-    eq14 = 150.0 * np.cos(th) + 50.0 * np.sqrt(1.53 ** 2 - np.sin(th) ** 2)
+    eq14 = 150.0 * np.cos(th) + 50.0 * np.sqrt(1.53**2 - np.sin(th) ** 2)
     t = spectra.morpho_layer_thickness(theta)
     np.testing.assert_allclose(t, eq14, rtol=1e-14)
     assert t[0] == pytest.approx(226.5, abs=1e-12)
@@ -192,13 +195,15 @@ def test_airy_and_tmm_match_colour_thin_film_tmm(n_film, n_substrate):
     """Reference: colour.phenomena.thin_film_tmm (Byrnes-style TMM), (R_s+R_p)/2,
     over thickness x angle (to 89.9 degrees) x wavelength. max |dR| <= 1e-9."""
     ref = colour_thin_film_R([1.0, n_film, n_substrate], THICKNESSES, WL_10, ANGLES)
-    airy = exact.airy_reflectance(THICKNESSES[None, :], WL_10, n_film, ANGLES[:, None],
-                                    n_substrate=n_substrate)
+    airy = exact.airy_reflectance(
+        THICKNESSES[None, :], WL_10, n_film, ANGLES[:, None], n_substrate=n_substrate
+    )
     assert airy.shape == ref.shape
     assert np.abs(airy - ref).max() <= 1e-9
     for i, d in enumerate(THICKNESSES):
-        tmm = exact.transfer_matrix_reflectance([n_film], [d], WL_10, ANGLES,
-                                                  n_substrate=n_substrate)
+        tmm = exact.transfer_matrix_reflectance(
+            [n_film], [d], WL_10, ANGLES, n_substrate=n_substrate
+        )
         assert np.abs(tmm - ref[:, i, :]).max() <= 1e-9
 
 
@@ -215,9 +220,12 @@ def test_complex_substrate_normal_incidence_matches_colour(n_substrate):
     ref = colour_thin_film_R([1.0, 1.38, n_substrate], THICKNESSES, WL_10, [0.0])
     airy = exact.airy_reflectance(THICKNESSES, WL_10, 1.38, 0.0, n_substrate=n_substrate)
     assert np.abs(airy - ref[0]).max() <= 1e-9
-    tmm = np.stack([exact.transfer_matrix_reflectance([1.38], [d], WL_10, 0.0,
-                                                        n_substrate=n_substrate)
-                    for d in THICKNESSES])
+    tmm = np.stack(
+        [
+            exact.transfer_matrix_reflectance([1.38], [d], WL_10, 0.0, n_substrate=n_substrate)
+            for d in THICKNESSES
+        ]
+    )
     assert np.abs(tmm - ref[0]).max() <= 1e-9
 
 
@@ -248,15 +256,19 @@ def test_airy_and_tmm_match_mpmath_textbook(n0, n1, n2, theta):
     wl = np.array([380.0, 450.0, 555.0, 700.0])
     expected = np.array([[mp_airy_R(n0, n1, n2, di, w, theta) for w in wl] for di in d])
     airy = exact.airy_reflectance(d, wl, n1, theta, n_incident=n0, n_substrate=n2)
-    tmm = np.stack([exact.transfer_matrix_reflectance([n1], [di], wl, theta,
-                                                        n_incident=n0, n_substrate=n2)
-                    for di in d])
+    tmm = np.stack(
+        [
+            exact.transfer_matrix_reflectance([n1], [di], wl, theta, n_incident=n0, n_substrate=n2)
+            for di in d
+        ]
+    )
     np.testing.assert_allclose(airy, expected, rtol=0, atol=1e-9)
     np.testing.assert_allclose(tmm, expected, rtol=0, atol=1e-9)
 
 
-@pytest.mark.parametrize("n0,n1,n2,theta", [(1.5, 1.0, 1.0, 60.0), (1.5, 1.33, 1.0, 70.0),
-                                            (1.5, 1.6, 1.0, 60.0)])
+@pytest.mark.parametrize(
+    "n0,n1,n2,theta", [(1.5, 1.0, 1.0, 60.0), (1.5, 1.33, 1.0, 70.0), (1.5, 1.6, 1.0, 60.0)]
+)
 def test_lossless_total_internal_reflection_is_total(n0, n1, n2, theta):
     """Reference: energy conservation. Lossless media, and the substrate cannot carry
     a propagating wave (n2 < n0 sin theta), so nothing is transmitted or absorbed:
@@ -266,8 +278,9 @@ def test_lossless_total_internal_reflection_is_total(n0, n1, n2, theta):
     airy = exact.airy_reflectance(d, WL_10, n1, theta, n_incident=n0, n_substrate=n2)
     np.testing.assert_allclose(airy, 1.0, rtol=0, atol=1e-12)
     for di in d:
-        tmm = exact.transfer_matrix_reflectance([n1], [di], WL_10, theta, n_incident=n0,
-                                                  n_substrate=n2)
+        tmm = exact.transfer_matrix_reflectance(
+            [n1], [di], WL_10, theta, n_incident=n0, n_substrate=n2
+        )
         np.testing.assert_allclose(tmm, 1.0, rtol=0, atol=1e-12)
 
 
@@ -276,18 +289,22 @@ def test_frustrated_tir_limits():
     no gap -> no interface (R = 0); a gap many decay lengths thick -> R -> 1;
     in between R rises monotonically."""
     d = np.array([0.0, 10.0, 50.0, 100.0, 200.0, 400.0, 2000.0])
-    R = exact.airy_reflectance(d, np.array([550.0]), 1.0, 60.0, n_incident=1.5,
-                                 n_substrate=1.5)[:, 0]
+    R = exact.airy_reflectance(d, np.array([550.0]), 1.0, 60.0, n_incident=1.5, n_substrate=1.5)[
+        :, 0
+    ]
     assert R[0] == pytest.approx(0.0, abs=1e-15)
     assert R[-1] == pytest.approx(1.0, abs=1e-9)
     assert np.all(np.diff(R) > 0)
 
 
-@pytest.mark.parametrize("stack", [
-    ([1.5, 2.0, 1.38], [100.0, 230.0, 50.0], 1.52),
-    ([2.3, 1.38, 2.3, 1.38], [60.0, 100.0, 60.0, 100.0], 1.0),
-    ([1.33, 1.7, 1.2, 2.1, 1.45], [1000.0, 12.5, 333.0, 80.0, 0.0], 3.5),
-])
+@pytest.mark.parametrize(
+    "stack",
+    [
+        ([1.5, 2.0, 1.38], [100.0, 230.0, 50.0], 1.52),
+        ([2.3, 1.38, 2.3, 1.38], [60.0, 100.0, 60.0, 100.0], 1.0),
+        ([1.33, 1.7, 1.2, 2.1, 1.45], [1000.0, 12.5, 333.0, 80.0, 0.0], 3.5),
+    ],
+)
 def test_tmm_multilayer_matches_colour(stack):
     """Reference: colour.phenomena.multilayer_tmm for 3-5 layer stacks, all angles."""
     n_layers, d, ns = stack
@@ -349,20 +366,19 @@ BAD_CALLS = [
     ("n_substrate", lambda: exact.airy_reflectance(100.0, WL, 1.5, n_substrate=0.0)),
     ("theta", lambda: exact.airy_reflectance(100.0, WL, 1.5, 100.0)),
     ("wavelengths", lambda: exact.airy_reflectance(100.0, [], 1.5)),
-    ("harmonics", lambda: exact.airy_reflectance(100.0, WL, 1.5, band_limited=True,
-                                                   harmonics=0)),
+    ("harmonics", lambda: exact.airy_reflectance(100.0, WL, 1.5, band_limited=True, harmonics=0)),
     ("thicknesses", lambda: exact.transfer_matrix_reflectance([1.5], [-1.0], WL)),
     ("n_layers", lambda: exact.transfer_matrix_reflectance([0.0], [10.0], WL)),
-    ("n_substrate", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], WL,
-                                                                n_substrate=-2.0)),
+    ("n_substrate", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], WL, n_substrate=-2.0)),
     ("theta", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], WL, -5.0)),
     ("wavelengths", lambda: exact.transfer_matrix_reflectance([1.5], [10.0], [5.0, 4.0])),
     ("n_layers", lambda: exact.transfer_matrix_reflectance([1.5, 2.0], [10.0], WL)),
 ]
 
 
-@pytest.mark.parametrize("name,call", BAD_CALLS,
-                         ids=[f"{i}-{c[0]}" for i, c in enumerate(BAD_CALLS)])
+@pytest.mark.parametrize(
+    "name,call", BAD_CALLS, ids=[f"{i}-{c[0]}" for i, c in enumerate(BAD_CALLS)]
+)
 def test_bad_input_raises_value_error_naming_the_parameter(name, call):
     """Reference: the issue's contract -- ValueError whose message names the parameter."""
     with pytest.raises(ValueError) as info:
@@ -408,12 +424,15 @@ def test_valid_input_never_nan(seed, t_scale, n, n_sub, n_inc, theta, band_limit
         spectra.two_beam_reflectance(t, wl, band_limited=band_limited),
         spectra.two_beam_reflectance(t, wl, phase_change=False, band_limited=band_limited),
         spectra.multilayer_reflectance(t, wl, 12, band_limited=band_limited),
-        spectra.multilayer_reflectance(spectra.morpho_layer_thickness(theta), wl, 100,
-                                       band_limited=band_limited),
-        exact.airy_reflectance(t[:8], wl, n, theta, n_incident=n_inc, n_substrate=n_sub,
-                                 band_limited=band_limited),
-        exact.transfer_matrix_reflectance([n, n_sub], t[1:3], wl, theta, n_incident=n_inc,
-                                            n_substrate=n_inc),
+        spectra.multilayer_reflectance(
+            spectra.morpho_layer_thickness(theta), wl, 100, band_limited=band_limited
+        ),
+        exact.airy_reflectance(
+            t[:8], wl, n, theta, n_incident=n_inc, n_substrate=n_sub, band_limited=band_limited
+        ),
+        exact.transfer_matrix_reflectance(
+            [n, n_sub], t[1:3], wl, theta, n_incident=n_inc, n_substrate=n_inc
+        ),
     ]
     for k, r in enumerate(results):
         assert np.all(np.isfinite(r)), k
@@ -430,7 +449,8 @@ def test_exact_grazing_incidence_is_the_limit(n1, n2):
     wl = np.array([400.0, 600.0])
     expected = np.array([[mp_airy_R(1.0, n1, n2, di, w, 90.0 - 1e-7) for w in wl] for di in d])
     airy = exact.airy_reflectance(d, wl, n1, 90.0, n_substrate=n2)
-    tmm = np.stack([exact.transfer_matrix_reflectance([n1], [di], wl, 90.0, n_substrate=n2)
-                    for di in d])
+    tmm = np.stack(
+        [exact.transfer_matrix_reflectance([n1], [di], wl, 90.0, n_substrate=n2) for di in d]
+    )
     np.testing.assert_allclose(airy, expected, atol=1e-5)
     np.testing.assert_allclose(tmm, expected, atol=1e-5)

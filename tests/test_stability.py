@@ -38,8 +38,9 @@ def white():
     cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        xyz = np.asarray(colour.sd_to_XYZ(colour.sd_ones(), cmfs,
-                                          illuminant=colour.SDS_ILLUMINANTS["D65"]))
+        xyz = np.asarray(
+            colour.sd_to_XYZ(colour.sd_ones(), cmfs, illuminant=colour.SDS_ILLUMINANTS["D65"])
+        )
     return xyz / xyz[1]
 
 
@@ -47,11 +48,11 @@ def _fresnel_R(n1, n2, theta_deg):
     """Unpolarised Fresnel reflectance of one interface, written out by hand."""
     ti = np.radians(theta_deg)
     st = n1 * np.sin(ti) / n2
-    ct = np.sqrt(1 - st ** 2)
+    ct = np.sqrt(1 - st**2)
     ci = np.cos(ti)
     rs = (n1 * ci - n2 * ct) / (n1 * ci + n2 * ct)
     rp = (n2 * ci - n1 * ct) / (n2 * ci + n1 * ct)
-    return 0.5 * (rs ** 2 + rp ** 2)
+    return 0.5 * (rs**2 + rp**2)
 
 
 # --------------------------------------------------------------------------- #
@@ -71,7 +72,7 @@ def test_thick_film_tends_to_half_white(white):
 def test_zero_thickness():
     """Beyond the row's XYZ: Eq. 8's spectrum itself is 1 at every wavelength."""
     r = spectra.two_beam_reflectance(0.0, WL, phase_change=False)
-    assert np.array_equal(r, np.ones_like(r))                          # cos^2(0) = 1
+    assert np.array_equal(r, np.ones_like(r))  # cos^2(0) = 1
 
 
 def test_zero_thickness_exact_film():
@@ -90,7 +91,7 @@ def test_grazing_matches_colour_tmm():
     """The row compares the exact film with colour's TMM at 89.9°; the optical
     thickness there is the Eq. 10 form t sqrt(n^2 - sin^2 theta)."""
     t = spectra.optical_thickness(300.0, 1.33, 89.9)
-    expected = 300.0 * np.sqrt(1.33 ** 2 - np.sin(np.radians(89.9)) ** 2)
+    expected = 300.0 * np.sqrt(1.33**2 - np.sin(np.radians(89.9)) ** 2)
     assert np.isfinite(t) and abs(t - expected) < 1e-9
 
 
@@ -110,10 +111,14 @@ def test_total_internal_reflection(theta):
 def test_frustrated_tir():
     gaps = np.array([10.0, 100.0, 300.0, 1000.0, 3000.0])
     r = exact.airy_reflectance(gaps, WL, 1.0, 60.0, n_incident=1.5, n_substrate=1.5)
-    t = np.stack([exact.transfer_matrix_reflectance([1.0], [g], WL, 60.0, n_incident=1.5,
-                                                      n_substrate=1.5) for g in gaps])
-    assert np.abs(r - t).max() < 1e-9               # two different algorithms agree
-    assert np.all(np.diff(r, axis=0) > 0)           # the tunnelling falls with the gap
+    t = np.stack(
+        [
+            exact.transfer_matrix_reflectance([1.0], [g], WL, 60.0, n_incident=1.5, n_substrate=1.5)
+            for g in gaps
+        ]
+    )
+    assert np.abs(r - t).max() < 1e-9  # two different algorithms agree
+    assert np.all(np.diff(r, axis=0) > 0)  # the tunnelling falls with the gap
     assert r[0].max() < 0.2 and abs(r[-1].mean() - 1.0) < 1e-6
     assert np.all((r >= 0) & (r <= 1 + 1e-12))
 

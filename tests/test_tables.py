@@ -28,8 +28,13 @@ def grey_input(x):
 # Contract
 # --------------------------------------------------------------------------- #
 def test_views_and_default_tables():
-    assert registry.VIEWS == ("Constant-Lightness Clip", "Constant-Lightness Compress",
-                              "Channel Clamp", "ACES Gamut Compression", "Raw")
+    assert registry.VIEWS == (
+        "Constant-Lightness Clip",
+        "Constant-Lightness Compress",
+        "Channel Clamp",
+        "ACES Gamut Compression",
+        "Raw",
+    )
     table = tables.film_table("phase-change")
     assert table.kind == "phase-change"
     assert table.values.shape == (tables.FILM_SIZE, 3)
@@ -47,7 +52,8 @@ def test_each_table_is_computed_once_and_the_store_shows_it():
     step = tables.SPECTRAL_STEP
     assert cache.entries("ocio_thinfilm.lut.") == {
         "ocio_thinfilm.lut.tables._film_table": (
-            ("no-phase-change", 1000, tables.FILM_TMAX_UM, tables.FILM_T0_UM, step),),
+            ("no-phase-change", 1000, tables.FILM_TMAX_UM, tables.FILM_T0_UM, step),
+        ),
         "ocio_thinfilm.lut.tables._morpho_table": ((300, step),),
         "ocio_thinfilm.lut.clip_lut._black_plan": (("Rec.2020", 11),),
         "ocio_thinfilm.lut.clip_lut._black_nodes": (("Rec.2020", 11),),
@@ -59,16 +65,19 @@ def test_each_table_is_computed_once_and_the_store_shows_it():
     assert infos["ocio_thinfilm.lut.clip_lut._clip_lut"].hits == 1
 
 
-@pytest.mark.parametrize("call, message", [
-    (lambda: tables.film_table("soap"), "film kind"),
-    (lambda: tables.film_table("phase-change", 1), "size"),
-    (lambda: tables.film_table("phase-change", max_thickness_um=-1), "max thickness"),
-    (lambda: tables.morpho_table(0), "size"),
-    (lambda: clip_lut.clip_transform("CRT"), "display"),
-    (lambda: clip_lut.clip_transform("sRGB", 1000), "size"),
-    (lambda: view_transforms.view_transform("sRGB", "Filmic"), "view"),
-    (lambda: ocio_ops.apply(ocio_ops.group([]), np.zeros((4, 2))), "last axis"),
-])
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda: tables.film_table("soap"), "film kind"),
+        (lambda: tables.film_table("phase-change", 1), "size"),
+        (lambda: tables.film_table("phase-change", max_thickness_um=-1), "max thickness"),
+        (lambda: tables.morpho_table(0), "size"),
+        (lambda: clip_lut.clip_transform("CRT"), "display"),
+        (lambda: clip_lut.clip_transform("sRGB", 1000), "size"),
+        (lambda: view_transforms.view_transform("sRGB", "Filmic"), "view"),
+        (lambda: ocio_ops.apply(ocio_ops.group([]), np.zeros((4, 2))), "last axis"),
+    ],
+)
 def test_bad_arguments_raise_value_error(call, message):
     with pytest.raises(ValueError, match=message):
         call()
@@ -101,8 +110,9 @@ def test_film_table_error_budget_over_whole_range(kind):
 
 def test_morpho_table_error_budget():
     table = tables.morpho_table()
-    c = np.concatenate([(np.arange(table.size - 1) + 0.5) / (table.size - 1),
-                        np.linspace(0, 1, 5001)])
+    c = np.concatenate(
+        [(np.arange(table.size - 1) + 0.5) / (table.size - 1), np.linspace(0, 1, 5001)]
+    )
     direct = colorimetry.morpho_XYZ(np.degrees(np.arccos(c)), step=tables.SPECTRAL_STEP)
     assert colorimetry.delta_E2000(table.lookup(c), direct).max() <= 0.05
     via_ocio = ocio_ops.apply(table.transform(), grey_input(c)).astype(np.float64)
@@ -112,8 +122,9 @@ def test_morpho_table_error_budget():
 def test_lookup_matches_ocio():
     table = tables.film_table("phase-change")
     t = np.linspace(-1.0, 150.0, 50001)
-    np.testing.assert_allclose(ocio_ops.apply(table.transform(), grey_input(t)),
-                               table.lookup(t), atol=5e-4)
+    np.testing.assert_allclose(
+        ocio_ops.apply(table.transform(), grey_input(t)), table.lookup(t), atol=5e-4
+    )
 
 
 def test_film_table_beyond_range_is_incoherent_grey_no_nan_no_wrap():
@@ -141,8 +152,11 @@ def test_per_display_rgb_variant_is_clipped():
     for display in DISPLAYS:
         rgb = table.rgb(display)
         assert clip.in_gamut(rgb, 1e-12).all()
-        np.testing.assert_allclose(colorimetry.RGB_to_XYZ(rgb, display)[:, 1],
-                                   np.minimum(table.values[:, 1], 1.0), atol=1e-9)
+        np.testing.assert_allclose(
+            colorimetry.RGB_to_XYZ(rgb, display)[:, 1],
+            np.minimum(table.values[:, 1], 1.0),
+            atol=1e-9,
+        )
 
 
 # --------------------------------------------------------------------------- #
@@ -188,11 +202,26 @@ def test_clip_lut_keeps_Y_of_spectral_colours_and_lands_in_gamut(display):
 
 def test_clip_lut_edge_inputs_never_nan():
     W = colorimetry.white_XYZ("sRGB")
-    edge = np.array([[0, 0, 0], [-1, -1, -1], [-1, 0.5, 0.5], [0.5, 0.5, -3], 2 * W,
-                     [0.95, 1.5, 1.09], [1e30, 1e30, 1e30], [1e30, 0.5, 0.5],
-                     [-1e30, 0.5, 0.5], [np.inf, np.inf, np.inf], [-np.inf, 0.5, 0.5],
-                     [np.nan, 0.5, 0.5], [np.nan] * 3, [0.1, 1e-12, 0.1],
-                     [0.5, 1.5, 0.5]], dtype=np.float32)
+    edge = np.array(
+        [
+            [0, 0, 0],
+            [-1, -1, -1],
+            [-1, 0.5, 0.5],
+            [0.5, 0.5, -3],
+            2 * W,
+            [0.95, 1.5, 1.09],
+            [1e30, 1e30, 1e30],
+            [1e30, 0.5, 0.5],
+            [-1e30, 0.5, 0.5],
+            [np.inf, np.inf, np.inf],
+            [-np.inf, 0.5, 0.5],
+            [np.nan, 0.5, 0.5],
+            [np.nan] * 3,
+            [0.1, 1e-12, 0.1],
+            [0.5, 1.5, 0.5],
+        ],
+        dtype=np.float32,
+    )
     for display in DISPLAYS:
         out = ocio_ops.apply(clip_lut.clip_transform(display), edge)
         assert np.all(np.isfinite(out)), display
@@ -211,8 +240,10 @@ def test_clip_lut_size_is_an_option():
     assert clip_lut.clip_lut("sRGB", 33, 33).white.shape == (33, 33, 33, 3)
     with pytest.raises(ValueError, match="white_edge"):
         clip_lut.clip_lut("sRGB", 33, 5)
-    out = ocio_ops.apply(clip_lut.clip_transform("sRGB", 33),
-                         colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"))
+    out = ocio_ops.apply(
+        clip_lut.clip_transform("sRGB", 33),
+        colorimetry.RGB_to_XYZ(np.array([[0.5, 0.4, 0.3]]), "sRGB"),
+    )
     np.testing.assert_allclose(out, [[0.5, 0.4, 0.3]], atol=3e-3)
 
 
@@ -247,8 +278,7 @@ def test_views_match_the_analytic_paths(display, objects):
     clamp = ocio_ops.apply(view_transforms.view_transform(display, "Channel Clamp"), X)
     np.testing.assert_allclose(clamp, _encode(clip.clamp_RGB(rgb), display), atol=2e-4)
     gc = ocio_ops.apply(view_transforms.view_transform(display, "ACES Gamut Compression"), X)
-    np.testing.assert_allclose(gc, _encode(clip.aces_gamut_compress_RGB(rgb), display),
-                               atol=2e-4)
+    np.testing.assert_allclose(gc, _encode(clip.aces_gamut_compress_RGB(rgb), display), atol=2e-4)
     raw = ocio_ops.apply(view_transforms.view_transform(display, "Raw"), X)
     np.testing.assert_allclose(raw, X.astype(np.float32))
     cl = ocio_ops.apply(view_transforms.view_transform(display, "Constant-Lightness Clip"), X)

@@ -61,9 +61,9 @@ from __future__ import annotations
 
 from evaluation.report.measure import fmt, machine_description
 from evaluation.report.peers import (
-                                                   belcour_barla_film_XYZ,
-                                                   belcour_barla_sensitivity,
-                                                   oklch_gamut_map_RGB,
+    belcour_barla_film_XYZ,
+    belcour_barla_sensitivity,
+    oklch_gamut_map_RGB,
 )
 from evaluation.report.run import SECTIONS, run_report
 from evaluation.report.stability_table import stability_rows

@@ -36,19 +36,24 @@ def section(ctx) -> Section:
     d_size = default(clip_lut.clip_transform, "size")
     big = 65 if d_size < 65 else d_size
     ocio_paths = {
-        f"Lut1D + {d_size}³ clip LUT, OCIO (shipped)":
-            ocio_ops.group([film.transform(), clip_lut.clip_transform(display)]),
+        f"Lut1D + {d_size}³ clip LUT, OCIO (shipped)": ocio_ops.group(
+            [film.transform(), clip_lut.clip_transform(display)]
+        ),
         f"Lut1D + {big}³ clip LUT, OCIO": ocio_ops.group(
-            [film.transform(), clip_lut.clip_transform(display, big)]),
+            [film.transform(), clip_lut.clip_transform(display, big)]
+        ),
     }
     lut1d_tf = film.transform()
     paths = {
-        f"analytic: film_XYZ ({step:g} nm) + clip_RGB, numpy":
-            lambda: clip.clip_RGB(colorimetry.film_XYZ(x_um * 1000.0) @ M.T, display),
-        "table lookup (numpy) + clip_RGB (numpy)":
-            lambda: clip.clip_RGB(film.lookup(x_um) @ M.T, display),
-        "Lut1D (OCIO) + clip_RGB (numpy)":
-            lambda: clip.clip_RGB(ocio_ops.apply(lut1d_tf, img).astype(np.float64) @ M.T, display),
+        f"analytic: film_XYZ ({step:g} nm) + clip_RGB, numpy": lambda: clip.clip_RGB(
+            colorimetry.film_XYZ(x_um * 1000.0) @ M.T, display
+        ),
+        "table lookup (numpy) + clip_RGB (numpy)": lambda: clip.clip_RGB(
+            film.lookup(x_um) @ M.T, display
+        ),
+        "Lut1D (OCIO) + clip_RGB (numpy)": lambda: clip.clip_RGB(
+            ocio_ops.apply(lut1d_tf, img).astype(np.float64) @ M.T, display
+        ),
     }
     for name, tf in ocio_paths.items():
         paths[name] = (lambda tf: lambda: ocio_ops.apply(tf, img))(tf)
@@ -64,18 +69,29 @@ def section(ctx) -> Section:
         series[name] = [(1.0 / mpix, de["p99"], de["max"], "")]
         raw.append({"path": name, "dE": de, "Mpix_s": mpix})
     shipped = series[list(ocio_paths)[0]][0]
-    img_md = pareto_plot(ctx, "knob_apply.png", "Analytic per pixel vs LUT: error vs cost",
-                         series, xlabel="cost (s / Mpixel, one thread)",
-                         default=(shipped[0], shipped[1], "shipped OCIO path"))
+    img_md = pareto_plot(
+        ctx,
+        "knob_apply.png",
+        "Analytic per pixel vs LUT: error vs cost",
+        series,
+        xlabel="cost (s / Mpixel, one thread)",
+        default=(shipped[0], shipped[1], "shipped OCIO path"),
+    )
     headline = [{"path": x["path"], "Mpix_s": x["Mpix_s"], "dE_max": x["dE"]["max"]} for x in raw]
-    return Section("\n".join([
-        "### 1d. Analytic per-pixel evaluation vs LUT application",
-        "",
-        f"From a thickness image ({n} random t' in 0–1.5 µm) to clipped display-linear sRGB, "
-        "against the analytic clip of a fine reference spectrum "
-        f"({ref_step:g} nm band-limited). Throughput per pixel, one thread.",
-        "",
-        table(["path", "ΔE2000 mean", "p99", "max", "Mpixel/s"], rows),
-        "",
-        img_md,
-    ]), {"analytic_vs_lut": raw}, {"analytic_vs_lut": headline})
+    return Section(
+        "\n".join(
+            [
+                "### 1d. Analytic per-pixel evaluation vs LUT application",
+                "",
+                f"From a thickness image ({n} random t' in 0–1.5 µm) to clipped display-linear sRGB, "
+                "against the analytic clip of a fine reference spectrum "
+                f"({ref_step:g} nm band-limited). Throughput per pixel, one thread.",
+                "",
+                table(["path", "ΔE2000 mean", "p99", "max", "Mpixel/s"], rows),
+                "",
+                img_md,
+            ]
+        ),
+        {"analytic_vs_lut": raw},
+        {"analytic_vs_lut": headline},
+    )

@@ -35,8 +35,7 @@ class Context:
         import matplotlib.pyplot as plt
 
         if self.tx is not None:
-            fig.savefig(self.tx.file(self.out / name), dpi=110, bbox_inches="tight",
-                        format="png")
+            fig.savefig(self.tx.file(self.out / name), dpi=110, bbox_inches="tight", format="png")
         else:
             with atomic_file(self.out / name) as tmp:
                 fig.savefig(tmp, dpi=110, bbox_inches="tight", format="png")

@@ -26,9 +26,13 @@ def lut_test_sets(q) -> dict:
     :data:`MIXTURES`."""
     rng = np.random.default_rng(7)
     t = rng.uniform(0.0, 1500.0, 3000 if q else 20000)
-    interference = np.concatenate([
-        colorimetry.film_XYZ(t), colorimetry.film_XYZ(t, kind="no-phase-change"),
-        colorimetry.morpho_XYZ(rng.uniform(0.0, 89.0, 1000 if q else 5000))])
+    interference = np.concatenate(
+        [
+            colorimetry.film_XYZ(t),
+            colorimetry.film_XYZ(t, kind="no-phase-change"),
+            colorimetry.morpho_XYZ(rng.uniform(0.0, 89.0, 1000 if q else 5000)),
+        ]
+    )
     locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(400.0, 701.0, 5.0))
     n = 5000 if q else 40000
     w = rng.dirichlet(np.full(3, 0.3), n)

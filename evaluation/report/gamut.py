@@ -19,10 +19,14 @@ from evaluation.report.peers import oklch_gamut_map_RGB
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 #: The views compared through OCIO: id -> (label in the speed table, view name).
-VIEWS = {"aces_gamut_compression": ("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
-         "constant_lightness_clip": ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip"),
-         "constant_lightness_compress": ("constant-lightness compress view (OCIO)",
-                                         "Constant-Lightness Compress")}
+VIEWS = {
+    "aces_gamut_compression": ("ACES gamut compression view (OCIO)", "ACES Gamut Compression"),
+    "constant_lightness_clip": ("constant-lightness clip view (OCIO)", "Constant-Lightness Clip"),
+    "constant_lightness_compress": (
+        "constant-lightness compress view (OCIO)",
+        "Constant-Lightness Compress",
+    ),
+}
 
 
 def _datasets(q):
@@ -32,27 +36,45 @@ def _datasets(q):
     return {
         "spectral_locus": ("spectral locus (Y = 0.2)", colorimetry.spectral_locus_XYZ(0.2, wl)),
         "soap_film": ("soap film (Eq. 7, t' 0–1.5 µm)", colorimetry.film_XYZ(t)),
-        "film_on_glass": ("film on glass (Eq. 8, t' 0–1.5 µm)",
-                          colorimetry.film_XYZ(t, kind="no-phase-change")),
-        "morpho": ("Morpho (Eq. 9+14, 0–89°)",
-                   colorimetry.morpho_XYZ(np.linspace(0, 89, 90 if q else 357))),
+        "film_on_glass": (
+            "film on glass (Eq. 8, t' 0–1.5 µm)",
+            colorimetry.film_XYZ(t, kind="no-phase-change"),
+        ),
+        "morpho": (
+            "Morpho (Eq. 9+14, 0–89°)",
+            colorimetry.morpho_XYZ(np.linspace(0, 89, 90 if q else 357)),
+        ),
     }
 
 
 def _methods(display):
     """id -> (label, fn(rgb), how it runs, fraction of the speed image it is timed on)."""
     return {
-        "constant_lightness_clip": ("constant-lightness clip",
-                                    lambda rgb: clip.clip_RGB(rgb, display), "numpy", 1),
-        "constant_lightness_compress": ("constant-lightness compress (0.8 / 1.3)",
-                                        lambda rgb: compress.compress_RGB(rgb, display),
-                                        "numpy", 1),
+        "constant_lightness_clip": (
+            "constant-lightness clip",
+            lambda rgb: clip.clip_RGB(rgb, display),
+            "numpy",
+            1,
+        ),
+        "constant_lightness_compress": (
+            "constant-lightness compress (0.8 / 1.3)",
+            lambda rgb: compress.compress_RGB(rgb, display),
+            "numpy",
+            1,
+        ),
         "clamp": ("per-channel clamp", clip.clamp_RGB, "numpy", 1),
-        "aces": ("ACES 1.3 gamut compression (+clamp)",
-                 lambda rgb: clip.aces_gamut_compress_RGB(rgb).astype(np.float64),
-                 "clip.aces_gamut_compress_RGB: OCIO processor built per call + numpy clamp", 1),
-        "oklch": ("OKLCh chroma reduction (CSS Color 4)",
-                  lambda rgb: oklch_gamut_map_RGB(rgb, display), "numpy", 8),
+        "aces": (
+            "ACES 1.3 gamut compression (+clamp)",
+            lambda rgb: clip.aces_gamut_compress_RGB(rgb).astype(np.float64),
+            "clip.aces_gamut_compress_RGB: OCIO processor built per call + numpy clamp",
+            1,
+        ),
+        "oklch": (
+            "OKLCh chroma reduction (CSS Color 4)",
+            lambda rgb: oklch_gamut_map_RGB(rgb, display),
+            "numpy",
+            8,
+        ),
     }
 
 
@@ -64,8 +86,14 @@ def _lab(xyz):
 
 def _hue_shift_deg(lab1, lab0):
     """Signed hue difference h_ab(lab1) - h_ab(lab0) in degrees, in (-180, 180]."""
-    return np.degrees(np.angle(np.exp(1j * (np.arctan2(lab1[..., 2], lab1[..., 1])
-                                            - np.arctan2(lab0[..., 2], lab0[..., 1])))))
+    return np.degrees(
+        np.angle(
+            np.exp(
+                1j
+                * (np.arctan2(lab1[..., 2], lab1[..., 1]) - np.arctan2(lab0[..., 2], lab0[..., 1]))
+            )
+        )
+    )
 
 
 def _ocio_speeds(img, display):
@@ -75,10 +103,13 @@ def _ocio_speeds(img, display):
     import PyOpenColorIO as ocio
 
     speeds = {}
-    aces = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
-                                       list(clip.ACES_GAMUT_COMP13_PARAMS))
+    aces = ocio.FixedFunctionTransform(
+        ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, list(clip.ACES_GAMUT_COMP13_PARAMS)
+    )
     rng = ocio.RangeTransform(0.0, 1.0, 0.0, 1.0)
-    speeds["ACES 1.3 gamut compression (OCIO FixedFunction)"] = ocio_apply_speed(ocio_cpu(aces), img)
+    speeds["ACES 1.3 gamut compression (OCIO FixedFunction)"] = ocio_apply_speed(
+        ocio_cpu(aces), img
+    )
     speeds["per-channel clamp (OCIO Range)"] = ocio_apply_speed(ocio_cpu(rng), img)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     to_xyz = ocio_ops.matrix(np.linalg.inv(M))
@@ -123,17 +154,34 @@ def section(ctx) -> Section:
             dh = np.abs(_hue_shift_deg(lab1[sel], lab0[sel]))[c0 > 5.0]
             de = colorimetry.delta_E2000(xyz_m[sel], xyz[sel])
             still_out = float((~clip.in_gamut(out, 1e-6)).mean())
-            r = {"dL_mean": float(dL.mean()) if dL.size else 0.0,
-                 "dL_max": float(dL.max()) if dL.size else 0.0,
-                 "dh_mean": float(dh.mean()) if dh.size else 0.0,
-                 "dh_max": float(dh.max()) if dh.size else 0.0,
-                 "dE": stats(de), "left_out_of_gamut": still_out}
+            r = {
+                "dL_mean": float(dL.mean()) if dL.size else 0.0,
+                "dL_max": float(dL.max()) if dL.size else 0.0,
+                "dh_mean": float(dh.mean()) if dh.size else 0.0,
+                "dh_max": float(dh.max()) if dh.size else 0.0,
+                "dE": stats(de),
+                "left_out_of_gamut": still_out,
+            }
             raw[set_name][m_name] = r
             if set_id == "soap_film":
-                soap[m_name] = {"dL_max": r["dL_max"], "dh_mean": r["dh_mean"],
-                                "dE_mean": r["dE"]["mean"]}
-            rows.append([set_name, f"{100 * outside.mean():.0f} %", m_name, r["dL_mean"], r["dL_max"],
-                         r["dh_mean"], r["dh_max"], r["dE"]["mean"], r["dE"]["max"]])
+                soap[m_name] = {
+                    "dL_max": r["dL_max"],
+                    "dh_mean": r["dh_mean"],
+                    "dE_mean": r["dE"]["mean"],
+                }
+            rows.append(
+                [
+                    set_name,
+                    f"{100 * outside.mean():.0f} %",
+                    m_name,
+                    r["dL_mean"],
+                    r["dL_max"],
+                    r["dh_mean"],
+                    r["dh_max"],
+                    r["dE"]["mean"],
+                    r["dE"]["max"],
+                ]
+            )
     # Throughput, numpy and OCIO, on one image of interference colours.
     h, w = (256, 512) if q else (1080, 1920)
     img = np.resize(sets["soap_film"][1] @ M.T, (h * w, 3)).astype(np.float32)
@@ -152,8 +200,13 @@ def section(ctx) -> Section:
     # Figure: the spectrum through each method (the paper's Figure 4) + hue shift.
     locus = sets["spectral_locus"][1]
     wl = np.arange(380.0, 701.0, 2.0 if q else 1.0)
-    fig, axes = plt.subplots(len(methods) + 1, 1, figsize=(8, 5.5), sharex=True,
-                             gridspec_kw={"height_ratios": [1] * len(methods) + [3]})
+    fig, axes = plt.subplots(
+        len(methods) + 1,
+        1,
+        figsize=(8, 5.5),
+        sharex=True,
+        gridspec_kw={"height_ratios": [1] * len(methods) + [3]},
+    )
     for ax, (m_name, out) in zip(axes, mapped_locus.items()):
         enc = colour.cctf_encoding(np.clip(out, 0, 1), function="sRGB")
         ax.imshow(enc[None, :, :], aspect="auto", extent=(wl[0], wl[-1], 0, 1))
@@ -170,8 +223,9 @@ def section(ctx) -> Section:
     img_md = ctx.savefig(fig, "peers_gamut_spectrum.png")
     ramp, ramp_rgb = ramps.ramp_table(display)
     ramp_md = ctx.savefig(ramps.plot(ramp, ramp_rgb), "compress_ramps.png")
-    results["ramps"] = {view: {k: v for k, v in ramp[view].items() if k != "output"}
-                        for view in ramps.VIEWS}
+    results["ramps"] = {
+        view: {k: v for k, v in ramp[view].items() if k != "output"} for view in ramps.VIEWS
+    }
     text = [
         "### 2a. Gamut mapping peers",
         "",
@@ -183,8 +237,20 @@ def section(ctx) -> Section:
         "to white: at Y = 0.2 the deep-blue spectral colours have L > 1 (their S-cone response is "
         "huge), which is what drives its hue and lightness figures on the spectral locus.",
         "",
-        table(["colours", "outside", "method", "ΔL* mean", "ΔL* max", "Δh mean (°)", "Δh max (°)",
-               "ΔE2000 mean", "ΔE2000 max"], rows),
+        table(
+            [
+                "colours",
+                "outside",
+                "method",
+                "ΔL* mean",
+                "ΔL* max",
+                "Δh mean (°)",
+                "Δh max (°)",
+                "ΔE2000 mean",
+                "ΔE2000 max",
+            ],
+            rows,
+        ),
         "",
         f"Throughput on a {w}×{h} float32 image of soap-film colours (Mpixel/s, one thread; "
         "ratio to the ACES compression through OCIO in this run). The OKLCh search has no OCIO "
@@ -201,10 +267,19 @@ def section(ctx) -> Section:
         "(1.3), the clip is flat past the boundary, ACES 1.3 compresses per channel (not along "
         "the ray; it changes Y).",
         "",
-        table(["view", "strictly rising to the limit", "smallest step",
-               "spread past the boundary", "max |ΔY|"],
-              [[view, str(r["strictly_rising"]), r["min_step"], r["spread_past_boundary"],
-                r["dY"]] for view, r in results["ramps"].items()]),
+        table(
+            [
+                "view",
+                "strictly rising to the limit",
+                "smallest step",
+                "spread past the boundary",
+                "max |ΔY|",
+            ],
+            [
+                [view, str(r["strictly_rising"]), r["min_step"], r["spread_past_boundary"], r["dY"]]
+                for view, r in results["ramps"].items()
+            ],
+        ),
         "",
         ramp_md,
     ]

@@ -44,21 +44,38 @@ def section(ctx) -> Section:
     for lo, hi in bands:
         sel = (opd >= lo) & (opd <= hi)
         sb, so = stats(de_bb[sel]), stats(de_ours[sel])
-        rows.append([f"{lo / 1000:g}–{hi / 1000:g}", sb["mean"], sb["p99"], sb["max"],
-                     so["mean"], so["p99"], so["max"]])
+        rows.append(
+            [
+                f"{lo / 1000:g}–{hi / 1000:g}",
+                sb["mean"],
+                sb["p99"],
+                sb["max"],
+                so["mean"],
+                so["p99"],
+                so["max"],
+            ]
+        )
         raw["bands"].append({"opd_um": [lo / 1000, hi / 1000], "belcour_barla": sb, ours_key: so})
     tt = np.linspace(0.0, 5000.0, 4096)
     sec_bb = best_time(lambda: belcour_barla_film_XYZ(tt), repeat=3)
     sec_ours = best_time(lambda: colorimetry.film_XYZ(tt, step=d_step), repeat=2)
-    raw["us_per_colour"] = {"belcour_barla": sec_bb / tt.size * 1e6,
-                            ours_key: sec_ours / tt.size * 1e6}
+    raw["us_per_colour"] = {
+        "belcour_barla": sec_bb / tt.size * 1e6,
+        ours_key: sec_ours / tt.size * 1e6,
+    }
     allb = raw["bands"][-1]
     worst = max(raw["bands"][:-1], key=lambda b: b["belcour_barla"]["mean"])
-    headline = {"all": {"belcour_barla_mean": allb["belcour_barla"]["mean"],
-                        "belcour_barla_max": allb["belcour_barla"]["max"],
-                        "ours_max": allb[ours_key]["max"]},
-                "worst_band": {"opd_um": worst["opd_um"],
-                               "belcour_barla_mean": worst["belcour_barla"]["mean"]}}
+    headline = {
+        "all": {
+            "belcour_barla_mean": allb["belcour_barla"]["mean"],
+            "belcour_barla_max": allb["belcour_barla"]["max"],
+            "ours_max": allb[ours_key]["max"],
+        },
+        "worst_band": {
+            "opd_um": worst["opd_um"],
+            "belcour_barla_mean": worst["belcour_barla"]["mean"],
+        },
+    }
     fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for i, c in enumerate("XYZ"):
         axes[0].plot(opd / 1000, reference[:, i], color=f"C{i}", lw=1, label=f"{c} exact")
@@ -66,7 +83,9 @@ def section(ctx) -> Section:
     axes[0].set_ylabel("XYZ (white = 1)")
     axes[0].legend(fontsize=7, ncol=2)
     axes[1].semilogy(opd / 1000, np.maximum(de_bb, 1e-4), label="Belcour & Barla Gaussian fit")
-    axes[1].semilogy(opd / 1000, np.maximum(de_ours, 1e-4), label=f"ours, {d_step:g} nm band-limited")
+    axes[1].semilogy(
+        opd / 1000, np.maximum(de_ours, 1e-4), label=f"ours, {d_step:g} nm band-limited"
+    )
     axes[1].axhline(1.0, color="grey", lw=0.8, ls="--")
     axes[1].set_ylabel("ΔE2000 vs exact")
     axes[1].set_xlabel("optical path difference 2t' (µm)")
@@ -85,8 +104,18 @@ def section(ctx) -> Section:
         f"band-limited integration at {ref_step:g} nm (checked against point sampling at the same "
         f"step: ΔE2000 max {fmt(ref_check['max'])}). ΔE2000 uses CIELAB relative to white E.",
         "",
-        table(["OPD (µm)", "Gaussian fit mean", "p99", "max", f"ours {d_step:g} nm mean", "p99",
-               "max"], rows),
+        table(
+            [
+                "OPD (µm)",
+                "Gaussian fit mean",
+                "p99",
+                "max",
+                f"ours {d_step:g} nm mean",
+                "p99",
+                "max",
+            ],
+            rows,
+        ),
         "",
         f"Cost per colour: Gaussian fit {fmt(raw['us_per_colour']['belcour_barla'])} µs, ours "
         f"({d_step:g} nm band-limited) {fmt(raw['us_per_colour'][ours_key])} µs "

@@ -100,10 +100,14 @@ def section(ctx) -> Section:
     interps = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "linear": ocio.INTERP_LINEAR}
     shipped = "two passes (shipped)"
     domains = {shipped: lambda size, it: _with_interp(clip_lut.clip_transform(display, size), it)}
-    domains.update({
-        f"display RGB [{lo:g}, {hi:g}]³, affine": lambda size, it: _rgb_domain_lut_transform(display, size, it, lo, hi),
-        "XYZ/white [0, 1], no shaper": lambda size, it: _naive_lut_transform(display, size, it),
-    })
+    domains.update(
+        {
+            f"display RGB [{lo:g}, {hi:g}]³, affine": lambda size, it: _rgb_domain_lut_transform(
+                display, size, it, lo, hi
+            ),
+            "XYZ/white [0, 1], no shaper": lambda size, it: _naive_lut_transform(display, size, it),
+        }
+    )
     rows, series, raw = [], {}, []
     results = {}
     default_pt = None
@@ -125,43 +129,89 @@ def section(ctx) -> Section:
                     st[s_name] = stats(colorimetry.delta_E2000(out, refs[s_name]))
                 mpix = ocio_apply_speed(ocio_cpu(tf), img)
                 a, b = st[INTERFERENCE], st[MIXTURES]
-                rows.append([d_name, i_name, size, a["mean"], a["p99"], a["max"], b["mean"],
-                             b["p99"], b["max"], bake, mpix])
+                rows.append(
+                    [
+                        d_name,
+                        i_name,
+                        size,
+                        a["mean"],
+                        a["p99"],
+                        a["max"],
+                        b["mean"],
+                        b["p99"],
+                        b["max"],
+                        bake,
+                        mpix,
+                    ]
+                )
                 series[key].append((1.0 / mpix, a["p99"], a["max"], size))
-                raw.append({"domain": d_name, "interp": i_name, "size": size, "stats": st,
-                            "bake_s": bake, "apply_Mpix_s": mpix})
+                raw.append(
+                    {
+                        "domain": d_name,
+                        "interp": i_name,
+                        "size": size,
+                        "stats": st,
+                        "bake_s": bake,
+                        "apply_Mpix_s": mpix,
+                    }
+                )
                 if d_name == shipped and i_name == "tetrahedral" and size == d_size:
                     default_pt = (1.0 / mpix, a["p99"], f"two {size}³ LUTs, tetrahedral")
                     results["default_lut3d"] = raw[-1]
     results["lut3d"] = {"rows": raw, "rgb_domain": [lo, hi]}
-    img_md = pareto_plot(ctx, "knob_lut3d.png", "3D clip LUT: error vs apply cost (interference colours)",
-                         series, xlabel="apply cost through OCIO (s / Mpixel, one thread)",
-                         default=default_pt)
+    img_md = pareto_plot(
+        ctx,
+        "knob_lut3d.png",
+        "3D clip LUT: error vs apply cost (interference colours)",
+        series,
+        xlabel="apply cost through OCIO (s / Mpixel, one thread)",
+        default=default_pt,
+    )
     n_int = sets[INTERFERENCE].shape[0]
     n_real = sets[MIXTURES].shape[0]
-    return Section("\n".join([
-        "### 1c. 3D LUT size, domain/shaper and interpolation",
-        "",
-        "The constant-lightness clip into sRGB baked into a Lut3D, applied through OCIO "
-        "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
-        f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} spectral "
-        "mixtures (random mixtures of up to three spectral colours at Y 0.01–0.99: extreme "
-        "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `clip_lut.clip_transform` (the faces through black "
-        "over a projective chromaticity chart and Y, then the faces through white over "
-        "encoded display RGB; see `clip_lut.ClipLUT`); "
-        "display-linear RGB over the box that holds the interference colours, with an affine "
-        "shaper (spectral mixtures beyond it are clamped by the LUT); "
-        "and the naive XYZ/white cube without shaper. Bake = building the transform "
-        "(the shipped LUT's vertex computation is cached per size, so only its first "
-        f"interpolation row pays it); apply = OCIO CPU, one thread, {w}×{h} pixels.",
-        "",
-        table(["domain", "interp", "size", "interf. mean", "p99", "max", "mixtures mean", "p99", "max",
-               "bake (s)", "Mpixel/s"], rows),
-        "",
-        f"Default (from the signature of `clip_transform`): two {d_size}³ LUTs, tetrahedral.",
-        "",
-        img_md,
-    ]), results, {"lut3d": _headline(results.get("default_lut3d"), raw)})
+    return Section(
+        "\n".join(
+            [
+                "### 1c. 3D LUT size, domain/shaper and interpolation",
+                "",
+                "The constant-lightness clip into sRGB baked into a Lut3D, applied through OCIO "
+                "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
+                f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} spectral "
+                "mixtures (random mixtures of up to three spectral colours at Y 0.01–0.99: extreme "
+                "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `clip_lut.clip_transform` (the faces through black "
+                "over a projective chromaticity chart and Y, then the faces through white over "
+                "encoded display RGB; see `clip_lut.ClipLUT`); "
+                "display-linear RGB over the box that holds the interference colours, with an affine "
+                "shaper (spectral mixtures beyond it are clamped by the LUT); "
+                "and the naive XYZ/white cube without shaper. Bake = building the transform "
+                "(the shipped LUT's vertex computation is cached per size, so only its first "
+                f"interpolation row pays it); apply = OCIO CPU, one thread, {w}×{h} pixels.",
+                "",
+                table(
+                    [
+                        "domain",
+                        "interp",
+                        "size",
+                        "interf. mean",
+                        "p99",
+                        "max",
+                        "mixtures mean",
+                        "p99",
+                        "max",
+                        "bake (s)",
+                        "Mpixel/s",
+                    ],
+                    rows,
+                ),
+                "",
+                f"Default (from the signature of `clip_transform`): two {d_size}³ LUTs, tetrahedral.",
+                "",
+                img_md,
+            ]
+        ),
+        results,
+        {"lut3d": _headline(results.get("default_lut3d"), raw)},
+    )
 
 
 def _headline(d, raw):
@@ -169,14 +219,24 @@ def _headline(d, raw):
     if d is None:
         return None
     a, b = d["stats"][INTERFERENCE], d["stats"][MIXTURES]
-    larger = [r for r in raw if r["interp"] == "tetrahedral" and r["domain"] == d["domain"]
-              and r["size"] > d["size"]]
+    larger = [
+        r
+        for r in raw
+        if r["interp"] == "tetrahedral" and r["domain"] == d["domain"] and r["size"] > d["size"]
+    ]
     best = larger[-1] if larger else None
     return {
-        "size": d["size"], "domain": d["domain"], "apply_Mpix_s": d["apply_Mpix_s"],
+        "size": d["size"],
+        "domain": d["domain"],
+        "apply_Mpix_s": d["apply_Mpix_s"],
         "interference": {"mean": a["mean"], "p99": a["p99"], "max": a["max"]},
         "mixtures": {"p99": b["p99"], "max": b["max"]},
-        "larger": None if best is None else
-        {"size": best["size"], "p99": best["stats"][INTERFERENCE]["p99"],
-         "max": best["stats"][INTERFERENCE]["max"], "apply_Mpix_s": best["apply_Mpix_s"]},
+        "larger": None
+        if best is None
+        else {
+            "size": best["size"],
+            "p99": best["stats"][INTERFERENCE]["p99"],
+            "max": best["stats"][INTERFERENCE]["max"],
+            "apply_Mpix_s": best["apply_Mpix_s"],
+        },
     }

@@ -22,8 +22,19 @@ import numpy as np
 from ocio_thinfilm.colour import colorimetry
 from evaluation.formatting import fmt
 
-__all__ = ["fmt", "best_time", "stats", "dE_white", "table", "default", "machine_description",
-           "ocio_cpu", "ocio_apply_speed", "film_XYZ_chunked", "json_default"]
+__all__ = [
+    "fmt",
+    "best_time",
+    "stats",
+    "dE_white",
+    "table",
+    "default",
+    "machine_description",
+    "ocio_cpu",
+    "ocio_apply_speed",
+    "film_XYZ_chunked",
+    "json_default",
+]
 
 
 def best_time(fn, *, repeat=3, min_time=0.02, max_calls=50):
@@ -65,8 +76,12 @@ def stats(de) -> dict:
     de = de[np.isfinite(de)]
     if de.size == 0:
         return {"mean": float("nan"), "p99": float("nan"), "max": float("nan"), "n": 0}
-    return {"mean": float(de.mean()), "p99": float(np.percentile(de, 99)),
-            "max": float(de.max()), "n": int(de.size)}
+    return {
+        "mean": float(de.mean()),
+        "p99": float(np.percentile(de, 99)),
+        "max": float(de.max()),
+        "n": int(de.size),
+    }
 
 
 def dE_white(a, b, white_xy):
@@ -99,8 +114,11 @@ def film_XYZ_chunked(t, step, band_limited, chunk=128, illuminant="D65"):
     """:func:`colorimetry.film_XYZ` of many thicknesses ``t`` (nm), ``chunk`` at a time."""
     out = []
     for s in range(0, t.size, chunk):
-        out.append(colorimetry.film_XYZ(t[s:s + chunk], step=step, band_limited=band_limited,
-                                        illuminant=illuminant))
+        out.append(
+            colorimetry.film_XYZ(
+                t[s : s + chunk], step=step, band_limited=band_limited, illuminant=illuminant
+            )
+        )
     return np.concatenate(out)
 
 
@@ -150,7 +168,7 @@ def machine_description() -> dict:
     with contextlib.suppress(OSError, ValueError, IndexError):
         for line in Path("/proc/meminfo").read_text().splitlines():
             if line.startswith("MemTotal"):
-                info["memory_GiB"] = round(int(line.split()[1]) / 2 ** 20, 1)
+                info["memory_GiB"] = round(int(line.split()[1]) / 2**20, 1)
     info["os"] = platform.platform()
     info["python"] = platform.python_version()
     info["numpy"] = np.__version__
@@ -158,19 +176,27 @@ def machine_description() -> dict:
     info["matplotlib"] = matplotlib.__version__
     try:
         import PyOpenColorIO as ocio
+
         info["OpenColorIO"] = ocio.__version__
     except ImportError:  # pragma: no cover
         info["OpenColorIO"] = "missing"
     try:
         import OpenImageIO as oiio
+
         info["OpenImageIO"] = oiio.__version__
     except ImportError:  # pragma: no cover
         info["OpenImageIO"] = "missing"
     from ocio_thinfilm import __version__
+
     info["ocio-thinfilm"] = __version__
     with contextlib.suppress(OSError, subprocess.SubprocessError):
-        rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                             text=True, cwd=Path(__file__).parent, timeout=5)
+        rev = subprocess.run(
+            ["git", "rev-parse", "--short", "HEAD"],
+            capture_output=True,
+            text=True,
+            cwd=Path(__file__).parent,
+            timeout=5,
+        )
         if rev.returncode == 0:
             info["git"] = rev.stdout.strip()
     with contextlib.suppress(OSError, AttributeError):

@@ -60,16 +60,22 @@ def belcour_barla_sensitivity(opd_nm, shift=0.0):
     Modeling of Varying Iridescence. ACM Transactions on Graphics 36(4), 65.
     """
     opd = np.asarray(opd_nm, dtype=np.float64)[..., None]
-    shift = np.broadcast_to(np.asarray(shift, dtype=np.float64), (3,)) \
-        if np.ndim(shift) <= 1 else np.asarray(shift, dtype=np.float64)
+    shift = (
+        np.broadcast_to(np.asarray(shift, dtype=np.float64), (3,))
+        if np.ndim(shift) <= 1
+        else np.asarray(shift, dtype=np.float64)
+    )
     phase = 2.0 * np.pi * opd * 1.0e-9
     val = np.array([5.4856e-13, 4.4201e-13, 5.2481e-13])
     pos = np.array([1.6810e06, 1.7953e06, 2.2084e06])
     var = np.array([4.3278e09, 9.3046e09, 6.6121e09])
-    xyz = val * np.sqrt(2.0 * np.pi * var) * np.cos(pos * phase + shift) * np.exp(-phase ** 2 * var)
-    xyz[..., 0] += (9.7470e-14 * np.sqrt(2.0 * np.pi * 4.5282e09)
-                    * np.cos(2.2399e06 * phase[..., 0] + shift[..., 0])
-                    * np.exp(-4.5282e09 * phase[..., 0] ** 2))
+    xyz = val * np.sqrt(2.0 * np.pi * var) * np.cos(pos * phase + shift) * np.exp(-(phase**2) * var)
+    xyz[..., 0] += (
+        9.7470e-14
+        * np.sqrt(2.0 * np.pi * 4.5282e09)
+        * np.cos(2.2399e06 * phase[..., 0] + shift[..., 0])
+        * np.exp(-4.5282e09 * phase[..., 0] ** 2)
+    )
     return xyz / 1.0685e-7
 
 
@@ -100,8 +106,9 @@ def belcour_barla_film_XYZ(optical_thickness_nm, phase_change: bool = True):
     """
     opd = 2.0 * np.asarray(optical_thickness_nm, dtype=np.float64)
     shift = np.pi if phase_change else 0.0
-    return 0.5 * (belcour_barla_sensitivity(np.zeros_like(opd))
-                  + belcour_barla_sensitivity(opd, shift))
+    return 0.5 * (
+        belcour_barla_sensitivity(np.zeros_like(opd)) + belcour_barla_sensitivity(opd, shift)
+    )
 
 
 def _oklab(xyz):

@@ -7,8 +7,9 @@ import numpy as np
 __all__ = ["pareto_plot"]
 
 
-def pareto_plot(ctx, name, title, series, *, xlabel, ylabel="ΔE2000 (p99 and max)",
-                default=None, note=None) -> str:
+def pareto_plot(
+    ctx, name, title, series, *, xlabel, ylabel="ΔE2000 (p99 and max)", default=None, note=None
+) -> str:
     """Plot error against cost, log-log, and save it through ``ctx``.
 
     Parameters
@@ -41,14 +42,33 @@ def pareto_plot(ctx, name, title, series, *, xlabel, ylabel="ΔE2000 (p99 and ma
         colour_ = f"C{i}"
         xs = [p[0] for p in pts]
         ax.plot(xs, [max(p[1], 1e-6) for p in pts], "o-", color=colour_, label=f"{label} (p99)")
-        ax.plot(xs, [max(p[2], 1e-6) for p in pts], "x:", color=colour_, alpha=0.6,
-                label=f"{label} (max)")
+        ax.plot(
+            xs,
+            [max(p[2], 1e-6) for p in pts],
+            "x:",
+            color=colour_,
+            alpha=0.6,
+            label=f"{label} (max)",
+        )
         for p in pts:
-            ax.annotate(str(p[3]), (p[0], max(p[1], 1e-6)), fontsize=7,
-                        textcoords="offset points", xytext=(3, 3))
+            ax.annotate(
+                str(p[3]),
+                (p[0], max(p[1], 1e-6)),
+                fontsize=7,
+                textcoords="offset points",
+                xytext=(3, 3),
+            )
     if default is not None:
-        ax.plot([default[0]], [max(default[1], 1e-6)], marker="*", markersize=18, color="gold",
-                markeredgecolor="k", linestyle="none", label=f"default: {default[2]}")
+        ax.plot(
+            [default[0]],
+            [max(default[1], 1e-6)],
+            marker="*",
+            markersize=18,
+            color="gold",
+            markeredgecolor="k",
+            linestyle="none",
+            label=f"default: {default[2]}",
+        )
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.axhline(1.0, color="grey", lw=0.8, ls="--")

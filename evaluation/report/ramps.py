@@ -58,10 +58,10 @@ def ramp_table(display="sRGB"):
     result = {"display": display, "wavelengths": wl.tolist(), "input": dist.tolist()}
     rgb_out = {}
     for view in VIEWS:
-        proc = cfg.getProcessor("CIE-XYZ-D65", display,
-                                view, ocio.TRANSFORM_DIR_FORWARD)
-        dec = cfg.getProcessor(cfg.getDisplayViewColorSpaceName(display, view),
-                               "CIE-XYZ-D65").getDefaultCPUProcessor()
+        proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+        dec = cfg.getProcessor(
+            cfg.getDisplayViewColorSpaceName(display, view), "CIE-XYZ-D65"
+        ).getDefaultCPUProcessor()
         px = np.ascontiguousarray(XYZ.reshape(-1, 3), dtype=np.float32).copy()
         proc.getDefaultCPUProcessor().applyRGB(px)
         rgb_out[view] = px.reshape(XYZ.shape).copy()
@@ -72,11 +72,13 @@ def ramp_table(display="sRGB"):
         rising = (dist > 0.05) & (dist < compress.LIMIT - 0.02)
         steps = np.diff(out, axis=1)[rising[:, 1:] & rising[:, :-1]]
         past = dist > 1.02  # (every ramp but 575 nm reaches 1.3)
-        result[view] = dict(output=out.tolist(), min_step=float(steps.min()),
-                            strictly_rising=bool(steps.min() > 0.0),
-                            spread_past_boundary=float(np.ptp(out[past])),
-                            dY=float(np.abs(px[:, 1].reshape(dist.shape)
-                                            - XYZ[..., 1]).max()))
+        result[view] = dict(
+            output=out.tolist(),
+            min_step=float(steps.min()),
+            strictly_rising=bool(steps.min() > 0.0),
+            spread_past_boundary=float(np.ptp(out[past])),
+            dY=float(np.abs(px[:, 1].reshape(dist.shape) - XYZ[..., 1]).max()),
+        )
     return result, rgb_out
 
 
@@ -108,14 +110,24 @@ def plot(result, rgb_out):
         ax.set_ylim(0, 1.12)
         strip = fig.add_subplot(grid[1, k])
         for i in range(len(result["wavelengths"])):  # each ramp over its own distances
-            strip.imshow(np.clip(rgb_out[view][i:i + 1], 0, 1), aspect="auto",
-                         interpolation="nearest", extent=(0, float(dist[i].max()), i + 1, i))
+            strip.imshow(
+                np.clip(rgb_out[view][i : i + 1], 0, 1),
+                aspect="auto",
+                interpolation="nearest",
+                extent=(0, float(dist[i].max()), i + 1, i),
+            )
         strip.set_xlim(0, 2.1)
         strip.set_ylim(len(result["wavelengths"]), 0)
-        strip.set_yticks(np.arange(len(result["wavelengths"])) + 0.5,
-                         [f"{w:.0f}" for w in result["wavelengths"]], fontsize=7)
+        strip.set_yticks(
+            np.arange(len(result["wavelengths"])) + 0.5,
+            [f"{w:.0f}" for w in result["wavelengths"]],
+            fontsize=7,
+        )
         strip.set_xlabel("input distance (ramps from grey, Y = 0.2, sRGB)")
-    fig.suptitle("Saturation ramps through the views: the compression keeps the shading "
-                 "up to the limit, the clip is flat past the boundary", fontsize=11)
+    fig.suptitle(
+        "Saturation ramps through the views: the compression keeps the shading "
+        "up to the limit, the clip is flat past the boundary",
+        fontsize=11,
+    )
     fig.tight_layout()
     return fig

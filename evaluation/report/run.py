@@ -33,14 +33,18 @@ __all__ = ["SECTIONS", "run_report"]
 
 def _section_machine(ctx) -> Section:
     info = machine_description()
-    facts = {k: info.get(k) for k in ("cpu", "python", "OpenColorIO", "OpenImageIO",
-                                      "colour-science")}
+    facts = {
+        k: info.get(k) for k in ("cpu", "python", "OpenColorIO", "OpenImageIO", "colour-science")
+    }
     facts["cores"] = info.get("usable_cpus", info.get("logical_cpus"))
     facts["memory_GiB"] = info.get("memory_GiB", "?")
     rows = [[k, str(v)] for k, v in info.items()]
-    return Section("## Machine\n\nEvery number below was measured in this run, on this machine "
-                   f"({'quick' if ctx.quick else 'full'} mode).\n\n" + table(["", ""], rows),
-                   {"machine": info}, {"machine": facts})
+    return Section(
+        "## Machine\n\nEvery number below was measured in this run, on this machine "
+        f"({'quick' if ctx.quick else 'full'} mode).\n\n" + table(["", ""], rows),
+        {"machine": info},
+        {"machine": facts},
+    )
 
 
 #: (name, function) of every section, in the report's order; the name labels the
@@ -92,8 +96,13 @@ def _run_report(ctx, quick, progress) -> Path:
     out = ctx.out
     start = time.perf_counter()
     parts, timings, results, facts = [], {}, {}, {}
-    bar = tqdm(SECTIONS, desc="report", unit="section", file=sys.stderr,
-               disable=not progress or not sys.stderr.isatty())  # a log gets no bar
+    bar = tqdm(
+        SECTIONS,
+        desc="report",
+        unit="section",
+        file=sys.stderr,
+        disable=not progress or not sys.stderr.isatty(),
+    )  # a log gets no bar
     for name, fn in bar:
         bar.set_postfix_str(name)
         t0 = time.perf_counter()
@@ -103,7 +112,9 @@ def _run_report(ctx, quick, progress) -> Path:
         facts.update(section.headline)
         timings[name] = time.perf_counter() - t0
     total = time.perf_counter() - start
-    load_after = " / ".join(f"{v:.2f}" for v in os.getloadavg()) if hasattr(os, "getloadavg") else "?"
+    load_after = (
+        " / ".join(f"{v:.2f}" for v in os.getloadavg()) if hasattr(os, "getloadavg") else "?"
+    )
     results["headline"] = facts
     results["load_average_after"] = load_after
     results["section_seconds"] = timings

@@ -28,8 +28,9 @@ def stability_rows() -> list[dict]:
     rows = []
 
     def add(case, expected, observed, ok, test):
-        rows.append({"case": case, "expected": expected, "observed": observed, "ok": bool(ok),
-                     "test": test})
+        rows.append(
+            {"case": case, "expected": expected, "observed": observed, "ok": bool(ok), "test": test}
+        )
 
     W = colorimetry.white_XYZ("sRGB")
     with warnings.catch_warnings():
@@ -49,19 +50,35 @@ def stability_rows() -> list[dict]:
 def section(ctx) -> Section:
     """The table: case, expected, observed, ok, test."""
     rows = stability_rows()
-    body = table(["case", "expected", "observed", "ok", "test (tests/test_stability.py)"],
-                 [[r["case"], r["expected"], r["observed"], "✓" if r["ok"] else "✗ **FAIL**",
-                   f"`{r['test']}`"] for r in rows])
+    body = table(
+        ["case", "expected", "observed", "ok", "test (tests/test_stability.py)"],
+        [
+            [
+                r["case"],
+                r["expected"],
+                r["observed"],
+                "✓" if r["ok"] else "✗ **FAIL**",
+                f"`{r['test']}`",
+            ]
+            for r in rows
+        ],
+    )
     fails = [r["case"] for r in rows if not r["ok"]]
-    return Section("\n".join([
-        "## 3. Stability on stiff and extreme cases",
-        "",
-        "Measured now; expectations are physical or geometric facts (incoherent limit, Fresnel, "
-        "total internal reflection, mpmath at 50 digits, the geometric limit of the clip), and each "
-        "row is asserted independently by the named test. XYZ rows go through `clip_XYZ` into sRGB.",
-        "",
-        body,
-        "",
-        f"{len(rows) - len(fails)} of {len(rows)} rows as expected"
-        + (f"; not as expected: {'; '.join(fails)}." if fails else "."),
-    ]), {"stability": rows}, {"stability": {"rows": len(rows), "not_as_expected": fails} if rows else None})
+    return Section(
+        "\n".join(
+            [
+                "## 3. Stability on stiff and extreme cases",
+                "",
+                "Measured now; expectations are physical or geometric facts (incoherent limit, Fresnel, "
+                "total internal reflection, mpmath at 50 digits, the geometric limit of the clip), and each "
+                "row is asserted independently by the named test. XYZ rows go through `clip_XYZ` into sRGB.",
+                "",
+                body,
+                "",
+                f"{len(rows) - len(fails)} of {len(rows)} rows as expected"
+                + (f"; not as expected: {'; '.join(fails)}." if fails else "."),
+            ]
+        ),
+        {"stability": rows},
+        {"stability": {"rows": len(rows), "not_as_expected": fails} if rows else None},
+    )

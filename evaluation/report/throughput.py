@@ -38,18 +38,34 @@ def section(ctx) -> Section:
     pool = ThreadPoolExecutor(threads)
 
     def pool_copy():
-        list(pool.map(lambda s: np.copyto(work[s[0]:s[-1] + 1], img[s[0]:s[-1] + 1]), strips))
+        list(pool.map(lambda s: np.copyto(work[s[0] : s[-1] + 1], img[s[0] : s[-1] + 1]), strips))
 
     copyN = px / best_time(pool_copy, repeat=rep, min_time=0.1) / 1e6
     src = oiio.ImageBuf(oiio.ImageSpec(w, h, 3, "float"))
     src.set_pixels(oiio.ROI(), img)
     dst = oiio.ImageBuf(oiio.ImageSpec(w, h, 3, "float"))
-    oiio_copy = {n: px / best_time(lambda n=n: oiio.ImageBufAlgo.copy(dst, src, nthreads=n),
-                                   repeat=rep, min_time=0.1) / 1e6 for n in (1, 0)}
-    rows, raw = [], {"image": [w, h], "threads": threads,
-                     "copy_Mpix_s": {"numpy 1 thread": copy1, f"numpy {threads} threads": copyN,
-                                     "OIIO 1 thread": oiio_copy[1], "OIIO all threads": oiio_copy[0]},
-                     "views": {}}
+    oiio_copy = {
+        n: px
+        / best_time(
+            lambda n=n: oiio.ImageBufAlgo.copy(dst, src, nthreads=n), repeat=rep, min_time=0.1
+        )
+        / 1e6
+        for n in (1, 0)
+    }
+    rows, raw = (
+        [],
+        {
+            "image": [w, h],
+            "threads": threads,
+            "copy_Mpix_s": {
+                "numpy 1 thread": copy1,
+                f"numpy {threads} threads": copyN,
+                "OIIO 1 thread": oiio_copy[1],
+                "OIIO all threads": oiio_copy[0],
+            },
+            "views": {},
+        },
+    )
     with tempfile.TemporaryDirectory() as tmp:
         for view in registry.VIEWS:
             tf = view_transforms.view_transform("sRGB", view)
@@ -61,42 +77,81 @@ def section(ctx) -> Section:
 
             def many():
                 np.copyto(work, img)
-                list(pool.map(lambda s: cpu.applyRGB(work[s[0]:s[-1] + 1].reshape(-1, 3)), strips))
+                list(
+                    pool.map(lambda s: cpu.applyRGB(work[s[0] : s[-1] + 1].reshape(-1, 3)), strips)
+                )
 
             # The copy again, right before this view: the ratio is robust to load changes.
             copy_now = px / best_time(lambda: np.copyto(work, img), repeat=rep, min_time=0.1) / 1e6
             c_sec = px / copy_now / 1e6
             v1 = px / max(best_time(one, repeat=rep, min_time=0.1, max_calls=2) - c_sec, 1e-9) / 1e6
-            vN = px / max(best_time(many, repeat=rep, min_time=0.1, max_calls=2) - px / copyN / 1e6,
-                          1e-9) / 1e6
+            vN = (
+                px
+                / max(
+                    best_time(many, repeat=rep, min_time=0.1, max_calls=2) - px / copyN / 1e6, 1e-9
+                )
+                / 1e6
+            )
             path = os.path.join(tmp, f"view{len(raw['views'])}.ctf")
             g = ocio.GroupTransform()
             g.appendTransform(tf)
             g.write("Color Transform Format", path, ocio.Config.CreateRaw())
             o = {}
             for n in (1, 0):
-                o[n] = px / best_time(lambda n=n: oiio.ImageBufAlgo.ociofiletransform(
-                    dst, src, path, unpremult=False, nthreads=n), repeat=rep, min_time=0.1,
-                    max_calls=2) / 1e6
-            raw["views"][view] = {"ocio_1": v1, "ocio_pool": vN, "oiio_1": o[1], "oiio_all": o[0],
-                                  "copy_1_adjacent": copy_now}
+                o[n] = (
+                    px
+                    / best_time(
+                        lambda n=n: oiio.ImageBufAlgo.ociofiletransform(
+                            dst, src, path, unpremult=False, nthreads=n
+                        ),
+                        repeat=rep,
+                        min_time=0.1,
+                        max_calls=2,
+                    )
+                    / 1e6
+                )
+            raw["views"][view] = {
+                "ocio_1": v1,
+                "ocio_pool": vN,
+                "oiio_1": o[1],
+                "oiio_all": o[0],
+                "copy_1_adjacent": copy_now,
+            }
             rows.append([view, v1, vN, o[1], o[0], copy_now, v1 / copy_now, o[0] / oiio_copy[0]])
     pool.shutdown()
     v = raw["views"].get(HEADLINE_VIEW)
-    headline = None if v is None else {
-        "image": [w, h], "threads": threads, "view": HEADLINE_VIEW, "ocio_1_Mpix_s": v["ocio_1"],
-        "oiio_all_Mpix_s": v["oiio_all"], "copy_1_Mpix_s": v["copy_1_adjacent"]}
+    headline = (
+        None
+        if v is None
+        else {
+            "image": [w, h],
+            "threads": threads,
+            "view": HEADLINE_VIEW,
+            "ocio_1_Mpix_s": v["ocio_1"],
+            "oiio_all_Mpix_s": v["oiio_all"],
+            "copy_1_Mpix_s": v["copy_1_adjacent"],
+        }
+    )
     fig, ax = plt.subplots(figsize=(8, 4))
     names = list(raw["views"])
     xs = np.arange(len(names))
-    for i, (k, label) in enumerate([("ocio_1", "OCIO CPU, 1 thread"),
-                                    ("ocio_pool", f"OCIO CPU, {threads}-thread strip pool"),
-                                    ("oiio_1", "oiiotool engine (OIIO IBA), 1 thread"),
-                                    ("oiio_all", "oiiotool engine (OIIO IBA), all threads")]):
+    for i, (k, label) in enumerate(
+        [
+            ("ocio_1", "OCIO CPU, 1 thread"),
+            ("ocio_pool", f"OCIO CPU, {threads}-thread strip pool"),
+            ("oiio_1", "oiiotool engine (OIIO IBA), 1 thread"),
+            ("oiio_all", "oiiotool engine (OIIO IBA), all threads"),
+        ]
+    ):
         ax.bar(xs + (i - 1.5) * 0.2, [raw["views"][v][k] for v in names], 0.2, label=label)
     ax.axhline(copy1, color="k", ls="--", lw=1, label=f"memory copy, 1 thread ({copy1:.0f})")
-    ax.axhline(oiio_copy[0], color="grey", ls=":", lw=1,
-               label=f"OIIO copy, all threads ({oiio_copy[0]:.0f})")
+    ax.axhline(
+        oiio_copy[0],
+        color="grey",
+        ls=":",
+        lw=1,
+        label=f"OIIO copy, all threads ({oiio_copy[0]:.0f})",
+    )
     ax.set_yscale("log")
     ax.set_xticks(xs)
     ax.set_xticklabels(names, fontsize=8)
@@ -104,24 +159,41 @@ def section(ctx) -> Section:
     ax.set_title(f"Views on a {w}×{h} float RGB image vs a memory copy")
     ax.legend(fontsize=7)
     img_md = ctx.savefig(fig, "throughput.png")
-    return Section("\n".join([
-        "## 4. Throughput against the physical limit",
-        "",
-        f"Each view of `view_transforms.view_transform('sRGB', view)` (CIE-XYZ-D65 → sRGB-encoded) on a "
-        f"{w}×{h} float32 RGB image of interference colours ({px * 12 / 2 ** 20:.0f} MiB). The "
-        "bound is a plain memory copy of the same buffer: numpy `copyto` "
-        f"{copy1:.0f} Mpixel/s on one thread, {copyN:.0f} on {threads} threads; OIIO "
-        f"`ImageBufAlgo.copy` {oiio_copy[1]:.0f} (1 thread) / {oiio_copy[0]:.0f} (all threads). "
-        "OCIO's CPU processor applies single-threaded per call, so 'all threads' is either a "
-        f"thread pool of {threads} over image strips (OCIO releases the GIL) or OIIO's "
-        "`ImageBufAlgo.ociofiletransform` — the engine behind `oiiotool --ociofiletransform`, "
-        "run on the view written as a CTF file — with nthreads = 0 (all).",
-        "",
-        table(["view", "OCIO 1 thread", f"OCIO pool ×{threads}", "OIIO 1 thread", "OIIO all",
-               "copy, 1 thread (just before)", "OCIO 1 thread ÷ copy", "OIIO all ÷ OIIO copy"], rows),
-        "",
-        "All speeds in Mpixel/s. The OCIO columns exclude the copy that restores the input "
-        "before each run (measured and subtracted).",
-        "",
-        img_md,
-    ]), {"throughput": raw}, {"throughput": headline})
+    return Section(
+        "\n".join(
+            [
+                "## 4. Throughput against the physical limit",
+                "",
+                f"Each view of `view_transforms.view_transform('sRGB', view)` (CIE-XYZ-D65 → sRGB-encoded) on a "
+                f"{w}×{h} float32 RGB image of interference colours ({px * 12 / 2**20:.0f} MiB). The "
+                "bound is a plain memory copy of the same buffer: numpy `copyto` "
+                f"{copy1:.0f} Mpixel/s on one thread, {copyN:.0f} on {threads} threads; OIIO "
+                f"`ImageBufAlgo.copy` {oiio_copy[1]:.0f} (1 thread) / {oiio_copy[0]:.0f} (all threads). "
+                "OCIO's CPU processor applies single-threaded per call, so 'all threads' is either a "
+                f"thread pool of {threads} over image strips (OCIO releases the GIL) or OIIO's "
+                "`ImageBufAlgo.ociofiletransform` — the engine behind `oiiotool --ociofiletransform`, "
+                "run on the view written as a CTF file — with nthreads = 0 (all).",
+                "",
+                table(
+                    [
+                        "view",
+                        "OCIO 1 thread",
+                        f"OCIO pool ×{threads}",
+                        "OIIO 1 thread",
+                        "OIIO all",
+                        "copy, 1 thread (just before)",
+                        "OCIO 1 thread ÷ copy",
+                        "OIIO all ÷ OIIO copy",
+                    ],
+                    rows,
+                ),
+                "",
+                "All speeds in Mpixel/s. The OCIO columns exclude the copy that restores the input "
+                "before each run (measured and subtracted).",
+                "",
+                img_md,
+            ]
+        ),
+        {"throughput": raw},
+        {"throughput": headline},
+    )

@@ -37,9 +37,14 @@ def section(ctx) -> Section:
     sec_colour = best_time(lambda: thin_film_tmm([1.0, n_film, 1.0], d, wl, 0.0), repeat=2)
     sec_airy = best_time(lambda: exact.airy_reflectance(d, wl, n_film, 0.0), repeat=2)
     sec_two = best_time(lambda: spectra.two_beam_reflectance(d * n_film, wl), repeat=2)
-    sec_ours_tmm = best_time(
-        lambda: [exact.transfer_matrix_reflectance([n_film], [x], wl, 0.0) for x in d[:64]],
-        repeat=2) * nt / 64
+    sec_ours_tmm = (
+        best_time(
+            lambda: [exact.transfer_matrix_reflectance([n_film], [x], wl, 0.0) for x in d[:64]],
+            repeat=2,
+        )
+        * nt
+        / 64
+    )
     # Morpho-like multilayer: 12 x (mullion n = 1.53, 50 nm; air 150 nm).
     layers = spectra.MORPHO["layers"]
     n_stack = [spectra.MORPHO["n"], 1.0] * layers
@@ -53,13 +58,22 @@ def section(ctx) -> Section:
         diffs.append(float(np.abs(R.mean(axis=-1)[:, 0, 0] - ours).max()))
     sec_ml_colour = best_time(lambda: multilayer_tmm([1.0] + n_stack + [1.0], d_stack, wl, 0.0))
     sec_ml_ours = best_time(lambda: exact.transfer_matrix_reflectance(n_stack, d_stack, wl, 0.0))
-    raw["multilayer"] = {"max_abs_dR": max(diffs), "sec_colour": sec_ml_colour, "sec_ours": sec_ml_ours}
-    raw["speed_single_film_sec"] = {"colour thin_film_tmm": sec_colour, "airy_reflectance": sec_airy,
-                                    "two_beam_reflectance": sec_two,
-                                    "transfer_matrix_reflectance (loop)": sec_ours_tmm}
-    headline = {"single_film_max_abs_dR": max(x["max_abs_dR"] for x in raw["single_film"]),
-                "airy_speedup_vs_colour": sec_colour / sec_airy,
-                "multilayer_max_abs_dR": max(diffs)}
+    raw["multilayer"] = {
+        "max_abs_dR": max(diffs),
+        "sec_colour": sec_ml_colour,
+        "sec_ours": sec_ml_ours,
+    }
+    raw["speed_single_film_sec"] = {
+        "colour thin_film_tmm": sec_colour,
+        "airy_reflectance": sec_airy,
+        "two_beam_reflectance": sec_two,
+        "transfer_matrix_reflectance (loop)": sec_ours_tmm,
+    }
+    headline = {
+        "single_film_max_abs_dR": max(x["max_abs_dR"] for x in raw["single_film"]),
+        "airy_speedup_vs_colour": sec_colour / sec_airy,
+        "multilayer_max_abs_dR": max(diffs),
+    }
     srows = [[k, v * 1e3, sec_colour / v] for k, v in raw["speed_single_film_sec"].items()]
     text = [
         "### 2c. Closed form vs colour-science's transfer-matrix method",

@@ -19,8 +19,13 @@ def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 
     XYZ = colorimetry.film_XYZ(t_opt)
     rgb = colorimetry.XYZ_to_RGB(XYZ, display)
     clipped = clip.clip_RGB(rgb, display)
-    return {"optical_thickness_nm": float(t_opt), "XYZ": XYZ, "linear_rgb": rgb,
-            "clipped_rgb": clipped, "encoded": _encode(clipped)}
+    return {
+        "optical_thickness_nm": float(t_opt),
+        "XYZ": XYZ,
+        "linear_rgb": rgb,
+        "clipped_rgb": clipped,
+        "encoded": _encode(clipped),
+    }
 
 
 def _encode(rgb):
@@ -29,13 +34,15 @@ def _encode(rgb):
     return colour.cctf_encoding(np.clip(rgb, 0, 1), function="sRGB")
 
 
-def soap_strip(width: int = 1024, height: int = 96, max_thickness_nm: float = 2000.0,
-               display: str = "sRGB") -> np.ndarray:
+def soap_strip(
+    width: int = 1024, height: int = 96, max_thickness_nm: float = 2000.0, display: str = "sRGB"
+) -> np.ndarray:
     """Display-encoded strip of soap-film colours, physical thickness 0..max left to
     right. Top half: constant-lightness clip; bottom half: per-channel clamp."""
     t = np.linspace(0.0, max_thickness_nm, width)
-    rgb = colorimetry.XYZ_to_RGB(colorimetry.film_XYZ(spectra.optical_thickness(t, SOAP_INDEX)),
-                                 display)
+    rgb = colorimetry.XYZ_to_RGB(
+        colorimetry.film_XYZ(spectra.optical_thickness(t, SOAP_INDEX)), display
+    )
     top = _encode(clip.clip_RGB(rgb, display))
     bottom = _encode(clip.clamp_RGB(rgb))
     rows = [top] * (height // 2) + [bottom] * (height - height // 2)
@@ -47,24 +54,35 @@ def run(args) -> int:
     out = check_output_file(args.out)
     text = sys.stderr if is_stdout(out) else sys.stdout  # keep a PNG on stdout clean
     result = soap_film_colour(args.thickness)
-    print(f"Soap film, n = {SOAP_INDEX}, t = {args.thickness:g} nm, normal incidence "
-          f"(t' = {result['optical_thickness_nm']:g} nm)", file=text)
-    for label, key in (("XYZ (D65, Y_white = 1)", "XYZ"), ("linear sRGB, unclipped", "linear_rgb"),
-                       ("constant-lightness clip", "clipped_rgb")):
+    print(
+        f"Soap film, n = {SOAP_INDEX}, t = {args.thickness:g} nm, normal incidence "
+        f"(t' = {result['optical_thickness_nm']:g} nm)",
+        file=text,
+    )
+    for label, key in (
+        ("XYZ (D65, Y_white = 1)", "XYZ"),
+        ("linear sRGB, unclipped", "linear_rgb"),
+        ("constant-lightness clip", "clipped_rgb"),
+    ):
         print(f"  {label:<28}{np.array2string(result[key], precision=4)}", file=text)
     code = "#" + "".join(f"{int(round(v * 255)):02X}" for v in result["encoded"])
     print(f"  sRGB-encoded                {code}", file=text)
     write_image(out, soap_strip())
-    print(f"wrote {out}: soap-film colours for 0-2 um (top: constant-lightness clip, "
-          "bottom: channel clamp)", file=text)
+    print(
+        f"wrote {out}: soap-film colours for 0-2 um (top: constant-lightness clip, "
+        "bottom: channel clamp)",
+        file=text,
+    )
     return 0
 
 
 def register(sub) -> None:
     """Add the ``demo`` command to the ``sub`` parsers."""
-    p = sub.add_parser("demo", help="print a soap film's colour and write a strip of "
-                                    "Newton's colours")
-    p.add_argument("--thickness", type=float, default=300.0,
-                   help="physical film thickness in nm (default 300)")
+    p = sub.add_parser(
+        "demo", help="print a soap film's colour and write a strip of Newton's colours"
+    )
+    p.add_argument(
+        "--thickness", type=float, default=300.0, help="physical film thickness in nm (default 300)"
+    )
     p.add_argument("--out", default="docs/soap_strip.png", help="PNG to write")
     p.set_defaults(func=run)

@@ -30,16 +30,20 @@ def _run_bake(args) -> int:
         if args.luts is not None:
             raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
         clip_size = bake_module.check_clip_size(args.clip_size)
-        path = (merged.bake_into(args.into, args.out, clip_size=clip_size) if args.into
-                else merged.bake_archive(args.out, clip_size=clip_size))
+        path = (
+            merged.bake_into(args.into, args.out, clip_size=clip_size)
+            if args.into
+            else merged.bake_archive(args.out, clip_size=clip_size)
+        )
         print(f"wrote {path}")
         if args.into:  # a merged config has the base config's profile: say who reads it
             import PyOpenColorIO as ocio
 
             print(merge.profile_readers(ocio.Config.CreateFromFile(str(path))))
         return 0
-    path = bake_module.bake(args.out, clip_size=args.clip_size, show_progress=not args.quiet,
-                            luts=args.luts)
+    path = bake_module.bake(
+        args.out, clip_size=args.clip_size, show_progress=not args.quiet, luts=args.luts
+    )
     print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
     return 0
 
@@ -48,83 +52,154 @@ def _run_export(args) -> int:
     if args.table == "view":
         from ocio_thinfilm.export.view import export_view
 
-        paths = export_view(args.source, args.display, args.view, args.out, fmt=args.format,
-                            size=args.size, value_range=args.range,
-                            shaper=True if args.resolve_shaper else None)
+        paths = export_view(
+            args.source,
+            args.display,
+            args.view,
+            args.out,
+            fmt=args.format,
+            size=args.size,
+            value_range=args.range,
+            shaper=True if args.resolve_shaper else None,
+        )
         for path in paths:
             print(f"wrote {path}")
         return 0
     if args.resolve_shaper:
         raise UsageError(f"--resolve-shaper applies to 'export view', not {args.table!r}")
-    path = export_lut(args.table, args.out, fmt=args.format, kind=args.kind,
-                      display=args.display, index=args.index,
-                      value_range=args.range, size=args.size,
-                      show_progress=not args.quiet)
+    path = export_lut(
+        args.table,
+        args.out,
+        fmt=args.format,
+        kind=args.kind,
+        display=args.display,
+        index=args.index,
+        value_range=args.range,
+        size=args.size,
+        show_progress=not args.quiet,
+    )
     print(f"wrote {path}", file=sys.stderr if is_stdout(path) else sys.stdout)
     return 0
 
 
 def register(sub) -> None:
     """Add the ``bake`` and ``export`` commands to the ``sub`` parsers."""
-    p = sub.add_parser("bake", help="write the OpenColorIO config folder "
-                                    "(config.ocio + luts/*.clf)",
-                       description="Write the drop-in OCIO config and its CLF LUTs, atomically.")
-    p.add_argument("--out", default=bake_module.DEFAULT_CONFIG_DIR,
-                   help=f"config directory to (re)write (default {bake_module.DEFAULT_CONFIG_DIR})")
-    p.add_argument("--clip-size", type=int, default=clip_lut.CLIP_SIZE,
-                   help=f"edge of the 3D clip LUTs (default {clip_lut.CLIP_SIZE})")
-    p.add_argument("--luts", default=None, metavar="DIR",
-                   help="also write the standalone LUT set (every table, display and "
-                        "format) into DIR, e.g. luts")
-    p.add_argument("--into", default=None, metavar="CONFIG",
-                   help="add the thin-film input spaces, the clip views and named "
-                        "transforms to CONFIG (a config file or a built-in ocio:// URI, "
-                        "e.g. ocio://studio-config-latest) and write the result to --out "
-                        "(see docs/studio.md); --out FILE.ocioz writes an OCIO archive")
+    p = sub.add_parser(
+        "bake",
+        help="write the OpenColorIO config folder (config.ocio + luts/*.clf)",
+        description="Write the drop-in OCIO config and its CLF LUTs, atomically.",
+    )
+    p.add_argument(
+        "--out",
+        default=bake_module.DEFAULT_CONFIG_DIR,
+        help=f"config directory to (re)write (default {bake_module.DEFAULT_CONFIG_DIR})",
+    )
+    p.add_argument(
+        "--clip-size",
+        type=int,
+        default=clip_lut.CLIP_SIZE,
+        help=f"edge of the 3D clip LUTs (default {clip_lut.CLIP_SIZE})",
+    )
+    p.add_argument(
+        "--luts",
+        default=None,
+        metavar="DIR",
+        help="also write the standalone LUT set (every table, display and "
+        "format) into DIR, e.g. luts",
+    )
+    p.add_argument(
+        "--into",
+        default=None,
+        metavar="CONFIG",
+        help="add the thin-film input spaces, the clip views and named "
+        "transforms to CONFIG (a config file or a built-in ocio:// URI, "
+        "e.g. ocio://studio-config-latest) and write the result to --out "
+        "(see docs/studio.md); --out FILE.ocioz writes an OCIO archive",
+    )
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_run_bake)
 
-    e = sub.add_parser("export", help="write one table or clip LUT as a standalone file "
-                                      "(CLF, .cube, .spi1d/.spi3d, .csp)",
-                       description="Write one LUT with OpenColorIO's writers. Film/Morpho "
-                                   "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
-                                   "cube, csp; spi3d only over --range 0 1). Every file "
-                                   "takes the value itself: its domain is in the file.")
-    e.add_argument("table", metavar="TABLE",
-                   help="film (thickness table), morpho (angle table), clip (the "
-                        "constant-lightness clip) or view (a display/view of the config "
-                        "from --from SPACE: display code values; cube, csp, clf, ctf, "
-                        "spi3d, or spi1d for thin-film inputs)")
-    e.add_argument("--kind", default="phase-change",
-                   help="film kind: phase-change (soap film) or no-phase-change")
-    e.add_argument("--display", default=None,
-                   help=f"display gamut ({', '.join(registry.DISPLAYS)}): clip into it "
-                        "(required for clip; for tables gives clipped display-linear RGB "
-                        "instead of XYZ); for view any display of the config "
-                        f"({', '.join(registry.HDR_DISPLAYS)} too)")
-    e.add_argument("--index", type=float, default=None,
-                   help="film refractive index n: input becomes physical thickness t "
-                        "(t' = n t, normal incidence)")
-    e.add_argument("--range", nargs=2, type=float, metavar=("MIN", "MAX"), default=None,
-                   help="input range: thickness in um (film, default 0 1.5), cos(theta) "
-                        "(morpho, default 0 1), display-linear RGB per channel (clip, "
-                        "default -0.5 1.5)")
-    e.add_argument("--size", type=int, default=None,
-                   help="entries (1D) or grid edge (3D); defaults 4096 / 1024 / 33")
-    e.add_argument("--format", default=None,
-                   help=f"{', '.join(FORMATS)} (default: from --out's extension, else clf)")
-    e.add_argument("--out", "-o", default=None, help="file to write (default: a name "
-                                                     "from the options, in the current "
-                                                     "directory)")
-    e.add_argument("--from", dest="source", default=None, metavar="SPACE",
-                   help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
-                        "'Linear Rec.709 (sRGB)', a thin-film space)")
-    e.add_argument("--view", default=None,
-                   help="view: the display's view (e.g. 'Constant-Lightness Clip')")
-    e.add_argument("--resolve-shaper", action="store_true",
-                   help="view, .cube: DaVinci Resolve's form, a 1D shaper and the 3D LUT in "
-                        "one file (most other readers ignore the shaper); the default for "
-                        "ACEScct input is a plain 3D LUT over 0..1 that every reader applies "
-                        "alike")
+    e = sub.add_parser(
+        "export",
+        help="write one table or clip LUT as a standalone file (CLF, .cube, .spi1d/.spi3d, .csp)",
+        description="Write one LUT with OpenColorIO's writers. Film/Morpho "
+        "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
+        "cube, csp; spi3d only over --range 0 1). Every file "
+        "takes the value itself: its domain is in the file.",
+    )
+    e.add_argument(
+        "table",
+        metavar="TABLE",
+        help="film (thickness table), morpho (angle table), clip (the "
+        "constant-lightness clip) or view (a display/view of the config "
+        "from --from SPACE: display code values; cube, csp, clf, ctf, "
+        "spi3d, or spi1d for thin-film inputs)",
+    )
+    e.add_argument(
+        "--kind",
+        default="phase-change",
+        help="film kind: phase-change (soap film) or no-phase-change",
+    )
+    e.add_argument(
+        "--display",
+        default=None,
+        help=f"display gamut ({', '.join(registry.DISPLAYS)}): clip into it "
+        "(required for clip; for tables gives clipped display-linear RGB "
+        "instead of XYZ); for view any display of the config "
+        f"({', '.join(registry.HDR_DISPLAYS)} too)",
+    )
+    e.add_argument(
+        "--index",
+        type=float,
+        default=None,
+        help="film refractive index n: input becomes physical thickness t "
+        "(t' = n t, normal incidence)",
+    )
+    e.add_argument(
+        "--range",
+        nargs=2,
+        type=float,
+        metavar=("MIN", "MAX"),
+        default=None,
+        help="input range: thickness in um (film, default 0 1.5), cos(theta) "
+        "(morpho, default 0 1), display-linear RGB per channel (clip, "
+        "default -0.5 1.5)",
+    )
+    e.add_argument(
+        "--size",
+        type=int,
+        default=None,
+        help="entries (1D) or grid edge (3D); defaults 4096 / 1024 / 33",
+    )
+    e.add_argument(
+        "--format",
+        default=None,
+        help=f"{', '.join(FORMATS)} (default: from --out's extension, else clf)",
+    )
+    e.add_argument(
+        "--out",
+        "-o",
+        default=None,
+        help="file to write (default: a name from the options, in the current directory)",
+    )
+    e.add_argument(
+        "--from",
+        dest="source",
+        default=None,
+        metavar="SPACE",
+        help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
+        "'Linear Rec.709 (sRGB)', a thin-film space)",
+    )
+    e.add_argument(
+        "--view", default=None, help="view: the display's view (e.g. 'Constant-Lightness Clip')"
+    )
+    e.add_argument(
+        "--resolve-shaper",
+        action="store_true",
+        help="view, .cube: DaVinci Resolve's form, a 1D shaper and the 3D LUT in "
+        "one file (most other readers ignore the shaper); the default for "
+        "ACEScct input is a plain 3D LUT over 0..1 that every reader applies "
+        "alike",
+    )
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)

@@ -130,8 +130,9 @@ def build_parser():
     parser = _parser_class()(
         prog=PROG,
         description="Thin-film interference colours (Smits & Meyer 1990) for "
-                    "OpenColorIO pipelines: spectra, constant-lightness gamut clip, "
-                    "LUTs, an OCIO config and the paper's example scenes.")
+        "OpenColorIO pipelines: spectra, constant-lightness gamut clip, "
+        "LUTs, an OCIO config and the paper's example scenes.",
+    )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMAND_MODULES:
@@ -148,9 +149,10 @@ def build_parser():
 
 #: Library parameters whose option has another name (``dest`` of the argparse action),
 #: for every command (key None) and for one command.
-PARAMETER_DEST = {None: {"value_range": "range", "fmt": "format", "out_dir": "out",
-                         "shaper": "resolve_shaper"},
-                  "bake": {"source": "into"}}
+PARAMETER_DEST = {
+    None: {"value_range": "range", "fmt": "format", "out_dir": "out", "shaper": "resolve_shaper"},
+    "bake": {"source": "into"},
+}
 
 
 def _option_message(parser, command, error) -> str:
@@ -158,8 +160,9 @@ def _option_message(parser, command, error) -> str:
     for the parameter (``value_range`` -> ``--range``); the parameter's own name when the
     command has no such option."""
     sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
-    dest = PARAMETER_DEST.get(command, {}).get(error.parameter) \
-        or PARAMETER_DEST[None].get(error.parameter, error.parameter)
+    dest = PARAMETER_DEST.get(command, {}).get(error.parameter) or PARAMETER_DEST[None].get(
+        error.parameter, error.parameter
+    )
     for action in sub._actions if sub is not None else ():
         if action.dest == dest:
             longest = max(action.option_strings, key=len, default=None)
@@ -219,8 +222,9 @@ def _main(argv, set_command) -> int:
         set_command(command)
         if extra:
             prog = PROG if command is None else f"{PROG} {command}"
-            raise _ParseError(prog, f"unrecognized arguments: {' '.join(extra)} "
-                                    f"(see '{prog} --help')")
+            raise _ParseError(
+                prog, f"unrecognized arguments: {' '.join(extra)} (see '{prog} --help')"
+            )
     except _ParseError as error:
         print(f"{error.prog}: error: {' '.join(str(error).split())}", file=sys.stderr)
         return 2
@@ -257,8 +261,11 @@ def _main(argv, set_command) -> int:
             return 2
         if os.environ.get("OCIO_THINFILM_DEBUG"):
             raise
-        _error(command, f"internal error: {type(error).__name__}: {error} "
-                        "(OCIO_THINFILM_DEBUG=1 shows the traceback)")
+        _error(
+            command,
+            f"internal error: {type(error).__name__}: {error} "
+            "(OCIO_THINFILM_DEBUG=1 shows the traceback)",
+        )
         return 1
 
 
@@ -280,8 +287,7 @@ def _exit_soon(code: int) -> None:
         final = code
         if late is not None and code == 0:
             command = _state.get("command")
-            print(f"{PROG}{'' if command is None else ' ' + command}: interrupted",
-                  file=sys.stderr)
+            print(f"{PROG}{'' if command is None else ' ' + command}: interrupted", file=sys.stderr)
             final = 128 + int(late)
         for stream in (sys.stdout, sys.stderr):
             try:

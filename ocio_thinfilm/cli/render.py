@@ -34,15 +34,20 @@ def size_argument(text: str) -> tuple[int, int]:
     """``W`` or ``WxH`` -> (W, H), each side in [16, 8192], W*H <= 4096^2."""
     m = re.fullmatch(r"\s*([+-]?\d+)\s*(?:[xX]\s*([+-]?\d+)\s*)?", str(text))
     if not m:
-        raise argparse.ArgumentTypeError(f"{text!r}: expected W or WxH in pixels, e.g. 512 or 640x480")
+        raise argparse.ArgumentTypeError(
+            f"{text!r}: expected W or WxH in pixels, e.g. 512 or 640x480"
+        )
     w = int(m.group(1))
     h = int(m.group(2)) if m.group(2) is not None else w
     for side in (w, h):
         if side < MIN_SIDE or side > MAX_SIDE:
             raise argparse.ArgumentTypeError(
-                f"{text}: each side must be between {MIN_SIDE} and {MAX_SIDE} pixels")
+                f"{text}: each side must be between {MIN_SIDE} and {MAX_SIDE} pixels"
+            )
     if w * h > MAX_PIXELS:
-        raise argparse.ArgumentTypeError(f"{text}: at most {MAX_PIXELS} pixels (4096x4096) per image")
+        raise argparse.ArgumentTypeError(
+            f"{text}: at most {MAX_PIXELS} pixels (4096x4096) per image"
+        )
     return w, h
 
 
@@ -60,6 +65,7 @@ def frames_argument(text: str) -> list[int]:
 
 def integer_argument(lo: int, hi: int):
     """argparse type: an integer in [lo, hi]."""
+
     def parse(text: str) -> int:
         if not re.fullmatch(r"\s*\d+\s*", str(text)) or not lo <= int(text) <= hi:
             raise argparse.ArgumentTypeError(f"{text!r}: must be an integer in [{lo}, {hi}]")
@@ -93,20 +99,47 @@ def run(args) -> int:
     with transaction() as tx:
         for name in names:
             start = time.perf_counter()
-            paths = render.write_frame(name, out_dir, size, seed=args.seed, frame=frame,
-                                       display=args.display, view=args.view, lookup=lookup,
-                                       config=processors, tx=tx)
-            messages.append(f"{name}: wrote {', '.join(str(p) for p in paths)} "
-                            f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)")
+            paths = render.write_frame(
+                name,
+                out_dir,
+                size,
+                seed=args.seed,
+                frame=frame,
+                display=args.display,
+                view=args.view,
+                lookup=lookup,
+                config=processors,
+                tx=tx,
+            )
+            messages.append(
+                f"{name}: wrote {', '.join(str(p) for p in paths)} "
+                f"({size[0]}x{size[1]}, {time.perf_counter() - start:.2f} s)"
+            )
     if not args.quiet:
         print("\n".join(messages))
     return 0
 
 
 def _child_command(args, frame: int) -> list[str]:
-    cmd = [sys.executable, "-m", "ocio_thinfilm", "render", args.scene,
-           "--frames", f"{frame}-{frame}", "--size", "x".join(map(str, args.size)), "--out", str(args.out),
-           "--seed", str(args.seed), "--display", args.display, "--view", args.view]
+    cmd = [
+        sys.executable,
+        "-m",
+        "ocio_thinfilm",
+        "render",
+        args.scene,
+        "--frames",
+        f"{frame}-{frame}",
+        "--size",
+        "x".join(map(str, args.size)),
+        "--out",
+        str(args.out),
+        "--seed",
+        str(args.seed),
+        "--display",
+        args.display,
+        "--view",
+        args.view,
+    ]
     if getattr(args, "config", None) is not None:
         cmd += ["--config", str(args.config)]
     return cmd + (["--quiet"] if args.quiet else [])
@@ -121,9 +154,18 @@ def _render_frames_in_children(args, frames) -> int:
     while pending or running:
         while pending and len(running) < args.jobs and failed is None:
             frame = pending.pop(0)
-            running.append((frame, subprocess.Popen(
-                _child_command(args, frame), stdout=None if not args.quiet else
-                subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)))
+            running.append(
+                (
+                    frame,
+                    subprocess.Popen(
+                        _child_command(args, frame),
+                        stdout=None if not args.quiet else subprocess.DEVNULL,
+                        stderr=subprocess.PIPE,
+                        text=True,
+                        env=env,
+                    ),
+                )
+            )
         frame, proc = running.pop(0)
         try:
             _, err = proc.communicate()
@@ -151,33 +193,62 @@ def register(sub) -> None:
         "render",
         help="render the paper's example scenes (Figures 4-7) through the LUTs",
         description="Render the paper's example scenes through the generated tables and "
-                    "OCIO views: a scene-linear EXR (CIE XYZ in R,G,B plus AOV channels) "
-                    "and a display-encoded PNG per scene.")
-    p.add_argument("scene", choices=SCENE_CHOICES, metavar="SCENE",
-                   help="scene to render (spectrum = Fig. 4, oil = Fig. 5, soap = Fig. 6, "
-                        "morpho = Fig. 7) or all of them")
-    p.add_argument("--size", type=size_argument, default=render.DEFAULT_SIZE,
-                   help="W or WxH in pixels (default 512x512; sides 16-8192, at most 4096x4096 "
-                        "pixels)")
+        "OCIO views: a scene-linear EXR (CIE XYZ in R,G,B plus AOV channels) "
+        "and a display-encoded PNG per scene.",
+    )
+    p.add_argument(
+        "scene",
+        choices=SCENE_CHOICES,
+        metavar="SCENE",
+        help="scene to render (spectrum = Fig. 4, oil = Fig. 5, soap = Fig. 6, "
+        "morpho = Fig. 7) or all of them",
+    )
+    p.add_argument(
+        "--size",
+        type=size_argument,
+        default=render.DEFAULT_SIZE,
+        help="W or WxH in pixels (default 512x512; sides 16-8192, at most 4096x4096 pixels)",
+    )
     p.add_argument("--out", default="renders", help="output directory (default ./renders)")
-    p.add_argument("--seed", type=integer_argument(0, 2**31 - 1), default=0,
-                   help="noise seed, an integer >= 0 (default 0)")
-    p.add_argument("--display", default=render.DEFAULT_DISPLAY,
-                   help=f"display of the PNG, one of the config's (the package's: "
-                        f"{', '.join(registry.DISPLAYS)}; default {render.DEFAULT_DISPLAY})")
-    p.add_argument("--view", default=render.DEFAULT_VIEW,
-                   help=f"view of the PNG, one of the display's (the package's: "
-                        f"{', '.join(registry.VIEWS)}; default {render.DEFAULT_VIEW}); the "
-                        "spectrum scene shows the first three side by side")
-    p.add_argument("--config", default=None,
-                   help="OCIO config whose thin-film input spaces and display views the "
-                        "render applies: the package's (default: a checkout's configs/"
-                        "thinfilm/config.ocio, baked first when missing; installed, the "
-                        "wheel's copy) or one made by bake --into")
-    p.add_argument("--frames", type=frames_argument, default=None,
-                   help="A-B: render frames A..B as NAME.####.exr/png with the scene's "
-                        "animation, one process per frame")
-    p.add_argument("--jobs", type=integer_argument(1, 64), default=1,
-                   help="frame processes to run at once with --frames (default 1)")
+    p.add_argument(
+        "--seed",
+        type=integer_argument(0, 2**31 - 1),
+        default=0,
+        help="noise seed, an integer >= 0 (default 0)",
+    )
+    p.add_argument(
+        "--display",
+        default=render.DEFAULT_DISPLAY,
+        help=f"display of the PNG, one of the config's (the package's: "
+        f"{', '.join(registry.DISPLAYS)}; default {render.DEFAULT_DISPLAY})",
+    )
+    p.add_argument(
+        "--view",
+        default=render.DEFAULT_VIEW,
+        help=f"view of the PNG, one of the display's (the package's: "
+        f"{', '.join(registry.VIEWS)}; default {render.DEFAULT_VIEW}); the "
+        "spectrum scene shows the first three side by side",
+    )
+    p.add_argument(
+        "--config",
+        default=None,
+        help="OCIO config whose thin-film input spaces and display views the "
+        "render applies: the package's (default: a checkout's configs/"
+        "thinfilm/config.ocio, baked first when missing; installed, the "
+        "wheel's copy) or one made by bake --into",
+    )
+    p.add_argument(
+        "--frames",
+        type=frames_argument,
+        default=None,
+        help="A-B: render frames A..B as NAME.####.exr/png with the scene's "
+        "animation, one process per frame",
+    )
+    p.add_argument(
+        "--jobs",
+        type=integer_argument(1, 64),
+        default=1,
+        help="frame processes to run at once with --frames (default 1)",
+    )
     p.add_argument("--quiet", action="store_true", help="print nothing on success")
     p.set_defaults(func=run)

@@ -23,13 +23,16 @@ def _run_report():
     from ocio_thinfilm.io import UsageError
 
     if not (CHECKOUT / "evaluation" / "report" / "__init__.py").is_file():
-        raise UsageError("the report is not installed with the package; run it from a "
-                         "checkout of the repository: pip install -e '.[report]' && "
-                         "ocio-thinfilm report")
+        raise UsageError(
+            "the report is not installed with the package; run it from a "
+            "checkout of the repository: pip install -e '.[report]' && "
+            "ocio-thinfilm report"
+        )
     missing = [m for m in ("matplotlib", "mpmath") if importlib.util.find_spec(m) is None]
     if missing:
-        raise UsageError(f"the report needs {' and '.join(missing)}: "
-                         "pip install -e '.[report]' in the checkout")
+        raise UsageError(
+            f"the report needs {' and '.join(missing)}: pip install -e '.[report]' in the checkout"
+        )
     if str(CHECKOUT) not in sys.path:
         sys.path.insert(0, str(CHECKOUT))
     from evaluation.report import run_report
@@ -46,12 +49,16 @@ def _run(args) -> int:
 def register(subparsers) -> None:
     """Add the ``report`` command to the parsers."""
     p = subparsers.add_parser(
-        "report", help="measure error against run time, peers, stability and throughput "
-                       "(from a checkout)",
+        "report",
+        help="measure error against run time, peers, stability and throughput (from a checkout)",
         description="Measure everything on this machine and write <out>/report.md with PNG "
-                    "plots. Runs from a checkout of the repository (its evaluation/ folder).")
+        "plots. Runs from a checkout of the repository (its evaluation/ folder).",
+    )
     p.add_argument("--out", default="reports", help="output directory (default: reports)")
-    p.add_argument("--quick", action="store_true",
-                   help="smaller sweeps (about 30 s): keeps the report working in the test suite")
+    p.add_argument(
+        "--quick",
+        action="store_true",
+        help="smaller sweeps (about 30 s): keeps the report working in the test suite",
+    )
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(func=_run)

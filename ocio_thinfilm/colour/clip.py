@@ -85,13 +85,13 @@ def _apply(values, name, kernel):
     flat = a.reshape(-1, 3)
     out = np.empty(flat.shape, dtype)
     for start in range(0, flat.shape[0], _CHUNK):
-        work = np.ascontiguousarray(flat[start:start + _CHUNK].T, dtype=np.float64)
+        work = np.ascontiguousarray(flat[start : start + _CHUNK].T, dtype=np.float64)
         nan_rows = np.isnan(work[0]) | np.isnan(work[1]) | np.isnan(work[2])
         np.nan_to_num(work, copy=False, nan=0.0)
         np.clip(work, -LIMIT, LIMIT, out=work)
         result = kernel(work)
         result[:, nan_rows] = np.nan
-        out[start:start + _CHUNK] = result.T
+        out[start : start + _CHUNK] = result.T
     return out.reshape(a.shape)
 
 
@@ -310,8 +310,9 @@ def aces_gamut_compress_RGB(RGB):
     """
     import PyOpenColorIO as ocio
 
-    transform = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
-                                            list(ACES_GAMUT_COMP13_PARAMS))
+    transform = ocio.FixedFunctionTransform(
+        ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, list(ACES_GAMUT_COMP13_PARAMS)
+    )
     cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
     # On a copy (never the caller's array). The compression works on distances
     # d = (max - c) / |max|, so it commutes with a positive scale: each pixel is scaled

@@ -172,7 +172,8 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
         sd = colour.SDS_ILLUMINANTS[illuminant]
     except KeyError:
         raise ValueError(
-            f"illuminant must be one of colour.SDS_ILLUMINANTS, got {illuminant!r}") from None
+            f"illuminant must be one of colour.SDS_ILLUMINANTS, got {illuminant!r}"
+        ) from None
     # colour-science interpolates (Sprague for the 1 nm CMFs / 5 nm D65) and holds the
     # end values constant outside the tabulated range.
     # (a single wavelength still needs a shape with end > start)
@@ -185,14 +186,17 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
     w = cmf * (s * width)[:, None]
     total = w[:, 1].sum()
     if not total > 0:
-        raise ValueError(f"wavelengths: the luminance weight (y-bar times the illuminant) "
-                         f"is 0 over {wl.min():g}-{wl.max():g} nm; use wavelengths within "
-                         "the visible range")
+        raise ValueError(
+            f"wavelengths: the luminance weight (y-bar times the illuminant) "
+            f"is 0 over {wl.min():g}-{wl.max():g} nm; use wavelengths within "
+            "the visible range"
+        )
     return w / total
 
 
-def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
-                     illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+def spectral_weights(
+    wavelengths, observer: str = DEFAULT_OBSERVER, illuminant: str = DEFAULT_ILLUMINANT
+) -> np.ndarray:
     """Integration weights ``W`` (shape (len(wavelengths), 3)) so that
     ``XYZ = R @ W`` and the perfect reflector has Y = 1.
 
@@ -252,8 +256,9 @@ def spectral_weights(wavelengths, observer: str = DEFAULT_OBSERVER,
     return _weights_cached(tuple(wl.tolist()), observer, illuminant).copy()
 
 
-def reflectance_to_XYZ(reflectance, wavelengths, observer: str = DEFAULT_OBSERVER,
-                       illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+def reflectance_to_XYZ(
+    reflectance, wavelengths, observer: str = DEFAULT_OBSERVER, illuminant: str = DEFAULT_ILLUMINANT
+) -> np.ndarray:
     """Relative XYZ of reflectance spectra.
 
     Parameters
@@ -288,13 +293,20 @@ def _chunked_XYZ(model, values, wavelengths, observer, illuminant, chunk=4096):
     w = spectral_weights(wavelengths, observer, illuminant)
     out = np.empty((flat.size, 3))
     for start in range(0, flat.size, chunk):
-        out[start:start + chunk] = model(flat[start:start + chunk]) @ w
+        out[start : start + chunk] = model(flat[start : start + chunk]) @ w
     return out.reshape(values.shape + (3,))
 
 
-def film_XYZ(optical_thickness_nm, kind: str = "phase-change", *, step: float = 5.0,
-             band_limited: bool = True, wavelengths=None, observer: str = DEFAULT_OBSERVER,
-             illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+def film_XYZ(
+    optical_thickness_nm,
+    kind: str = "phase-change",
+    *,
+    step: float = 5.0,
+    band_limited: bool = True,
+    wavelengths=None,
+    observer: str = DEFAULT_OBSERVER,
+    illuminant: str = DEFAULT_ILLUMINANT,
+) -> np.ndarray:
     """CIE XYZ of the paper's single film (Eq. 7 or 8) against its optical thickness.
 
     Parameters
@@ -337,16 +349,26 @@ def film_XYZ(optical_thickness_nm, kind: str = "phase-change", *, step: float = 
     wl = sampling.wavelength_grid(step=step) if wavelengths is None else wavelengths
 
     def model(t):
-        return spectra.two_beam_reflectance(t, wl, phase_change=kind == "phase-change",
-                                            band_limited=band_limited)
+        return spectra.two_beam_reflectance(
+            t, wl, phase_change=kind == "phase-change", band_limited=band_limited
+        )
 
     return _chunked_XYZ(model, optical_thickness_nm, wl, observer, illuminant)
 
 
-def morpho_XYZ(theta_degrees, *, layers: int = spectra.MORPHO["layers"], d1=spectra.MORPHO["d1"],
-               d2=spectra.MORPHO["d2"], n=spectra.MORPHO["n"], step: float = 5.0,
-               band_limited: bool = True, wavelengths=None, observer: str = DEFAULT_OBSERVER,
-               illuminant: str = DEFAULT_ILLUMINANT) -> np.ndarray:
+def morpho_XYZ(
+    theta_degrees,
+    *,
+    layers: int = spectra.MORPHO["layers"],
+    d1=spectra.MORPHO["d1"],
+    d2=spectra.MORPHO["d2"],
+    n=spectra.MORPHO["n"],
+    step: float = 5.0,
+    band_limited: bool = True,
+    wavelengths=None,
+    observer: str = DEFAULT_OBSERVER,
+    illuminant: str = DEFAULT_ILLUMINANT,
+) -> np.ndarray:
     """CIE XYZ of the Morpho wing multilayer against the viewing angle.
 
     Eq. 9 (Anderson & Richards, :func:`.spectra.multilayer_reflectance`) with the
@@ -401,7 +423,8 @@ def _matrix_cached(space: str) -> np.ndarray:
     d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
     if not np.allclose(cs.whitepoint, d65, atol=1e-4):
         cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
-            colour.xy_to_XYZ(d65), colour.xy_to_XYZ(cs.whitepoint), transform="Bradford")
+            colour.xy_to_XYZ(d65), colour.xy_to_XYZ(cs.whitepoint), transform="Bradford"
+        )
         return np.linalg.inv(rgb_to_xyz) @ cat
     return np.linalg.inv(rgb_to_xyz)
 
@@ -701,8 +724,10 @@ def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
         raise ValueError(f"Y must be a finite number >= 0, got {Y!r}")
     xyz = cmfs_at(np.arange(380.0, 701.0) if wavelengths is None else wavelengths)
     if np.any(xyz[:, 1] <= 0):
-        bad = np.asarray(np.arange(380.0, 701.0) if wavelengths is None
-                         else wavelengths, dtype=float)[xyz[:, 1] <= 0][0]
-        raise ValueError(f"wavelengths: y-bar is 0 at {bad:g} nm, which has no luminance "
-                         "to scale to Y")
+        bad = np.asarray(
+            np.arange(380.0, 701.0) if wavelengths is None else wavelengths, dtype=float
+        )[xyz[:, 1] <= 0][0]
+        raise ValueError(
+            f"wavelengths: y-bar is 0 at {bad:g} nm, which has no luminance to scale to Y"
+        )
     return xyz * (Y / xyz[:, 1:2])

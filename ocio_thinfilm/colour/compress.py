@@ -68,12 +68,19 @@ def _check(threshold, limit, power):
 def _scale(threshold, limit, power):
     """The ACES curve's scale s such that the curve reaches 1 at ``limit``; its
     asymptote is threshold + s (S-2020-001, Section 'compress')."""
-    return (limit - threshold) / (((limit - threshold) / (1.0 - threshold)) ** power
-                                  - 1.0) ** (1.0 / power)
+    return (limit - threshold) / (((limit - threshold) / (1.0 - threshold)) ** power - 1.0) ** (
+        1.0 / power
+    )
 
 
-def compression_curve(d, threshold: float = THRESHOLD, limit: float = LIMIT,
-                      power: float = POWER, *, clipped: bool = True):
+def compression_curve(
+    d,
+    threshold: float = THRESHOLD,
+    limit: float = LIMIT,
+    power: float = POWER,
+    *,
+    clipped: bool = True,
+):
     """The distance ``d`` (>= 0) after compression.
 
     ``d`` up to ``threshold`` is unchanged; beyond it,
@@ -100,8 +107,9 @@ def compression_curve(d, threshold: float = THRESHOLD, limit: float = LIMIT,
     return np.minimum(y, 1.0) if clipped else y
 
 
-def compression_curve_inverse(y, threshold: float = THRESHOLD, limit: float = LIMIT,
-                              power: float = POWER):
+def compression_curve_inverse(
+    y, threshold: float = THRESHOLD, limit: float = LIMIT, power: float = POWER
+):
     """The distance whose unclipped :func:`compression_curve` is ``y`` (``y`` below the
     asymptote threshold + s; at or above it: +inf).
 
@@ -157,8 +165,13 @@ def boundary_distance(RGB, display: str = "sRGB"):
     return d.reshape(a.shape[:-1])
 
 
-def compress_RGB(RGB, display: str = "sRGB", threshold: float = THRESHOLD,
-                 limit: float = LIMIT, power: float = POWER):
+def compress_RGB(
+    RGB,
+    display: str = "sRGB",
+    threshold: float = THRESHOLD,
+    limit: float = LIMIT,
+    power: float = POWER,
+):
     """Soft constant-lightness gamut compression of display-linear RGB.
 
     Parameters
@@ -203,9 +216,11 @@ def compress_RGB(RGB, display: str = "sRGB", threshold: float = THRESHOLD,
         d = _distance(rgb, grey)
         beyond = d >= limit
         with np.errstate(divide="ignore", invalid="ignore"):
-            k = np.where(beyond, 1.0 / d,
-                         compression_curve(np.where(beyond, 0.0, d), threshold, limit,
-                                           power) / d)
+            k = np.where(
+                beyond,
+                1.0 / d,
+                compression_curve(np.where(beyond, 0.0, d), threshold, limit, power) / d,
+            )
         k = np.where(d > threshold, k, 1.0)
         out = np.where(d > threshold, np.clip(grey + k * (rgb - grey), 0.0, 1.0), rgb)
         out[:, Y <= 0.0] = 0.0
@@ -215,8 +230,13 @@ def compress_RGB(RGB, display: str = "sRGB", threshold: float = THRESHOLD,
     return clip._apply(RGB, "RGB", kernel)
 
 
-def compress_XYZ(XYZ, display: str = "sRGB", threshold: float = THRESHOLD,
-                 limit: float = LIMIT, power: float = POWER):
+def compress_XYZ(
+    XYZ,
+    display: str = "sRGB",
+    threshold: float = THRESHOLD,
+    limit: float = LIMIT,
+    power: float = POWER,
+):
     """:func:`compress_RGB` for D65-relative CIE XYZ (Y = 1 the display's white):
     XYZ in, XYZ out, same shape and dtype.
 

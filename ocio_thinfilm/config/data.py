@@ -60,8 +60,9 @@ LUT_DIRECTORY = "luts"
 
 #: Display -> (display colour space name, description) (from :mod:`.registry`), the SDR
 #: displays then the HDR ones (:data:`ocio_thinfilm.registry.ALL_DISPLAYS`).
-DISPLAY_SPACES = {d.name: (d.colorspace, d.description)
-                  for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST}
+DISPLAY_SPACES = {
+    d.name: (d.colorspace, d.description) for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST
+}
 
 #: Scene-linear RGB spaces: name -> (colorimetry space, description).
 LINEAR_SPACES = {
@@ -130,12 +131,18 @@ def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
 def compress_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
     """Display -> its :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT` (running with
     the clip LUTs of edge ``clip_size``), for every display of the registry."""
-    return {display: compress_lut.compress_lut(display, clip_size=clip_size)
-            for display in registry.DISPLAYS}
+    return {
+        display: compress_lut.compress_lut(display, clip_size=clip_size)
+        for display in registry.DISPLAYS
+    }
 
 
-def lut_files(luts_by_display: dict, film_size: int = tables.FILM_SIZE,
-              morpho_size: int = tables.MORPHO_SIZE, compress_by_display=None) -> dict:
+def lut_files(
+    luts_by_display: dict,
+    film_size: int = tables.FILM_SIZE,
+    morpho_size: int = tables.MORPHO_SIZE,
+    compress_by_display=None,
+) -> dict:
     """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses:
     the thin-film tables and, per display, the two passes of its clip LUT
     (``luts_by_display``: :func:`clip_luts`) and the two squeezes of its compression
@@ -161,17 +168,21 @@ def _lut_reference(name, luts, inline):
 def _clip_passes(lut, luts, inline):
     """The clip chain of ``lut`` with its two passes as in the config: CIE-XYZ-D65 ->
     sRGB code values of the clipped display RGB."""
-    cores = [_lut_reference(named_lut(registry.clip_lut_stem(lut.display, white)), luts, inline)
-             for white in (False, True)]
+    cores = [
+        _lut_reference(named_lut(registry.clip_lut_stem(lut.display, white)), luts, inline)
+        for white in (False, True)
+    ]
     return lut.transforms(*cores)
 
 
 def _compress_passes(soft, luts, inline):
     """The compression chain of ``soft`` (a CompressLUT) with its two squeezes and the
     clip's two passes as in the config: CIE-XYZ-D65 -> sRGB code values."""
-    cores = [_lut_reference(named_lut(stem(soft.display, white)), luts, inline)
-             for stem in (registry.compress_lut_stem, registry.clip_lut_stem)
-             for white in (False, True)]
+    cores = [
+        _lut_reference(named_lut(stem(soft.display, white)), luts, inline)
+        for stem in (registry.compress_lut_stem, registry.clip_lut_stem)
+        for white in (False, True)
+    ]
     return soft.transforms(*cores)
 
 
@@ -189,8 +200,7 @@ def _linear_parts(gamut, view, lut, luts, inline, compress=None):
     view, as a list of transforms (the config's LUT files for the clip and the
     compression)."""
     if view == "Constant-Lightness Compress":
-        return _compress_passes(compress, luts, inline) + [
-            clip_lut.working_decoding_transform()]
+        return _compress_passes(compress, luts, inline) + [clip_lut.working_decoding_transform()]
     if view == "Constant-Lightness Clip":
         # the second LUT ends in sRGB code values: back to display-linear here, the
         # display colour space encodes again (OCIO's optimiser removes the pair for
@@ -211,13 +221,18 @@ def view_parts(display, view, *, lut=None, luts=None, inline=False, compress=Non
     linear = _linear_parts(gamut, view, lut, luts, inline, compress)
     if registry.is_hdr(display):
         linear = view_transforms.hdr_scaled(display, linear)
-    return ocio_ops.group(linear + [display_transforms.display_matrix_transform(gamut,
-                                                                                inverse=True)])
+    return ocio_ops.group(
+        linear + [display_transforms.display_matrix_transform(gamut, inverse=True)]
+    )
 
 
-def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
-                film_size: int = tables.FILM_SIZE,
-                morpho_size: int = tables.MORPHO_SIZE) -> ConfigData:
+def config_data(
+    *,
+    inline: bool = False,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    film_size: int = tables.FILM_SIZE,
+    morpho_size: int = tables.MORPHO_SIZE,
+) -> ConfigData:
     """The config as data. ``inline=True`` puts the LUTs into the transforms
     (an in-memory config needing no files, for baking and tests); otherwise colour
     spaces refer to ``luts/*.clf`` by FileTransform."""
@@ -226,62 +241,117 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
     ref = REFERENCE
     cs = []
-    cs.append(dict(name=ref, family="Utility", encoding="scene-linear",
-                   categories=["file-io", "working-space"],
-                   aliases=["cie_xyz_d65"],
-                   description="CIE XYZ, D65-relative: the perfect reflector under D65 has "
-                               "Y = 1 (CIE 1931 2 degree observer). The reference space."))
+    cs.append(
+        dict(
+            name=ref,
+            family="Utility",
+            encoding="scene-linear",
+            categories=["file-io", "working-space"],
+            aliases=["cie_xyz_d65"],
+            description="CIE XYZ, D65-relative: the perfect reflector under D65 has "
+            "Y = 1 (CIE 1931 2 degree observer). The reference space.",
+        )
+    )
     for name, (space, description) in LINEAR_SPACES.items():
-        cs.append(dict(name=name, family="Scene-Linear", encoding="scene-linear",
-                       categories=["file-io", "working-space"],
-                       description=description, to_reference=_matrix_to_reference(space)))
+        cs.append(
+            dict(
+                name=name,
+                family="Scene-Linear",
+                encoding="scene-linear",
+                categories=["file-io", "working-space"],
+                description=description,
+                to_reference=_matrix_to_reference(space),
+            )
+        )
     acescct = _acescct_to_reference()
-    cs.append(dict(name="ACEScct", family="ACES", encoding="log",
-                   categories=["file-io", "working-space"],
-                   description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
-                   to_reference=acescct))
-    cs.append(dict(name="sRGB - Texture", family="Texture", encoding="sdr-video",
-                   categories=["file-io", "texture"],
-                   aliases=["srgb_tx"],
-                   description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour "
-                               "picking)",
-                   to_reference=ocio_ops.group([
-                       ocio_ops.inverse([display_transforms.display_encoding_transform("sRGB")]),
-                       _matrix_to_reference("Rec.709")])))
-    cs.append(dict(name="Raw", family="Utility", encoding="data", is_data=True,
-                   categories=["file-io"], aliases=["Utility - Raw"],
-                   description="Non-colour data: passed through unchanged"))
+    cs.append(
+        dict(
+            name="ACEScct",
+            family="ACES",
+            encoding="log",
+            categories=["file-io", "working-space"],
+            description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
+            to_reference=acescct,
+        )
+    )
+    cs.append(
+        dict(
+            name="sRGB - Texture",
+            family="Texture",
+            encoding="sdr-video",
+            categories=["file-io", "texture"],
+            aliases=["srgb_tx"],
+            description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour picking)",
+            to_reference=ocio_ops.group(
+                [
+                    ocio_ops.inverse([display_transforms.display_encoding_transform("sRGB")]),
+                    _matrix_to_reference("Rec.709"),
+                ]
+            ),
+        )
+    )
+    cs.append(
+        dict(
+            name="Raw",
+            family="Utility",
+            encoding="data",
+            is_data=True,
+            categories=["file-io"],
+            aliases=["Utility - Raw"],
+            description="Non-colour data: passed through unchanged",
+        )
+    )
     for space in registry.THIN_FILM_LIST:
         table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
         if space.table == "film":
-            encoding = ("Pixel value (all three channels equal) = optical thickness t' = "
-                        "n t cos(theta_t) in micrometres; beyond 100 um the incoherent grey, "
-                        "negative values black.")
+            encoding = (
+                "Pixel value (all three channels equal) = optical thickness t' = "
+                "n t cos(theta_t) in micrometres; beyond 100 um the incoherent grey, "
+                "negative values black."
+            )
         else:
-            encoding = ("Pixel value (all three channels equal) = cos(theta), the facing "
-                        "ratio N.V of the viewing direction; clamped to [0, 1] (0 = grazing, "
-                        "1 = normal incidence).")
-        cs.append(dict(name=space.name, family="Thin Film", encoding="scene-linear",
-                       categories=["file-io"],
-                       description=f"{table.description} {encoding}",
-                       to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline)))
+            encoding = (
+                "Pixel value (all three channels equal) = cos(theta), the facing "
+                "ratio N.V of the viewing direction; clamped to [0, 1] (0 = grazing, "
+                "1 = normal incidence)."
+            )
+        cs.append(
+            dict(
+                name=space.name,
+                family="Thin Film",
+                encoding="scene-linear",
+                categories=["file-io"],
+                description=f"{table.description} {encoding}",
+                to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline),
+            )
+        )
     for display, (name, description) in DISPLAY_SPACES.items():
-        cs.append(dict(name=name, family="Display",
-                       encoding="hdr-video" if registry.is_hdr(display) else "sdr-video",
-                       categories=["file-io"], reference_space="display",
-                       description=description,
-                       from_reference=display_transforms.display_colorspace_transform(
-                           display)))
+        cs.append(
+            dict(
+                name=name,
+                family="Display",
+                encoding="hdr-video" if registry.is_hdr(display) else "sdr-video",
+                categories=["file-io"],
+                reference_space="display",
+                description=description,
+                from_reference=display_transforms.display_colorspace_transform(display),
+            )
+        )
 
     # The default view transform links the two reference spaces when a conversion
     # crosses them without a view (e.g. display space -> scene space): an identity,
     # as "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless).
-    view_transforms = [dict(name="Un-tone-mapped", family="Utility",
-                            description="Identity between the scene and display reference "
-                                        "spaces (both CIE-XYZ-D65): no tone mapping, no "
-                                        "gamut mapping. Used for conversions between scene "
-                                        "and display colour spaces.",
-                            from_reference=ocio_ops.group([ocio_ops.matrix()]))]
+    view_transforms = [
+        dict(
+            name="Un-tone-mapped",
+            family="Utility",
+            description="Identity between the scene and display reference "
+            "spaces (both CIE-XYZ-D65): no tone mapping, no "
+            "gamut mapping. Used for conversions between scene "
+            "and display colour spaces.",
+            from_reference=ocio_ops.group([ocio_ops.matrix()]),
+        )
+    ]
     displays = {}
     descriptions = {v.name: v.description for v in registry.VIEW_LIST}
     for display, (display_space, _) in DISPLAY_SPACES.items():
@@ -291,35 +361,50 @@ def config_data(*, inline: bool = False, clip_size: int = clip_lut.CLIP_SIZE,
                 views.append(dict(name=view, colorspace="Raw"))
                 continue
             vt = f"{view} - {display}"
-            view_transforms.append(dict(name=vt, family="Thin Film",
-                                        description=f"{descriptions[view]} Display: {display}.",
-                                        from_reference=view_parts(
-                                            display, view,
-                                            lut=by_display[registry.gamut_of(display)],
-                                            luts=luts, inline=inline,
-                                            compress=soft_by_display[
-                                                registry.gamut_of(display)])))
+            view_transforms.append(
+                dict(
+                    name=vt,
+                    family="Thin Film",
+                    description=f"{descriptions[view]} Display: {display}.",
+                    from_reference=view_parts(
+                        display,
+                        view,
+                        lut=by_display[registry.gamut_of(display)],
+                        luts=luts,
+                        inline=inline,
+                        compress=soft_by_display[registry.gamut_of(display)],
+                    ),
+                )
+            )
             views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
         displays[display] = views
 
     file_rules = [
-        dict(name="OpenEXR", colorspace=ROLES["scene_linear"], pattern="*",
-             extension="[eE][xX][rR]"),
+        dict(
+            name="OpenEXR", colorspace=ROLES["scene_linear"], pattern="*", extension="[eE][xX][rR]"
+        ),
         dict(name="PNG", colorspace="sRGB - Texture", pattern="*", extension="[pP][nN][gG]"),
-        dict(name="JPEG", colorspace="sRGB - Texture", pattern="*",
-             extension="[jJ][pP][gG]"),
+        dict(name="JPEG", colorspace="sRGB - Texture", pattern="*", extension="[jJ][pP][gG]"),
         dict(name="Default", colorspace=ROLES["default"]),
     ]
     return ConfigData(
         name=CONFIG_NAME,
-        description=("Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
-                     "Colors\") with the paper's constant-lightness gamut clip. Reference: "
-                     "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
-                     "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."),
-        roles=dict(ROLES), colorspaces=cs, view_transforms=view_transforms,
-        displays=displays, file_rules=file_rules, luts=luts,
-        named_transforms=named_transforms(by_display, inline=inline, luts=luts,
-                                          compress_by_display=soft_by_display))
+        description=(
+            "Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
+            "Colors\") with the paper's constant-lightness gamut clip. Reference: "
+            "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
+            "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."
+        ),
+        roles=dict(ROLES),
+        colorspaces=cs,
+        view_transforms=view_transforms,
+        displays=displays,
+        file_rules=file_rules,
+        luts=luts,
+        named_transforms=named_transforms(
+            by_display, inline=inline, luts=luts, compress_by_display=soft_by_display
+        ),
+    )
 
 
 #: Named transform of the clip alone, per display (display-linear RGB in and out).
@@ -336,7 +421,9 @@ def clip_named_transform(lut, *, inline=False, luts=None):
     hosts that apply a named transform as a node (Nuke OCIONamedTransform, Houdini)."""
     return ocio_ops.group(
         [display_transforms.display_matrix_transform(lut.display, inverse=True)]
-        + _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()])
+        + _clip_passes(lut, luts, inline)
+        + [clip_lut.working_decoding_transform()]
+    )
 
 
 def compress_named_transform(soft, *, inline=False, luts=None):
@@ -344,42 +431,69 @@ def compress_named_transform(soft, *, inline=False, luts=None):
     display-linear RGB in and out (as :func:`clip_named_transform`)."""
     return ocio_ops.group(
         [display_transforms.display_matrix_transform(soft.display, inverse=True)]
-        + _compress_passes(soft, luts, inline) + [clip_lut.working_decoding_transform()])
+        + _compress_passes(soft, luts, inline)
+        + [clip_lut.working_decoding_transform()]
+    )
 
 
-def named_transforms(luts_by_display: dict, *, inline=False, luts=None,
-                     compress_by_display=None) -> list:
+def named_transforms(
+    luts_by_display: dict, *, inline=False, luts=None, compress_by_display=None
+) -> list:
     """Named transforms (OCIO >= 2.0) as data: the clip per display of ``luts_by_display``
     (display -> ClipLUT), the compression per display of ``compress_by_display`` (display
     -> CompressLUT) and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
     config's reference space: merged configs add the same ones)."""
-    def gamut_map(name, display, what, transform):
-        return dict(name=name.format(display=display), family="Thin Film",
-                    categories=["gamut-mapping"], encoding="display-linear",
-                    description=(f"{what}: {display} display-linear RGB in (any values), "
-                                 "display-linear RGB in [0, 1] out, luminance kept. Apply it "
-                                 "as a node, then encode for the display."),
-                    transform=transform)
 
-    out = [gamut_map(CLIP_NAMED_TRANSFORM, display,
-                     f"Smits & Meyer 1990 constant-lightness clip into {display} on its own",
-                     clip_named_transform(lut, inline=inline, luts=luts))
-           for display, lut in luts_by_display.items()]
+    def gamut_map(name, display, what, transform):
+        return dict(
+            name=name.format(display=display),
+            family="Thin Film",
+            categories=["gamut-mapping"],
+            encoding="display-linear",
+            description=(
+                f"{what}: {display} display-linear RGB in (any values), "
+                "display-linear RGB in [0, 1] out, luminance kept. Apply it "
+                "as a node, then encode for the display."
+            ),
+            transform=transform,
+        )
+
+    out = [
+        gamut_map(
+            CLIP_NAMED_TRANSFORM,
+            display,
+            f"Smits & Meyer 1990 constant-lightness clip into {display} on its own",
+            clip_named_transform(lut, inline=inline, luts=luts),
+        )
+        for display, lut in luts_by_display.items()
+    ]
     for display, soft in (compress_by_display or {}).items():
         t, lim, _ = soft.parameters
-        out.append(gamut_map(COMPRESS_NAMED_TRANSFORM, display,
-                             f"Soft constant-lightness compression into {display} on its own "
-                             f"(threshold {t:g}, limit {lim:g})",
-                             compress_named_transform(soft, inline=inline, luts=luts)))
+        out.append(
+            gamut_map(
+                COMPRESS_NAMED_TRANSFORM,
+                display,
+                f"Soft constant-lightness compression into {display} on its own "
+                f"(threshold {t:g}, limit {lim:g})",
+                compress_named_transform(soft, inline=inline, luts=luts),
+            )
+        )
     for space in registry.THIN_FILM_LIST:
         table = named_lut(space.lut_stem)
-        out.append(dict(
-            name=TABLE_NAMED_TRANSFORM.format(space=space.name), family="Thin Film",
-            categories=["thin-film"], encoding="scene-linear",
-            description=(f"The {space.name} table on its own: pixel value in (all channels "
-                         "equal, as for the colour space of that name), unclipped CIE XYZ "
-                         "(D65, perfect reflector Y = 1) out."),
-            transform=_lut_reference(table, luts, inline)))
+        out.append(
+            dict(
+                name=TABLE_NAMED_TRANSFORM.format(space=space.name),
+                family="Thin Film",
+                categories=["thin-film"],
+                encoding="scene-linear",
+                description=(
+                    f"The {space.name} table on its own: pixel value in (all channels "
+                    "equal, as for the colour space of that name), unclipped CIE XYZ "
+                    "(D65, perfect reflector Y = 1) out."
+                ),
+                transform=_lut_reference(table, luts, inline),
+            )
+        )
     return out
 
 

@@ -3,8 +3,12 @@
 
 from __future__ import annotations
 
-__all__ = ["colorspace_factory", "view_transform_factory", "named_transform_factory",
-           "file_transform"]
+__all__ = [
+    "colorspace_factory",
+    "view_transform_factory",
+    "named_transform_factory",
+    "file_transform",
+]
 
 
 def file_transform(filename):
@@ -25,9 +29,18 @@ def _reference_space(name):
     return ocio.REFERENCE_SPACE_DISPLAY if name == "display" else ocio.REFERENCE_SPACE_SCENE
 
 
-def colorspace_factory(name, family="", encoding="", categories=(), description="",
-                       to_reference=None, from_reference=None, is_data=False, aliases=(),
-                       reference_space="scene"):
+def colorspace_factory(
+    name,
+    family="",
+    encoding="",
+    categories=(),
+    description="",
+    to_reference=None,
+    from_reference=None,
+    is_data=False,
+    aliases=(),
+    reference_space="scene",
+):
     """One ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES)."""
     import PyOpenColorIO as ocio
 
@@ -49,8 +62,9 @@ def colorspace_factory(name, family="", encoding="", categories=(), description=
     return cs
 
 
-def view_transform_factory(name, family="", description="", from_reference=None,
-                           reference_space="scene"):
+def view_transform_factory(
+    name, family="", description="", from_reference=None, reference_space="scene"
+):
     """One ``PyOpenColorIO.ViewTransform`` from data."""
     import PyOpenColorIO as ocio
 
@@ -63,8 +77,7 @@ def view_transform_factory(name, family="", description="", from_reference=None,
     return vt
 
 
-def named_transform_factory(name, transform, family="", description="", categories=(),
-                            encoding=""):
+def named_transform_factory(name, transform, family="", description="", categories=(), encoding=""):
     """One ``PyOpenColorIO.NamedTransform`` (forward direction) from data."""
     import PyOpenColorIO as ocio
 

@@ -19,8 +19,13 @@ from ocio_thinfilm.config.factories import (
 __all__ = ["generate_config"]
 
 
-def generate_config(data: ConfigData | None = None, *, validate: bool = True,
-                    search_path: str = LUT_DIRECTORY, working_dir: str | None = None):
+def generate_config(
+    data: ConfigData | None = None,
+    *,
+    validate: bool = True,
+    search_path: str = LUT_DIRECTORY,
+    working_dir: str | None = None,
+):
     """Build (and by default validate) the OCIO config from ``data``."""
     import PyOpenColorIO as ocio
 
@@ -47,8 +52,15 @@ def generate_config(data: ConfigData | None = None, *, validate: bool = True,
     for display, views in data.displays.items():
         for view in views:
             if "view_transform" in view:
-                config.addDisplayView(display, view["name"], view["view_transform"],
-                                      view["display_colorspace"], "", "", "")
+                config.addDisplayView(
+                    display,
+                    view["name"],
+                    view["view_transform"],
+                    view["display_colorspace"],
+                    "",
+                    "",
+                    "",
+                )
             else:
                 config.addDisplayView(display, view["name"], view["colorspace"], "")
     config.setActiveDisplays(", ".join(data.displays))
@@ -63,13 +75,12 @@ def generate_config(data: ConfigData | None = None, *, validate: bool = True,
         if rule["name"] == "Default":
             rules.setDefaultRuleColorSpace(rule["colorspace"])
             continue
-        rules.insertRule(position, rule["name"], rule["colorspace"], rule["pattern"],
-                         rule["extension"])
+        rules.insertRule(
+            position, rule["name"], rule["colorspace"], rule["pattern"], rule["extension"]
+        )
         position += 1
     config.setFileRules(rules)
     config.setInactiveColorSpaces("")
     if validate:
         config.validate()
     return config
-
-

@@ -53,16 +53,26 @@ from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
-__all__ = ["load_base", "interchange", "colorspace_transform", "match_displays", "merge_config",
-           "MERGED_VIEWS", "HOST_OCIO", "profile_readers"]
+__all__ = [
+    "load_base",
+    "interchange",
+    "colorspace_transform",
+    "match_displays",
+    "merge_config",
+    "MERGED_VIEWS",
+    "HOST_OCIO",
+    "profile_readers",
+]
 
 #: Hosts and the newest config profile their OCIO reads (an older OCIO refuses a newer
 #: profile outright): Debian's Blender 3.4 and OCIO tools, and Blender 3.x, are OCIO 2.1;
 #: PyPI's bpy 5.0 (Blender 5.0) is 2.4; OpenImageIO 3.2's oiiotool is 2.5; the VFX
 #: Reference Platform specifies OCIO 2.4 for CY2025 and 2.5 for CY2026.
-HOST_OCIO = (("Blender 3.x / Debian's OCIO 2.1 tools", (2, 1)),
-             ("VFX Reference Platform CY2025 / Blender 5.0", (2, 4)),
-             ("VFX Reference Platform CY2026 / OpenImageIO 3.2's oiiotool", (2, 5)))
+HOST_OCIO = (
+    ("Blender 3.x / Debian's OCIO 2.1 tools", (2, 1)),
+    ("VFX Reference Platform CY2025 / Blender 5.0", (2, 4)),
+    ("VFX Reference Platform CY2026 / OpenImageIO 3.2's oiiotool", (2, 5)),
+)
 
 
 def profile_readers(cfg) -> str:
@@ -77,13 +87,18 @@ def profile_readers(cfg) -> str:
     version = (cfg.getMajorVersion(), cfg.getMinorVersion())
     line = f"profile {version[0]}.{version[1]}: read by OCIO {version[0]}.{version[1]} and newer"
     refused = [f"{host} (OCIO {v[0]}.{v[1]})" for host, v in HOST_OCIO if v < version]
-    return line + (f"; not by {', '.join(refused)}" if refused
-                   else " (every host listed in the docs)")
+    return line + (
+        f"; not by {', '.join(refused)}" if refused else " (every host listed in the docs)"
+    )
 
 
 #: Views added to every matched display (Channel Clamp only where no Un-tone-mapped).
-MERGED_VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress",
-                "ACES Gamut Compression", "Channel Clamp")
+MERGED_VIEWS = (
+    "Constant-Lightness Clip",
+    "Constant-Lightness Compress",
+    "ACES Gamut Compression",
+    "Channel Clamp",
+)
 #: Minimum profile version: ACES_GamutComp13 and the LUT ops need 2.1.
 MIN_PROFILE = (2, 1)
 #: Tolerance of the display match, in code values for the white and the grey ramp and in
@@ -108,9 +123,11 @@ def colorspace_transform(cs, to_reference):
     """A colour space's transform to (or from) its reference, None for an identity
     (``cs``: a ``PyOpenColorIO.ColorSpace``)."""
     ocio = ocio_ops.module()
-    want, other = ((ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)
-                   if to_reference else
-                   (ocio.COLORSPACE_DIR_FROM_REFERENCE, ocio.COLORSPACE_DIR_TO_REFERENCE))
+    want, other = (
+        (ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)
+        if to_reference
+        else (ocio.COLORSPACE_DIR_FROM_REFERENCE, ocio.COLORSPACE_DIR_TO_REFERENCE)
+    )
     t = cs.getTransform(want)
     if t is not None:
         return t
@@ -141,35 +158,47 @@ def interchange(cfg):
     name = roles.get("cie_xyz_d65_interchange")
     cs = cfg.getColorSpace(name) if name else None
     if cs is None:
-        raise ValueError("the config has no cie_xyz_d65_interchange role (needed to place "
-                         "CIE-XYZ-D65 in it)")
+        raise ValueError(
+            "the config has no cie_xyz_d65_interchange role (needed to place CIE-XYZ-D65 in it)"
+        )
     if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY:
         vt_name = cfg.getDefaultViewTransformName() or (
-            next(iter(cfg.getViewTransformNames()), None))
+            next(iter(cfg.getViewTransformNames()), None)
+        )
         vt = cfg.getViewTransform(vt_name) if vt_name else None
         if vt is None or vt.getReferenceSpaceType() != ocio.REFERENCE_SPACE_SCENE:
-            raise ValueError(f"the cie_xyz_d65_interchange space {name!r} is "
-                             "display-referred and the config has no scene-referred "
-                             "default view transform to reach it")
-        scene_to_xyz = ocio_ops.group([_vt_from_scene(vt),
-                                       colorspace_transform(cs, to_reference=False)])
+            raise ValueError(
+                f"the cie_xyz_d65_interchange space {name!r} is "
+                "display-referred and the config has no scene-referred "
+                "default view transform to reach it"
+            )
+        scene_to_xyz = ocio_ops.group(
+            [_vt_from_scene(vt), colorspace_transform(cs, to_reference=False)]
+        )
         xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True)])
     else:
         scene_to_xyz = ocio_ops.group([colorspace_transform(cs, to_reference=False)])
         vt_name = cfg.getDefaultViewTransformName() or (
-            next(iter(cfg.getViewTransformNames()), None))
+            next(iter(cfg.getViewTransformNames()), None)
+        )
         if not vt_name:
             raise ValueError("the config has no view transform: no display reference")
-        xyz_to_display = ocio_ops.group([colorspace_transform(cs, to_reference=True),
-                                         _vt_from_scene(cfg.getViewTransform(vt_name))])
+        xyz_to_display = ocio_ops.group(
+            [
+                colorspace_transform(cs, to_reference=True),
+                _vt_from_scene(cfg.getViewTransform(vt_name)),
+            ]
+        )
     # it must be a colorimetric (linear) conversion, not a tone scale
     rng = np.random.default_rng(1)
     a, b = rng.uniform(0.0, 1.0, (2, 64, 3))
     for t in (scene_to_xyz, xyz_to_display):
         fa, fb, fab = (_apply(cfg, t, v) for v in (a, b, 0.5 * a + 0.25 * b))
         if not np.allclose(fab, 0.5 * fa + 0.25 * fb, atol=1e-5):
-            raise ValueError(f"the config's conversion to cie_xyz_d65_interchange ({name!r}) "
-                             "is not linear: cannot place CIE-XYZ-D65 in it")
+            raise ValueError(
+                f"the config's conversion to cie_xyz_d65_interchange ({name!r}) "
+                "is not linear: cannot place CIE-XYZ-D65 in it"
+            )
     return scene_to_xyz, xyz_to_display
 
 
@@ -182,8 +211,11 @@ def _display_colorspace(cfg, display):
         if name == "<USE_DISPLAY_NAME>":
             name = display
         cs = cfg.getColorSpace(name)
-        if (cs is not None and not cs.isData()
-                and cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY):
+        if (
+            cs is not None
+            and not cs.isData()
+            and cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY
+        ):
             return cs
     return None
 
@@ -199,8 +231,14 @@ def _match_gamut(cfg, xyz_to_display, cs):
     ramp = np.linspace(0.0, 1.0, 257)
     rng = np.random.default_rng(7)
     # colours whose channels sit on the ramp's nodes: primaries, secondaries, random
-    index = np.vstack([np.eye(3, dtype=int) * 256, np.eye(3, dtype=int) * 128,
-                       256 - np.eye(3, dtype=int) * 256, rng.integers(0, 257, (200, 3))])
+    index = np.vstack(
+        [
+            np.eye(3, dtype=int) * 256,
+            np.eye(3, dtype=int) * 128,
+            256 - np.eye(3, dtype=int) * 256,
+            rng.integers(0, 257, (200, 3)),
+        ]
+    )
     rgb = ramp[index]
     for display in clip.DISPLAYS:
         to_rgb = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display)).T
@@ -210,9 +248,12 @@ def _match_gamut(cfg, xyz_to_display, cs):
         except Exception:  # noqa: BLE001 -- a colour space that cannot process: no match
             return None
         curve = grey[:, 1]
-        if (np.abs(grey - curve[:, None]).max() > MATCH_TOLERANCE
-                or abs(curve[-1] - 1.0) > MATCH_TOLERANCE or abs(curve[0]) > MATCH_TOLERANCE
-                or np.any(np.diff(curve) <= 0)):
+        if (
+            np.abs(grey - curve[:, None]).max() > MATCH_TOLERANCE
+            or abs(curve[-1] - 1.0) > MATCH_TOLERANCE
+            or abs(curve[0]) > MATCH_TOLERANCE
+            or np.any(np.diff(curve) <= 0)
+        ):
             continue
         # compared display-linear (through the curve's inverse, exact at the nodes):
         # a steep encoding near black would magnify float round-off of a zero channel
@@ -240,8 +281,15 @@ def _match_hdr(cfg, xyz_to_display, cs):
     candidate's EOTF, must be that RGB times one luminance per unit (from the white)."""
     transform = ocio_ops.group([xyz_to_display, colorspace_transform(cs, to_reference=False)])
     rng = np.random.default_rng(7)
-    rgb = np.vstack([np.eye(3), 1.0 - np.eye(3), np.ones((1, 3)), np.linspace(0.05, 1, 8)[
-        :, None] * np.ones(3), rng.uniform(0.0, 1.0, (200, 3))])
+    rgb = np.vstack(
+        [
+            np.eye(3),
+            1.0 - np.eye(3),
+            np.ones((1, 3)),
+            np.linspace(0.05, 1, 8)[:, None] * np.ones(3),
+            rng.uniform(0.0, 1.0, (200, 3)),
+        ]
+    )
     for entry in registry.HDR_DISPLAY_LIST:
         to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(entry.gamut)).T
         try:
@@ -292,13 +340,17 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
-        raise ValueError(f"the config's profile version {version[0]}.{version[1]} is below "
-                         f"{MIN_PROFILE[0]}.{MIN_PROFILE[1]} (needed by the clip's LUT ops)")
+        raise ValueError(
+            f"the config's profile version {version[0]}.{version[1]} is below "
+            f"{MIN_PROFILE[0]}.{MIN_PROFILE[1]} (needed by the clip's LUT ops)"
+        )
     scene_to_xyz, xyz_to_display = interchange(base)
     matches, units = _matches(base)
     if not matches:
-        raise ValueError("the config has no SDR display with the primaries and white of "
-                         f"{', '.join(clip.DISPLAYS)} (or Rec.709)")
+        raise ValueError(
+            "the config has no SDR display with the primaries and white of "
+            f"{', '.join(clip.DISPLAYS)} (or Rec.709)"
+        )
     targets = {g for _, g in matches.values()}
     # one view transform per target: an HDR display of another luminance unit than the
     # first one matched to the same target is left alone
@@ -308,24 +360,28 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
             if unit_of.setdefault(target, units[display]) != units[display]:
                 del matches[display]
     views_for = [d for d in registry.ALL_DISPLAYS if d in targets]
-    gamuts = [d for d in clip.DISPLAYS
-              if d in {registry.gamut_of(g) for g in targets}]
+    gamuts = [d for d in clip.DISPLAYS if d in {registry.gamut_of(g) for g in targets}]
     data = config.config_data(clip_size=clip_size)
     by_display = config.clip_luts(clip_size)
     soft_by_display = config.compress_luts(clip_size)
     cfg = copy.deepcopy(base)
 
     def _taken(name):
-        return (cfg.getColorSpace(name) is not None or cfg.getViewTransform(name) is not None
-                or cfg.getNamedTransform(name) is not None)
+        return (
+            cfg.getColorSpace(name) is not None
+            or cfg.getViewTransform(name) is not None
+            or cfg.getNamedTransform(name) is not None
+        )
 
     # input spaces: table -> CIE-XYZ-D65 -> the config's scene reference
     spaces = [s for s in data.colorspaces if s["name"] in registry.THIN_FILM_SPACES]
     for spec in spaces:
         if _taken(spec["name"]):
             raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
-        spec = dict(spec, to_reference=ocio_ops.group([spec["to_reference"],
-                                                       ocio_ops.inverse([scene_to_xyz])]))
+        spec = dict(
+            spec,
+            to_reference=ocio_ops.group([spec["to_reference"], ocio_ops.inverse([scene_to_xyz])]),
+        )
         cfg.addColorSpace(config.colorspace_factory(**spec))
 
     # view transforms: scene reference -> CIE-XYZ-D65 -> the view -> display reference
@@ -335,18 +391,28 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
         gamut = registry.gamut_of(target)
         # HDR: the project's display reference has Y = 1 at 203 cd/m2, the base's
         # unit_of[target] cd/m2 (100 in the ACES configs)
-        to_base = ([ocio_ops.matrix(np.eye(3) * registry.HDR_REFERENCE_WHITE
-                                    / unit_of[target])] if target in unit_of else [])
+        to_base = (
+            [ocio_ops.matrix(np.eye(3) * registry.HDR_REFERENCE_WHITE / unit_of[target])]
+            if target in unit_of
+            else []
+        )
         for view in MERGED_VIEWS:
             spec = described[f"{view} - {target}"]
             if _taken(spec["name"]):
                 raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
-            parts = config.view_parts(target, view, lut=by_display[gamut], luts=data.luts,
-                                      compress=soft_by_display[gamut])
-            cfg.addViewTransform(config.view_transform_factory(
-                name=spec["name"], family=spec["family"], description=spec["description"],
-                from_reference=ocio_ops.group([scene_to_xyz, parts] + to_base
-                                              + [xyz_to_display])))
+            parts = config.view_parts(
+                target, view, lut=by_display[gamut], luts=data.luts, compress=soft_by_display[gamut]
+            )
+            cfg.addViewTransform(
+                config.view_transform_factory(
+                    name=spec["name"],
+                    family=spec["family"],
+                    description=spec["description"],
+                    from_reference=ocio_ops.group(
+                        [scene_to_xyz, parts] + to_base + [xyz_to_display]
+                    ),
+                )
+            )
     for display, (cs_name, gamut) in matches.items():
         views = list(base.getViews(display))
         for view in MERGED_VIEWS:
@@ -361,23 +427,27 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     if active:
         cfg.setActiveViews(", ".join(active + [v for v in added_views if v not in active]))
     # named transforms: the clip per gamut and the tables
-    for spec in config.named_transforms({g: by_display[g] for g in gamuts},
-                                        compress_by_display={g: soft_by_display[g]
-                                                             for g in gamuts}):
+    for spec in config.named_transforms(
+        {g: by_display[g] for g in gamuts},
+        compress_by_display={g: soft_by_display[g] for g in gamuts},
+    ):
         if _taken(spec["name"]):
             raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
         cfg.addNamedTransform(config.named_transform_factory(**spec))
     paths = list(cfg.getSearchPaths())
     if config.LUT_DIRECTORY not in paths:
         cfg.addSearchPath(config.LUT_DIRECTORY)
-    cfg.setDescription((base.getDescription().rstrip() + "\n\n" if base.getDescription()
-                        else "") + "Extended by ocio-thinfilm (`ocio-thinfilm bake --into`): "
-                        "thin-film input spaces, the constant-lightness clip views and "
-                        "named transforms.")
+    cfg.setDescription(
+        (base.getDescription().rstrip() + "\n\n" if base.getDescription() else "")
+        + "Extended by ocio-thinfilm (`ocio-thinfilm bake --into`): "
+        "thin-film input spaces, the constant-lightness clip views and "
+        "named transforms."
+    )
     names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
-    names += [config.named_lut(stem(g, w)) for g in gamuts
-              for stem in (registry.clip_lut_stem, registry.compress_lut_stem)
-              for w in (False, True)]
+    names += [
+        config.named_lut(stem(g, w))
+        for g in gamuts
+        for stem in (registry.clip_lut_stem, registry.compress_lut_stem)
+        for w in (False, True)
+    ]
     return cfg, {name: data.luts[name] for name in names}, matches
-
-

@@ -20,8 +20,16 @@ from ocio_thinfilm.export.files import FORMATS, lut_contents, progress_bar, writ
 from ocio_thinfilm.io import ParameterError, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut, tables
 
-__all__ = ["DEFAULT_CONFIG_DIR", "DEFAULT_LUTS_DIR", "CLIP_SIZES", "check_clip_size",
-           "write_config", "export_set", "EXPORT_SET_VIEWS", "bake"]
+__all__ = [
+    "DEFAULT_CONFIG_DIR",
+    "DEFAULT_LUTS_DIR",
+    "CLIP_SIZES",
+    "check_clip_size",
+    "write_config",
+    "export_set",
+    "EXPORT_SET_VIEWS",
+    "bake",
+]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
 DEFAULT_LUTS_DIR = "luts"
@@ -34,11 +42,12 @@ def check_clip_size(clip_size) -> int:
     :class:`~ocio_thinfilm.io.ParameterError` naming it."""
     lo, hi = CLIP_SIZES
     if isinstance(clip_size, bool) or not isinstance(clip_size, numbers.Integral):
-        raise TypeError(f"clip_size must be an integer in [{lo}, {hi}], got {clip_size!r} "
-                        f"({type(clip_size).__name__})")
+        raise TypeError(
+            f"clip_size must be an integer in [{lo}, {hi}], got {clip_size!r} "
+            f"({type(clip_size).__name__})"
+        )
     if not lo <= clip_size <= hi:
-        raise ParameterError("clip_size", f" must be an integer in [{lo}, {hi}], "
-                                          f"got {clip_size!r}")
+        raise ParameterError("clip_size", f" must be an integer in [{lo}, {hi}], got {clip_size!r}")
     return int(clip_size)
 
 
@@ -72,9 +81,12 @@ def _legacy_luts(directory):
     exts = {"." + spec[1] for spec in FORMATS.values()}
     owned = set()
     for entry in Path(directory).iterdir():
-        if not (entry.is_file() and not entry.is_symlink() and entry.suffix in exts
-                and entry.name.startswith(("ThinFilm_", "ConstantLightnessClip_",
-                                           "ACEScct_to_"))):
+        if not (
+            entry.is_file()
+            and not entry.is_symlink()
+            and entry.suffix in exts
+            and entry.name.startswith(("ThinFilm_", "ConstantLightnessClip_", "ACEScct_to_"))
+        ):
             return None
         owned.add(entry.name)
     return owned
@@ -85,9 +97,14 @@ def _check_staged_clfs(directory, final):
         check_xml(path, Path(final) / path.relative_to(directory))
 
 
-def write_config(directory, *, clip_size: int = clip_lut.CLIP_SIZE,
-                 film_size: int = tables.FILM_SIZE, morpho_size: int = tables.MORPHO_SIZE,
-                 progress=None) -> Path:
+def write_config(
+    directory,
+    *,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    film_size: int = tables.FILM_SIZE,
+    morpho_size: int = tables.MORPHO_SIZE,
+    progress=None,
+) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
     ``progress``: optional callable ``progress(step_name)`` called once per file.
@@ -97,13 +114,13 @@ def write_config(directory, *, clip_size: int = clip_lut.CLIP_SIZE,
     import PyOpenColorIO as ocio
 
     directory = Path(directory)
-    data = config.config_data(clip_size=clip_size, film_size=film_size,
-                              morpho_size=morpho_size)
+    data = config.config_data(clip_size=clip_size, film_size=film_size, morpho_size=morpho_size)
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
     raw = ocio.Config.CreateRaw()
     for filename, transform in sorted(data.luts.items()):
-        transform.write("Academy/ASC Common LUT Format",
-                        str(directory / config.LUT_DIRECTORY / filename), raw)
+        transform.write(
+            "Academy/ASC Common LUT Format", str(directory / config.LUT_DIRECTORY / filename), raw
+        )
         if progress:
             progress(filename)
     cfg = config.generate_config(data, validate=False, working_dir=directory)
@@ -142,8 +159,12 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
         # (the clip over display-linear RGB, `export clip`, is not shipped: a grid over
         # linear RGB cannot resolve dark saturated colours; the display LUTs below are
         # what to take)
-    views = [(source, display, view, fmt) for source, view, fmts in EXPORT_SET_VIEWS
-             for display in clip.DISPLAYS for fmt in fmts]
+    views = [
+        (source, display, view, fmt)
+        for source, view, fmts in EXPORT_SET_VIEWS
+        for display in clip.DISPLAYS
+        for fmt in fmts
+    ]
     written = []
     bar = progress_bar(show_progress, total=len(jobs) + len(views), desc="export luts")
     cache = {}
@@ -159,8 +180,9 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
             bar.update(1)
     for source, display, view, fmt in views:
         name = export_view.set_name(source, display, view) + "." + fmt
-        written += export_view.export_view(source, display, view, Path(directory) / name,
-                                           size=export_view.DEFAULT_VIEW_SIZE)
+        written += export_view.export_view(
+            source, display, view, Path(directory) / name, size=export_view.DEFAULT_VIEW_SIZE
+        )
         if bar:
             bar.update(1)
     if bar:
@@ -168,8 +190,9 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
     return written
 
 
-def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=False,
-         luts=None) -> Path:
+def bake(
+    out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=False, luts=None
+) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) to ``out`` and, with
     ``luts``, the standalone LUT set (:func:`export_set`) to that directory.
 
@@ -187,16 +210,20 @@ def bake(out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=
         luts_claim = claim_directory(luts, parameter="luts", legacy=_legacy_luts)
         a, b = luts_claim.path.resolve(), claim.path.resolve()
         if a == b or a in b.parents or b in a.parents:
-            raise ParameterError("luts", f" {luts}: must not be, contain or lie inside the "
-                                         f"output directory {out}")
+            raise ParameterError(
+                "luts", f" {luts}: must not be, contain or lie inside the output directory {out}"
+            )
     n_files = len(registry.THIN_FILM_LIST) + 2 * len(registry.DISPLAYS) + 1  # 2 clip LUTs each
     bar = progress_bar(show_progress, total=n_files, desc=f"bake {claim.path}")
     try:
         with transaction() as tx:
             stage = tx.directory(claim)
             try:
-                write_config(stage, clip_size=int(clip_size),
-                                    progress=(lambda name: bar.update(1)) if bar else None)
+                write_config(
+                    stage,
+                    clip_size=int(clip_size),
+                    progress=(lambda name: bar.update(1)) if bar else None,
+                )
             except OSError as error:
                 raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None
             except Exception:

@@ -46,8 +46,16 @@ from ocio_thinfilm.io import ParameterError, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm.physics.sampling import as_pair, as_real
 
-__all__ = ["FORMATS", "TABLES", "DEFAULT_SIZE", "DEFAULT_RANGE", "lut_contents", "write_lut",
-           "export_lut", "progress_bar"]
+__all__ = [
+    "FORMATS",
+    "TABLES",
+    "DEFAULT_SIZE",
+    "DEFAULT_RANGE",
+    "lut_contents",
+    "write_lut",
+    "export_lut",
+    "progress_bar",
+]
 
 #: Format name -> (OCIO writer format, file extension, LUT dimensions it can hold).
 FORMATS = {
@@ -76,15 +84,17 @@ def _validate(table, kind, display, index, value_range, size, fmt):
     dims = 3 if table == "clip" else 1
     if dims not in FORMATS[fmt][2]:
         allowed = [f for f, spec in FORMATS.items() if dims in spec[2]]
-        raise ValueError(f"format {fmt} cannot hold a {dims}D LUT; for {table} use "
-                         f"{', '.join(allowed)}")
+        raise ValueError(
+            f"format {fmt} cannot hold a {dims}D LUT; for {table} use {', '.join(allowed)}"
+        )
     if display is not None and display not in clip.DISPLAYS:
         raise ValueError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
     if table == "clip" and display is None:
         raise ParameterError("display", " is required for the clip (the gamut to clip into)")
     if kind not in colorimetry.FILM_KINDS:
-        raise ValueError(f"unknown film kind {kind!r}; choose from "
-                         f"{', '.join(colorimetry.FILM_KINDS)}")
+        raise ValueError(
+            f"unknown film kind {kind!r}; choose from {', '.join(colorimetry.FILM_KINDS)}"
+        )
     if index is not None:
         index = as_real("index", index)
         if table != "film":
@@ -98,8 +108,9 @@ def _validate(table, kind, display, index, value_range, size, fmt):
         raise ParameterError("size", f" must be in [2, {MAX_SIZE[table]}] for {table}, got {size}")
     lo, hi = DEFAULT_RANGE[table] if value_range is None else as_pair("value_range", value_range)
     if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
-        raise ParameterError("value_range", f" must be two finite numbers MIN < MAX, "
-                                            f"got {lo:g} {hi:g}")
+        raise ParameterError(
+            "value_range", f" must be two finite numbers MIN < MAX, got {lo:g} {hi:g}"
+        )
     if table == "film" and lo < 0:
         raise ParameterError("value_range", f": thickness must not be negative, got {lo:g}")
     if table == "morpho" and (lo < 0 or hi > 1):
@@ -107,13 +118,16 @@ def _validate(table, kind, display, index, value_range, size, fmt):
     if table == "clip" and (lo > 0 or hi < 1):
         raise ParameterError("value_range", f" must contain [0, 1] for clip, got {lo:g} {hi:g}")
     if table == "film" and hi > 1000:
-        raise ParameterError("value_range", f": thickness above 1000 um is the incoherent grey; "
-                                            f"got {hi:g}")
+        raise ParameterError(
+            "value_range", f": thickness above 1000 um is the incoherent grey; got {hi:g}"
+        )
     if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
         usable = [f for f in FORMATS if f not in NO_DOMAIN and dims in FORMATS[f][2]]
-        raise ValueError(f"format {fmt} has no input domain (it always takes 0..1), so it "
-                         f"cannot take {table} input over {lo:g}..{hi:g}; use "
-                         f"{', '.join(usable)}")
+        raise ValueError(
+            f"format {fmt} has no input domain (it always takes 0..1), so it "
+            f"cannot take {table} input over {lo:g}..{hi:g}; use "
+            f"{', '.join(usable)}"
+        )
     return size, (float(lo), float(hi))
 
 
@@ -132,8 +146,16 @@ def _stem(table, kind, display, index):
     return stem
 
 
-def lut_contents(table, *, kind="phase-change", display=None, index=None, value_range=None,
-                 size=None, progress=None):
+def lut_contents(
+    table,
+    *,
+    kind="phase-change",
+    display=None,
+    index=None,
+    value_range=None,
+    size=None,
+    progress=None,
+):
     """(values array, LUT transform, metadata dict) for one standalone LUT.
 
     ``values``: (size, 3) or (size, size, size, 3), on the uniform grid over the
@@ -152,32 +174,40 @@ def _contents(table, kind, display, index, value_range, size, progress):
         chunks = np.array_split(x, max(1, size // 8192))
         parts = []
         for chunk in chunks:
-            parts.append(colorimetry.film_XYZ(chunk * n * 1000.0, kind,
-                                              step=tables.SPECTRAL_STEP))
+            parts.append(colorimetry.film_XYZ(chunk * n * 1000.0, kind, step=tables.SPECTRAL_STEP))
             if progress:
                 progress(len(chunk) / size)
         values = np.concatenate(parts)
-        what = (f"physical thickness t in um (t' = {n:g} t)" if index is not None
-                else "optical thickness t' = n t cos(theta_t) in um")
-        description = (f"Smits & Meyer 1990 {kind} thin film, {size} entries uniform over "
-                       f"{lo:g}-{hi:g} um")
+        what = (
+            f"physical thickness t in um (t' = {n:g} t)"
+            if index is not None
+            else "optical thickness t' = n t cos(theta_t) in um"
+        )
+        description = (
+            f"Smits & Meyer 1990 {kind} thin film, {size} entries uniform over {lo:g}-{hi:g} um"
+        )
     elif table == "morpho":
-        values = colorimetry.morpho_XYZ(np.degrees(np.arccos(np.clip(x, 0.0, 1.0))),
-                                        step=tables.SPECTRAL_STEP)
+        values = colorimetry.morpho_XYZ(
+            np.degrees(np.arccos(np.clip(x, 0.0, 1.0))), step=tables.SPECTRAL_STEP
+        )
         if progress:
             progress(1.0)
         what = "cos(theta), the facing ratio N.V"
-        description = (f"Smits & Meyer 1990 Morpho multilayer (Eq. 9 + 14), {size} entries "
-                       f"uniform over cos(theta) {lo:g}-{hi:g}")
+        description = (
+            f"Smits & Meyer 1990 Morpho multilayer (Eq. 9 + 14), {size} entries "
+            f"uniform over cos(theta) {lo:g}-{hi:g}"
+        )
     else:
         g = np.stack(np.meshgrid(x, x, x, indexing="ij"), axis=-1)
         values = clip.clip_RGB(g, display)
         if progress:
             progress(1.0)
         what = f"{display} display-linear RGB"
-        description = (f"Smits & Meyer 1990 constant-lightness clip into {display} "
-                       f"(Section 3.2), {size}^3 tetrahedral LUT3D over display-linear RGB "
-                       f"{lo:g}..{hi:g} per channel")
+        description = (
+            f"Smits & Meyer 1990 constant-lightness clip into {display} "
+            f"(Section 3.2), {size}^3 tetrahedral LUT3D over display-linear RGB "
+            f"{lo:g}..{hi:g} per channel"
+        )
     if table != "clip":
         if display is None:
             output = "CIE-XYZ-D65 (perfect reflector Y = 1), unclipped"
@@ -189,9 +219,15 @@ def _contents(table, kind, display, index, value_range, size, progress):
     else:
         output = f"{display} display-linear RGB, constant-lightness clipped"
         lut = ocio_ops.lut3d_transform(values)
-    meta = dict(name=_stem(table, kind, display, index), input=what, output=output,
-                description=description, range=(lo, hi), size=size,
-                id=ocio_ops.transform_id("Export", _stem(table, kind, display, index)))
+    meta = dict(
+        name=_stem(table, kind, display, index),
+        input=what,
+        output=output,
+        description=description,
+        range=(lo, hi),
+        size=size,
+        id=ocio_ops.transform_id("Export", _stem(table, kind, display, index)),
+    )
     return values, lut, meta
 
 
@@ -217,13 +253,16 @@ def _baker_config(lut, lo, hi):
     config.addColorSpace(ref)
     out = ocio.ColorSpace()
     out.setName("output")
-    out.setTransform(ocio_ops.group([ocio_ops.matrix(np.eye(3) / span, [-lo / span] * 3), lut]),
-                     ocio.COLORSPACE_DIR_FROM_REFERENCE)
+    out.setTransform(
+        ocio_ops.group([ocio_ops.matrix(np.eye(3) / span, [-lo / span] * 3), lut]),
+        ocio.COLORSPACE_DIR_FROM_REFERENCE,
+    )
     config.addColorSpace(out)
     domain = ocio.ColorSpace()
     domain.setName("domain")
-    domain.setTransform(ocio_ops.matrix(np.eye(3) * span, [lo] * 3),
-                        ocio.COLORSPACE_DIR_TO_REFERENCE)
+    domain.setTransform(
+        ocio_ops.matrix(np.eye(3) * span, [lo] * 3), ocio.COLORSPACE_DIR_TO_REFERENCE
+    )
     config.addColorSpace(domain)
     config.setRole("scene_linear", "input")
     return config
@@ -253,17 +292,24 @@ def write_lut(path, fmt, values, lut, meta):
             if (lo, hi) != (0.0, 1.0):
                 ops.append(ocio_ops.matrix(np.eye(3) / span, [-lo / span] * 3))
             ops.append(lut)
-            g = ocio_ops.group(ops, name=meta["name"], id=meta["id"],
-                               description=meta["description"],
-                               input_descriptor=meta["input"], output_descriptor=meta["output"])
+            g = ocio_ops.group(
+                ops,
+                name=meta["name"],
+                id=meta["id"],
+                description=meta["description"],
+                input_descriptor=meta["input"],
+                output_descriptor=meta["output"],
+            )
             g.write(writer, str(tmp), ocio.Config.CreateRaw())
         else:
             baker = ocio.Baker()
             baker.setConfig(_baker_config(lut, lo, hi))
             baker.setFormat(writer)
             baker.getFormatMetadata().addChildElement(
-                "Description", f"{meta['name']}: input {meta['input']}, {lo:g}..{hi:g} "
-                               f"(the value itself); output {meta['output']}")
+                "Description",
+                f"{meta['name']}: input {meta['input']}, {lo:g}..{hi:g} "
+                f"(the value itself); output {meta['output']}",
+            )
             baker.setInputSpace("input")
             baker.setTargetSpace("output")
             size = meta["size"]
@@ -276,8 +322,18 @@ def write_lut(path, fmt, values, lut, meta):
     return path
 
 
-def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, index=None,
-               value_range=None, size=None, show_progress=False) -> Path:
+def export_lut(
+    table,
+    out=None,
+    *,
+    fmt=None,
+    kind="phase-change",
+    display=None,
+    index=None,
+    value_range=None,
+    size=None,
+    show_progress=False,
+) -> Path:
     """Compute and write one standalone LUT; returns the path written."""
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
@@ -289,8 +345,9 @@ def export_lut(table, out=None, *, fmt=None, kind="phase-change", display=None, 
     out = check_output_file(out)
     bar = progress_bar(show_progress, total=1.0, desc=f"export {out.name}")
     try:
-        values, lut, meta = _contents(table, kind, display, index, value_range, size,
-                                      bar.update if bar else None)
+        values, lut, meta = _contents(
+            table, kind, display, index, value_range, size, bar.update if bar else None
+        )
         write_lut(out, fmt, values, lut, meta)
     finally:
         if bar:
@@ -305,6 +362,12 @@ def progress_bar(show, total, desc):
         return None
     from tqdm import tqdm
 
-    return tqdm(total=total, desc=desc, unit="" if isinstance(total, int) else "",
-                leave=False, file=sys.stderr, mininterval=0.2,
-                bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}")
+    return tqdm(
+        total=total,
+        desc=desc,
+        unit="" if isinstance(total, int) else "",
+        leave=False,
+        file=sys.stderr,
+        mininterval=0.2,
+        bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}",
+    )

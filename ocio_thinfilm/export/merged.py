@@ -36,6 +36,7 @@ def _copy_base_files(base, source, directory):
         if src.is_dir() and src.resolve() != root and not dst.exists():
             shutil.copytree(src, dst)
 
+
 def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
     """Write the merged config (``config.ocio``, ``luts/``) into the existing
     ``directory``; returns (config path, display matches)."""
@@ -47,14 +48,19 @@ def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
     raw = ocio.Config.CreateRaw()
     for filename, transform in sorted(luts.items()):
-        transform.write("Academy/ASC Common LUT Format",
-                        str(directory / config.LUT_DIRECTORY / filename), raw)
+        transform.write(
+            "Academy/ASC Common LUT Format", str(directory / config.LUT_DIRECTORY / filename), raw
+        )
     cfg.setWorkingDir(str(directory))
     cfg.validate()
     for display in matches:
         for view in cfg.getViews(display):
-            cfg.getProcessor(dict(cfg.getRoles())["cie_xyz_d65_interchange"], display, view,
-                             ocio.TRANSFORM_DIR_FORWARD)
+            cfg.getProcessor(
+                dict(cfg.getRoles())["cie_xyz_d65_interchange"],
+                display,
+                view,
+                ocio.TRANSFORM_DIR_FORWARD,
+            )
     for name in cfg.getNamedTransformNames():
         cfg.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD)
     path = directory / "config.ocio"
@@ -62,17 +68,20 @@ def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
     path.write_text(text if text.endswith("\n") else text + "\n")
     return path, matches
 
+
 def write_archive(config_path, out):
     """Archive the config folder of ``config_path`` as ``out`` (``.ocioz``, OCIO >= 2.2
     to read), atomically."""
     ocio = ocio_ops.module()
     cfg = ocio.Config.CreateFromFile(str(config_path))
     if not cfg.isArchivable():
-        raise ValueError(f"{config_path}: not archivable (absolute or parent search paths "
-                         "or LUT paths)")
+        raise ValueError(
+            f"{config_path}: not archivable (absolute or parent search paths or LUT paths)"
+        )
     with atomic_file(Path(out)) as tmp:
         cfg.archive(str(tmp))
     return Path(out)
+
 
 def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
     """``ocio-thinfilm bake --into SOURCE --out OUT``: a folder or an ``.ocioz``."""
@@ -87,6 +96,7 @@ def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
     with atomic_directory(out) as tmp:
         write_merged(source, tmp, clip_size=clip_size)
     return out / "config.ocio"
+
 
 def bake_archive(out, *, clip_size=clip_lut.CLIP_SIZE):
     """``ocio-thinfilm bake --out thinfilm.ocioz``: the project's config as an archive."""

@@ -74,8 +74,17 @@ from ocio_thinfilm.io import ParameterError, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics.sampling import as_pair
 
-__all__ = ["VIEW_FORMATS", "DEFAULT_VIEW_SIZE", "SHAPER_SIZE", "LINEAR_SIBLING",
-           "PLAIN_INPUTS", "THIN_FILM_INPUTS", "shaper_domain", "view_config", "export_view"]
+__all__ = [
+    "VIEW_FORMATS",
+    "DEFAULT_VIEW_SIZE",
+    "SHAPER_SIZE",
+    "LINEAR_SIBLING",
+    "PLAIN_INPUTS",
+    "THIN_FILM_INPUTS",
+    "shaper_domain",
+    "view_config",
+    "export_view",
+]
 
 #: Format -> OCIO writer name. ``.spi1d`` only for the 1D (thin-film) inputs.
 VIEW_FORMATS = {
@@ -109,9 +118,14 @@ LINEAR_SIBLING = {
 #: is asked for.
 PLAIN_INPUTS = ("ACEScct",)
 #: colorimetry name of each linear sibling.
-_COLORIMETRY = {"CIE-XYZ-D65": "CIE-XYZ-D65", "ACES2065-1": "ACES2065-1", "ACEScg": "ACEScg",
-                "Linear Rec.709 (sRGB)": "Rec.709", "Linear P3-D65": "Display P3",
-                "Linear Rec.2020": "Rec.2020"}
+_COLORIMETRY = {
+    "CIE-XYZ-D65": "CIE-XYZ-D65",
+    "ACES2065-1": "ACES2065-1",
+    "ACEScg": "ACEScg",
+    "Linear Rec.709 (sRGB)": "Rec.709",
+    "Linear P3-D65": "Display P3",
+    "Linear Rec.2020": "Rec.2020",
+}
 #: Thin-film input spaces -> (what the pixel is, default range, default size).
 THIN_FILM_INPUTS = {
     "Thin Film Phase-Change Thickness": ("optical thickness t' in um", (0.0, 1.5), 4096),
@@ -129,8 +143,7 @@ NO_NEGATIVE_SHAPER = ("ACEScg",)
 # --------------------------------------------------------------------------- #
 # The shaper
 # --------------------------------------------------------------------------- #
-def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE,
-                  display: str | None = None):
+def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None):
     """(lo, hi) of the shaper over ``linear_space`` (one of :data:`LINEAR_SIBLING`'s
     values), the same for the three channels so that every grid node on the diagonal
     is a neutral (greys stay grey under tetrahedral interpolation): it covers the
@@ -148,8 +161,11 @@ def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE,
     lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
     if linear_space in NO_NEGATIVE_SHAPER:
         lo = 0.0
-    least = SHAPER_MIN_HI * (registry.hdr_display(display).scale
-                             if display is not None and registry.is_hdr(display) else 1.0)
+    least = SHAPER_MIN_HI * (
+        registry.hdr_display(display).scale
+        if display is not None and registry.is_hdr(display)
+        else 1.0
+    )
     hi = max(least, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
     return ocio_ops.quantize(lo, 6), ocio_ops.quantize(hi, 6)
 
@@ -186,8 +202,10 @@ def view_config(source: str, size: int = DEFAULT_VIEW_SIZE, display: str | None 
     cs = ocio.ColorSpace()
     cs.setName(SHAPER_SPACE)
     cs.setFamily("Utility")
-    cs.setDescription(f"Shaper for {source}: per channel of {sibling}, "
-                      f"sign(x)|x|^(1/2) from {lo:.6g}..{hi:.6g} onto 0..1")
+    cs.setDescription(
+        f"Shaper for {source}: per channel of {sibling}, "
+        f"sign(x)|x|^(1/2) from {lo:.6g}..{hi:.6g} onto 0..1"
+    )
     cs.setTransform(ocio_ops.group(parts), ocio.COLORSPACE_DIR_TO_REFERENCE)
     cfg.addColorSpace(cs)
     return cfg, SHAPER_SPACE
@@ -201,12 +219,16 @@ def _cube_shaper(source, fmt, shaper):
     if shaper is None:
         return source not in PLAIN_INPUTS
     if fmt != "cube":
-        raise ParameterError("shaper", f" applies to .cube files, not .{fmt} (its "
-                                       "shaper is part of the format)")
+        raise ParameterError(
+            "shaper", f" applies to .cube files, not .{fmt} (its shaper is part of the format)"
+        )
     if not shaper and source not in PLAIN_INPUTS:
-        raise ParameterError("shaper", f"=False (a plain .cube) needs an input whose values "
-                                       f"lie in [0, 1] ({', '.join(PLAIN_INPUTS)}); {source} "
-                                       "takes the Resolve form")
+        raise ParameterError(
+            "shaper",
+            f"=False (a plain .cube) needs an input whose values "
+            f"lie in [0, 1] ({', '.join(PLAIN_INPUTS)}); {source} "
+            "takes the Resolve form",
+        )
     return bool(shaper)
 
 
@@ -219,11 +241,11 @@ def _validate(source, display, view, size, fmt, value_range):
     if source not in spaces:
         raise ValueError(f"unknown colour space {source!r}; choose from {', '.join(spaces)}")
     if display is None:
-        raise ParameterError("display",
-                             f" is needed: one of {', '.join(registry.ALL_DISPLAYS)}")
+        raise ParameterError("display", f" is needed: one of {', '.join(registry.ALL_DISPLAYS)}")
     if display not in registry.ALL_DISPLAYS:
-        raise ValueError(f"unknown display {display!r}; choose from "
-                         f"{', '.join(registry.ALL_DISPLAYS)}")
+        raise ValueError(
+            f"unknown display {display!r}; choose from {', '.join(registry.ALL_DISPLAYS)}"
+        )
     if view is None:
         raise ParameterError("view", f" is needed: one of {', '.join(registry.VIEWS)}")
     if view not in registry.VIEWS:
@@ -236,29 +258,35 @@ def _validate(source, display, view, size, fmt, value_range):
     if one_d:
         what, default_range, default_size = THIN_FILM_INPUTS[source]
         if fmt in ("csp", "spi3d"):
-            raise ValueError(f"{source} takes one value per pixel, a 1D LUT: use cube, "
-                             f"spi1d or clf (format {fmt} holds only 3D LUTs)")
+            raise ValueError(
+                f"{source} takes one value per pixel, a 1D LUT: use cube, "
+                f"spi1d or clf (format {fmt} holds only 3D LUTs)"
+            )
         lo, hi = default_range if value_range is None else as_pair("value_range", value_range)
         if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
-            raise ParameterError("value_range", f" must be two finite numbers MIN < MAX, "
-                                                f"got {lo:g} {hi:g}")
+            raise ParameterError(
+                "value_range", f" must be two finite numbers MIN < MAX, got {lo:g} {hi:g}"
+            )
         if lo < 0 or (source == "Thin Film Morpho Iridescence" and hi > 1) or hi > 100:
-            raise ParameterError("value_range", f" for {source} ({what}) must lie in "
-                                                f"{'0..1' if 'Morpho' in source else '0..100'}, "
-                                                f"got {lo:g} {hi:g}")
+            raise ParameterError(
+                "value_range",
+                f" for {source} ({what}) must lie in "
+                f"{'0..1' if 'Morpho' in source else '0..100'}, "
+                f"got {lo:g} {hi:g}",
+            )
         size = default_size if size is None else size
         if not 2 <= size <= 1 << 20:
             raise ParameterError("size", f" must be in [2, {1 << 20}] for a 1D LUT, got {size}")
         return size, (float(lo), float(hi))
     if value_range is not None:
-        raise ParameterError("value_range", " applies to the thin-film inputs only (3D LUTs "
-                                            "carry their own domain)")
+        raise ParameterError(
+            "value_range", " applies to the thin-film inputs only (3D LUTs carry their own domain)"
+        )
     if fmt == "spi1d":
         raise ValueError(f"{source} needs a 3D LUT: use cube, csp, clf, ctf or spi3d")
     size = DEFAULT_VIEW_SIZE if size is None else size
     if not 2 <= size <= MAX_VIEW_SIZE:
-        raise ParameterError("size", f" must be in [2, {MAX_VIEW_SIZE}] for a 3D LUT, "
-                                     f"got {size}")
+        raise ParameterError("size", f" must be in [2, {MAX_VIEW_SIZE}] for a 3D LUT, got {size}")
     return size, None
 
 
@@ -269,8 +297,10 @@ def _stem(source, display, view):
 def set_name(source, display, view):
     """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``,
     ``ACEScct_to_Rec2020_ChannelClamp``."""
+
     def clean(text):
         return "".join(c for c in text if c.isalnum())
+
     return f"{clean(source)}_to_{clean(display)}_{clean(view)}"
 
 
@@ -278,12 +308,16 @@ def set_name(source, display, view):
 # Writing
 # --------------------------------------------------------------------------- #
 def _description(source, display, view, size, shaper, baked):
-    text = (f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
-            f"pixel values of {source}; output: {display} display code values.")
+    text = (
+        f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
+        f"pixel values of {source}; output: {display} display code values."
+    )
     if shaper:
         lo, hi = shaper_domain(LINEAR_SIBLING[source], size, display)
-        text += (f" Shaper: sign(x)|x|^(1/2) per channel of linear "
-                 f"{LINEAR_SIBLING[source]} over {lo:.6g}..{hi:.6g} (clamped beyond).")
+        text += (
+            f" Shaper: sign(x)|x|^(1/2) per channel of linear "
+            f"{LINEAR_SIBLING[source]} over {lo:.6g}..{hi:.6g} (clamped beyond)."
+        )
     if baked:
         text += f" 3D LUT {size}^3, tetrahedral."
     return text
@@ -295,23 +329,28 @@ def _cube_title(source, display, view, size, shaper):
     comment, because OCIO's Resolve .cube parser refuses ``TITLE`` ("Unsupported tag",
     OCIO 2.6) and that parser is the only one of OCIO's that reads the shaper."""
     if shaper:
-        return (f"# {source} to {display} {view}, {size}^3: Resolve form, a 1D shaper + "
-                "3D LUT (ffmpeg, OBS and other readers that ignore the shaper need the "
-                "plain form)")
-    return (f'TITLE "{source} to {display} {view}, {size}^3 (plain 3D LUT over 0..1, '
-            'read alike by every .cube reader)"')
-
+        return (
+            f"# {source} to {display} {view}, {size}^3: Resolve form, a 1D shaper + "
+            "3D LUT (ffmpeg, OBS and other readers that ignore the shaper need the "
+            "plain form)"
+        )
+    return (
+        f'TITLE "{source} to {display} {view}, {size}^3 (plain 3D LUT over 0..1, '
+        'read alike by every .cube reader)"'
+    )
 
 
 def _metadata(source, display, view):
     stem = _stem(source, display, view)
-    return dict(name=stem, id=ocio_ops.transform_id("Display_View", stem),
-                input=f"{source}: raw pixel values",
-                output=f"{display} display code values ({view})")
+    return dict(
+        name=stem,
+        id=ocio_ops.transform_id("Display_View", stem),
+        input=f"{source}: raw pixel values",
+        output=f"{display} display code values ({view})",
+    )
 
 
-def _bake_text(cfg, fmt, source, shaper, display, view, size, description,
-               target=None):
+def _bake_text(cfg, fmt, source, shaper, display, view, size, description, target=None):
     import PyOpenColorIO as ocio
 
     baker = ocio.Baker()
@@ -355,8 +394,14 @@ def _write_text(path, text):
 def _write_group(path, fmt, transforms, meta, description):
     import PyOpenColorIO as ocio
 
-    g = ocio_ops.group(transforms, name=meta["name"], id=meta["id"], description=description,
-                       input_descriptor=meta["input"], output_descriptor=meta["output"])
+    g = ocio_ops.group(
+        transforms,
+        name=meta["name"],
+        id=meta["id"],
+        description=description,
+        input_descriptor=meta["input"],
+        output_descriptor=meta["output"],
+    )
     with atomic_file(path) as tmp:
         g.write(VIEW_FORMATS[fmt], str(tmp), ocio.Config.CreateRaw())
     return Path(path)
@@ -398,18 +443,24 @@ def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, de
     lo, hi = value_range
     x = np.linspace(lo, hi, size)
     px = np.ascontiguousarray(np.repeat(x[:, None], 3, axis=1), dtype=np.float32)
-    cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD) \
-        .getDefaultCPUProcessor().applyRGB(px)
+    cfg.getProcessor(
+        source, display, view, ocio.TRANSFORM_DIR_FORWARD
+    ).getDefaultCPUProcessor().applyRGB(px)
     values = px.astype(np.float64)
     what = THIN_FILM_INPUTS[source][0]
-    lut_meta = dict(meta, input=f"{source}: {what}", range=(lo, hi), size=size,
-                    description=description + f" 1D LUT, {size} entries uniform over "
-                                              f"{lo:g}..{hi:g}.")
+    lut_meta = dict(
+        meta,
+        input=f"{source}: {what}",
+        range=(lo, hi),
+        size=size,
+        description=description + f" 1D LUT, {size} entries uniform over {lo:g}..{hi:g}.",
+    )
     return export.write_lut(path, fmt, values, ocio_ops.lut1d_transform(values), lut_meta)
 
 
-def export_view(source, display, view, out=None, *, fmt=None, size=None,
-                value_range=None, shaper=None) -> list[Path]:
+def export_view(
+    source, display, view, out=None, *, fmt=None, size=None, value_range=None, shaper=None
+) -> list[Path]:
     """Write the display LUT ``source`` -> ``display`` / ``view``; returns the paths
     written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``).
 
@@ -421,8 +472,9 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
         if fmt not in VIEW_FORMATS:
-            raise ParameterError("fmt", f" is needed: no format can be told from {out!r} "
-                                        f"({', '.join(VIEW_FORMATS)})")
+            raise ParameterError(
+                "fmt", f" is needed: no format can be told from {out!r} ({', '.join(VIEW_FORMATS)})"
+            )
     size, value_range = _validate(source, display, view, size, fmt, value_range)
     cube_shaper = None
     if source in THIN_FILM_INPUTS:
@@ -441,8 +493,9 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
     meta = _metadata(source, display, view)
     if source in THIN_FILM_INPUTS:
         description = _description(source, display, view, size, None, False)
-        return [_write_1d(out, fmt, cfg, source, display, view, size, value_range, meta,
-                          description)]
+        return [
+            _write_1d(out, fmt, cfg, source, display, view, size, value_range, meta, description)
+        ]
     if fmt in ("clf", "ctf"):
         proc = cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD)
         exact = list(proc.createGroupTransform())
@@ -453,17 +506,24 @@ def export_view(source, display, view, out=None, *, fmt=None, size=None,
             if fmt != "clf":
                 raise
         # CLF cannot hold FixedFunction ops: the exact shaper ops, then the baked 3D LUT.
-        return [_write_group(out, fmt, _baked_3d_transforms(cfg, source, shaper, display,
-                                                            view, size),
-                             meta, _description(source, display, view, size, shaper, True))]
+        return [
+            _write_group(
+                out,
+                fmt,
+                _baked_3d_transforms(cfg, source, shaper, display, view, size),
+                meta,
+                _description(source, display, view, size, shaper, True),
+            )
+        ]
     if fmt == "cube" and not cube_shaper:
         shaper = None  # the plain form: the grid over ACEScct itself
     description = _description(source, display, view, size, shaper, True)
     if fmt == "spi3d" and shaper:
         companion = out.with_name(out.stem + ".shaper.spi1d")
         text3d = _bake_text(cfg, "spi3d", shaper, None, display, view, size, description)
-        text1d = _bake_text(cfg, "spi1d", source, shaper, display, view, size, description,
-                            target=shaper)
+        text1d = _bake_text(
+            cfg, "spi1d", source, shaper, display, view, size, description, target=shaper
+        )
         return [_write_text(out, text3d), _write_text(companion, text1d)]
     text = _bake_text(cfg, fmt, source, shaper, display, view, size, description)
     if fmt == "cube":  # OCIO's writer has no title line: say which form the file is

@@ -203,8 +203,9 @@ def xyY_inverse_transform():
     [0.9505, 1.0, 1.0891]
     """
     ocio = ocio_ops.module()
-    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY,
-                                       direction=ocio.TRANSFORM_DIR_INVERSE)
+    return ocio.FixedFunctionTransform(
+        ocio.FIXED_FUNCTION_XYZ_TO_xyY, direction=ocio.TRANSFORM_DIR_INVERSE
+    )
 
 
 def _luminance(display):
@@ -341,7 +342,7 @@ def _grow(first, length, cells):
     lo, hi = 1.0, 64.0
     for _ in range(200):
         q = 0.5 * (lo + hi)
-        total = first * (q ** cells - 1.0) / (q - 1.0)
+        total = first * (q**cells - 1.0) / (q - 1.0)
         lo, hi = (q, hi) if total < length else (lo, q)
     steps = first * q ** np.arange(cells)
     return steps * (length / steps.sum())
@@ -404,9 +405,7 @@ def _black_plan(display, size):
                     beta = np.ceil(-u_a.min() * cells - 1e-9) / cells
                     if u_a.max() + beta > 1.0 + 1e-12:
                         continue
-                    P = np.array([s * lam * w[i] * M[i] + beta * S_row,
-                                  [0.0, 1.0, 0.0],
-                                  S_row])
+                    P = np.array([s * lam * w[i] * M[i] + beta * S_row, [0.0, 1.0, 0.0], S_row])
                     P[2] -= P[0] + P[1]
                     best = (n1 - n0, P)
     if best is None:
@@ -442,14 +441,21 @@ def _white_nodes(size, display):
     cells = size - 1
     inside = max(2, int(round(cells * WHITE_INSIDE)))
     code = 1.0 - (1.0 - np.linspace(0.0, 1.0, inside + 1)) ** WHITE_POWER
-    below = apply(ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
-                  np.repeat(code[:, None], 3, axis=1))[:, 0].astype(np.float64)
+    below = apply(
+        ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
+        np.repeat(code[:, None], 3, axis=1),
+    )[:, 0].astype(np.float64)
     below[0], below[-1] = 0.0, 1.0
     # a little above 1 / w_i: float32 round-off of the matrix in front stays inside
     tops = 1.001 / _luminance(display)
-    nodes = np.array([np.concatenate([below, 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0,
-                                                                   cells - inside))])
-                      for top in tops])
+    nodes = np.array(
+        [
+            np.concatenate(
+                [below, 1.0 + np.cumsum(_grow(WHITE_FIRST_STEP, top - 1.0, cells - inside))]
+            )
+            for top in tops
+        ]
+    )
     return nodes, tops
 
 
@@ -519,43 +525,59 @@ class ClipLUT:
         name = f"{self.name} Black Faces"
         origin, sign = self.frame
         back = ocio_ops.matrix(np.diag([sign[0], sign[1], 1.0]), offset=(origin[0], origin[1], 0.0))
-        return group([lut3d_transform(self.black, bitdepth="uint16"), back],
-                     name=name, id=transform_id("Gamut_Map", name),
-                     description=(f"Smits & Meyer 1990 constant-lightness clip into "
-                                  f"{self.display} (Section 3.2), the part against the "
-                                  "gamut faces through black (R, G, B >= 0): a "
-                                  f"{self.size}^3 tetrahedral Lut3D over a projective "
-                                  "chart of the chromaticity (the primaries' triangle on "
-                                  "grid and split planes) and Y; the map is homogeneous, "
-                                  "so it moves the chromaticity and keeps Y. See "
-                                  "ocio_thinfilm.lut.clip_lut.ClipLUT."),
-                     input_descriptor=("(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
-                                       "CIE-XYZ-D65, Y limited to [0, 1]"),
-                     output_descriptor=("(u_a, u_b, Y) of the black-faces clip: its "
-                                        "chart coordinates and Y, for xyY_TO_XYZ"))
+        return group(
+            [lut3d_transform(self.black, bitdepth="uint16"), back],
+            name=name,
+            id=transform_id("Gamut_Map", name),
+            description=(
+                f"Smits & Meyer 1990 constant-lightness clip into "
+                f"{self.display} (Section 3.2), the part against the "
+                "gamut faces through black (R, G, B >= 0): a "
+                f"{self.size}^3 tetrahedral Lut3D over a projective "
+                "chart of the chromaticity (the primaries' triangle on "
+                "grid and split planes) and Y; the map is homogeneous, "
+                "so it moves the chromaticity and keeps Y. See "
+                "ocio_thinfilm.lut.clip_lut.ClipLUT."
+            ),
+            input_descriptor=(
+                "(u_a, u_b, Y): XYZ_TO_xyY of a matrix of CIE-XYZ-D65, Y limited to [0, 1]"
+            ),
+            output_descriptor=(
+                "(u_a, u_b, Y) of the black-faces clip: its chart coordinates and Y, for xyY_TO_XYZ"
+            ),
+        )
 
     def white_core(self):
         """CLF-writable white pass: per-channel shaper, Lut3D, its scale and a clamp;
         display-linear c_i / tops[i] in (no negative channel), display code values out."""
         name = f"{self.name} White Faces"
         n = self.white.shape[0]
-        ops = [lut1d_transform(self.white_shaper, bitdepth="uint16"),
-               lut3d_transform(self.white, bitdepth="uint16"),
-               ocio_ops.matrix(np.eye(3) * WHITE_SCALE), ocio_ops.range_(0.0, 1.0)]
-        return group(ops, name=name, id=transform_id("Gamut_Map", name),
-                     description=(f"Smits & Meyer 1990 constant-lightness clip into "
-                                  f"{self.display} (Section 3.2), the part against the "
-                                  "gamut faces through white (R, G, B <= 1), followed "
-                                  f"by the sRGB encoding: a {n}^3 tetrahedral "
-                                  "Lut3D over display RGB whose nodes below 1 sit at "
-                                  "sRGB-encoded values, so in-gamut colours are "
-                                  "reproduced exactly; nodes above white hold the "
-                                  "clip's continuation. See ocio_thinfilm.lut.clip_lut.ClipLUT."),
-                     input_descriptor=f"{self.display} display-linear RGB, each channel "
-                                      "divided by 1.001 / its luminance weight, no "
-                                      "negative channel, Y <= 1",
-                     output_descriptor=f"{self.display} display RGB, clipped, sRGB-encoded "
-                                       "(IEC 61966-2-1 piecewise curve)")
+        ops = [
+            lut1d_transform(self.white_shaper, bitdepth="uint16"),
+            lut3d_transform(self.white, bitdepth="uint16"),
+            ocio_ops.matrix(np.eye(3) * WHITE_SCALE),
+            ocio_ops.range_(0.0, 1.0),
+        ]
+        return group(
+            ops,
+            name=name,
+            id=transform_id("Gamut_Map", name),
+            description=(
+                f"Smits & Meyer 1990 constant-lightness clip into "
+                f"{self.display} (Section 3.2), the part against the "
+                "gamut faces through white (R, G, B <= 1), followed "
+                f"by the sRGB encoding: a {n}^3 tetrahedral "
+                "Lut3D over display RGB whose nodes below 1 sit at "
+                "sRGB-encoded values, so in-gamut colours are "
+                "reproduced exactly; nodes above white hold the "
+                "clip's continuation. See ocio_thinfilm.lut.clip_lut.ClipLUT."
+            ),
+            input_descriptor=f"{self.display} display-linear RGB, each channel "
+            "divided by 1.001 / its luminance weight, no "
+            "negative channel, Y <= 1",
+            output_descriptor=f"{self.display} display RGB, clipped, sRGB-encoded "
+            "(IEC 61966-2-1 piecewise curve)",
+        )
 
     def transforms(self, black=None, white=None):
         """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
@@ -563,12 +585,16 @@ class ClipLUT:
         the CLF-writable cores (e.g. by FileTransforms in the config)."""
         M = colorimetry.matrix_XYZ_to_RGB(self.display)
         to_white = np.diag(1.0 / self.tops) @ M @ np.linalg.inv(self.chart)
-        return [xyz_limit_transform(), ocio_ops.matrix(self.chart),
-                xyY_forward_transform(),
-                ocio_ops.range_(0.0, 1.0),  # the pre-clip: Y <= 1 (the chart is in [0, 1]^2)
-                self.black_core() if black is None else black,
-                xyY_inverse_transform(), ocio_ops.matrix(to_white),
-                self.white_core() if white is None else white]
+        return [
+            xyz_limit_transform(),
+            ocio_ops.matrix(self.chart),
+            xyY_forward_transform(),
+            ocio_ops.range_(0.0, 1.0),  # the pre-clip: Y <= 1 (the chart is in [0, 1]^2)
+            self.black_core() if black is None else black,
+            xyY_inverse_transform(),
+            ocio_ops.matrix(to_white),
+            self.white_core() if white is None else white,
+        ]
 
 
 def _chart_to_XYZ(P, ua, ub):
@@ -610,8 +636,10 @@ def _convex_hull(points):
     def half(seq):
         out = []
         for p in seq:
-            while len(out) >= 2 and _cross(np.subtract(out[-1], out[-2]),
-                                           np.subtract(p, out[-2])) <= 0:
+            while (
+                len(out) >= 2
+                and _cross(np.subtract(out[-1], out[-2]), np.subtract(p, out[-2])) <= 0
+            ):
                 out.pop()
             out.append(p)
         return out[:-1]
@@ -682,6 +710,7 @@ def _fit_outside_nodes(display, P, size, exact, inside):
     up = fx >= fy
     corner = np.c_[i * n + j, np.where(up, (i + 1) * n + j, i * n + j + 1), (i + 1) * n + j + 1]
     weight = np.c_[np.where(up, 1 - fx, 1 - fy), np.abs(fx - fy), np.where(up, fy, fx)]
+
     # u'v' metric of each sample's error: J^T J of chart -> u'v' (central differences),
     # normalised by its median trace
     def uv(a, b):
@@ -707,7 +736,7 @@ def _fit_outside_nodes(display, P, size, exact, inside):
 
     # step 1 / L: L bounds the gradient's Lipschitz constant (each sample's weights sum
     # to 1 and a node holds at most 6 cells of FIT_DENSITY^2 samples)
-    lipschitz = 6 * FIT_DENSITY ** 2 * np.linalg.eigvalsh(metric).max() + FIT_DAMPING
+    lipschitz = 6 * FIT_DENSITY**2 * np.linalg.eigvalsh(metric).max() + FIT_DAMPING
     x_k = z = exact[free]
     t = 1.0
     for _ in range(FIT_ITERATIONS):
@@ -819,22 +848,32 @@ def _clip_lut(display, size, white_edge):
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
     code = _encode(np.clip(_white_continuation(C, display), 0.0, None), WORKING_ENCODING)
-    shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i],
-                                      along=lambda v: _encode(v, WORKING_ENCODING))
-                       for i in range(3)], axis=1)
+    shaper = np.stack(
+        [
+            _shaper_values(nodes[i], 0.0, tops[i], along=lambda v: _encode(v, WORKING_ENCODING))
+            for i in range(3)
+        ],
+        axis=1,
+    )
     # the black pass: half floats first, then the 16-bit grid (see _halves_inside)
-    lut = ClipLUT(display=display, size=size,
-                  black=_q16(black.astype(np.float16).astype(np.float64)),
-                  white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
-                  white_shaper=_q16(shaper), chart=P, tops=tops,
-                  frame=np.array([origin, sign]))
+    lut = ClipLUT(
+        display=display,
+        size=size,
+        black=_q16(black.astype(np.float16).astype(np.float64)),
+        white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
+        white_shaper=_q16(shaper),
+        chart=P,
+        tops=tops,
+        frame=np.array([origin, sign]),
+    )
     for array in (lut.black, lut.white, lut.white_shaper, lut.chart, lut.tops, lut.frame):
         array.setflags(write=False)
     return lut
 
 
-def clip_lut(display: str = "sRGB", size: int = CLIP_SIZE,
-             white_edge: int | None = None) -> ClipLUT:
+def clip_lut(
+    display: str = "sRGB", size: int = CLIP_SIZE, white_edge: int | None = None
+) -> ClipLUT:
     """The baked clip LUTs for ``display`` (cached): both passes, from
     :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
     is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly.
@@ -958,5 +997,8 @@ def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
     lut = clip_lut(display, size)
     # the clamp only removes float32 round-off of the EOTF (1.0 -> 1.00002 through
     # OCIO's fast pow): the code values are in [0, 1] already
-    return group(lut.transforms() + [working_decoding_transform(), ocio_ops.range_(0.0, 1.0)],
-                 name=lut.name, id=transform_id("Gamut_Map", lut.name))
+    return group(
+        lut.transforms() + [working_decoding_transform(), ocio_ops.range_(0.0, 1.0)],
+        name=lut.name,
+        id=transform_id("Gamut_Map", lut.name),
+    )

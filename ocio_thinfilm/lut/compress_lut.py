@@ -61,8 +61,14 @@ from ocio_thinfilm.lut.display_transforms import check_display
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, lut3d_transform, transform_id
 from ocio_thinfilm.lut.tables import check_size
 
-__all__ = ["SOFT_SIZE", "SOFT_WHITE_SIZE", "CompressLUT", "compress_lut", "soft_black_RGB",
-           "soft_white_RGB"]
+__all__ = [
+    "SOFT_SIZE",
+    "SOFT_WHITE_SIZE",
+    "CompressLUT",
+    "compress_lut",
+    "soft_black_RGB",
+    "soft_white_RGB",
+]
 
 #: Edge of S_b's Lut3D (over its own chart, :func:`_soft_plan`).
 SOFT_SIZE = 49
@@ -79,8 +85,7 @@ def _sigma(d, threshold, limit, power):
     return np.where(d > threshold, k, 1.0)
 
 
-def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
-                   power=soft.POWER):
+def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT, power=soft.POWER):
     """S_b: ``Y + sigma(d_black) (c - Y)``, d_black = (Y - min c) / Y, for display-linear
     (N, 3) RGB with Y > 0 (float64 out; rows with Y <= 0 unchanged)."""
     rgb = np.asarray(RGB, dtype=np.float64)
@@ -88,12 +93,10 @@ def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
     with np.errstate(all="ignore"):
         d = np.where(Y > 0.0, (Y - rgb.min(axis=-1)) / Y, 0.0)
     k = _sigma(d, threshold, limit, power)
-    return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]),
-                    rgb)
+    return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]), rgb)
 
 
-def soft_white_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
-                   power=soft.POWER):
+def soft_white_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT, power=soft.POWER):
     """S_w for display-linear (N, 3) RGB after L (no negative channel); float64 out.
 
     For 0 < Y < 1: ``d_black = f^-1((Y - min c) / Y)`` (the limit on the faces through
@@ -107,7 +110,8 @@ def soft_white_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT,
     asymptote = soft.compression_curve(np.inf, threshold, limit, power, clipped=False)
     with np.errstate(all="ignore"):
         d_black = soft.compression_curve_inverse(
-            np.clip((Y - rgb.min(axis=-1)) / Y, 0.0, 1.0), threshold, limit, power)
+            np.clip((Y - rgb.min(axis=-1)) / Y, 0.0, 1.0), threshold, limit, power
+        )
         s_black = _sigma(d_black, threshold, limit, power)
         d_white = top / (1.0 - Y) / s_black
         D = np.maximum(d_black, d_white)
@@ -135,9 +139,13 @@ def _chart_coordinates(P, XYZ):
         return c[:, :2] / s[:, None], s
 
 
-@colorimetry.persistent(modules=("ocio_thinfilm.lut.compress_lut",
-                                 "ocio_thinfilm.lut.clip_lut",
-                                 "ocio_thinfilm.colour.colorimetry"))
+@colorimetry.persistent(
+    modules=(
+        "ocio_thinfilm.lut.compress_lut",
+        "ocio_thinfilm.lut.clip_lut",
+        "ocio_thinfilm.colour.colorimetry",
+    )
+)
 def _soft_plan(display, size):
     """S_b's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives its Lut3D's
     coordinates (u_a, u_b) and Y, with the three rays where S_b has a kink on grid and
@@ -220,34 +228,46 @@ class CompressLUT:
         """CLF-writable S_b: chart (u_a, u_b, Y) in and out."""
         name = f"{self.name} Black Faces"
         t, lim, _ = self.parameters
-        return group([lut3d_transform(self.black, bitdepth="uint16")],
-                     name=name, id=transform_id("Gamut_Map", name),
-                     description=(f"Soft constant-lightness compression into {self.display}"
-                                  f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
-                                  "distance to the faces through black, before the clip's "
-                                  f"black pass: a {self.black.shape[0]}^3 tetrahedral "
-                                  "Lut3D over the clip's chromaticity chart; keeps Y. See "
-                                  "ocio_thinfilm.lut.compress_lut."),
-                     input_descriptor="(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
-                                      "CIE-XYZ-D65, limited to [0, 1]",
-                     output_descriptor="(u_a, u_b, Y) of the squeezed colour")
+        return group(
+            [lut3d_transform(self.black, bitdepth="uint16")],
+            name=name,
+            id=transform_id("Gamut_Map", name),
+            description=(
+                f"Soft constant-lightness compression into {self.display}"
+                f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
+                "distance to the faces through black, before the clip's "
+                f"black pass: a {self.black.shape[0]}^3 tetrahedral "
+                "Lut3D over the clip's chromaticity chart; keeps Y. See "
+                "ocio_thinfilm.lut.compress_lut."
+            ),
+            input_descriptor="(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
+            "CIE-XYZ-D65, limited to [0, 1]",
+            output_descriptor="(u_a, u_b, Y) of the squeezed colour",
+        )
 
     def white_core(self):
         """CLF-writable S_w: c_i / tops[i] in and out (after the clip's black pass)."""
         name = f"{self.name} White Faces"
         t, lim, _ = self.parameters
-        return group([lut1d_transform(self.white_shaper, bitdepth="uint16"),
-                      lut3d_transform(self.white, bitdepth="uint16")],
-                     name=name, id=transform_id("Gamut_Map", name),
-                     description=(f"Soft constant-lightness compression into {self.display}"
-                                  f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
-                                  "distance to the faces through white, before the clip's "
-                                  f"white pass: a {self.white.shape[0]}^3 tetrahedral "
-                                  "Lut3D over display RGB; keeps Y. See "
-                                  "ocio_thinfilm.lut.compress_lut."),
-                     input_descriptor=f"{self.display} display-linear RGB, each channel "
-                                      "divided by 1.001 / its luminance weight",
-                     output_descriptor="the same, squeezed")
+        return group(
+            [
+                lut1d_transform(self.white_shaper, bitdepth="uint16"),
+                lut3d_transform(self.white, bitdepth="uint16"),
+            ],
+            name=name,
+            id=transform_id("Gamut_Map", name),
+            description=(
+                f"Soft constant-lightness compression into {self.display}"
+                f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
+                "distance to the faces through white, before the clip's "
+                f"white pass: a {self.white.shape[0]}^3 tetrahedral "
+                "Lut3D over display RGB; keeps Y. See "
+                "ocio_thinfilm.lut.compress_lut."
+            ),
+            input_descriptor=f"{self.display} display-linear RGB, each channel "
+            "divided by 1.001 / its luminance weight",
+            output_descriptor="the same, squeezed",
+        )
 
     def transforms(self, black=None, white=None, clip_black=None, clip_white=None):
         """CIE-XYZ-D65 -> display RGB in [0, 1], sRGB-encoded: the clip's chain with S_b
@@ -256,11 +276,21 @@ class CompressLUT:
         ops = self.clip.transforms(clip_black, clip_white)
         # the clip's chain: limit, chart, xyY, pre-clip, L, xyY^-1, matrix, U
         to_clip_chart = self.clip.chart @ np.linalg.inv(self.chart)
-        return ([ops[0], ocio_ops.matrix(self.chart), xyY_forward_transform(), ops[3],
-                 self.black_core() if black is None else black,
-                 xyY_inverse_transform(), ocio_ops.matrix(to_clip_chart),
-                 xyY_forward_transform(), ops[4]]
-                + ops[5:7] + [self.white_core() if white is None else white, ops[7]])
+        return (
+            [
+                ops[0],
+                ocio_ops.matrix(self.chart),
+                xyY_forward_transform(),
+                ops[3],
+                self.black_core() if black is None else black,
+                xyY_inverse_transform(),
+                ocio_ops.matrix(to_clip_chart),
+                xyY_forward_transform(),
+                ops[4],
+            ]
+            + ops[5:7]
+            + [self.white_core() if white is None else white, ops[7]]
+        )
 
 
 def _half16(values):
@@ -294,18 +324,29 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     # black passes: half-float GPU textures see the CPU's values.
     white = np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
-    out = CompressLUT(display=display, clip=lut,
-                      black=_half16(black), white=_half16(white).reshape(n, n, n, 3),
-                      white_shaper=_q16(shaper), chart=P, parameters=parameters)
+    out = CompressLUT(
+        display=display,
+        clip=lut,
+        black=_half16(black),
+        white=_half16(white).reshape(n, n, n, 3),
+        white_shaper=_q16(shaper),
+        chart=P,
+        parameters=parameters,
+    )
     for array in (out.black, out.white, out.white_shaper, out.chart):
         array.setflags(write=False)
     return out
 
 
-def compress_lut(display: str = "sRGB", size: int = SOFT_SIZE,
-                 white_edge: int = SOFT_WHITE_SIZE, threshold: float = soft.THRESHOLD,
-                 limit: float = soft.LIMIT, power: float = soft.POWER,
-                 clip_size: int = clip_lut.CLIP_SIZE) -> CompressLUT:
+def compress_lut(
+    display: str = "sRGB",
+    size: int = SOFT_SIZE,
+    white_edge: int = SOFT_WHITE_SIZE,
+    threshold: float = soft.THRESHOLD,
+    limit: float = soft.LIMIT,
+    power: float = soft.POWER,
+    clip_size: int = clip_lut.CLIP_SIZE,
+) -> CompressLUT:
     """The baked compression LUTs for ``display`` (cached).
 
     Parameters
@@ -329,5 +370,6 @@ def compress_lut(display: str = "sRGB", size: int = SOFT_SIZE,
     white_edge = check_size(white_edge, 7, 129, "white_edge")
     soft.compression_curve(0.0, threshold, limit, power)  # validates the parameters
     clip_size = check_size(clip_size, 9, 129, "clip_size")
-    return _compress_lut(display, size, white_edge,
-                         (float(threshold), float(limit), float(power)), clip_size)
+    return _compress_lut(
+        display, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
+    )

@@ -102,7 +102,6 @@ def display_matrix_transform(display: str, inverse: bool = False):
     return ocio_ops.matrix(np.linalg.inv(M) if inverse else M)
 
 
-
 #: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.
 #: Display -> (description, gamma, offset or None for a pure power) (:mod:`.registry`).
 DISPLAY_ENCODINGS = {d.name: d.encoding for d in registry.DISPLAY_LIST}
@@ -167,46 +166,46 @@ PQ_CURVE = "CURVE - LINEAR_to_ST-2084"
 
 def hdr_encoding_transform(display: str):
     """An HDR display's CIE-XYZ-D65 (the display reference: Y = 1 at
-    :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2) -> its code values.
+        :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2) -> its code values.
 
-The matrix to the display's primaries scaled by 203 / 100 (OCIO's built-ins take
-    1.0 as 100 cd/m2), a clamp to [0, 10000 cd/m2], then OCIO's built-ins (OCIO >= 2.1):
-    the ST 2084 curve (:data:`PQ_CURVE`) for PQ, for HLG the registry entry's display
-    transform (the BT.2100 HLG inverse EOTF for a 1000 cd/m2 peak) after the matrix
-    back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry
-    entry's built-in display transform (the ACES configs' display colour spaces) of XYZ
-    scaled by 203 / 100.
+    The matrix to the display's primaries scaled by 203 / 100 (OCIO's built-ins take
+        1.0 as 100 cd/m2), a clamp to [0, 10000 cd/m2], then OCIO's built-ins (OCIO >= 2.1):
+        the ST 2084 curve (:data:`PQ_CURVE`) for PQ, for HLG the registry entry's display
+        transform (the BT.2100 HLG inverse EOTF for a 1000 cd/m2 peak) after the matrix
+        back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry
+        entry's built-in display transform (the ACES configs' display colour spaces) of XYZ
+        scaled by 203 / 100.
 
-    Parameters
-    ----------
-    display : str
-        A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
+        Parameters
+        ----------
+        display : str
+            A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
 
-    Returns
-    -------
-    PyOpenColorIO.GroupTransform
+        Returns
+        -------
+        PyOpenColorIO.GroupTransform
 
-    Raises
-    ------
-    ValueError
-        For a name that is not an HDR display of the registry.
+        Raises
+        ------
+        ValueError
+            For a name that is not an HDR display of the registry.
 
-    References
-    ----------
-    SMPTE ST 2084:2014; ITU-R BT.2100-2 (2018), Table 4 and 5; ITU-R BT.2408-7, HDR
-    reference white 203 cd/m2.
+        References
+        ----------
+        SMPTE ST 2084:2014; ITU-R BT.2100-2 (2018), Table 4 and 5; ITU-R BT.2408-7, HDR
+        reference white 203 cd/m2.
 
-    Examples
-    --------
-    The reference white Y = 1 is 203 cd/m2: PQ code 0.5807; the 1000 cd/m2 peak (Y =
-    1000 / 203) is PQ code 0.7518:
+        Examples
+        --------
+        The reference white Y = 1 is 203 cd/m2: PQ code 0.5807; the 1000 cd/m2 peak (Y =
+        1000 / 203) is PQ code 0.7518:
 
-    >>> import numpy as np
-    >>> from ocio_thinfilm.lut.ocio_ops import apply
-    >>> white = np.array([0.95047, 1.0, 1.08883])
-    >>> out = apply(hdr_encoding_transform("Rec.2100-PQ"), [white, white * 1000 / 203])
-    >>> out.astype(float).round(4).tolist()
-    [[0.5807, 0.5807, 0.5807], [0.7518, 0.7518, 0.7518]]
+        >>> import numpy as np
+        >>> from ocio_thinfilm.lut.ocio_ops import apply
+        >>> white = np.array([0.95047, 1.0, 1.08883])
+        >>> out = apply(hdr_encoding_transform("Rec.2100-PQ"), [white, white * 1000 / 203])
+        >>> out.astype(float).round(4).tolist()
+        [[0.5807, 0.5807, 0.5807], [0.7518, 0.7518, 0.7518]]
     """
     ocio = ocio_ops.module()
     entry = registry.hdr_display(display)
@@ -221,9 +220,14 @@ The matrix to the display's primaries scaled by 203 / 100 (OCIO's built-ins take
         return ocio_ops.group(clamp + [ocio.BuiltinTransform(PQ_CURVE)])
     # HLG: the built-in's own matrix brings the round-off back, so its odd curve can
     # still give a code a few 1e-4 below 0 at OPTIMIZATION_NONE: codes clamped to [0, 1]
-    return ocio_ops.group(clamp + [ocio_ops.matrix(np.linalg.inv(M)),
-                                   ocio.BuiltinTransform(entry.builtin),
-                                   ocio_ops.range_(0.0, 1.0)])
+    return ocio_ops.group(
+        clamp
+        + [
+            ocio_ops.matrix(np.linalg.inv(M)),
+            ocio.BuiltinTransform(entry.builtin),
+            ocio_ops.range_(0.0, 1.0),
+        ]
+    )
 
 
 def display_colorspace_transform(display: str):
@@ -278,5 +282,6 @@ def aces_gamut_compression_transform():
     [[0.5, 0.4, 0.3], [1.0, 0.0, 0.0]]
     """
     ocio = ocio_ops.module()
-    return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13,
-                                       list(clip.ACES_GAMUT_COMP13_PARAMS))
+    return ocio.FixedFunctionTransform(
+        ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, list(clip.ACES_GAMUT_COMP13_PARAMS)
+    )

@@ -58,9 +58,15 @@ def transform_id(kind: str, name: str) -> str:
     return f"urn:aswf:ocio:transformId:1.0:{VENDOR}:{kind}:{safe}:1.0"
 
 
-def group(transforms, *, name: str | None = None, description: str | None = None,
-          id: str | None = None, input_descriptor: str | None = None,
-          output_descriptor: str | None = None):
+def group(
+    transforms,
+    *,
+    name: str | None = None,
+    description: str | None = None,
+    id: str | None = None,
+    input_descriptor: str | None = None,
+    output_descriptor: str | None = None,
+):
     """A ``GroupTransform`` of ``transforms`` (``None`` entries skipped) with CLF-style
     metadata."""
     ocio = module()
@@ -103,8 +109,10 @@ def matrix(m3=None, offset=(0.0, 0.0, 0.0)):
     m = np.eye(4)
     if m3 is not None:
         m[:3, :3] = m3
-    return ocio.MatrixTransform([float(v) for v in quantize(m, 12).ravel()],
-                                [float(v) for v in quantize(offset, 12)] + [0.0])
+    return ocio.MatrixTransform(
+        [float(v) for v in quantize(m, 12).ravel()],
+        [float(v) for v in quantize(offset, 12)] + [0.0],
+    )
 
 
 def range_(lo, hi):
@@ -155,8 +163,9 @@ def lut3d_transform(values, *, bitdepth: str | None = None):
     t = ocio.Lut3DTransform()
     t.setGridSize(values.shape[0])
     t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    t.setData(np.ascontiguousarray(values if bitdepth else quantize(values),
-                                   dtype=np.float32).ravel())
+    t.setData(
+        np.ascontiguousarray(values if bitdepth else quantize(values), dtype=np.float32).ravel()
+    )
     if bitdepth == "uint16":
         t.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
     elif bitdepth == "half":

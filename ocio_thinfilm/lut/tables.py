@@ -137,8 +137,7 @@ class Table1D:
             # only -0.6 nm < t' < 0 blends towards the t' = 0 colour.
             n = self.size
             shaper = self.shaper_transform()
-            shaper.setLogSideSlopeValue([v * (n - 1) / n for v in
-                                         shaper.getLogSideSlopeValue()])
+            shaper.setLogSideSlopeValue([v * (n - 1) / n for v in shaper.getLogSideSlopeValue()])
             shaper.setLogSideOffsetValue([1.0 / n] * 3)
             values = np.vstack([np.zeros((1, 3)), self.values])
             ops = [shaper, lut1d_transform(values)]
@@ -148,10 +147,14 @@ class Table1D:
             ops.insert(0, self.shaper_transform())
         elif (self.domain_min, self.domain_max) != (0.0, 1.0):
             ops.insert(0, self.shaper_transform())
-        return group(ops, name=self.name, id=transform_id("Input", self.name),
-                     description=self.description,
-                     input_descriptor=self.input_descriptor,
-                     output_descriptor="CIE-XYZ-D65 (perfect reflector Y = 1)")
+        return group(
+            ops,
+            name=self.name,
+            id=transform_id("Input", self.name),
+            description=self.description,
+            input_descriptor=self.input_descriptor,
+            output_descriptor="CIE-XYZ-D65 (perfect reflector Y = 1)",
+        )
 
     @property
     def input_descriptor(self) -> str:
@@ -192,17 +195,32 @@ def _film_table(kind, size, tmax_um, t0_um, step):
     name = f"Thin Film {'Phase-Change' if kind == 'phase-change' else 'No-Phase-Change'} Thickness"
     values.setflags(write=False)
     t_um.setflags(write=False)
-    return Table1D(kind=kind, values=values, encoding="log", domain_min=0.0,
-                   domain_max=float(tmax_um), t0=float(t0_um), nodes=t_um, name=name,
-                   description=(f"Smits & Meyer 1990 Eq. {7 if kind == 'phase-change' else 8}: "
-                                f"exact XYZ (D65, CIE 1931 2 deg, band-limited {step:g} nm) of a "
-                                f"{kind} thin film against optical thickness 0-{tmax_um:g} um; "
-                                f"log2 shaper (t0 = {t0_um:g} um), {size}-entry Lut1D."))
+    return Table1D(
+        kind=kind,
+        values=values,
+        encoding="log",
+        domain_min=0.0,
+        domain_max=float(tmax_um),
+        t0=float(t0_um),
+        nodes=t_um,
+        name=name,
+        description=(
+            f"Smits & Meyer 1990 Eq. {7 if kind == 'phase-change' else 8}: "
+            f"exact XYZ (D65, CIE 1931 2 deg, band-limited {step:g} nm) of a "
+            f"{kind} thin film against optical thickness 0-{tmax_um:g} um; "
+            f"log2 shaper (t0 = {t0_um:g} um), {size}-entry Lut1D."
+        ),
+    )
 
 
-def film_table(kind: str = "phase-change", size: int = FILM_SIZE, *,
-               max_thickness_um: float = FILM_TMAX_UM, t0_um: float = FILM_T0_UM,
-               step: float = SPECTRAL_STEP) -> Table1D:
+def film_table(
+    kind: str = "phase-change",
+    size: int = FILM_SIZE,
+    *,
+    max_thickness_um: float = FILM_TMAX_UM,
+    t0_um: float = FILM_T0_UM,
+    step: float = SPECTRAL_STEP,
+) -> Table1D:
     """Thickness table of the paper's single film (Eq. 7 / Eq. 8).
 
     Pixel value = optical thickness t' in micrometres (all channels equal) -> the
@@ -263,11 +281,20 @@ def _morpho_table(size, step):
     values = colorimetry.morpho_XYZ(theta, step=step)
     values.setflags(write=False)
     c.setflags(write=False)
-    return Table1D(kind="morpho", values=values, encoding="linear", domain_min=0.0,
-                   domain_max=1.0, nodes=c, name="Thin Film Morpho Iridescence",
-                   description=(f"Smits & Meyer 1990 Eq. 9 + 14: exact XYZ (D65, CIE 1931 2 deg, "
-                                f"band-limited {step:g} nm) of the Morpho wing multilayer against "
-                                f"cos(theta) (facing ratio N.V) in [0, 1]; {size}-entry Lut1D."))
+    return Table1D(
+        kind="morpho",
+        values=values,
+        encoding="linear",
+        domain_min=0.0,
+        domain_max=1.0,
+        nodes=c,
+        name="Thin Film Morpho Iridescence",
+        description=(
+            f"Smits & Meyer 1990 Eq. 9 + 14: exact XYZ (D65, CIE 1931 2 deg, "
+            f"band-limited {step:g} nm) of the Morpho wing multilayer against "
+            f"cos(theta) (facing ratio N.V) in [0, 1]; {size}-entry Lut1D."
+        ),
+    )
 
 
 def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Table1D:
@@ -301,8 +328,9 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
     return _morpho_table(size, step)
 
 
-def thin_film_table(space, *, film_size: int = FILM_SIZE,
-                    morpho_size: int = MORPHO_SIZE) -> Table1D:
+def thin_film_table(
+    space, *, film_size: int = FILM_SIZE, morpho_size: int = MORPHO_SIZE
+) -> Table1D:
     """The table behind a thin-film input space of the registry
     (:class:`ocio_thinfilm.registry.ThinFilmSpace`): :func:`film_table` or
     :func:`morpho_table` as its ``table`` field says, with its arguments."""

@@ -59,16 +59,19 @@ def _hlg_scene_ops(display, inverse=False):
     ``inverse``: the OOTF way back, ending in display-linear RGB (1 = 203 cd/m2)."""
     ocio = ocio_ops.module()
     entry = registry.hdr_display(display)
-    a = HLG_E_MAX ** HLG_GAMMA * registry.HDR_REFERENCE_WHITE / entry.peak
+    a = HLG_E_MAX**HLG_GAMMA * registry.HDR_REFERENCE_WHITE / entry.peak
     M = colorimetry.matrix_XYZ_to_RGB(entry.gamut)
     if not inverse:
-        return [ocio_ops.matrix(M * a),
-                ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND,
-                                            [1.0 / HLG_GAMMA]),
-                ocio_ops.matrix(np.linalg.inv(M) / HLG_E_MAX)]
-    return [ocio_ops.matrix(np.eye(3) * HLG_E_MAX),
-            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND, [HLG_GAMMA]),
-            ocio_ops.matrix(np.eye(3) / a)]
+        return [
+            ocio_ops.matrix(M * a),
+            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND, [1.0 / HLG_GAMMA]),
+            ocio_ops.matrix(np.linalg.inv(M) / HLG_E_MAX),
+        ]
+    return [
+        ocio_ops.matrix(np.eye(3) * HLG_E_MAX),
+        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND, [HLG_GAMMA]),
+        ocio_ops.matrix(np.eye(3) / a),
+    ]
 
 
 def hdr_scaled(display: str, transforms: list) -> list:
@@ -119,8 +122,7 @@ def hdr_scaled(display: str, transforms: list) -> list:
     if entry.transfer == "HLG":
         return _hlg_scene_ops(display) + list(transforms) + _hlg_scene_ops(display, True)
     k = entry.scale
-    return ([ocio_ops.matrix(np.eye(3) / k)] + list(transforms)
-            + [ocio_ops.matrix(np.eye(3) * k)])
+    return [ocio_ops.matrix(np.eye(3) / k)] + list(transforms) + [ocio_ops.matrix(np.eye(3) * k)]
 
 
 def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
@@ -185,18 +187,26 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     if view == "Constant-Lightness Clip":
         return clip_transform(display, size)
     if view == "Constant-Lightness Compress":
-        return group(compress_lut(display, clip_size=size).transforms()
-                     + [working_decoding_transform()])
+        return group(
+            compress_lut(display, clip_size=size).transforms() + [working_decoding_transform()]
+        )
     # the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range
     # takes to the lower bound) stay finite through the matrices at every
     # optimisation level (OPTIMIZATION_NONE does not compose them, so F32_MAX inputs
     # overflowed to Inf - Inf = NaN)
     if view == "Channel Clamp":
-        return group([finite_limit_transform(), display_matrix_transform(display),
-                      ocio_ops.range_(0.0, 1.0)])
+        return group(
+            [finite_limit_transform(), display_matrix_transform(display), ocio_ops.range_(0.0, 1.0)]
+        )
     if view == "ACES Gamut Compression":
-        return group([finite_limit_transform(), display_matrix_transform(display),
-                      aces_gamut_compression_transform(), ocio_ops.range_(0.0, 1.0)])
+        return group(
+            [
+                finite_limit_transform(),
+                display_matrix_transform(display),
+                aces_gamut_compression_transform(),
+                ocio_ops.range_(0.0, 1.0),
+            ]
+        )
     raise ValueError(f"view must be one of {VIEWS[:-1]}, got {view!r}")
 
 
@@ -258,9 +268,13 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
         if view == "Raw":
             return group([])
         gamut = registry.gamut_of(display)
-        return group([view_linear_transform(display, view, size),
-                      display_matrix_transform(gamut, inverse=True),
-                      hdr_encoding_transform(display)])
+        return group(
+            [
+                view_linear_transform(display, view, size),
+                display_matrix_transform(gamut, inverse=True),
+                hdr_encoding_transform(display),
+            ]
+        )
     check_display(display)
     if view not in VIEWS:
         raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
@@ -268,13 +282,16 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
         return group([])
     if view == "Constant-Lightness Clip":
         lut = clip_lut(display, size)
-        return group(lut.transforms() + [working_decoding_transform(),
-                                         display_encoding_transform(display)],
-                     name=lut.name, id=transform_id("Gamut_Map", lut.name))
+        return group(
+            lut.transforms() + [working_decoding_transform(), display_encoding_transform(display)],
+            name=lut.name,
+            id=transform_id("Gamut_Map", lut.name),
+        )
     if view == "Constant-Lightness Compress":
         soft = compress_lut(display, clip_size=size)
-        return group(soft.transforms() + [working_decoding_transform(),
-                                          display_encoding_transform(display)],
-                     name=soft.name, id=transform_id("Gamut_Map", soft.name))
-    return group([view_linear_transform(display, view, size),
-                  display_encoding_transform(display)])
+        return group(
+            soft.transforms() + [working_decoding_transform(), display_encoding_transform(display)],
+            name=soft.name,
+            id=transform_id("Gamut_Map", soft.name),
+        )
+    return group([view_linear_transform(display, view, size), display_encoding_transform(display)])

@@ -47,6 +47,7 @@ def _fresnel(n_i, cos_i, n_j, cos_j):
     Both denominators vanish only when both cosines do (grazing incidence on an
     index-matched interface, which is no interface at all): r = 0 there, not 0/0.
     """
+
     def ratio(num, den):
         num, den = np.broadcast_arrays(np.asarray(num, complex), np.asarray(den, complex))
         return np.divide(num, den, out=np.zeros_like(num), where=den != 0)
@@ -65,8 +66,17 @@ def _complex_index(name, n):
     return n.astype(np.complex128)
 
 
-def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.0,
-                     n_substrate=1.0, band_limited: bool = False, harmonics: int = 64):
+def airy_reflectance(
+    thickness,
+    wavelengths,
+    n_film,
+    theta=0.0,
+    *,
+    n_incident=1.0,
+    n_substrate=1.0,
+    band_limited: bool = False,
+    harmonics: int = 64,
+):
     """Exact reflectance of one film: the Airy sum of all internal reflections.
 
     ``r = (r01 + r12 e^{i delta}) / (1 + r01 r12 e^{i delta})`` with Fresnel
@@ -144,9 +154,20 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
         a, b = np.asarray(a), np.asarray(b)
         cross_num, cross_den = np.conj(a) * b, a * b
         # (constant, |b|^2 or |ab|^2 times rho^2, 2 Re(cross), -2 Im(cross)) for num, den
-        pols.append(((np.abs(a) ** 2, np.abs(b) ** 2, 2.0 * cross_num.real, -2.0 * cross_num.imag),
-                     (np.ones_like(np.abs(a)), np.abs(a * b) ** 2, 2.0 * cross_den.real,
-                      -2.0 * cross_den.imag), np.abs(c) ** 2, a, b))
+        pols.append(
+            (
+                (np.abs(a) ** 2, np.abs(b) ** 2, 2.0 * cross_num.real, -2.0 * cross_num.imag),
+                (
+                    np.ones_like(np.abs(a)),
+                    np.abs(a * b) ** 2,
+                    2.0 * cross_den.real,
+                    -2.0 * cross_den.imag,
+                ),
+                np.abs(c) ** 2,
+                a,
+                b,
+            )
+        )
     need_sin = any(np.any(q[0][3]) or np.any(q[1][3]) for q in pols)
 
     def point(psi, rho=None):
@@ -160,8 +181,10 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
         def column(x):
             return np.broadcast_to(x, lead).reshape(-1, 1)
 
-        flat = [([column(x) for x in q[0]], [column(x) for x in q[1]],
-                 *(column(x) for x in q[2:])) for q in pols]
+        flat = [
+            ([column(x) for x in q[0]], [column(x) for x in q[1]], *(column(x) for x in q[2:]))
+            for q in pols
+        ]
         out = np.empty(psi.shape)
         chunk = max(1, 32768 // max(width, 1))  # rows per block: temporaries stay in cache
         for start in range(0, psi.shape[0], chunk):
@@ -195,8 +218,11 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
                     ar, br = a[rows], b[rows]
                     num, den = ar + br * zz, 1.0 + ar * br * zz
                     ok = den != 0
-                    num = np.where(ok, np.abs(np.divide(num, den, out=np.zeros_like(num),
-                                                        where=ok)) ** 2, bare[rows])
+                    num = np.where(
+                        ok,
+                        np.abs(np.divide(num, den, out=np.zeros_like(num), where=ok)) ** 2,
+                        bare[rows],
+                    )
                 total += num
             total *= 0.5
             out[rows] = total
@@ -221,22 +247,25 @@ def airy_reflectance(thickness, wavelengths, n_film, theta=0.0, *, n_incident=1.
     film = n1 * cos1
     ab = np.maximum(np.abs(r01[0] * r12[0]), np.abs(r01[1] * r12[1]))
     converged = ab ** (harmonics // 2) < 1e-6
-    real_path = np.broadcast_to((np.abs(np.imag(film)) <= 1e-12 * np.abs(film)) & converged,
-                                np.shape(path))
+    real_path = np.broadcast_to(
+        (np.abs(np.imag(film)) <= 1e-12 * np.abs(film)) & converged, np.shape(path)
+    )
     phi_c, dphi = phase(np.real(path), wl, True)
     grid = 2.0 * np.pi * np.arange(harmonics) / harmonics
     samples = point(np.broadcast_to(grid, np.shape(np.real(path)) + (harmonics,)))
     spectrum = np.fft.rfft(samples, axis=-1) / harmonics
-    coefficients = [spectrum[..., 0].real] + [2.0 * spectrum[..., k]
-                                              for k in range(1, harmonics // 2)]
+    coefficients = [spectrum[..., 0].real] + [
+        2.0 * spectrum[..., k] for k in range(1, harmonics // 2)
+    ]
     smooth = cosine_series(coefficients, phi_c, dphi)
     if np.all(real_path):
         return np.clip(smooth, 0.0, 1.0)
     return np.clip(np.where(real_path[..., None], smooth, exact()), 0.0, 1.0)
 
 
-def transfer_matrix_reflectance(n_layers, thicknesses, wavelengths, theta=0.0, *,
-                                n_incident=1.0, n_substrate=1.0):
+def transfer_matrix_reflectance(
+    n_layers, thicknesses, wavelengths, theta=0.0, *, n_incident=1.0, n_substrate=1.0
+):
     """Exact reflectance of a multilayer stack (transfer-matrix physics).
 
     ``n_layers`` and ``thicknesses`` (nm) list the layers from the incidence side;
@@ -299,12 +328,16 @@ def transfer_matrix_reflectance(n_layers, thicknesses, wavelengths, theta=0.0, *
     cosines = [_cos_refracted(n0, m, sin0) for m in media]
     shape = np.broadcast_shapes(theta.shape, wl.shape)
     # z_j for every layer (shared by both polarisations); media[j] is layer j.
-    z = [np.exp(2j * (2.0 * np.pi / wl) * media[j] * cosines[j] * depths[j - 1])
-         for j in range(1, len(media) - 1)]
+    z = [
+        np.exp(2j * (2.0 * np.pi / wl) * media[j] * cosines[j] * depths[j - 1])
+        for j in range(1, len(media) - 1)
+    ]
     out = np.zeros(shape)
     for polarisation in (0, 1):
-        rho = [_fresnel(media[i], cosines[i], media[i + 1], cosines[i + 1])[polarisation]
-               for i in range(len(media) - 1)]
+        rho = [
+            _fresnel(media[i], cosines[i], media[i + 1], cosines[i + 1])[polarisation]
+            for i in range(len(media) - 1)
+        ]
         r = np.broadcast_to(rho[-1], shape).astype(complex)
         for j in range(len(media) - 2, 0, -1):
             a = np.broadcast_to(rho[j - 1], shape).astype(complex)

@@ -55,15 +55,24 @@ __all__ = [
 # --------------------------------------------------------------------------- #
 # Argument checks: one place that words every error message.
 # --------------------------------------------------------------------------- #
-def as_array(name: str, value: npt.ArrayLike, *, minimum: float | None = None,
-             maximum: float | None = None, strict: bool = False, unit: str = "") -> np.ndarray:
+def as_array(
+    name: str,
+    value: npt.ArrayLike,
+    *,
+    minimum: float | None = None,
+    maximum: float | None = None,
+    strict: bool = False,
+    unit: str = "",
+) -> np.ndarray:
     """``value`` as a float64 (or complex) array, finite and within the bounds, else a
     ValueError naming ``name``, the bounds and the first offending value (a TypeError
     for what is not numbers: a string is not parsed, ``n='1.33'`` is refused)."""
     a = np.asarray(value)
     if a.dtype.kind not in "biufc":
-        raise TypeError(f"{name} must be a number or an array of numbers, got "
-                        f"{_short(value)} ({type(value).__name__})")
+        raise TypeError(
+            f"{name} must be a number or an array of numbers, got "
+            f"{_short(value)} ({type(value).__name__})"
+        )
     if a.dtype.kind == "c":
         check = a.real
     else:
@@ -92,8 +101,7 @@ def _short(value: object) -> str:
     return text if len(text) <= 40 else text[:37] + "..."
 
 
-def _range_text(minimum: float | None, maximum: float | None, strict: bool,
-                unit: str) -> str:
+def _range_text(minimum: float | None, maximum: float | None, strict: bool, unit: str) -> str:
     if minimum is None:
         return ""
     if maximum is None:
@@ -108,8 +116,9 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
     if isinstance(value, (bool, np.bool_)):
         raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
     if not isinstance(value, (int, float, np.number)):  # a string is not parsed
-        raise TypeError(f"{name} must be an integer >= {minimum}, got {value!r} "
-                        f"({type(value).__name__})")
+        raise TypeError(
+            f"{name} must be an integer >= {minimum}, got {value!r} ({type(value).__name__})"
+        )
     f = float(value)
     if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):
         limit = f" and <= {maximum}" if maximum is not None else ""
@@ -120,10 +129,10 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
 def as_real(name: str, value: object) -> float:
     """A real-number parameter as a float; a TypeError naming it for what is not one
     (a string is not parsed, a bool is not a number). Ranges are the caller's to check."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer,
-                                                                       np.floating)):
-        raise TypeError(f"{name} must be a number, got {_short(value)} "
-                        f"({type(value).__name__})")
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+        value, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"{name} must be a number, got {_short(value)} ({type(value).__name__})")
     return float(value)
 
 
@@ -178,8 +187,9 @@ def check_wavelengths(wavelengths: npt.ArrayLike) -> np.ndarray:
     ValueError: wavelengths must be strictly increasing
     """
     if np.asarray(wavelengths).dtype.kind not in "biuf":  # a string is not parsed
-        raise TypeError(f"wavelengths must be a number array of nm values, got "
-                        f"{_short(wavelengths)}")
+        raise TypeError(
+            f"wavelengths must be a number array of nm values, got {_short(wavelengths)}"
+        )
     wl = np.asarray(wavelengths, dtype=np.float64)
     if wl.ndim != 1 or wl.size == 0:
         raise ValueError("wavelengths must be a non-empty 1-D array of nm values")
@@ -261,8 +271,9 @@ def bin_edges(wavelengths: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
 # --------------------------------------------------------------------------- #
 # Phase and the band-limited cosine series (shared by every interference model).
 # --------------------------------------------------------------------------- #
-def phase(path: np.ndarray, wl: np.ndarray,
-          band_limited: bool) -> tuple[np.ndarray, np.ndarray | None]:
+def phase(
+    path: np.ndarray, wl: np.ndarray, band_limited: bool
+) -> tuple[np.ndarray, np.ndarray | None]:
     """Round-trip phase 2*pi*P/lambda at the samples and its spread over each bin.
 
     Returns ``(phi_c, dphi)`` broadcast to ``path.shape + wl.shape``. With
@@ -278,8 +289,9 @@ def phase(path: np.ndarray, wl: np.ndarray,
     return 0.5 * (phi_hi + phi_lo), phi_hi - phi_lo
 
 
-def cosine_series(coefficients: Sequence[Any], phi_c: np.ndarray,
-                  dphi: np.ndarray | None) -> np.ndarray:
+def cosine_series(
+    coefficients: Sequence[Any], phi_c: np.ndarray, dphi: np.ndarray | None
+) -> np.ndarray:
     """Sum ``c_0 + sum_k Re(c_k exp(i k phi))``, each harmonic hat-averaged.
 
     ``coefficients`` is a list; entry k is a (broadcastable) array of the k-th

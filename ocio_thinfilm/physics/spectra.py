@@ -46,6 +46,7 @@ __all__ = [
     "multilayer_reflectance",
 ]
 
+
 class MorphoGeometry(TypedDict):
     """The keys of :data:`MORPHO`."""
 
@@ -64,8 +65,13 @@ MORPHO: MorphoGeometry = {"d1": 150.0, "d2": 50.0, "n": 1.53, "layers": 12}
 # --------------------------------------------------------------------------- #
 # The paper's models.
 # --------------------------------------------------------------------------- #
-def optical_thickness(thickness: npt.ArrayLike, n: npt.ArrayLike, theta: npt.ArrayLike = 0.0,
-                      *, mode: str = "refraction") -> np.ndarray:
+def optical_thickness(
+    thickness: npt.ArrayLike,
+    n: npt.ArrayLike,
+    theta: npt.ArrayLike = 0.0,
+    *,
+    mode: str = "refraction",
+) -> np.ndarray:
     """Optical thickness t' of a film (paper Eq. 10 and Eq. 11).
 
     ``mode="refraction"`` (default) uses the refraction angle inside the film:
@@ -116,8 +122,13 @@ def optical_thickness(thickness: npt.ArrayLike, n: npt.ArrayLike, theta: npt.Arr
     raise ValueError(f"mode must be 'refraction' or 'literal', got {mode!r}")
 
 
-def two_beam_reflectance(optical_thickness_nm: npt.ArrayLike, wavelengths: npt.ArrayLike, *,
-                         phase_change: bool = True, band_limited: bool = False) -> np.ndarray:
+def two_beam_reflectance(
+    optical_thickness_nm: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    *,
+    phase_change: bool = True,
+    band_limited: bool = False,
+) -> np.ndarray:
     """Two-beam reflectance of a single film, normalised to a peak of 1 (Eq. 5-8).
 
     Eq. 7 (phase change: soap film, oil on water):   ``R = sin^2(2 pi t'/lambda)``;
@@ -160,9 +171,12 @@ def two_beam_reflectance(optical_thickness_nm: npt.ArrayLike, wavelengths: npt.A
     return np.clip(cosine_series([0.5, -0.5 if phase_change else 0.5], phi, dphi), 0.0, 1.0)
 
 
-def morpho_layer_thickness(theta: npt.ArrayLike = 0.0, d1: npt.ArrayLike = MORPHO["d1"],
-                           d2: npt.ArrayLike = MORPHO["d2"],
-                           n: npt.ArrayLike = MORPHO["n"]) -> np.ndarray:
+def morpho_layer_thickness(
+    theta: npt.ArrayLike = 0.0,
+    d1: npt.ArrayLike = MORPHO["d1"],
+    d2: npt.ArrayLike = MORPHO["d2"],
+    n: npt.ArrayLike = MORPHO["n"],
+) -> np.ndarray:
     """Effective layer thickness of the Morpho wing scale (paper Eq. 14).
 
     ``t = d1 cos(theta) + d2 sqrt(n^2 - sin^2(theta))``: the air gap d1 and the
@@ -198,9 +212,13 @@ def morpho_layer_thickness(theta: npt.ArrayLike = 0.0, d1: npt.ArrayLike = MORPH
     return d1 * np.cos(theta) + d2 * np.sqrt(np.maximum(n * n - np.sin(theta) ** 2, 0.0))
 
 
-def multilayer_reflectance(thickness: npt.ArrayLike, wavelengths: npt.ArrayLike,
-                           layers: int = MORPHO["layers"], *,
-                           band_limited: bool = False) -> np.ndarray:
+def multilayer_reflectance(
+    thickness: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    layers: int = MORPHO["layers"],
+    *,
+    band_limited: bool = False,
+) -> np.ndarray:
     """Multiple-film reflectance, Eq. 9 (Anderson & Richards 1942), peak-normalised.
 
     Eq. 9 reads ``I = 1/2 A0 (sin(2 pi (l+1) t/lambda) / sin(2 pi t/lambda))^2``. With

@@ -25,8 +25,18 @@ from ocio_thinfilm.io import check_output_file, transaction, write_image
 from ocio_thinfilm.render import scenes as scene_module
 from ocio_thinfilm.render.processors import ConfigProcessors, display_image, make_lookup
 
-__all__ = ["DEFAULT_SIZE", "DEFAULT_DISPLAY", "DEFAULT_VIEW", "EXR_COLORSPACE", "PNG_COLORSPACE",
-           "render_scene", "draw_labels", "frame_paths", "save_frame", "write_frame"]
+__all__ = [
+    "DEFAULT_SIZE",
+    "DEFAULT_DISPLAY",
+    "DEFAULT_VIEW",
+    "EXR_COLORSPACE",
+    "PNG_COLORSPACE",
+    "render_scene",
+    "draw_labels",
+    "frame_paths",
+    "save_frame",
+    "write_frame",
+]
 
 DEFAULT_SIZE = (512, 512)
 DEFAULT_DISPLAY = "sRGB"
@@ -34,8 +44,10 @@ DEFAULT_VIEW = "Constant-Lightness Clip"
 
 #: How the EXR's colour channels are to be read (also written into every EXR).
 EXR_COLORSPACE = "CIE-XYZ-D65"
-EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 is the "
-           "perfect white under the scene's unit illuminant)")
+EXR_DOC = (
+    "R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 is the "
+    "perfect white under the scene's unit illuminant)"
+)
 
 
 #: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
@@ -43,8 +55,9 @@ EXR_DOC = ("R,G,B hold scene-linear CIE XYZ (1931 2-degree observer, D65, Y = 1 
 #: of other configs (an ACES config merged with ``bake --into``) no tag -- never a wrong
 #: sRGB one. The HDR displays get their cICP chunk (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1,
 #: P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
-PNG_COLORSPACE = {d.name: d.png_colorspace
-                  for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST}
+PNG_COLORSPACE = {
+    d.name: d.png_colorspace for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST
+}
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
@@ -70,8 +83,7 @@ def label_code(display: str) -> float:
 
     light = ((LABEL_CODE + 0.055) / 1.055) ** 2.4  # the sRGB EOTF of LABEL_CODE
     grey = light * colorimetry.white_XYZ(registry.gamut_of(display))
-    return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(display),
-                                grey)[1])
+    return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(display), grey)[1])
 
 
 def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.ndarray, bool]:
@@ -86,8 +98,9 @@ def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.n
     buf.set_pixels(oiio.ROI(), np.ascontiguousarray(rgb, dtype=np.float32))
     drawn = True
     for x, y, text, size in labels:
-        ok = oiio.ImageBufAlgo.render_text(buf, int(x), int(y), text, int(size), "",
-                                           (code, code, code), "center", "baseline", 0)
+        ok = oiio.ImageBufAlgo.render_text(
+            buf, int(x), int(y), text, int(size), "", (code, code, code), "center", "baseline", 0
+        )
         drawn = drawn and bool(ok)
     if not drawn:
         return rgb, False
@@ -97,9 +110,17 @@ def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.n
 # --------------------------------------------------------------------------- #
 # Rendering one frame of one scene
 # --------------------------------------------------------------------------- #
-def render_scene(name: str, size=DEFAULT_SIZE, *, seed: int = 0, frame: int = 1,
-                 display: str = DEFAULT_DISPLAY, view: str = DEFAULT_VIEW, lookup=None,
-                 config=None):
+def render_scene(
+    name: str,
+    size=DEFAULT_SIZE,
+    *,
+    seed: int = 0,
+    frame: int = 1,
+    display: str = DEFAULT_DISPLAY,
+    view: str = DEFAULT_VIEW,
+    lookup=None,
+    config=None,
+):
     """Render one frame through a config's processors: returns (picture,
     display-encoded RGB float32). ``config``: a :class:`ConfigProcessors`, a
     ``PyOpenColorIO.Config`` or a path (default: :data:`DEFAULT_CONFIG`); a ``lookup``
@@ -129,7 +150,8 @@ def _exr_attributes(scene, picture, *, seed, frame, display, view):
         "ocio_thinfilm:png_view": f"{display} / {view}",
         "ocio_thinfilm:tables": "; ".join(
             f"{t.kind} over {t.encoding} in [{t.range[0]:g}, {t.range[1]:g}], {t.entries} entries"
-            for t in scene.tables),
+            for t in scene.tables
+        ),
     }
     for channel, doc in picture.aov_docs.items():
         attrs[f"ocio_thinfilm:aov:{channel}"] = doc
@@ -145,8 +167,18 @@ def frame_paths(name: str, out_dir: Path, frame: int | None) -> list[Path]:
     return [Path(out_dir) / f"{stem}.exr", Path(out_dir) / f"{stem}.png"]
 
 
-def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int | None,
-               display: str, view: str, tx=None) -> list[Path]:
+def save_frame(
+    name: str,
+    picture,
+    rgb,
+    out_dir: Path,
+    *,
+    seed: int,
+    frame: int | None,
+    display: str,
+    view: str,
+    tx=None,
+) -> list[Path]:
     """Write a rendered frame as ``NAME[.####].exr`` and ``.png``; returns the paths.
 
     The pair is one transaction (:mod:`.io`): both files are written aside and checked,
@@ -154,17 +186,24 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     With ``tx`` they join the caller's transaction instead (committed by the caller)."""
     if tx is None:
         with transaction() as own:
-            return save_frame(name, picture, rgb, out_dir, seed=seed, frame=frame,
-                              display=display, view=view, tx=own)
+            return save_frame(
+                name,
+                picture,
+                rgb,
+                out_dir,
+                seed=seed,
+                frame=frame,
+                display=display,
+                view=view,
+                tx=own,
+            )
     scene = scene_module.get_scene(name)
     stem = name if frame is None else f"{name}.{frame:04d}"
     for path in frame_paths(name, out_dir, frame):
         check_output_file(path, parameter="out_dir")
     channels = ["R", "G", "B"] + list(picture.aovs)
-    data = np.concatenate([picture.xyz] + [a[..., None] for a in picture.aovs.values()],
-                          axis=-1)
-    attrs = _exr_attributes(scene, picture, seed=seed, frame=frame or 1, display=display,
-                            view=view)
+    data = np.concatenate([picture.xyz] + [a[..., None] for a in picture.aovs.values()], axis=-1)
+    attrs = _exr_attributes(scene, picture, seed=seed, frame=frame or 1, display=display, view=view)
     # ZIPS: lossless, and faster than zip or piz on these pictures. The two files are
     # encoded in parallel (OpenImageIO releases the GIL); each is written atomically.
     attrs["compression"] = "zips"
@@ -176,23 +215,54 @@ def save_frame(name: str, picture, rgb, out_dir: Path, *, seed: int, frame: int 
     from concurrent.futures import ThreadPoolExecutor
 
     with ThreadPoolExecutor(max_workers=2) as pool:
-        exr_job = pool.submit(write_image, out_dir / f"{stem}.exr", data,
-                              channel_names=channels, dtype="half", attributes=attrs, tx=tx)
+        exr_job = pool.submit(
+            write_image,
+            out_dir / f"{stem}.exr",
+            data,
+            channel_names=channels,
+            dtype="half",
+            attributes=attrs,
+            tx=tx,
+        )
         raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
         raw = all((region[2] or view) in raw_views for region in picture.regions)
         png_tag = "data" if raw else PNG_COLORSPACE.get(display, "data")
         # HDR code values need 16 bits (PQ: 8-bit steps are visible banding)
-        png_job = pool.submit(write_image, out_dir / f"{stem}.png", rgb,
-                              dtype="uint16" if registry.is_hdr(display) else "uint8",
-                              attributes={"png:compressionLevel": 3,
-                                          "oiio:ColorSpace": png_tag}, tx=tx)
+        png_job = pool.submit(
+            write_image,
+            out_dir / f"{stem}.png",
+            rgb,
+            dtype="uint16" if registry.is_hdr(display) else "uint8",
+            attributes={"png:compressionLevel": 3, "oiio:ColorSpace": png_tag},
+            tx=tx,
+        )
         return [exr_job.result(), png_job.result()]
 
 
-def write_frame(name: str, out_dir: Path, size, *, seed: int, frame: int | None,
-                display: str, view: str, lookup=None, config=None, tx=None) -> list[Path]:
+def write_frame(
+    name: str,
+    out_dir: Path,
+    size,
+    *,
+    seed: int,
+    frame: int | None,
+    display: str,
+    view: str,
+    lookup=None,
+    config=None,
+    tx=None,
+) -> list[Path]:
     """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths."""
-    picture, rgb = render_scene(name, size, seed=seed, frame=frame or 1, display=display,
-                                view=view, lookup=lookup, config=config)
-    return save_frame(name, picture, rgb, out_dir, seed=seed, frame=frame, display=display,
-                      view=view, tx=tx)
+    picture, rgb = render_scene(
+        name,
+        size,
+        seed=seed,
+        frame=frame or 1,
+        display=display,
+        view=view,
+        lookup=lookup,
+        config=config,
+    )
+    return save_frame(
+        name, picture, rgb, out_dir, seed=seed, frame=frame, display=display, view=view, tx=tx
+    )

@@ -195,11 +195,12 @@ def noise(x, y=None, z=None, *, seed: int = 0) -> np.ndarray:
         def kernel(part):
             return _noise2_chunk(part[0], part[1], gx, gy)
     else:
+
         def kernel(part):
             return _noise_chunk(part, perm, gperm)
 
     def work(start):
-        out[start:start + _CHUNK] = kernel([c[start:start + _CHUNK] for c in flat])
+        out[start : start + _CHUNK] = kernel([c[start : start + _CHUNK] for c in flat])
 
     starts = range(0, out.size, _CHUNK)
     if len(starts) > 1 and _WORKERS > 1:
@@ -222,8 +223,9 @@ def _pool():
     return ThreadPoolExecutor(max_workers=_WORKERS, thread_name_prefix="noise")
 
 
-def turbulence(x, y=None, z=None, *, octaves: int = 6, seed: int = 0,
-               filter_width=None) -> np.ndarray:
+def turbulence(
+    x, y=None, z=None, *, octaves: int = 6, seed: int = 0, filter_width=None
+) -> np.ndarray:
     """Perlin's turbulence ``sum_{i<octaves} |noise(2^i p)| / 2^i`` (float32).
 
     ``filter_width`` (scalar or array broadcasting with the coordinates) is the size
@@ -311,7 +313,7 @@ def turbulence(x, y=None, z=None, *, octaves: int = 6, seed: int = 0,
     total = np.zeros(shape, np.float32)
     mean = np.float32(MEAN_ABS_NOISE[len(coords)])
     for i in range(int(octaves)):
-        f = np.float32(2 ** i)
+        f = np.float32(2**i)
         amp = np.float32(1.0 / f)
         if fw is None:
             weight = None

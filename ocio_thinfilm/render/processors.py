@@ -28,13 +28,23 @@ from ocio_thinfilm.config.data import REFERENCE
 from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import tables
 
-__all__ = ["DEFAULT_CONFIG", "PACKAGE_CONFIG", "REFERENCE_SPACE", "table_colorspace",
-           "load_config", "ConfigProcessors", "make_lookup", "display_image", "build_table"]
+__all__ = [
+    "DEFAULT_CONFIG",
+    "PACKAGE_CONFIG",
+    "REFERENCE_SPACE",
+    "table_colorspace",
+    "load_config",
+    "ConfigProcessors",
+    "make_lookup",
+    "display_image",
+    "build_table",
+]
 
 #: The baked config a wheel carries as package data (setup.py copies the checkout's
 #: ``configs/thinfilm`` into ``ocio_thinfilm/data/thinfilm``); read-only, never baked.
-PACKAGE_CONFIG = Path(str(resources.files("ocio_thinfilm").joinpath("data", "thinfilm",
-                                                                   "config.ocio")))
+PACKAGE_CONFIG = Path(
+    str(resources.files("ocio_thinfilm").joinpath("data", "thinfilm", "config.ocio"))
+)
 
 
 def _checkout_config() -> Path | None:
@@ -63,11 +73,15 @@ def table_colorspace(spec) -> str:
     lo, hi = spec.range
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0) or spec.entries != tables.MORPHO_SIZE:
-            raise ValueError(f"the config's Morpho table covers cos(theta) in [0, 1] with "
-                             f"{tables.MORPHO_SIZE} entries, got {spec}")
+            raise ValueError(
+                f"the config's Morpho table covers cos(theta) in [0, 1] with "
+                f"{tables.MORPHO_SIZE} entries, got {spec}"
+            )
     elif (lo, hi) != (0.0, tables.FILM_TMAX_UM) or spec.entries != tables.FILM_SIZE:
-        raise ValueError(f"the config's thickness tables cover t' in [0, {tables.FILM_TMAX_UM:g}] "
-                         f"um with {tables.FILM_SIZE} entries, got {spec}")
+        raise ValueError(
+            f"the config's thickness tables cover t' in [0, {tables.FILM_TMAX_UM:g}] "
+            f"um with {tables.FILM_SIZE} entries, got {spec}"
+        )
     return registry.thin_film_space_for_kind(spec.kind).name
 
 
@@ -81,9 +95,12 @@ def load_config(config=None):
         path = DEFAULT_CONFIG
         if not path.is_file():
             if path == PACKAGE_CONFIG:
-                raise ParameterError("config", f" is needed: the package's config {path} is "
-                                               "missing (an install without its data? "
-                                               "reinstalling the wheel restores it)")
+                raise ParameterError(
+                    "config",
+                    f" is needed: the package's config {path} is "
+                    "missing (an install without its data? "
+                    "reinstalling the wheel restores it)",
+                )
             from ocio_thinfilm.export import bake
 
             bake.bake(path.parent)
@@ -103,8 +120,11 @@ class ConfigProcessors:
     (CIE-XYZ-D65 -> display code values)."""
 
     def __init__(self, config=None):
-        self.config = config if config is not None and not isinstance(config, (str, Path)) \
+        self.config = (
+            config
+            if config is not None and not isinstance(config, (str, Path))
             else load_config(config)
+        )
         self._cpu = {}
         #: The processors created so far, in order: ``"colorspace:<name>"`` and
         #: ``"view:<display>/<view>"`` (a scene builds only what it shows).
@@ -123,11 +143,15 @@ class ConfigProcessors:
             name = dict(self.config.getRoles()).get("scene_linear")
             cs = self.config.getColorSpace(name) if name else None
             if cs is None:
-                raise ParameterError("config", f": no {REFERENCE_SPACE} colour space and no "
-                                               "scene_linear role to reach it")
+                raise ParameterError(
+                    "config",
+                    f": no {REFERENCE_SPACE} colour space and no scene_linear role to reach it",
+                )
             scene_to_xyz, _ = merge.interchange(self.config)
-            self._bridge = (cs.getName(), ocio_ops.group(
-                [merge.colorspace_transform(cs, to_reference=True), scene_to_xyz]))
+            self._bridge = (
+                cs.getName(),
+                ocio_ops.group([merge.colorspace_transform(cs, to_reference=True), scene_to_xyz]),
+            )
         return self._bridge
 
     def _xyz_transform(self, source):
@@ -144,28 +168,32 @@ class ConfigProcessors:
             try:
                 self._cpu[key] = make().getDefaultCPUProcessor()
             except Exception as error:  # a missing space / view / LUT file
-                raise ParameterError("config", f": cannot build {key}: "
-                                               f"{str(error).splitlines()[0]}") from None
+                raise ParameterError(
+                    "config", f": cannot build {key}: {str(error).splitlines()[0]}"
+                ) from None
             self.created.append(key)
         return self._cpu[key]
 
     def table(self, spec):
         space = table_colorspace(spec)
-        return self._processor(f"colorspace:{space}",
-                               lambda: self.config.getProcessor(self._xyz_transform(space)))
+        return self._processor(
+            f"colorspace:{space}", lambda: self.config.getProcessor(self._xyz_transform(space))
+        )
 
     def view(self, display: str, view: str):
         import PyOpenColorIO as ocio
 
         def make():
             if self.config.getColorSpace(REFERENCE_SPACE) is not None:
-                return self.config.getProcessor(REFERENCE_SPACE, display, view,
-                                                ocio.TRANSFORM_DIR_FORWARD)
+                return self.config.getProcessor(
+                    REFERENCE_SPACE, display, view, ocio.TRANSFORM_DIR_FORWARD
+                )
             linear, to_xyz = self._xyz_bridge()
             from_xyz = ocio.GroupTransform([to_xyz])
             from_xyz.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-            return self.config.getProcessor(ocio.GroupTransform(
-                [from_xyz, ocio.DisplayViewTransform(linear, display, view)]))
+            return self.config.getProcessor(
+                ocio.GroupTransform([from_xyz, ocio.DisplayViewTransform(linear, display, view)])
+            )
 
         return self._processor(f"view:{display}/{view}", make)
 
@@ -174,12 +202,12 @@ class ConfigProcessors:
         unless the config has ``display`` with ``view``."""
         displays = list(self.config.getDisplays())
         if display not in displays:
-            raise ParameterError("display", f" {display!r}: the config has "
-                                            f"{', '.join(displays)}")
+            raise ParameterError("display", f" {display!r}: the config has {', '.join(displays)}")
         views = list(self.config.getViews(display))
         if view not in views:
-            raise ParameterError("view", f" {view!r}: the config's display {display} has "
-                                         f"{', '.join(views)}")
+            raise ParameterError(
+                "view", f" {view!r}: the config's display {display} has {', '.join(views)}"
+            )
 
 
 def _apply(cpu, pixels) -> np.ndarray:
@@ -222,8 +250,9 @@ def make_lookup(processors: ConfigProcessors | None = None):
     return lookup
 
 
-def display_image(picture, display: str, view: str,
-                  processors: ConfigProcessors | None = None) -> np.ndarray:
+def display_image(
+    picture, display: str, view: str, processors: ConfigProcessors | None = None
+) -> np.ndarray:
     """The display-encoded RGB of a scene's picture (float32, (H, W, 3)), each column
     region through its view (the config's display/view processors)."""
     processors = processors if processors is not None else ConfigProcessors()

@@ -43,8 +43,16 @@ from ocio_thinfilm.lut import tables
 from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.render import noise
 
-__all__ = ["TableSpec", "Picture", "Scene", "SCENES", "FILM_TABLE", "MORPHO_TABLE",
-           "get_scene", "D65_WHITE"]
+__all__ = [
+    "TableSpec",
+    "Picture",
+    "Scene",
+    "SCENES",
+    "FILM_TABLE",
+    "MORPHO_TABLE",
+    "get_scene",
+    "D65_WHITE",
+]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -106,15 +114,19 @@ class Scene:
     animation = ""
     tables: tuple[TableSpec, ...] = ()
 
-    def render(self, width: int, height: int, *, lookup: Lookup, seed: int = 0,
-               frame: int = 1) -> Picture:  # pragma: no cover - abstract
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:  # pragma: no cover - abstract
         raise NotImplementedError
 
 
 def _pixel_grid(width, height):
     """Pixel centres as float32 (x in [0, W), y in [0, H)), each (H, W)."""
-    y, x = np.meshgrid(np.arange(height, dtype=np.float32) + np.float32(0.5),
-                       np.arange(width, dtype=np.float32) + np.float32(0.5), indexing="ij")
+    y, x = np.meshgrid(
+        np.arange(height, dtype=np.float32) + np.float32(0.5),
+        np.arange(width, dtype=np.float32) + np.float32(0.5),
+        indexing="ij",
+    )
     return x, y
 
 
@@ -145,17 +157,23 @@ class SpectrumScene(Scene):
 
     name = "spectrum"
     figure = "Figure 4"
-    title = ("The visible spectrum (380 nm at the top to 700 nm) and two rows of "
-             "interference colours -- Newton's colours of a soap film (t' = 0 to 1 um) and "
-             "the near-spectral Morpho multilayer (0 to 60 degrees) -- through the "
-             "Constant-Lightness Clip, Constant-Lightness Compress, Channel Clamp and ACES "
-             "Gamut Compression views side by side")
+    title = (
+        "The visible spectrum (380 nm at the top to 700 nm) and two rows of "
+        "interference colours -- Newton's colours of a soap film (t' = 0 to 1 um) and "
+        "the near-spectral Morpho multilayer (0 to 60 degrees) -- through the "
+        "Constant-Lightness Clip, Constant-Lightness Compress, Channel Clamp and ACES "
+        "Gamut Compression views side by side"
+    )
     animation = "none (every frame is the same)"
     tables = (FILM_TABLE, MORPHO_TABLE)
 
     #: The views compared, left to right.
-    VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress", "Channel Clamp",
-             "ACES Gamut Compression")
+    VIEWS = (
+        "Constant-Lightness Clip",
+        "Constant-Lightness Compress",
+        "Channel Clamp",
+        "ACES Gamut Compression",
+    )
     #: Peak luminance of the spectrum strip (Y of the equal-energy spectrum at 555 nm).
     SPECTRUM_PEAK_Y = 0.6
     WAVELENGTHS = (380.0, 700.0)
@@ -172,8 +190,9 @@ class SpectrumScene(Scene):
         frac = (rows - header + 0.5) / max(1, len(rows))
 
         xyz = np.zeros((height, width, 3), np.float32)
-        aovs = {k: np.zeros((height, width), np.float32)
-                for k in ("wavelength", "thickness", "angle")}
+        aovs = {
+            k: np.zeros((height, width), np.float32) for k in ("wavelength", "thickness", "angle")
+        }
 
         # Spectrum: the CIE 1931 matching functions (equal-energy light), every 1 nm
         # interpolated to the rows.
@@ -194,8 +213,7 @@ class SpectrumScene(Scene):
         cos_t = np.cos(np.radians(theta)).astype(np.float32)
         morpho = MorphoScene.EXPOSURE * lookup(MORPHO_TABLE, cos_t[:, None])[:, 0, :]
 
-        columns = [(spec, "wavelength", wl), (film, "thickness", t_opt),
-                   (morpho, "angle", theta)]
+        columns = [(spec, "wavelength", wl), (film, "thickness", t_opt), (morpho, "angle", theta)]
         regions, labels = [], []
         font = int(min(header * 0.42, panel / (0.5 * max(map(len, self.VIEWS)))))
         small = int(font * 0.75)
@@ -206,8 +224,9 @@ class SpectrumScene(Scene):
                 xs = slice(x0 + j * (strip + gap), x0 + j * (strip + gap) + strip)
                 xyz[body, xs] = values[:, None, :]
                 aovs[aov][body, xs] = coordinate[:, None]
-                labels.append((x0 + j * (strip + gap) + strip // 2, int(header * 0.9),
-                               self.STRIPS[j], small))
+                labels.append(
+                    (x0 + j * (strip + gap) + strip // 2, int(header * 0.9), self.STRIPS[j], small)
+                )
             left = 0 if i == 0 else x0 - gap // 2
             right = width if i == len(self.VIEWS) - 1 else x0 + panel + gap // 2
             regions.append((left, right, view))
@@ -215,14 +234,21 @@ class SpectrumScene(Scene):
         if small < 6:  # too small to read: no captions on thumbnails
             labels = []
         return Picture(
-            xyz=xyz, aovs=aovs,
-            aov_docs={"wavelength": "wavelength of the spectrum strips in nm (0 elsewhere)",
-                      "thickness": "optical thickness t' = n t cos(theta_t) of the film "
-                                   "strips in micrometres (0 elsewhere)",
-                      "angle": "view angle of the Morpho strips in degrees (0 elsewhere)"},
-            regions=regions, labels=labels,
-            attributes={"spectrum_peak_Y": self.SPECTRUM_PEAK_Y,
-                        "morpho_exposure": MorphoScene.EXPOSURE})
+            xyz=xyz,
+            aovs=aovs,
+            aov_docs={
+                "wavelength": "wavelength of the spectrum strips in nm (0 elsewhere)",
+                "thickness": "optical thickness t' = n t cos(theta_t) of the film "
+                "strips in micrometres (0 elsewhere)",
+                "angle": "view angle of the Morpho strips in degrees (0 elsewhere)",
+            },
+            regions=regions,
+            labels=labels,
+            attributes={
+                "spectrum_peak_Y": self.SPECTRUM_PEAK_Y,
+                "morpho_exposure": MorphoScene.EXPOSURE,
+            },
+        )
 
 
 # --------------------------------------------------------------------------- #
@@ -237,21 +263,23 @@ class OilScene(Scene):
     name = "oil"
     figure = "Figure 5"
     title = "An oil slick on wet asphalt (Eq. 12-13), seen from above at an angle"
-    animation = ("the slick spreads: k1 and the centre thickness fall as "
-                 "1/(1 + 0.04 (frame - 1)), keeping its volume")
+    animation = (
+        "the slick spreads: k1 and the centre thickness fall as "
+        "1/(1 + 0.04 (frame - 1)), keeping its volume"
+    )
     tables = (FILM_TABLE,)
 
-    N_OIL = 1.5            # oil on water: air|oil inverts, oil|water does not -> phase change
-    T_CENTRE = 0.75        # physical thickness at the centre of the slick, um
-    K1 = 1.6               # Eq. 12: t = T exp(-k1 r^2), r in slick units (SLICK_SCALE)
-    K2 = 0.9               # Eq. 13: irregularity of the spreading
-    SLICK_SCALE = 0.38     # metres per slick unit
-    SPREAD = 0.04          # per frame
-    CAMERA_HEIGHT = 1.5    # metres above the road
-    PITCH = 52.0           # degrees below the horizon, looking at the slick centre
-    FOV = 44.0             # vertical field of view, degrees
-    FILM_GAIN = 0.4        # strength of the film's reflection of the sky
-    WATER_SHEEN = 0.012    # Fresnel reflection of the sky by the bare water film
+    N_OIL = 1.5  # oil on water: air|oil inverts, oil|water does not -> phase change
+    T_CENTRE = 0.75  # physical thickness at the centre of the slick, um
+    K1 = 1.6  # Eq. 12: t = T exp(-k1 r^2), r in slick units (SLICK_SCALE)
+    K2 = 0.9  # Eq. 13: irregularity of the spreading
+    SLICK_SCALE = 0.38  # metres per slick unit
+    SPREAD = 0.04  # per frame
+    CAMERA_HEIGHT = 1.5  # metres above the road
+    PITCH = 52.0  # degrees below the horizon, looking at the slick centre
+    FOV = 44.0  # vertical field of view, degrees
+    FILM_GAIN = 0.4  # strength of the film's reflection of the sky
+    WATER_SHEEN = 0.012  # Fresnel reflection of the sky by the bare water film
 
     def camera_rays(self, width, height):
         """Unit ray directions (H, W, 3) of a pinhole camera (z up, looking along +y
@@ -273,10 +301,10 @@ class OilScene(Scene):
     def render(self, width, height, *, lookup, seed=0, frame=1):
         d, eye, pixel_angle = self.camera_rays(width, height)
         dz = np.minimum(d[..., 2], np.float32(-1e-3))
-        s = -eye[2] / dz                                   # distance to the road
+        s = -eye[2] / dz  # distance to the road
         gx = eye[0] + s * d[..., 0]
         gy = eye[1] + s * d[..., 1]
-        cos_view = -dz                                      # cos of the view angle
+        cos_view = -dz  # cos of the view angle
         theta = np.degrees(np.arccos(np.clip(cos_view, 0.0, 1.0))).astype(np.float32)
         # Pixel footprint on the road (metres), stretched along the view direction.
         footprint = (s * pixel_angle / np.sqrt(cos_view)).astype(np.float32)
@@ -285,8 +313,13 @@ class OilScene(Scene):
         spread = 1.0 + self.SPREAD * (frame - 1)
         k1, t_centre = self.K1 / spread, self.T_CENTRE / spread
         sx, sy = gx / self.SLICK_SCALE, gy / self.SLICK_SCALE
-        turb = noise.turbulence(sx * 0.9, sy * 0.9, octaves=4, seed=seed,
-                                filter_width=footprint * (0.9 / self.SLICK_SCALE))
+        turb = noise.turbulence(
+            sx * 0.9,
+            sy * 0.9,
+            octaves=4,
+            seed=seed,
+            filter_width=footprint * (0.9 / self.SLICK_SCALE),
+        )
         t_phys = t_centre * np.exp(-k1 * (sx * sx + sy * sy + self.K2 * (turb - 0.45)))
         t_phys = np.minimum(t_phys, np.float32(t_centre)).astype(np.float32)
         # Optical thickness through the refraction angle (paper Eq. 10 form).
@@ -297,17 +330,28 @@ class OilScene(Scene):
         # Overcast sky seen in the mirror direction: CIE overcast gradation (1 + 2 cos z)/3,
         # the reflected ray's zenith angle equals the view angle.
         sky = (1.0 + 2.0 * cos_view) / 3.0
-        xyz = (asphalt + _grey(self.WATER_SHEEN * sky)
-               + np.float32(self.FILM_GAIN) * sky[..., None] * film).astype(np.float32)
+        xyz = (
+            asphalt
+            + _grey(self.WATER_SHEEN * sky)
+            + np.float32(self.FILM_GAIN) * sky[..., None] * film
+        ).astype(np.float32)
         return Picture(
             xyz=xyz,
             aovs={"thickness": t_opt, "angle": theta},
-            aov_docs={"thickness": "optical thickness t' = n t cos(theta_t) of the oil in "
-                                   "micrometres (the table index)",
-                      "angle": "view angle from the road's normal in degrees"},
+            aov_docs={
+                "thickness": "optical thickness t' = n t cos(theta_t) of the oil in "
+                "micrometres (the table index)",
+                "angle": "view angle from the road's normal in degrees",
+            },
             regions=[(0, width, None)],
-            attributes={"k1": k1, "k2": self.K2, "centre_thickness_um": t_centre,
-                        "n_oil": self.N_OIL, "film_gain": self.FILM_GAIN})
+            attributes={
+                "k1": k1,
+                "k2": self.K2,
+                "centre_thickness_um": t_centre,
+                "n_oil": self.N_OIL,
+                "film_gain": self.FILM_GAIN,
+            },
+        )
 
     @staticmethod
     def asphalt(gx, gy, footprint, seed):
@@ -316,14 +360,18 @@ class OilScene(Scene):
         bumps go on top. Shaded by the bump slope under the overcast sky; the water
         film darkens it."""
         scale = _smoothstep(-0.35, 0.35, noise.noise(gx * 0.8, gy * 0.8, seed=seed + 11))
-        rough = np.clip(0.6 + 0.8 * noise.noise(gx * 1.5 + 5.3, gy * 1.5, seed=seed + 12),
-                        0.15, 1.2)
-        coarse = noise.turbulence(gx * 14.0, gy * 14.0, octaves=3, seed=seed + 13,
-                                  filter_width=footprint * 14.0)
-        small = noise.turbulence(gx * 40.0, gy * 40.0, octaves=2, seed=seed + 14,
-                                 filter_width=footprint * 40.0)
-        fine = noise.turbulence(gx * 220.0, gy * 220.0, octaves=2, seed=seed + 15,
-                                filter_width=footprint * 220.0)
+        rough = np.clip(
+            0.6 + 0.8 * noise.noise(gx * 1.5 + 5.3, gy * 1.5, seed=seed + 12), 0.15, 1.2
+        )
+        coarse = noise.turbulence(
+            gx * 14.0, gy * 14.0, octaves=3, seed=seed + 13, filter_width=footprint * 14.0
+        )
+        small = noise.turbulence(
+            gx * 40.0, gy * 40.0, octaves=2, seed=seed + 14, filter_width=footprint * 40.0
+        )
+        fine = noise.turbulence(
+            gx * 220.0, gy * 220.0, octaves=2, seed=seed + 15, filter_width=footprint * 220.0
+        )
         height = rough * (coarse + scale * (small - coarse)) + 0.3 * fine
         # Shading from the height's slope in the image (light from the upper left).
         dy, dx = np.gradient(height)
@@ -346,21 +394,21 @@ class SoapScene(Scene):
     tables = (FILM_TABLE,)
 
     N_SOAP = 1.33
-    T_BOTTOM = 1.0         # physical thickness at the bottom of the bubble, um
-    TURB = 0.2             # weight of the turbulence added to the normalised height
-    BLACK = 0.06           # the still's black film: heights above this are drained
-    DRAIN = 0.01           # per frame: the black film grows by this much height
-    RADIUS = 0.44          # of the image's smaller side
+    T_BOTTOM = 1.0  # physical thickness at the bottom of the bubble, um
+    TURB = 0.2  # weight of the turbulence added to the normalised height
+    BLACK = 0.06  # the still's black film: heights above this are drained
+    DRAIN = 0.01  # per frame: the black film grows by this much height
+    RADIUS = 0.44  # of the image's smaller side
     FILM_GAIN = 0.85
 
     def render(self, width, height, *, lookup, seed=0, frame=1):
         x, y = _pixel_grid(width, height)
         r = np.float32(self.RADIUS * min(width, height))
         nx = (x - width / 2) / r
-        ny = (height / 2 - y) / r                      # up
+        ny = (height / 2 - y) / r  # up
         rho2 = nx * nx + ny * ny
         inside = rho2 < 1.0
-        nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))    # towards the (orthographic) viewer
+        nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))  # towards the (orthographic) viewer
         cos_view = nz
         theta = np.degrees(np.arccos(np.clip(cos_view, 0.0, 1.0))).astype(np.float32)
 
@@ -371,14 +419,19 @@ class SoapScene(Scene):
         # Air currents: turbulence stretched sideways (bands swirl more than they
         # rise), its lattice warped by one more noise call.
         swirl = noise.noise(nx * 1.2, ny * 1.2 + 7.1, seed=seed + 21)
-        turb = noise.turbulence(nx * 1.4 + 0.9 * swirl, ny * 3.2 + 0.6 * swirl
-                                - 0.02 * (frame - 1), octaves=5, seed=seed,
-                                filter_width=np.float32(3.2 / r))
+        turb = noise.turbulence(
+            nx * 1.4 + 0.9 * swirl,
+            ny * 3.2 + 0.6 * swirl - 0.02 * (frame - 1),
+            octaves=5,
+            seed=seed,
+            filter_width=np.float32(3.2 / r),
+        )
         level = h + self.TURB * (turb - 0.45)
         level = np.clip((level - drain) / (1.0 - drain), 0.0, None)
         t_phys = (self.T_BOTTOM * level).astype(np.float32)
-        t_opt = _optical_thickness_um(np.where(inside, t_phys, 0.0), self.N_SOAP,
-                                      np.where(inside, theta, 0.0))
+        t_opt = _optical_thickness_um(
+            np.where(inside, t_phys, 0.0), self.N_SOAP, np.where(inside, theta, 0.0)
+        )
         film = lookup(FILM_TABLE, t_opt)
 
         # Studio environment seen in the mirror direction: a soft bright window at the
@@ -395,18 +448,28 @@ class SoapScene(Scene):
         # a faint Schlick rim (F0 = 0.02) of the environment keeps the silhouette of
         # the black film visible.
         rim = 0.02 + 0.98 * (1.0 - cos_view) ** 5
-        xyz = backdrop + ((edge * env)[..., None]
-                          * (np.float32(self.FILM_GAIN) * film + _grey(0.12 * rim)))
+        xyz = backdrop + (
+            (edge * env)[..., None] * (np.float32(self.FILM_GAIN) * film + _grey(0.12 * rim))
+        )
         return Picture(
             xyz=xyz.astype(np.float32),
-            aovs={"thickness": np.where(inside, t_opt, 0.0).astype(np.float32),
-                  "angle": np.where(inside, theta, 0.0).astype(np.float32)},
-            aov_docs={"thickness": "optical thickness t' of the soap film in micrometres "
-                                   "(the table index; 0 off the bubble)",
-                      "angle": "view angle from the bubble's normal in degrees (0 off it)"},
+            aovs={
+                "thickness": np.where(inside, t_opt, 0.0).astype(np.float32),
+                "angle": np.where(inside, theta, 0.0).astype(np.float32),
+            },
+            aov_docs={
+                "thickness": "optical thickness t' of the soap film in micrometres "
+                "(the table index; 0 off the bubble)",
+                "angle": "view angle from the bubble's normal in degrees (0 off it)",
+            },
             regions=[(0, width, None)],
-            attributes={"n_soap": self.N_SOAP, "bottom_thickness_um": self.T_BOTTOM,
-                        "drain": drain, "film_gain": self.FILM_GAIN})
+            attributes={
+                "n_soap": self.N_SOAP,
+                "bottom_thickness_um": self.T_BOTTOM,
+                "drain": drain,
+                "film_gain": self.FILM_GAIN,
+            },
+        )
 
 
 # --------------------------------------------------------------------------- #
@@ -418,20 +481,24 @@ class MorphoScene(Scene):
 
     name = "morpho"
     figure = "Figure 7"
-    title = ("A wavy iridescent surface coloured by the Morpho multilayer table "
-             "(Eq. 9 + 14, d1 = 150 nm, d2 = 50 nm, n = 1.53, 12 layers)")
-    animation = ("the wing tilts back and forth: view tilt 6 + 18 sin(2 pi (frame - 1) / 48) "
-                 "degrees, a 48-frame loop")
+    title = (
+        "A wavy iridescent surface coloured by the Morpho multilayer table "
+        "(Eq. 9 + 14, d1 = 150 nm, d2 = 50 nm, n = 1.53, 12 layers)"
+    )
+    animation = (
+        "the wing tilts back and forth: view tilt 6 + 18 sin(2 pi (frame - 1) / 48) "
+        "degrees, a 48-frame loop"
+    )
     tables = (MORPHO_TABLE,)
 
     #: Eq. 9 is peak-normalised and narrow: Y ~ 0.03 at normal incidence. The scene is
     #: lit 5x brighter than the reference white so the blue reads on a display.
     EXPOSURE = 5.0
-    PIGMENT_Y = 0.006      # the dark melanin under the scales
-    TILT = 6.0             # degrees, the still's view tilt
-    TILT_SWING = 18.0      # degrees either side, over a loop of
-    TILT_PERIOD = 48       # frames
-    WAVES = 3.2            # waves across the image
+    PIGMENT_Y = 0.006  # the dark melanin under the scales
+    TILT = 6.0  # degrees, the still's view tilt
+    TILT_SWING = 18.0  # degrees either side, over a loop of
+    TILT_PERIOD = 48  # frames
+    WAVES = 3.2  # waves across the image
 
     def render(self, width, height, *, lookup, seed=0, frame=1):
         x, y = _pixel_grid(width, height)
@@ -451,10 +518,11 @@ class MorphoScene(Scene):
         # Fine scale texture: the rows of scales.
         fine = noise.noise(u * 90.0, v * 14.0, seed=seed + 33)
         hu = hu + 0.05 * fine
-        n = np.stack([-hu, hv, np.ones_like(hu)], axis=-1)   # image v runs down
+        n = np.stack([-hu, hv, np.ones_like(hu)], axis=-1)  # image v runs down
         n /= np.linalg.norm(n, axis=-1, keepdims=True)
-        tilt = np.radians(self.TILT + self.TILT_SWING
-                          * np.sin(2 * np.pi * (frame - 1) / self.TILT_PERIOD))
+        tilt = np.radians(
+            self.TILT + self.TILT_SWING * np.sin(2 * np.pi * (frame - 1) / self.TILT_PERIOD)
+        )
         view = np.array([np.sin(tilt) * 0.6, np.sin(tilt) * 0.8, np.cos(tilt)], np.float32)
         view /= np.linalg.norm(view)
         cos_view = np.clip(n @ view, 0.0, 1.0).astype(np.float32)
@@ -463,18 +531,25 @@ class MorphoScene(Scene):
         light = np.array([-0.4, 0.5, 0.77], np.float32)
         light /= np.linalg.norm(light)
         diffuse = np.clip(n @ light, 0.0, 1.0)
-        xyz = (np.float32(self.EXPOSURE) * colour
-               + _grey(self.PIGMENT_Y * (0.4 + 0.6 * diffuse)))
+        xyz = np.float32(self.EXPOSURE) * colour + _grey(self.PIGMENT_Y * (0.4 + 0.6 * diffuse))
         theta = np.degrees(np.arccos(cos_view)).astype(np.float32)
         return Picture(
             xyz=xyz.astype(np.float32),
             aovs={"cos_theta": cos_view, "angle": theta},
-            aov_docs={"cos_theta": "facing ratio cos(theta) = N.V (the table index)",
-                      "angle": "view angle from the surface normal in degrees"},
+            aov_docs={
+                "cos_theta": "facing ratio cos(theta) = N.V (the table index)",
+                "angle": "view angle from the surface normal in degrees",
+            },
             regions=[(0, width, None)],
-            attributes={"exposure": self.EXPOSURE, "tilt_deg": float(np.degrees(tilt)),
-                        "d1_nm": spectra.MORPHO["d1"], "d2_nm": spectra.MORPHO["d2"],
-                        "n": spectra.MORPHO["n"], "layers": spectra.MORPHO["layers"]})
+            attributes={
+                "exposure": self.EXPOSURE,
+                "tilt_deg": float(np.degrees(tilt)),
+                "d1_nm": spectra.MORPHO["d1"],
+                "d2_nm": spectra.MORPHO["d2"],
+                "n": spectra.MORPHO["n"],
+                "layers": spectra.MORPHO["layers"],
+            },
+        )
 
 
 SCENES = {s.name: s for s in (SpectrumScene(), OilScene(), SoapScene(), MorphoScene())}
@@ -486,5 +561,6 @@ def get_scene(name: str) -> Scene:
     try:
         return SCENES[name]
     except KeyError:
-        raise ValueError(f"unknown scene {name!r}; choose from {', '.join(SCENES)} "
-                         "or all") from None
+        raise ValueError(
+            f"unknown scene {name!r}; choose from {', '.join(SCENES)} or all"
+        ) from None
