@@ -43,27 +43,30 @@ def _modules():
     return sorted(p for p in PACKAGE.rglob("*.py") if p.name != "__main__.py")
 
 
-def _imports(path: Path):
-    """(line, imported module) of every ``ocio_thinfilm`` import in ``path``."""
+def _statements(path: Path):
+    """(line, module, imported names) of every ``ocio_thinfilm`` import in ``path``, lazy
+    ones included (``import ocio_thinfilm.x`` has no names); relative imports refused."""
     tree = ast.parse(path.read_text())
     for node in ast.walk(tree):
-        if (
-            isinstance(node, ast.ImportFrom)
-            and node.module
-            and node.level == 0
-            and node.module.startswith("ocio_thinfilm")
-        ):
-            if node.module == "ocio_thinfilm":
-                for alias in node.names:
-                    yield node.lineno, f"ocio_thinfilm.{alias.name}"
-            else:
-                yield node.lineno, node.module
-        elif isinstance(node, ast.ImportFrom) and node.level:
-            raise AssertionError(f"{path}:{node.lineno}: relative import (use absolute ones)")
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                raise AssertionError(f"{path}:{node.lineno}: relative import (use absolute ones)")
+            if node.module and node.module.startswith("ocio_thinfilm"):
+                yield node.lineno, node.module, [alias.name for alias in node.names]
         elif isinstance(node, ast.Import):
             for alias in node.names:
                 if alias.name.startswith("ocio_thinfilm"):
-                    yield node.lineno, alias.name
+                    yield node.lineno, alias.name, []
+
+
+def _imports(path: Path):
+    """(line, imported module) of every ``ocio_thinfilm`` import in ``path``."""
+    for line, module, names in _statements(path):
+        if module == "ocio_thinfilm" and names:
+            for name in names:
+                yield line, f"ocio_thinfilm.{name}"
+        else:
+            yield line, module
 
 
 def _imports_evaluation(path: Path) -> list[int]:
@@ -132,21 +135,10 @@ def _edges(path: Path):
     ``from package import name`` the submodule ``package.name`` where that is a module,
     else the package itself."""
     known = {_module_name(p) for p in _modules()}
-    tree = ast.parse(path.read_text())
-    for node in ast.walk(tree):
-        if (
-            isinstance(node, ast.ImportFrom)
-            and node.module
-            and node.level == 0
-            and node.module.startswith("ocio_thinfilm")
-        ):
-            for alias in node.names:
-                sub = f"{node.module}.{alias.name}"
-                yield sub if sub in known else node.module
-        elif isinstance(node, ast.Import):
-            for alias in node.names:
-                if alias.name.startswith("ocio_thinfilm"):
-                    yield alias.name
+    for _, module, names in _statements(path):
+        for name in names or [None]:
+            sub = f"{module}.{name}"
+            yield sub if name and sub in known else module
 
 
 def _cycles(graph: dict) -> list:
