@@ -163,6 +163,27 @@ def test_lut_factorisation_is_the_analytic_map(display):
     np.testing.assert_allclose(a, compress.compress_RGB(rgb, display), atol=1e-9)
 
 
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_white_squeeze_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch):
+    """S_w's stored codes are the same whatever the last bits of the luminance row
+    (another CPU's dot product): past white a grey node takes the formula's limit
+    Y + A (1 - Y), not a ratio of rounding errors (one node of each S_w differed by up to
+    192 codes between two machines)."""
+    nodes, tops = clip_lut._white_nodes(compress_lut.SOFT_WHITE_SIZE, display)
+    C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
+    w0 = clip_lut._luminance(display)
+    codes = []
+    for k in (0, -2, -1, 1, 2):
+        w = w0 * (1.0 + k * np.finfo(float).eps)
+        monkeypatch.setattr(compress_lut, "_luminance", lambda _d, w=w: w)
+        white = np.clip(compress_lut.soft_white_RGB(C, display), 0.0, tops) / tops
+        codes.append(compress_lut._half16(white))
+    grey = np.all(C == C[:, :1], axis=1) & (C[:, 0] > 1.0)
+    assert grey.any()  # the nodes that were at stake
+    for other in codes[1:]:
+        np.testing.assert_array_equal(other, codes[0])
+
+
 # --------------------------------------------------------------------------- #
 # The config's views
 # --------------------------------------------------------------------------- #

@@ -259,6 +259,41 @@ def test_black_and_white_passes_compose_to_the_clip():
         np.testing.assert_allclose(both, paper, atol=1e-9)
 
 
+def _ulp_rows(display):
+    """The display's luminance row and four copies a few ulps away: the sums of a dot
+    product another CPU (another SIMD width, FMA or not) may compute."""
+    w = clip_lut._luminance(display)
+    return [w * (1.0 + k * np.finfo(float).eps) for k in (0, -2, -1, 1, 2)]
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_white_pass_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch):
+    """The white pass's stored codes are the same whatever the last bits of the
+    luminance row: a grey node past white (every channel 1.004) goes to white, not to a
+    0 / 0 that one CPU rounded to white and another to the grey itself (52428 against
+    52520 in one node of each white pass, seen between two machines)."""
+    nodes, _ = clip_lut._white_nodes(clip_lut.WHITE_SIZE, display)
+    C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
+    codes = []
+    for w in _ulp_rows(display):
+        monkeypatch.setattr(clip_lut, "_luminance", lambda _d, w=w: w)
+        out = np.clip(clip_lut._white_continuation(C, display), 0.0, None)
+        codes.append(clip_lut._q16(clip_lut._encode(out, "sRGB") / clip_lut.WHITE_SCALE))
+    grey = np.all(C == C[:, :1], axis=1) & (C[:, 0] > 1.0)
+    assert grey.any()  # the nodes that were at stake
+    np.testing.assert_array_equal(codes[0][grey], 1.0 / clip_lut.WHITE_SCALE)
+    for other in codes[1:]:
+        np.testing.assert_array_equal(other, codes[0])
+
+
+def test_lut_files_hold_no_negative_zero():
+    """No -0 in the 16-bit LUTs: its sign (and the file's text) depended on the CPU."""
+    lut = clip_lut.clip_lut("sRGB")
+    for array in (lut.black, lut.white, lut.white_shaper):
+        assert not np.signbit(array).any()
+    assert not np.signbit(clip_lut._q16(np.array([-0.0, -1e-9, 0.0]))).any()
+
+
 # --------------------------------------------------------------------------- #
 # Views
 # --------------------------------------------------------------------------- #

@@ -117,6 +117,9 @@ SHAPER_LENGTH = 16384
 WORKING_ENCODING = "sRGB"
 #: 16-bit LUT files: values are stored as codes of this maximum.
 LUT_CODE_MAX = 65535
+#: Relative size of max(c) - Y below which a colour counts as neutral (a grey to
+#: rounding: the luminance row sums to 1 only to a few ulps).
+NEUTRAL_TOLERANCE = 1e-12
 
 
 def white_size(size: int) -> int:
@@ -328,9 +331,14 @@ def _white_continuation(RGB, display):
     rgb = np.asarray(RGB, dtype=np.float64)
     Y = rgb @ _luminance(display)
     top = rgb.max(axis=-1)
+    # a neutral colour (max c - Y at rounding level) has every channel as its largest,
+    # and the largest always goes to 1: past white a grey goes to white, not to 0 / 0
+    # (whose rounding differs between CPUs)
+    neutral = top - Y <= NEUTRAL_TOLERANCE * np.maximum(np.abs(top), 1.0)
     with np.errstate(all="ignore"):
-        t = np.where((top > 1.0) & (top > Y), (1.0 - Y) / (top - Y), 1.0)
-    return Y[..., None] + t[..., None] * (rgb - Y[..., None])
+        t = np.where((top > 1.0) & ~neutral, (1.0 - Y) / (top - Y), 1.0)
+    out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
+    return np.where(((top > 1.0) & neutral)[..., None], 1.0, out)
 
 
 def _grow(first, length, cells):
@@ -807,7 +815,8 @@ def _halves_inside(z, Vz, margin=2.0 * 0.5 / LUT_CODE_MAX):
 
 def _q16(values):
     """``values`` clipped to [0, 1] and rounded to the 16-bit grid."""
-    return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX
+    # + 0.0: no negative zero, whose sign (and so the file's text) depends on the CPU
+    return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX + 0.0
 
 
 @colorimetry.persistent(modules=("ocio_thinfilm.lut.clip_lut", "ocio_thinfilm.colour.colorimetry"))

@@ -46,6 +46,7 @@ from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as soft
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.lut.clip_lut import (
+    NEUTRAL_TOLERANCE,
     ClipLUT,
     _chart_cover,
     _chart_to_XYZ,
@@ -118,7 +119,12 @@ def soft_white_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT, pow
         k = _sigma(D, threshold, limit, power) / s_black
         k = np.where(Y < 1.0, k, asymptote * (1.0 - Y) / top)
         k = np.where((top > 0.0) & (Y > 0.0) & np.isfinite(k), k, 1.0)
-    return Y[..., None] + k[..., None] * (rgb - Y[..., None])
+    out = Y[..., None] + k[..., None] * (rgb - Y[..., None])
+    # past white a neutral colour (max(c - Y) at rounding level) has every channel as its
+    # largest: Y + A (1 - Y) in each, the formula's limit, not a ratio of rounding errors
+    # (which differ between CPUs)
+    neutral = (Y >= 1.0) & (top <= NEUTRAL_TOLERANCE * np.maximum(np.abs(Y), 1.0))
+    return np.where(neutral[..., None], (Y + asymptote * (1.0 - Y))[..., None], out)
 
 
 def _plan_matrix(M, perm, lam_nodes, mu, a_nodes, cells):
