@@ -56,7 +56,7 @@ def section(ctx) -> Section:
         ),
     }
     for name, tf in ocio_paths.items():
-        paths[name] = (lambda tf: lambda: ocio_ops.apply(tf, img))(tf)
+        paths[name] = lambda tf=tf: ocio_ops.apply(tf, img)
     rows, series, raw = [], {}, []
     for name, fn in paths.items():
         out = np.asarray(fn(), dtype=np.float64)
@@ -83,7 +83,8 @@ def section(ctx) -> Section:
             [
                 "### 1d. Analytic per-pixel evaluation vs LUT application",
                 "",
-                f"From a thickness image ({n} random t' in 0–1.5 µm) to clipped display-linear sRGB, "
+                f"From a thickness image ({n} random t' in 0–1.5 µm) to clipped display-linear "
+                "sRGB, "
                 "against the analytic clip of a fine reference spectrum "
                 f"({ref_step:g} nm band-limited). Throughput per pixel, one thread.",
                 "",

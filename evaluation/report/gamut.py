@@ -142,7 +142,7 @@ def section(ctx) -> Section:
         outside = ~clip.in_gamut(rgb)
         lab0 = _lab(xyz)
         raw[set_name] = {"fraction_outside": float(outside.mean())}
-        for m_id, (m_name, fn, _, _) in methods.items():
+        for m_name, fn, _, _ in methods.values():
             out = np.asarray(fn(rgb), dtype=np.float64)
             if set_id == "spectral_locus":
                 mapped_locus[m_name] = out
@@ -188,7 +188,7 @@ def section(ctx) -> Section:
     speed = {}
     for m_name, fn, how, fraction in methods.values():
         sub = img[: (h * w) // fraction]
-        sec = best_time(lambda: fn(sub), repeat=2, min_time=0.05, max_calls=3)
+        sec = best_time(lambda fn=fn, sub=sub: fn(sub), repeat=2, min_time=0.05, max_calls=3)
         speed[f"{m_name} ({how})"] = sub.shape[0] / sec / 1e6
     ocio_speed, view_speed = _ocio_speeds(img, display)
     speed.update(ocio_speed)
@@ -207,7 +207,8 @@ def section(ctx) -> Section:
         sharex=True,
         gridspec_kw={"height_ratios": [1] * len(methods) + [3]},
     )
-    for ax, (m_name, out) in zip(axes, mapped_locus.items()):
+    # axes has one row more than the methods: the hue-shift plot below
+    for ax, (m_name, out) in zip(axes, mapped_locus.items(), strict=False):
         enc = colour.cctf_encoding(np.clip(out, 0, 1), function="sRGB")
         ax.imshow(enc[None, :, :], aspect="auto", extent=(wl[0], wl[-1], 0, 1))
         ax.set_yticks([])
@@ -233,7 +234,8 @@ def section(ctx) -> Section:
         "the gamut; ΔL* and Δh_ab in CIELAB (D65), Δh only where C*ab > 5. The ACES 1.3 "
         "compression (OCIO `ACES_GamutComp13`, applied to display-linear RGB) is followed by a "
         "clamp; the OKLCh method is the CSS Color 4 binary search (JND 0.02, ε 1e-4) implemented "
-        "in `evaluation/report/peers.py` with colour-science's Oklab. Per that spec, colours whose Oklab L is ≥ 1 map "
+        "in `evaluation/report/peers.py` with colour-science's Oklab. Per that spec, colours "
+        "whose Oklab L is ≥ 1 map "
         "to white: at Y = 0.2 the deep-blue spectral colours have L > 1 (their S-cone response is "
         "huge), which is what drives its hue and lightness figures on the spectral locus.",
         "",

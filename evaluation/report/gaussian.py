@@ -119,7 +119,8 @@ def section(ctx) -> Section:
         "",
         f"Cost per colour: Gaussian fit {fmt(raw['us_per_colour']['belcour_barla'])} µs, ours "
         f"({d_step:g} nm band-limited) {fmt(raw['us_per_colour'][ours_key])} µs "
-        f"(ratio {fmt(sec_ours / sec_bb)}×) — though a table lookup removes that cost at render time.",
+        f"(ratio {fmt(sec_ours / sec_bb)}×) — though a table lookup removes that cost at "
+        "render time.",
         "",
         img,
     ]

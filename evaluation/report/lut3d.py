@@ -176,12 +176,15 @@ def section(ctx) -> Section:
                 "",
                 "The constant-lightness clip into sRGB baked into a Lut3D, applied through OCIO "
                 "(float32), against the analytic `clip_XYZ` (float64). Test colours: "
-                f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} spectral "
-                "mixtures (random mixtures of up to three spectral colours at Y 0.01–0.99: extreme "
-                "inputs, most of them outside the object-colour solid and far outside sRGB). Domains: the shipped `clip_lut.clip_transform` (the faces through black "
+                f"{n_int} interference colours (soap film, film on glass, Morpho) and {n_real} "
+                "spectral mixtures (random mixtures of up to three spectral colours at Y "
+                "0.01–0.99: extreme inputs, most of them outside the object-colour solid and far "
+                "outside sRGB). Domains: the shipped `clip_lut.clip_transform` (the faces "
+                "through black "
                 "over a projective chromaticity chart and Y, then the faces through white over "
                 "encoded display RGB; see `clip_lut.ClipLUT`); "
-                "display-linear RGB over the box that holds the interference colours, with an affine "
+                "display-linear RGB over the box that holds the interference colours, with an "
+                "affine "
                 "shaper (spectral mixtures beyond it are clamped by the LUT); "
                 "and the naive XYZ/white cube without shaper. Bake = building the transform "
                 "(the shipped LUT's vertex computation is cached per size, so only its first "
@@ -204,7 +207,8 @@ def section(ctx) -> Section:
                     rows,
                 ),
                 "",
-                f"Default (from the signature of `clip_transform`): two {d_size}³ LUTs, tetrahedral.",
+                f"Default (from the signature of `clip_transform`): two {d_size}³ LUTs, "
+                "tetrahedral.",
                 "",
                 img_md,
             ]

@@ -201,7 +201,7 @@ def machine_description() -> dict:
             info["git"] = rev.stdout.strip()
     with contextlib.suppress(OSError, AttributeError):
         info["load_average_1_5_15min"] = " / ".join(f"{v:.2f}" for v in os.getloadavg())
-    info["date_utc"] = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    info["date_utc"] = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
     return info
 
 

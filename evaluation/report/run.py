@@ -127,7 +127,8 @@ def _run_report(ctx, quick, progress) -> Path:
         "ratios between measurements of the same run.",
         "",
         "Section times: " + ", ".join(f"{k} {v:.1f} s" for k, v in timings.items()) + ". "
-        f"Load average (1/5/15 min) at the start {results['machine'].get('load_average_1_5_15min', '?')}"
+        "Load average (1/5/15 min) at the start "
+        f"{results['machine'].get('load_average_1_5_15min', '?')}"
         f", at the end {load_after}: other processes share the cores, so absolute speeds vary "
         "between runs; the ratios within one run are the figures to read.",
         "",

@@ -39,7 +39,9 @@ def section(ctx) -> Section:
             s_thin, s_all = stats(de[:n]), stats(de)
             cost = (
                 best_time(
-                    lambda: colorimetry.film_XYZ(timing_t, step=step, band_limited=bl),
+                    lambda step=step, bl=bl: colorimetry.film_XYZ(
+                        timing_t, step=step, band_limited=bl
+                    ),
                     repeat=2 if q else 3,
                 )
                 / timing_t.size

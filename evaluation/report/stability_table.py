@@ -69,9 +69,10 @@ def section(ctx) -> Section:
             [
                 "## 3. Stability on stiff and extreme cases",
                 "",
-                "Measured now; expectations are physical or geometric facts (incoherent limit, Fresnel, "
-                "total internal reflection, mpmath at 50 digits, the geometric limit of the clip), and each "
-                "row is asserted independently by the named test. XYZ rows go through `clip_XYZ` into sRGB.",
+                "Measured now; expectations are physical or geometric facts (incoherent limit, "
+                "Fresnel, total internal reflection, mpmath at 50 digits, the geometric limit of "
+                "the clip), and each row is asserted independently by the named test. XYZ rows "
+                "go through `clip_XYZ` into sRGB.",
                 "",
                 body,
                 "",

@@ -130,9 +130,10 @@ def section(ctx) -> Section:
                 "### 1b. 1D table size and spacing",
                 "",
                 f"The soap-film thickness table (`tables.film_table`, 0–{tmax:g} µm, linear "
-                "interpolation through OCIO's Lut1D behind a log shaper) against direct evaluation of the "
-                f"same spectra ({step:g} nm band-limited) at {thin.size} random t' in 0–1.5 µm and "
-                f"{thick.size} in 0–{tmax:g} µm: the error is the table's alone. Bake = first build "
+                "interpolation through OCIO's Lut1D behind a log shaper) against direct "
+                f"evaluation of the same spectra ({step:g} nm band-limited) at {thin.size} random "
+                f"t' in 0–1.5 µm and {thick.size} in 0–{tmax:g} µm: the error is the table's "
+                "alone. Bake = first build "
                 f"(uncached); apply = OCIO CPU processor on {img.shape[0]} pixels, one thread. "
                 f"OCIO path vs the numpy `lookup`: ΔE2000 max {fmt(ocio_check)} (float32).",
                 "",

@@ -71,11 +71,11 @@ def section(ctx) -> Section:
             tf = view_transforms.view_transform("sRGB", view)
             cpu = ocio_cpu(tf)
 
-            def one():
+            def one(cpu=cpu):
                 np.copyto(work, img)
                 cpu.applyRGB(work.reshape(-1, 3))
 
-            def many():
+            def many(cpu=cpu):
                 np.copyto(work, img)
                 list(
                     pool.map(lambda s: cpu.applyRGB(work[s[0] : s[-1] + 1].reshape(-1, 3)), strips)
@@ -101,7 +101,7 @@ def section(ctx) -> Section:
                 o[n] = (
                     px
                     / best_time(
-                        lambda n=n: oiio.ImageBufAlgo.ociofiletransform(
+                        lambda n=n, path=path: oiio.ImageBufAlgo.ociofiletransform(
                             dst, src, path, unpremult=False, nthreads=n
                         ),
                         repeat=rep,
@@ -164,15 +164,17 @@ def section(ctx) -> Section:
             [
                 "## 4. Throughput against the physical limit",
                 "",
-                f"Each view of `view_transforms.view_transform('sRGB', view)` (CIE-XYZ-D65 → sRGB-encoded) on a "
-                f"{w}×{h} float32 RGB image of interference colours ({px * 12 / 2**20:.0f} MiB). The "
-                "bound is a plain memory copy of the same buffer: numpy `copyto` "
-                f"{copy1:.0f} Mpixel/s on one thread, {copyN:.0f} on {threads} threads; OIIO "
-                f"`ImageBufAlgo.copy` {oiio_copy[1]:.0f} (1 thread) / {oiio_copy[0]:.0f} (all threads). "
-                "OCIO's CPU processor applies single-threaded per call, so 'all threads' is either a "
-                f"thread pool of {threads} over image strips (OCIO releases the GIL) or OIIO's "
-                "`ImageBufAlgo.ociofiletransform` — the engine behind `oiiotool --ociofiletransform`, "
-                "run on the view written as a CTF file — with nthreads = 0 (all).",
+                "Each view of `view_transforms.view_transform('sRGB', view)` (CIE-XYZ-D65 → "
+                f"sRGB-encoded) on a {w}×{h} float32 RGB image of interference colours "
+                f"({px * 12 / 2**20:.0f} MiB). The bound is a plain memory copy of the same "
+                f"buffer: numpy `copyto` {copy1:.0f} Mpixel/s on one thread, {copyN:.0f} on "
+                f"{threads} threads; OIIO `ImageBufAlgo.copy` {oiio_copy[1]:.0f} (1 thread) / "
+                f"{oiio_copy[0]:.0f} (all threads). OCIO's CPU processor applies single-threaded "
+                "per call, so 'all threads' is either a thread pool of "
+                f"{threads} over image strips (OCIO releases the GIL) or OIIO's "
+                "`ImageBufAlgo.ociofiletransform` — the engine behind "
+                "`oiiotool --ociofiletransform`, run on the view written as a CTF file — with "
+                "nthreads = 0 (all).",
                 "",
                 table(
                     [

@@ -13,6 +13,7 @@ result.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm.physics.sampling import (
     MAX_LAYERS,
@@ -28,7 +29,9 @@ from ocio_thinfilm.physics.sampling import (
 __all__ = ["airy_reflectance", "transfer_matrix_reflectance"]
 
 
-def _cos_refracted(n_incident, n_layer, sin_incident):
+def _cos_refracted(
+    n_incident: npt.ArrayLike, n_layer: npt.ArrayLike, sin_incident: np.ndarray
+) -> np.ndarray:
     """cos(theta) inside a layer from Snell's law, on the branch colour-science's TMM
     and Byrnes' tmm use (forward-decaying for evanescent and absorbing layers)."""
     n_layer = np.asarray(n_layer, dtype=np.complex128)
@@ -41,14 +44,16 @@ def _cos_refracted(n_incident, n_layer, sin_incident):
     return np.where(flip, -cos_t, cos_t)
 
 
-def _fresnel(n_i, cos_i, n_j, cos_j):
+def _fresnel(
+    n_i: np.ndarray, cos_i: np.ndarray, n_j: np.ndarray, cos_j: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """Fresnel amplitude reflection coefficients (s, p) at one interface.
 
     Both denominators vanish only when both cosines do (grazing incidence on an
     index-matched interface, which is no interface at all): r = 0 there, not 0/0.
     """
 
-    def ratio(num, den):
+    def ratio(num: npt.ArrayLike, den: npt.ArrayLike) -> np.ndarray:
         num, den = np.broadcast_arrays(np.asarray(num, complex), np.asarray(den, complex))
         return np.divide(num, den, out=np.zeros_like(num), where=den != 0)
 
@@ -57,7 +62,7 @@ def _fresnel(n_i, cos_i, n_j, cos_j):
     return rs, rp
 
 
-def _complex_index(name, n):
+def _complex_index(name: str, n: npt.ArrayLike) -> np.ndarray:
     n = np.asarray(n)
     if n.dtype.kind != "c":
         n = as_index(name, n)
@@ -67,16 +72,16 @@ def _complex_index(name, n):
 
 
 def airy_reflectance(
-    thickness,
-    wavelengths,
-    n_film,
-    theta=0.0,
+    thickness: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    n_film: npt.ArrayLike,
+    theta: npt.ArrayLike = 0.0,
     *,
-    n_incident=1.0,
-    n_substrate=1.0,
+    n_incident: npt.ArrayLike = 1.0,
+    n_substrate: npt.ArrayLike = 1.0,
     band_limited: bool = False,
     harmonics: int = 64,
-):
+) -> np.ndarray:
     """Exact reflectance of one film: the Airy sum of all internal reflections.
 
     ``r = (r01 + r12 e^{i delta}) / (1 + r01 r12 e^{i delta})`` with Fresnel
@@ -170,7 +175,7 @@ def airy_reflectance(
         )
     need_sin = any(np.any(q[0][3]) or np.any(q[1][3]) for q in pols)
 
-    def point(psi, rho=None):
+    def point(psi: np.ndarray, rho: np.ndarray | None = None) -> np.ndarray:
         arrays = [x for q in pols for x in (*q[0], *q[1], *q[2:])]
         lead = np.broadcast_shapes(psi.shape[:-1], *(np.shape(x) for x in arrays))
         width = psi.shape[-1]
@@ -178,11 +183,17 @@ def airy_reflectance(
         if rho is not None:
             rho = np.broadcast_to(rho, lead + (width,)).reshape(-1, width)
 
-        def column(x):
+        def column(x: npt.ArrayLike) -> np.ndarray:
             return np.broadcast_to(x, lead).reshape(-1, 1)
 
         flat = [
-            ([column(x) for x in q[0]], [column(x) for x in q[1]], *(column(x) for x in q[2:]))
+            (
+                [column(x) for x in q[0]],
+                [column(x) for x in q[1]],
+                column(q[2]),
+                column(q[3]),
+                column(q[4]),
+            )
             for q in pols
         ]
         out = np.empty(psi.shape)
@@ -231,7 +242,7 @@ def airy_reflectance(
     path = 2.0 * beta_path
     wavenumber = 2.0 * np.pi / wl
 
-    def exact():
+    def exact() -> np.ndarray:
         psi = np.real(path)[..., None] * wavenumber
         decay = np.imag(path)[..., None]
         return point(psi, np.exp(-decay * wavenumber) if np.any(decay) else None)
@@ -264,8 +275,14 @@ def airy_reflectance(
 
 
 def transfer_matrix_reflectance(
-    n_layers, thicknesses, wavelengths, theta=0.0, *, n_incident=1.0, n_substrate=1.0
-):
+    n_layers: npt.ArrayLike,
+    thicknesses: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    theta: npt.ArrayLike = 0.0,
+    *,
+    n_incident: npt.ArrayLike = 1.0,
+    n_substrate: npt.ArrayLike = 1.0,
+) -> np.ndarray:
     """Exact reflectance of a multilayer stack (transfer-matrix physics).
 
     ``n_layers`` and ``thicknesses`` (nm) list the layers from the incidence side;
@@ -312,7 +329,7 @@ def transfer_matrix_reflectance(
     [0.1215919]
     """
     wl = check_wavelengths(wavelengths)
-    theta = np.deg2rad(as_angle(theta))[..., None]
+    angle: np.ndarray = np.deg2rad(as_angle(theta))[..., None]  # radians; broadcasts against wl
     n_list = [_complex_index("n_layers", n) for n in np.atleast_1d(n_layers)]
     d_list = np.atleast_1d(as_array("thicknesses", thicknesses, minimum=0.0, unit=" nm"))
     if not n_list:
@@ -321,12 +338,12 @@ def transfer_matrix_reflectance(
         raise ValueError("n_layers and thicknesses must be 1-D and of equal length")
     n0 = _complex_index("n_incident", n_incident)
     ns = _complex_index("n_substrate", n_substrate)
-    sin0 = np.sin(theta) + 0j
+    sin0 = np.sin(angle) + 0j
     keep = [j for j in range(d_list.size) if d_list[j] > 0]
     media = [n0] + [n_list[j] for j in keep] + [ns]
     depths = [d_list[j] for j in keep]
     cosines = [_cos_refracted(n0, m, sin0) for m in media]
-    shape = np.broadcast_shapes(theta.shape, wl.shape)
+    shape = np.broadcast_shapes(angle.shape, wl.shape)
     # z_j for every layer (shared by both polarisations); media[j] is layer j.
     z = [
         np.exp(2j * (2.0 * np.pi / wl) * media[j] * cosines[j] * depths[j - 1])
