@@ -57,14 +57,13 @@ def _lut_megabytes(display, view):
     compression reads those and its own two)."""
     from ocio_thinfilm import registry
 
+    entry = registry.as_display(display)
     stems = {
-        "Constant-Lightness Clip": (registry.clip_lut_stem,),
-        "Constant-Lightness Compress": (registry.clip_lut_stem, registry.compress_lut_stem),
+        "Constant-Lightness Clip": (entry.clip_lut_stem,),
+        "Constant-Lightness Compress": (entry.clip_lut_stem, entry.compress_lut_stem),
     }.get(view, ())
     files = [
-        CONFIG.parent / "luts" / f"{stem(display, white)}.clf"
-        for stem in stems
-        for white in (False, True)
+        CONFIG.parent / "luts" / f"{stem(white)}.clf" for stem in stems for white in (False, True)
     ]
     return sum(f.stat().st_size for f in files) / 1e6
 

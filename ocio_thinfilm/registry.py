@@ -1,23 +1,30 @@
 """One registry of the displays, views and thin-film input spaces the package ships.
 
-Every other module derives its lists from here: ``clip.DISPLAYS``,
-``config.DISPLAY_SPACES``, ``display_transforms.DISPLAY_ENCODINGS``, the config's
-thin-film spaces and views, the LUT file names of the config and of ``export``, and the
-renderer's display choices and PNG tags. Adding a display is one :class:`Display`
-entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm bake``); an HDR display is one
+Every other module takes its lists from here: ``clip.DISPLAYS``, the config's display
+colour spaces and encodings, its thin-film spaces and views, the LUT file names of the
+config and of ``export``, and the renderer's display choices and PNG tags. Adding a
+display is one :class:`Display` entry in :data:`DISPLAY_LIST` (then ``ocio-thinfilm
+bake``); an HDR display is one
 :class:`HDRDisplay` entry in :data:`HDR_DISPLAY_LIST`, which reuses the clip LUTs of the
 SDR display with its primaries (:data:`DISPLAYS` are the SDR displays, the gamuts the
 clip is baked for; :data:`ALL_DISPLAYS` are the config's displays, HDR ones included).
 
-The registry is plain data (frozen dataclasses) and imports nothing but
-:mod:`ocio_thinfilm.colour.colorimetry`; it is validated once, at import (:func:`validate`).
+Displays travel through the package as these objects, the way colour-science passes an
+``RGB_Colourspace``: a public function that takes a ``display`` accepts the object or its
+name and resolves it once (:func:`as_display`); what follows reads its attributes (its
+gamut, whether it is HDR, its scale, its LUT stems) instead of looking the name up again.
+
+The registry is plain data (frozen dataclasses) and imports nothing of the pipeline (the
+stages import it; ``tests/test_registry.py`` checks its names against the colorimetry);
+it is validated once, at import (:func:`validate`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar, TypeAlias
 
-from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.io import ParameterError
 
 __all__ = [
     "Display",
@@ -30,20 +37,20 @@ __all__ = [
     "THIN_FILM_LIST",
     "DISPLAYS",
     "HDR_DISPLAYS",
+    "ALL_DISPLAY_LIST",
     "ALL_DISPLAYS",
     "VIEWS",
     "THIN_FILM_SPACES",
-    "display",
-    "hdr_display",
-    "is_hdr",
-    "gamut_of",
+    "AnyDisplay",
+    "DisplayLike",
+    "as_display",
+    "find_display",
+    "display_name",
     "HDR_REFERENCE_WHITE",
     "OCIO_XYZ_UNIT",
     "thin_film_space_for_kind",
     "CLIP_FILE_STEM",
-    "clip_lut_stem",
     "COMPRESS_FILE_STEM",
-    "compress_lut_stem",
     "validate",
 ]
 
@@ -68,6 +75,37 @@ class Display:
     encoding: tuple
     lut_stem: str
     png_colorspace: str
+
+    #: An SDR display (its volume is its RGB parallelepiped up to white).
+    hdr: ClassVar[bool] = False
+
+    @property
+    def gamut(self) -> Display:
+        """The SDR display whose gamut (and clip LUTs) this display uses: itself."""
+        return self
+
+    @property
+    def scale(self) -> float:
+        """Peak white in units of the reference white: 1 for an SDR display."""
+        return 1.0
+
+    def clip_lut_stem(self, white: bool = False) -> str:
+        """File stem of this display's clip LUT: the pass against the faces through
+        black (``white=False``) or through white.
+
+        >>> as_display("Display P3").clip_lut_stem(white=True)
+        'ConstantLightnessClip_DisplayP3_WhiteFaces'
+        """
+        return f"{CLIP_FILE_STEM}_{self.lut_stem}" + ("_WhiteFaces" if white else "_BlackFaces")
+
+    def compress_lut_stem(self, white: bool = False) -> str:
+        """File stem of this display's compression squeeze before the clip's pass
+        against the faces through black (``white=False``) or through white.
+
+        >>> as_display("sRGB").compress_lut_stem()
+        'ConstantLightnessCompress_sRGB_BlackFaces'
+        """
+        return f"{COMPRESS_FILE_STEM}_{self.lut_stem}" + ("_WhiteFaces" if white else "_BlackFaces")
 
 
 #: Luminance (cd/m2) at which an HDR display shows the reference white Y = 1: the HDR
@@ -96,7 +134,7 @@ class HDRDisplay:
     """
 
     name: str
-    gamut: str
+    gamut: Display
     colorspace: str
     description: str
     transfer: str
@@ -105,11 +143,27 @@ class HDRDisplay:
     lut_stem: str
     png_colorspace: str
 
+    #: An HDR display (its volume reaches ``scale`` times the reference white).
+    hdr: ClassVar[bool] = True
+
+    @property
+    def colorimetry(self) -> str:
+        """The RGB space of its primaries and white: its gamut's."""
+        return self.gamut.colorimetry
+
     @property
     def scale(self) -> float:
         """Peak white in units of the reference white: the display volume is the
         gamut's RGB parallelepiped up to this value (1000 / 203 = 4.926)."""
         return self.peak / HDR_REFERENCE_WHITE
+
+    def clip_lut_stem(self, white: bool = False) -> str:
+        """The clip LUT of its gamut (the same files, scaled)."""
+        return self.gamut.clip_lut_stem(white)
+
+    def compress_lut_stem(self, white: bool = False) -> str:
+        """The compression squeeze of its gamut (the same files, scaled)."""
+        return self.gamut.compress_lut_stem(white)
 
 
 @dataclass(frozen=True)
@@ -174,10 +228,12 @@ DISPLAY_LIST = (
     ),
 )
 
+_SDR = {d.name: d for d in DISPLAY_LIST}
+
 HDR_DISPLAY_LIST = (
     HDRDisplay(
         "Rec.2100-PQ",
-        "Rec.2020",
+        _SDR["Rec.2020"],
         "Rec.2100-PQ - Display",
         "ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 encoding, "
         "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
@@ -189,7 +245,7 @@ HDR_DISPLAY_LIST = (
     ),
     HDRDisplay(
         "Rec.2100-HLG",
-        "Rec.2020",
+        _SDR["Rec.2020"],
         "Rec.2100-HLG - Display",
         "ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the BT.2100 "
         "OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
@@ -202,7 +258,7 @@ HDR_DISPLAY_LIST = (
     ),
     HDRDisplay(
         "P3-D65 PQ",
-        "Display P3",
+        _SDR["Display P3"],
         "ST2084-P3-D65 - Display",
         "P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, 1000 cd/m2 "
         "peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
@@ -266,47 +322,86 @@ THIN_FILM_LIST = (
 #: Names, in order (DISPLAYS: the SDR displays, the gamuts the clip is baked for).
 DISPLAYS = tuple(d.name for d in DISPLAY_LIST)
 HDR_DISPLAYS = tuple(d.name for d in HDR_DISPLAY_LIST)
-#: The config's displays: SDR, then HDR.
+#: The config's displays: SDR, then HDR (the objects and their names).
+ALL_DISPLAY_LIST: tuple[Display | HDRDisplay, ...] = DISPLAY_LIST + HDR_DISPLAY_LIST
 ALL_DISPLAYS = DISPLAYS + HDR_DISPLAYS
 VIEWS = tuple(v.name for v in VIEW_LIST)
 THIN_FILM_SPACES = tuple(s.name for s in THIN_FILM_LIST)
 
-_BY_NAME = {d.name: d for d in DISPLAY_LIST}
-_HDR_BY_NAME = {d.name: d for d in HDR_DISPLAY_LIST}
+#: A display of the registry, SDR or HDR.
+AnyDisplay: TypeAlias = "Display | HDRDisplay"
+#: What a ``display`` parameter accepts: a display of the registry or its name.
+DisplayLike: TypeAlias = "str | Display | HDRDisplay"
+
+_BY_NAME: dict[str, Display | HDRDisplay] = {d.name: d for d in ALL_DISPLAY_LIST}
 
 
-def display(name: str) -> Display:
-    """The :class:`Display` called ``name`` (ValueError naming the choices otherwise)."""
-    try:
-        return _BY_NAME[name]
-    except (KeyError, TypeError):
-        raise ValueError(f"display must be one of {DISPLAYS}, got {name!r}") from None
+def find_display(name: str) -> Display | HDRDisplay | None:
+    """The registry's display called ``name``, ``None`` if it has none (a display of
+    another config, e.g. one merged with ``bake --into``)."""
+    return _BY_NAME.get(name) if isinstance(name, str) else None
 
 
-def hdr_display(name: str) -> HDRDisplay:
-    """The :class:`HDRDisplay` called ``name`` (ValueError naming the choices otherwise)."""
-    try:
-        return _HDR_BY_NAME[name]
-    except (KeyError, TypeError):
-        raise ValueError(f"display must be one of {HDR_DISPLAYS}, got {name!r}") from None
+def as_display(
+    display: DisplayLike, *, hdr: bool = True, parameter: str = "display"
+) -> Display | HDRDisplay:
+    """The registry's display for ``display``, a :class:`Display` or :class:`HDRDisplay`
+    of the registry or its name: the one look-up by name, at a public function's door.
 
+    Parameters
+    ----------
+    display : str, Display or HDRDisplay
+        A name of :data:`ALL_DISPLAYS` (of :data:`DISPLAYS` with ``hdr=False``) or one of
+        the registry's display objects.
+    hdr : bool, optional
+        Whether HDR displays are allowed (default ``True``).
+    parameter : str, optional
+        The caller's parameter name, for the error messages.
 
-def is_hdr(name: str) -> bool:
-    """Whether ``name`` is an HDR display of the registry."""
-    return isinstance(name, str) and name in _HDR_BY_NAME
+    Raises
+    ------
+    ocio_thinfilm.io.ParameterError
+        (a ValueError) for an unknown name, an HDR display where ``hdr=False``, or a
+        display object that is not the registry's.
+    TypeError
+        For anything else.
 
-
-def gamut_of(name: str) -> str:
-    """The SDR display (gamut, clip LUTs) of a display of :data:`ALL_DISPLAYS`.
-
-    >>> gamut_of("Rec.2100-HLG"), gamut_of("sRGB")
-    ('Rec.2020', 'sRGB')
+    Examples
+    --------
+    >>> p3 = as_display("Display P3")
+    >>> as_display(p3) is p3, p3.hdr, as_display("Rec.2100-HLG").gamut.name
+    (True, False, 'Rec.2020')
+    >>> as_display("Rec.2100-PQ", hdr=False)
+    Traceback (most recent call last):
+    ...
+    ocio_thinfilm.io.ParameterError: display must be one of ('sRGB', ...), got 'Rec.2100-PQ'
     """
-    if is_hdr(name):
-        return _HDR_BY_NAME[name].gamut
-    if isinstance(name, str) and name in _BY_NAME:
-        return name
-    raise ValueError(f"display must be one of {ALL_DISPLAYS}, got {name!r}")
+    if isinstance(display, (Display, HDRDisplay)):
+        entry = find_display(display.name)
+        if entry != display:
+            raise ParameterError(
+                parameter, f" must be a display of the registry, got an unknown {display!r}"
+            )
+    elif isinstance(display, str):
+        entry = find_display(display)
+    else:
+        raise TypeError(
+            f"{parameter} must be a display name (str) or a registry Display, got "
+            f"{display!r} ({type(display).__name__})"
+        )
+    if entry is None or (entry.hdr and not hdr):
+        choices = ALL_DISPLAYS if hdr else DISPLAYS
+        raise ParameterError(parameter, f" must be one of {choices}, got {display!r}")
+    return entry
+
+
+def display_name(display: DisplayLike | None, *, parameter: str = "display") -> str | None:
+    """The name of ``display``: a registry display object gives its name (checked with
+    :func:`as_display`), a name or ``None`` passes unchanged (for functions that check
+    names against a config of their own), anything else is a TypeError."""
+    if display is None or isinstance(display, str):
+        return display
+    return as_display(display, parameter=parameter).name
 
 
 def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
@@ -319,41 +414,17 @@ def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
 
 #: File stem of the clip's LUT files (the config's passes and ``export clip``).
 CLIP_FILE_STEM = "ConstantLightnessClip"
-
-
-def clip_lut_stem(name: str, white: bool = False) -> str:
-    """File stem of a display's clip LUT: the pass against the faces through black
-    (``white=False``) or through white.
-
-    >>> clip_lut_stem("Display P3", white=True)
-    'ConstantLightnessClip_DisplayP3_WhiteFaces'
-    """
-    return f"{CLIP_FILE_STEM}_{display(name).lut_stem}" + (
-        "_WhiteFaces" if white else "_BlackFaces"
-    )
-
-
 #: File stem of the compression's own LUT files (the config's squeezes).
 COMPRESS_FILE_STEM = "ConstantLightnessCompress"
 
 
-def compress_lut_stem(name: str, white: bool = False) -> str:
-    """File stem of a display's compression squeeze before the clip's pass against the
-    faces through black (``white=False``) or through white.
-
-    >>> compress_lut_stem("sRGB")
-    'ConstantLightnessCompress_sRGB_BlackFaces'
-    """
-    return f"{COMPRESS_FILE_STEM}_{display(name).lut_stem}" + (
-        "_WhiteFaces" if white else "_BlackFaces"
-    )
-
-
 def validate() -> None:
-    """Names unique and non-empty, colorimetry spaces known, encodings well formed,
-    LUT stems file-name safe and unique, exactly one raw view, last. Raises
-    ValueError. The clip's math (:mod:`.clip`, :mod:`.tables`) looks matrices up by
-    the display's name, so a display's name must equal its colorimetry space."""
+    """Names unique and non-empty, encodings well formed, LUT stems file-name safe and
+    unique, exactly one raw view, last. Raises ValueError. The clip's math
+    (:mod:`.clip`, :mod:`.tables`) looks matrices up by the display's name, so a
+    display's name must equal its colorimetry space. (That the colorimetry knows those
+    spaces and the film kinds is checked by ``tests/test_registry.py``: the registry
+    imports nothing of the pipeline.)"""
     import re
 
     for kind, names in (
@@ -374,10 +445,6 @@ def validate() -> None:
         if not re.fullmatch(r"[A-Za-z0-9_]+", stem):
             raise ValueError(f"registry: LUT file stem {stem!r} is not file-name safe")
     for d in DISPLAY_LIST:
-        if d.colorimetry not in colorimetry.RGB_SPACES:
-            raise ValueError(
-                f"registry: display {d.name!r}: unknown colorimetry space {d.colorimetry!r}"
-            )
         if d.colorimetry != d.name:
             raise ValueError(
                 f"registry: display {d.name!r}: the clip looks its matrix up by "
@@ -393,7 +460,7 @@ def validate() -> None:
         raise ValueError(f"registry: display colour spaces must be unique: {spaces}")
     for h in HDR_DISPLAY_LIST:
         if (
-            h.gamut not in DISPLAYS
+            h.gamut not in DISPLAY_LIST
             or h.transfer not in ("PQ", "HLG")
             or not h.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
             or not h.peak > HDR_REFERENCE_WHITE
@@ -410,7 +477,7 @@ def validate() -> None:
     for s in THIN_FILM_LIST:
         if (
             s.table not in ("film", "morpho")
-            or (s.table == "film" and (len(s.args) != 1 or s.args[0] not in colorimetry.FILM_KINDS))
+            or (s.table == "film" and (len(s.args) != 1 or not isinstance(s.args[0], str)))
             or (s.table == "morpho" and s.args)
         ):
             raise ValueError(

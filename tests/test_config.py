@@ -223,7 +223,7 @@ def _hdr_nits(display, code):
     import colour
 
     code = np.asarray(code, dtype=np.float64)
-    if registry.hdr_display(display).transfer == "PQ":
+    if registry.as_display(display).transfer == "PQ":
         return colour.models.eotf_ST2084(code)
     return colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0)
 
@@ -233,7 +233,7 @@ def test_scene_linear_white_is_display_white(cfg, ocio):
     white (203 cd/m2) on HDR ones; far above white is the white, resp. the 1000 cd/m2
     peak white."""
     for display in cfg.getDisplays():
-        hdr = registry.is_hdr(display)
+        hdr = registry.as_display(display).hdr
         for view in registry.VIEWS[:3]:
             px = np.ones((1, 3), np.float32)
             cfg.getProcessor(

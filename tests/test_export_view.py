@@ -629,15 +629,15 @@ def _hdr_dE(code, XYZ, display):
 
     from ocio_thinfilm import registry
 
-    entry = registry.hdr_display(display)
+    entry = registry.as_display(display)
     code = np.asarray(code, dtype=np.float64)
     nits = (
         colour.models.eotf_ST2084(code)
         if entry.transfer == "PQ"
         else colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=1000.0)
     )
-    got = colorimetry.RGB_to_XYZ(nits / 203.0, entry.gamut)
-    return colorimetry.delta_E2000(got / HDR_K, clip.clip_XYZ(XYZ / HDR_K, entry.gamut))
+    got = colorimetry.RGB_to_XYZ(nits / 203.0, entry.gamut.name)
+    return colorimetry.delta_E2000(got / HDR_K, clip.clip_XYZ(XYZ / HDR_K, entry.gamut.name))
 
 
 @pytest.fixture(scope="module")
@@ -711,7 +711,7 @@ def test_acescct_hdr_view_luts(hdr_luts, inside_AP1, display, fmt, consumer):
     # the SDR files' grey ramp relative to their white)
     g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 1.0, 2.0, 4.0, 4.9])
     code = apply(path, np.repeat(colour_acescct(g)[:, None], 3, axis=1))
-    white = colorimetry.RGB_to_XYZ(np.ones(3), registry.gamut_of(display))
+    white = colorimetry.RGB_to_XYZ(np.ones(3), registry.as_display(display).colorimetry)
     assert _hdr_dE(code, g[:, None] * white, display).max() <= 0.5
 
 

@@ -55,24 +55,26 @@ def _apply(cfg, display, view, XYZ, optimization=None):
 def _nits(display, code):
     """Code values -> display light RGB in cd/m2 (colour-science's EOTFs)."""
     code = np.asarray(code, dtype=np.float64)
-    if registry.hdr_display(display).transfer == "PQ":
+    if registry.as_display(display).transfer == "PQ":
         return colour.models.eotf_ST2084(code)
     return colour.models.eotf_BT2100_HLG(code, L_B=0.0, L_W=PEAK)
 
 
 def _decoded_XYZ(display, code):
     """Code values -> CIE XYZ in units of the reference white (Y = 1 at 203 cd/m2)."""
-    return colorimetry.RGB_to_XYZ(_nits(display, code) / WHITE, registry.gamut_of(display))
+    return colorimetry.RGB_to_XYZ(
+        _nits(display, code) / WHITE, registry.as_display(display).gamut.name
+    )
 
 
 def _truth(display, XYZ, view=VIEW):
     """The analytic map of ``view`` into the display's HDR volume (XYZ, Y = 1 at 203
     cd/m2), and whether each colour is inside that volume."""
     mapping = MAPPED[view]
-    gamut = registry.gamut_of(display)
+    gamut = registry.as_display(display).gamut.name
     M = colorimetry.matrix_XYZ_to_RGB(gamut)
     XYZ = np.asarray(XYZ, dtype=np.float64)
-    if registry.hdr_display(display).transfer == "PQ":
+    if registry.as_display(display).transfer == "PQ":
         return K * mapping(XYZ / K, gamut), clip.in_gamut(XYZ / K @ M.T)
     # HLG (BT.2100 Table 5, L_B = 0): F_D = L_W Y_S^(gamma - 1) E, gamma = 1.2 at 1000
     # cd/m2; the scene light E in [0, 1] is the signal's volume. A pixel of display
@@ -90,7 +92,7 @@ def _measured(cfg):
     """{(view, display, set): statistics} of the mapped views on the sets scaled by k."""
     out = {}
     for view, display in [(v, d) for v in MAPPED for d in HDR]:
-        gamut = registry.gamut_of(display)
+        gamut = registry.as_display(display).gamut.name
         M = colorimetry.matrix_XYZ_to_RGB(gamut)
         for name, XYZ in _sets().items():
             XYZ = XYZ * K
@@ -185,10 +187,10 @@ def test_hdr_relative_luminance_target_outside_the_gamut(measured):
 def test_luminance_is_203_Y(cfg, display, view):
     """Decoding the view's output with the ST 2084 / HLG EOTF gives 203 Y cd/m2 for
     colours the clip keeps (in gamut, Y up to the peak), and the peak white above."""
-    gamut = registry.gamut_of(display)
+    gamut = registry.as_display(display).gamut.name
     rng = np.random.default_rng(3)
     rgb = rng.uniform(0.0, 1.0, (4000, 3)) * K
-    if registry.hdr_display(display).transfer == "HLG":
+    if registry.as_display(display).transfer == "HLG":
         # inside HLG's volume: the OOTF of the signal's cube
         rgb = rgb / K
         Ys = rgb @ colorimetry.RGB_to_XYZ(np.eye(3), gamut)[:, 1]

@@ -1,12 +1,13 @@
 """The package's layout is its pipeline: no module imports from a later stage.
 
-Stages in order (README, *How it is built*): the shared leaves ``cache`` and ``io``;
-``physics``; ``colour`` (with ``registry``, which looks matrices up in colorimetry);
-``lut``; ``config``; ``export``; ``render``; ``cli``. Every import is checked, lazy ones inside
-functions included. The evaluation code (the report, the stability cases, the GPU harness, the
-test colour sets) is the top-level ``evaluation`` package beside ``benchmarks/``, outside the
-shipped package: nothing in ``ocio_thinfilm`` imports it (``cli/report.py`` loads it from a
-checkout), and it imports ``ocio_thinfilm``, never the other way round.
+Stages in order (README, *How it is built*): the shared leaves ``cache``, ``io`` and
+``registry`` (plain data: the displays, views and thin-film spaces every stage reads,
+importing none of them); ``physics``; ``colour``; ``lut``; ``config``; ``export``;
+``render``; ``cli``. Every import is checked, lazy ones inside functions included. The
+evaluation code (the report, the stability cases, the GPU harness, the test colour sets) is
+the top-level ``evaluation`` package beside ``benchmarks/``, outside the shipped package:
+nothing in ``ocio_thinfilm`` imports it (``cli/report.py`` loads it from a checkout), and it
+imports ``ocio_thinfilm``, never the other way round.
 """
 
 from __future__ import annotations
@@ -20,9 +21,9 @@ PACKAGE = Path(__file__).resolve().parents[1] / "ocio_thinfilm"
 STAGES = [
     "cache",
     "io",
+    "registry",
     "physics",
     "colour",
-    "registry",
     "lut",
     "config",
     "export",
@@ -30,7 +31,7 @@ STAGES = [
     "cli",
 ]
 RANK = {name: rank for rank, name in enumerate(STAGES)}
-RANK.update(cache=0, io=0, colour=3, registry=3)  # leaves; registry beside colorimetry
+RANK.update(cache=0, io=0, registry=0)  # the shared leaves
 
 
 def _stage(dotted: str) -> str:

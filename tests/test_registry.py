@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from ocio_thinfilm import config, registry
-from ocio_thinfilm.colour import clip
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.lut import display_transforms
 from ocio_thinfilm.render import frames as render
@@ -31,9 +31,10 @@ def test_every_module_lists_the_registrys_displays_views_and_spaces():
         "Raw",
     )
     assert registry.ALL_DISPLAYS == registry.DISPLAYS + ("Rec.2100-PQ", "Rec.2100-HLG", "P3-D65 PQ")
-    assert list(config.DISPLAY_SPACES) == list(registry.ALL_DISPLAYS)
-    assert list(display_transforms.DISPLAY_ENCODINGS) == list(registry.DISPLAYS)
-    assert list(render.PNG_COLORSPACE) == list(registry.ALL_DISPLAYS)
+    assert tuple(d.name for d in registry.ALL_DISPLAY_LIST) == registry.ALL_DISPLAYS
+    assert [render.png_colorspace(d) for d in registry.ALL_DISPLAYS] == [
+        d.png_colorspace for d in registry.ALL_DISPLAY_LIST
+    ]
     data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
     assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == list(
         registry.THIN_FILM_SPACES
@@ -52,19 +53,15 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
     for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST:
         assert tuple(cfg.getViews(d.name)) == registry.VIEWS
         assert cfg.getColorSpace(d.colorspace) is not None
-        gamut = registry.gamut_of(d.name)
         for white in (False, True):
-            stem = registry.clip_lut_stem(gamut, white)
+            stem = d.clip_lut_stem(white)
+            assert stem == d.gamut.clip_lut_stem(white)
             assert (ROOT / "configs" / "thinfilm" / "luts" / f"{stem}.clf").is_file()
     # HDR displays reuse their gamut's LUT files: none of their own
     luts = {p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir()}
     assert luts == (
-        {f"{registry.clip_lut_stem(d, w)}.clf" for d in registry.DISPLAYS for w in (False, True)}
-        | {
-            f"{registry.compress_lut_stem(d, w)}.clf"
-            for d in registry.DISPLAYS
-            for w in (False, True)
-        }
+        {f"{d.clip_lut_stem(w)}.clf" for d in registry.DISPLAY_LIST for w in (False, True)}
+        | {f"{d.compress_lut_stem(w)}.clf" for d in registry.DISPLAY_LIST for w in (False, True)}
         | {f"{s.lut_stem}.clf" for s in registry.THIN_FILM_LIST}
     )
     for s in registry.THIN_FILM_LIST:
@@ -73,12 +70,69 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
 
 
 def test_file_stems_come_from_the_registry():
-    assert registry.clip_lut_stem("Rec.2020", True) == "ConstantLightnessClip_Rec2020_WhiteFaces"
-    assert registry.clip_lut_stem("Display P3") == "ConstantLightnessClip_DisplayP3_BlackFaces"
+    rec2020, p3 = registry.as_display("Rec.2020"), registry.as_display("Display P3")
+    assert rec2020.clip_lut_stem(True) == "ConstantLightnessClip_Rec2020_WhiteFaces"
+    assert p3.clip_lut_stem() == "ConstantLightnessClip_DisplayP3_BlackFaces"
+    assert registry.as_display("Rec.2100-PQ").clip_lut_stem(True) == rec2020.clip_lut_stem(True)
     assert export._stem("clip", None, "Display P3", None) == "ConstantLightnessClip_DisplayP3"
     assert registry.thin_film_space_for_kind("morpho").name == "Thin Film Morpho Iridescence"
     with pytest.raises(ValueError, match="display must be one of"):
-        registry.display("Rec.709")
+        registry.as_display("Rec.709")
+
+
+def test_displays_are_passed_as_objects_or_names():
+    """``as_display`` is the one look-up by name: a registry display passes as itself, a
+    name gives its display, and what is neither is refused naming the parameter."""
+    from ocio_thinfilm.io import ParameterError
+
+    for entry in registry.ALL_DISPLAY_LIST:
+        assert registry.as_display(entry) is entry
+        assert registry.as_display(entry.name) is entry
+        assert registry.find_display(entry.name) is entry
+        assert registry.display_name(entry) == entry.name
+        assert entry.gamut in registry.DISPLAY_LIST and entry.gamut.gamut is entry.gamut
+        assert entry.hdr == (entry in registry.HDR_DISPLAY_LIST)
+        assert entry.scale == (entry.peak / registry.HDR_REFERENCE_WHITE if entry.hdr else 1.0)
+        assert entry.colorimetry == entry.gamut.colorimetry
+    assert registry.find_display("ACES 1.0 - SDR Video") is None
+    assert registry.display_name("anything") == "anything" and registry.display_name(None) is None
+    with pytest.raises(ParameterError, match=r"^display must be one of \('sRGB', 'Display P3', "):
+        registry.as_display("Rec.2100-PQ", hdr=False)
+    with pytest.raises(ParameterError, match="^target must be one of") as caught:
+        registry.as_display("CRT", parameter="target")
+    assert caught.value.parameter == "target"
+    foreign = dataclasses.replace(registry.DISPLAY_LIST[0], lut_stem="Mine")
+    with pytest.raises(ParameterError, match="must be a display of the registry"):
+        registry.as_display(foreign)
+    with pytest.raises(TypeError, match=r"^display must be a display name \(str\) or a registry"):
+        registry.as_display(3)
+
+
+def test_functions_take_a_display_object_as_they_take_its_name():
+    """The same transforms and LUTs whether a display comes as its object or its name."""
+    import numpy as np
+
+    from ocio_thinfilm.lut import clip_lut, ocio_ops, view_transforms
+
+    rgb = np.random.default_rng(3).uniform(-0.2, 1.4, (200, 3))
+    for name in ("Display P3", "Rec.2100-HLG"):
+        entry = registry.as_display(name)
+        for view in ("Constant-Lightness Clip", "Channel Clamp"):
+            a = ocio_ops.apply(view_transforms.view_transform(entry, view, 9), rgb)
+            b = ocio_ops.apply(view_transforms.view_transform(name, view, 9), rgb)
+            np.testing.assert_array_equal(a, b)
+        assert display_transforms.display_colorspace_transform(entry) is not None
+    p3 = registry.as_display("Display P3")
+    assert clip_lut.clip_lut(p3, 9) is clip_lut.clip_lut("Display P3", 9)
+
+
+def test_the_colorimetry_knows_the_registrys_spaces_and_kinds():
+    """The registry imports nothing of the pipeline, so the names it gives the
+    colorimetry are checked here: every display's RGB space and every film table's kind."""
+    for d in registry.ALL_DISPLAY_LIST:
+        assert d.colorimetry in colorimetry.RGB_SPACES
+    for s in registry.THIN_FILM_LIST:
+        assert s.kind in colorimetry.FILM_KINDS + ("morpho",)
 
 
 def test_entries_are_frozen():
@@ -112,7 +166,7 @@ def test_entries_are_frozen():
         (
             "THIN_FILM_LIST",
             registry.THIN_FILM_LIST[:2]
-            + (dataclasses.replace(registry.THIN_FILM_LIST[2], table="film", args=("thick",)),),
+            + (dataclasses.replace(registry.THIN_FILM_LIST[2], table="film", args=(3,)),),
             "bad table",
         ),
     ],
@@ -145,8 +199,8 @@ def test_adding_a_display_is_one_entry(tmp_path):
         "cfg = config.generate_config(data)\n"
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
         "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
-        "    render.PNG_COLORSPACE['Rec.709'],\n"
-        "    display_transforms.DISPLAY_ENCODINGS['Rec.709'][0]]))\n"
+        "    render.png_colorspace('Rec.709'),\n"
+        "    display_transforms.registry.as_display('Rec.709').encoding[0]]))\n"
     )
     env = dict(os.environ, PYTHONPATH=str(tmp_path))
     out = subprocess.run(

@@ -59,7 +59,17 @@ LIMIT = 1e100
 ACES_GAMUT_COMP13_PARAMS = (1.147, 1.264, 1.312, 0.815, 0.803, 0.880, 1.2)
 
 
-def _display_matrix(display: str) -> np.ndarray:
+def _space(display: registry.DisplayLike) -> str:
+    """The colorimetry's RGB space of ``display``: a name as it is, an SDR display of the
+    registry as its object (the clip's gamut)."""
+    if isinstance(display, (registry.Display, registry.HDRDisplay)):
+        return registry.as_display(display, hdr=False).name
+    return display
+
+
+def _display_matrix(display: registry.DisplayLike) -> np.ndarray:
+    """XYZ -> RGB of ``display`` (:func:`_space`)."""
+    display = _space(display)
     if display not in colorimetry.RGB_SPACES:
         raise ValueError(f"display must be one of {DISPLAYS}, got {display!r}")
     return colorimetry.matrix_XYZ_to_RGB(display)
@@ -119,7 +129,7 @@ def _fraction_to_boundary(values, grey):
     return t, outside
 
 
-def clip_RGB(RGB, display: str = "sRGB"):
+def clip_RGB(RGB, display: registry.DisplayLike = "sRGB"):
     """Constant-lightness clip of display-linear RGB into the unit cube (Section 3.2).
 
     The ray test of the paper's Section 3.2 in the display's RGB, where the
@@ -129,7 +139,7 @@ def clip_RGB(RGB, display: str = "sRGB"):
     ----------
     RGB : array_like
         Display-linear RGB of ``display``, last axis 3 (RGB = 1 is its white).
-    display : str
+    display : str or registry display
         One of :data:`DISPLAYS`.
 
     Returns
@@ -169,7 +179,7 @@ def clip_RGB(RGB, display: str = "sRGB"):
     return _apply(RGB, "RGB", kernel)
 
 
-def clip_XYZ(XYZ, display: str = "sRGB"):
+def clip_XYZ(XYZ, display: registry.DisplayLike = "sRGB"):
     """Constant-lightness clip of D65-relative XYZ into ``display``'s gamut (the
     paper's XYZ form). Returns XYZ, same shape and dtype.
 

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 
 __all__ = [
@@ -142,7 +143,7 @@ def _distance(rgb, grey):
     return d
 
 
-def boundary_distance(RGB, display: str = "sRGB"):
+def boundary_distance(RGB, display: registry.DisplayLike = "sRGB"):
     """Normalised distance of display-linear ``RGB`` to ``display``'s gamut boundary
     along the paper's ray (0 at the grey, 1 on the boundary); NaN where Y <= 0 or
     Y >= 1 (no ray: the colour is black or white). Returns (N...,) float64.
@@ -167,7 +168,7 @@ def boundary_distance(RGB, display: str = "sRGB"):
 
 def compress_RGB(
     RGB,
-    display: str = "sRGB",
+    display: registry.DisplayLike = "sRGB",
     threshold: float = THRESHOLD,
     limit: float = LIMIT,
     power: float = POWER,
@@ -178,7 +179,7 @@ def compress_RGB(
     ----------
     RGB : array_like
         Display-linear RGB of ``display``, last axis 3 (RGB = 1 is its white).
-    display : str
+    display : str or registry display
         One of :data:`ocio_thinfilm.colour.clip.DISPLAYS`.
     threshold, limit, power : float
         The curve (:func:`compression_curve`): ``0 < threshold < 1 < limit``.
@@ -232,7 +233,7 @@ def compress_RGB(
 
 def compress_XYZ(
     XYZ,
-    display: str = "sRGB",
+    display: registry.DisplayLike = "sRGB",
     threshold: float = THRESHOLD,
     limit: float = LIMIT,
     power: float = POWER,
@@ -244,6 +245,7 @@ def compress_XYZ(
     >>> bool(np.allclose(compress_XYZ(xyz), xyz, rtol=0, atol=1e-15))
     True
     """
+    display = clip._space(display)
     M = clip._display_matrix(display)
     a = np.asarray(XYZ)
     dtype = a.dtype if a.dtype in (np.float32, np.float64) else np.float64

@@ -16,6 +16,7 @@ display white and every view maps it to code value 1.0 (no tone mapping).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -36,7 +37,6 @@ __all__ = [
     "PROFILE_VERSION",
     "LUT_DIRECTORY",
     "REFERENCE",
-    "DISPLAY_SPACES",
     "LINEAR_SPACES",
     "ROLES",
     "ConfigData",
@@ -57,12 +57,6 @@ __all__ = [
 CONFIG_NAME = "ocio-thinfilm"
 PROFILE_VERSION = (2, 1)
 LUT_DIRECTORY = "luts"
-
-#: Display -> (display colour space name, description) (from :mod:`.registry`), the SDR
-#: displays then the HDR ones (:data:`ocio_thinfilm.registry.ALL_DISPLAYS`).
-DISPLAY_SPACES = {
-    d.name: (d.colorspace, d.description) for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST
-}
 
 #: Scene-linear RGB spaces: name -> (colorimetry space, description).
 LINEAR_SPACES = {
@@ -152,11 +146,13 @@ def lut_files(
         table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
         files[named_lut(space.lut_stem)] = table.transform()
     for display, lut in luts_by_display.items():
-        files[named_lut(registry.clip_lut_stem(display))] = lut.black_core()
-        files[named_lut(registry.clip_lut_stem(display, True))] = lut.white_core()
+        entry = registry.as_display(display, hdr=False, parameter="luts_by_display")
+        files[named_lut(entry.clip_lut_stem())] = lut.black_core()
+        files[named_lut(entry.clip_lut_stem(True))] = lut.white_core()
     for display, soft in (compress_by_display or {}).items():
-        files[named_lut(registry.compress_lut_stem(display))] = soft.black_core()
-        files[named_lut(registry.compress_lut_stem(display, True))] = soft.white_core()
+        entry = registry.as_display(display, hdr=False, parameter="compress_by_display")
+        files[named_lut(entry.compress_lut_stem())] = soft.black_core()
+        files[named_lut(entry.compress_lut_stem(True))] = soft.white_core()
     return files
 
 
@@ -168,8 +164,9 @@ def _lut_reference(name, luts, inline):
 def _clip_passes(lut, luts, inline):
     """The clip chain of ``lut`` with its two passes as in the config: CIE-XYZ-D65 ->
     sRGB code values of the clipped display RGB."""
+    entry = registry.as_display(lut.display)
     cores = [
-        _lut_reference(named_lut(registry.clip_lut_stem(lut.display, white)), luts, inline)
+        _lut_reference(named_lut(entry.clip_lut_stem(white)), luts, inline)
         for white in (False, True)
     ]
     return lut.transforms(*cores)
@@ -178,9 +175,10 @@ def _clip_passes(lut, luts, inline):
 def _compress_passes(soft, luts, inline):
     """The compression chain of ``soft`` (a CompressLUT) with its two squeezes and the
     clip's two passes as in the config: CIE-XYZ-D65 -> sRGB code values."""
+    entry = registry.as_display(soft.display)
     cores = [
-        _lut_reference(named_lut(stem(soft.display, white)), luts, inline)
-        for stem in (registry.compress_lut_stem, registry.clip_lut_stem)
+        _lut_reference(named_lut(stem(white)), luts, inline)
+        for stem in (entry.compress_lut_stem, entry.clip_lut_stem)
         for white in (False, True)
     ]
     return soft.transforms(*cores)
@@ -209,7 +207,15 @@ def _linear_parts(gamut, view, lut, luts, inline, compress=None):
     return [view_transforms.view_linear_transform(gamut, view)]
 
 
-def view_parts(display, view, *, lut=None, luts=None, inline=False, compress=None):
+def view_parts(
+    display: registry.DisplayLike,
+    view: str,
+    *,
+    lut: clip_lut.ClipLUT | None = None,
+    luts: dict | None = None,
+    inline: bool = False,
+    compress: compress_lut.CompressLUT | None = None,
+) -> Any:
     """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
     the ClipLUT of the display's gamut (for the Constant-Lightness Clip),
     ``compress``: its CompressLUT (for the Constant-Lightness Compress), ``luts``: the
@@ -217,12 +223,12 @@ def view_parts(display, view, *, lut=None, luts=None, inline=False, compress=Non
     the exact scales of :func:`ocio_thinfilm.lut.view_transforms.hdr_scaled`, whatever
     the chain: the display reference then has Y = 1 at 203 cd/m2 and the volume up to
     peak / 203."""
-    gamut = registry.gamut_of(display)
-    linear = _linear_parts(gamut, view, lut, luts, inline, compress)
-    if registry.is_hdr(display):
-        linear = view_transforms.hdr_scaled(display, linear)
+    entry = registry.as_display(display)
+    linear = _linear_parts(entry.gamut, view, lut, luts, inline, compress)
+    if entry.hdr:
+        linear = view_transforms.hdr_scaled(entry, linear)
     return ocio_ops.group(
-        linear + [display_transforms.display_matrix_transform(gamut, inverse=True)]
+        linear + [display_transforms.display_matrix_transform(entry.gamut, inverse=True)]
     )
 
 
@@ -325,16 +331,16 @@ def config_data(
                 to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline),
             )
         )
-    for display, (name, description) in DISPLAY_SPACES.items():
+    for entry in registry.ALL_DISPLAY_LIST:
         cs.append(
             dict(
-                name=name,
+                name=entry.colorspace,
                 family="Display",
-                encoding="hdr-video" if registry.is_hdr(display) else "sdr-video",
+                encoding="hdr-video" if entry.hdr else "sdr-video",
                 categories=["file-io"],
                 reference_space="display",
-                description=description,
-                from_reference=display_transforms.display_colorspace_transform(display),
+                description=entry.description,
+                from_reference=display_transforms.display_colorspace_transform(entry),
             )
         )
 
@@ -354,7 +360,8 @@ def config_data(
     ]
     displays = {}
     descriptions = {v.name: v.description for v in registry.VIEW_LIST}
-    for display, (display_space, _) in DISPLAY_SPACES.items():
+    for entry in registry.ALL_DISPLAY_LIST:
+        display = entry.name
         views = []
         for view in registry.VIEWS:
             if view in _RAW_VIEWS:
@@ -367,16 +374,16 @@ def config_data(
                     family="Thin Film",
                     description=f"{descriptions[view]} Display: {display}.",
                     from_reference=view_parts(
-                        display,
+                        entry,
                         view,
-                        lut=by_display[registry.gamut_of(display)],
+                        lut=by_display[entry.gamut.name],
                         luts=luts,
                         inline=inline,
-                        compress=soft_by_display[registry.gamut_of(display)],
+                        compress=soft_by_display[entry.gamut.name],
                     ),
                 )
             )
-            views.append(dict(name=view, view_transform=vt, display_colorspace=display_space))
+            views.append(dict(name=view, view_transform=vt, display_colorspace=entry.colorspace))
         displays[display] = views
 
     file_rules = [

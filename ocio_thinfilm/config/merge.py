@@ -291,7 +291,7 @@ def _match_hdr(cfg, xyz_to_display, cs):
         ]
     )
     for entry in registry.HDR_DISPLAY_LIST:
-        to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(entry.gamut)).T
+        to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)).T
         try:
             white = _apply(cfg, transform, np.ones((1, 3)) @ to_xyz)
             # to 1e-3 cd/m2: float32 round-off of the base's ops (100 -> 99.99997)
@@ -359,8 +359,9 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
         if display in units:
             if unit_of.setdefault(target, units[display]) != units[display]:
                 del matches[display]
-    views_for = [d for d in registry.ALL_DISPLAYS if d in targets]
-    gamuts = [d for d in clip.DISPLAYS if d in {registry.gamut_of(g) for g in targets}]
+    views_for = [d for d in registry.ALL_DISPLAY_LIST if d.name in targets]
+    gamut_entries = [d for d in registry.DISPLAY_LIST if d in {t.gamut for t in views_for}]
+    gamuts = [d.name for d in gamut_entries]
     data = config.config_data(clip_size=clip_size)
     by_display = config.clip_luts(clip_size)
     soft_by_display = config.compress_luts(clip_size)
@@ -388,16 +389,16 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     described = {vt["name"]: vt for vt in data.view_transforms}
     added_views = []
     for target in views_for:
-        gamut = registry.gamut_of(target)
+        gamut = target.gamut.name
         # HDR: the project's display reference has Y = 1 at 203 cd/m2, the base's
         # unit_of[target] cd/m2 (100 in the ACES configs)
         to_base = (
-            [ocio_ops.matrix(np.eye(3) * registry.HDR_REFERENCE_WHITE / unit_of[target])]
-            if target in unit_of
+            [ocio_ops.matrix(np.eye(3) * registry.HDR_REFERENCE_WHITE / unit_of[target.name])]
+            if target.name in unit_of
             else []
         )
         for view in MERGED_VIEWS:
-            spec = described[f"{view} - {target}"]
+            spec = described[f"{view} - {target.name}"]
             if _taken(spec["name"]):
                 raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
             parts = config.view_parts(
@@ -445,9 +446,9 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     )
     names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
     names += [
-        config.named_lut(stem(g, w))
-        for g in gamuts
-        for stem in (registry.clip_lut_stem, registry.compress_lut_stem)
+        config.named_lut(stem(w))
+        for g in gamut_entries
+        for stem in (g.clip_lut_stem, g.compress_lut_stem)
         for w in (False, True)
     ]
     return cfg, {name: data.luts[name] for name in names}, matches

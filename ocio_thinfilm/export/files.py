@@ -142,7 +142,7 @@ def _stem(table, kind, display, index):
         if index is not None:
             stem += f"_n{index:g}"
     if display is not None:
-        stem += "_" + registry.display(display).lut_stem
+        stem += "_" + registry.as_display(display, hdr=False).lut_stem
     return stem
 
 
@@ -161,6 +161,7 @@ def lut_contents(
     ``values``: (size, 3) or (size, size, size, 3), on the uniform grid over the
     normalised input p in [0, 1].
     """
+    display = registry.display_name(display)
     size, value_range = _validate(table, kind, display, index, value_range, size, "clf")
     return _contents(table, kind, display, index, value_range, size, progress)
 
@@ -335,6 +336,7 @@ def export_lut(
     show_progress=False,
 ) -> Path:
     """Compute and write one standalone LUT; returns the path written."""
+    display = registry.display_name(display)
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
         if fmt not in FORMATS:

@@ -161,11 +161,7 @@ def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str
     lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
     if linear_space in NO_NEGATIVE_SHAPER:
         lo = 0.0
-    least = SHAPER_MIN_HI * (
-        registry.hdr_display(display).scale
-        if display is not None and registry.is_hdr(display)
-        else 1.0
-    )
+    least = SHAPER_MIN_HI * (1.0 if display is None else registry.as_display(display).scale)
     hi = max(least, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
     return ocio_ops.quantize(lo, 6), ocio_ops.quantize(hi, 6)
 
@@ -469,6 +465,7 @@ def export_view(
     False -- the plain form (only for :data:`PLAIN_INPUTS`)."""
     import PyOpenColorIO as ocio
 
+    display = registry.display_name(display)
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
         if fmt not in VIEW_FORMATS:

@@ -49,11 +49,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ocio_thinfilm import cache
+from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.display_transforms import (
-    check_display,
     display_encoding_transform,
 )
 from ocio_thinfilm.lut.ocio_ops import (
@@ -881,7 +880,7 @@ def _clip_lut(display, size, white_edge):
 
 
 def clip_lut(
-    display: str = "sRGB", size: int = CLIP_SIZE, white_edge: int | None = None
+    display: registry.DisplayLike = "sRGB", size: int = CLIP_SIZE, white_edge: int | None = None
 ) -> ClipLUT:
     """The baked clip LUTs for ``display`` (cached): both passes, from
     :func:`clip_black_faces_RGB` and :func:`clip_white_faces_RGB`, whose composition
@@ -889,8 +888,9 @@ def clip_lut(
 
     Parameters
     ----------
-    display : str, optional
-        A display of :data:`ocio_thinfilm.registry.DISPLAYS` (default ``"sRGB"``).
+    display : str or registry display, optional
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS` or its name (default
+        ``"sRGB"``).
     size : int, optional
         Edge length of the black pass's Lut3D, an integer in [9, 129] (default
         :data:`CLIP_SIZE`, 65).
@@ -926,10 +926,10 @@ def clip_lut(
     >>> lut.black.flags.writeable
     False
     """
-    check_display(display)
+    name = registry.as_display(display, hdr=False).name
     size = check_size(size, 9, 129, "size")
     white_edge = white_size(size) if white_edge is None else white_edge
-    return _clip_lut(display, size, check_size(white_edge, 7, 129, "white_edge"))
+    return _clip_lut(name, size, check_size(white_edge, 7, 129, "white_edge"))
 
 
 def working_decoding_transform():
@@ -962,14 +962,14 @@ def working_decoding_transform():
     return ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)])
 
 
-def clip_transform(display: str = "sRGB", size: int = CLIP_SIZE):
+def clip_transform(display: registry.DisplayLike = "sRGB", size: int = CLIP_SIZE):
     """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
     clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
     white-faces pass, which ends in display code values), then the display's EOTF.
 
     Parameters
     ----------
-    display : str
+    display : str or registry display
         A display of the registry (``"sRGB"``, ``"Display P3"``, ``"Rec.2020"``).
     size : int
         Edge of both 3D LUTs, in [9, 129].

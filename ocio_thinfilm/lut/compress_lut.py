@@ -41,7 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ocio_thinfilm import cache
+from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as soft
 from ocio_thinfilm.lut import clip_lut, ocio_ops
@@ -58,7 +58,6 @@ from ocio_thinfilm.lut.clip_lut import (
     xyY_forward_transform,
     xyY_inverse_transform,
 )
-from ocio_thinfilm.lut.display_transforms import check_display
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, lut3d_transform, transform_id
 from ocio_thinfilm.lut.tables import check_size
 
@@ -345,7 +344,7 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
 
 
 def compress_lut(
-    display: str = "sRGB",
+    display: registry.DisplayLike = "sRGB",
     size: int = SOFT_SIZE,
     white_edge: int = SOFT_WHITE_SIZE,
     threshold: float = soft.THRESHOLD,
@@ -357,8 +356,8 @@ def compress_lut(
 
     Parameters
     ----------
-    display : str
-        A display of :data:`ocio_thinfilm.registry.DISPLAYS`.
+    display : str or registry display
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS` or its name.
     size, white_edge : int
         Edges of S_b's and S_w's Lut3Ds, integers in [9, 129] and [7, 129].
     threshold, limit, power : float
@@ -371,11 +370,11 @@ def compress_lut(
     ValueError
         For an unknown display, an edge out of range or a bad curve parameter.
     """
-    check_display(display)
+    name = registry.as_display(display, hdr=False).name
     size = check_size(size, 9, 129, "size")
     white_edge = check_size(white_edge, 7, 129, "white_edge")
     soft.compression_curve(0.0, threshold, limit, power)  # validates the parameters
     clip_size = check_size(clip_size, 9, 129, "clip_size")
     return _compress_lut(
-        display, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
+        name, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
     )

@@ -1,7 +1,7 @@
 """A display's colorimetry and encoding as OCIO transforms (from the one registry).
 
 - :func:`display_matrix_transform` -- CIE-XYZ-D65 -> display-linear RGB (or back);
-- :data:`DISPLAY_ENCODINGS`, :func:`display_encoding_transform` -- display-linear RGB
+- :func:`display_encoding_transform` -- display-linear RGB
   -> display code values (the inverse EOTF, as the ACES OCIO configs' display spaces);
 - :func:`hdr_encoding_transform` -- an HDR display's CIE-XYZ-D65 (Y = 1 at 203 cd/m2)
   -> code values (PQ or HLG, OCIO's built-in display transforms);
@@ -16,12 +16,11 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import ocio_ops
 
 __all__ = [
-    "DISPLAY_ENCODINGS",
-    "check_display",
     "display_matrix_transform",
     "display_encoding_transform",
     "hdr_encoding_transform",
@@ -30,39 +29,7 @@ __all__ = [
 ]
 
 
-def check_display(display: str) -> str:
-    """``display`` if the registry has it, else ValueError naming the choices.
-
-    Parameters
-    ----------
-    display : str
-        A display name of :data:`ocio_thinfilm.registry.DISPLAYS`.
-
-    Returns
-    -------
-    str
-        ``display``, unchanged.
-
-    Raises
-    ------
-    ValueError
-        For a name the registry does not have.
-
-    Examples
-    --------
-    >>> check_display("sRGB")
-    'sRGB'
-    >>> check_display("CRT")
-    Traceback (most recent call last):
-    ...
-    ValueError: display must be one of (...), got 'CRT'
-    """
-    if display not in registry.DISPLAYS:
-        raise ValueError(f"display must be one of {registry.DISPLAYS}, got {display!r}")
-    return display
-
-
-def display_matrix_transform(display: str, inverse: bool = False):
+def display_matrix_transform(display: registry.DisplayLike, inverse: bool = False):
     """CIE-XYZ-D65 -> display-linear RGB (or back) as an OCIO MatrixTransform.
 
     The matrix of :func:`ocio_thinfilm.colour.colorimetry.matrix_XYZ_to_RGB` (the
@@ -71,7 +38,7 @@ def display_matrix_transform(display: str, inverse: bool = False):
 
     Parameters
     ----------
-    display : str
+    display : str or registry display
         A display of :data:`ocio_thinfilm.registry.DISPLAYS`.
     inverse : bool, optional
         Return display-linear RGB -> CIE XYZ instead.
@@ -98,16 +65,12 @@ def display_matrix_transform(display: str, inverse: bool = False):
     >>> xyz.astype(float).round(3).tolist()
     [0.95, 1.0, 1.089]
     """
-    M = colorimetry.matrix_XYZ_to_RGB(check_display(display))
+    entry = registry.as_display(display, hdr=False)
+    M = colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)
     return ocio_ops.matrix(np.linalg.inv(M) if inverse else M)
 
 
-#: Display encodings (inverse EOTFs), as in the ACES OCIO configs' display spaces.
-#: Display -> (description, gamma, offset or None for a pure power) (:mod:`.registry`).
-DISPLAY_ENCODINGS = {d.name: d.encoding for d in registry.DISPLAY_LIST}
-
-
-def display_encoding_transform(display: str):
+def display_encoding_transform(display: registry.DisplayLike):
     """Display-linear RGB -> display code values (the display's inverse EOTF).
 
     For the sRGB-encoded displays (sRGB, Display P3) the IEC 61966-2-1 piecewise
@@ -118,9 +81,9 @@ def display_encoding_transform(display: str):
 
     Parameters
     ----------
-    display : str
-        A display of :data:`ocio_thinfilm.registry.DISPLAYS`
-        (:data:`DISPLAY_ENCODINGS` gives its curve).
+    display : str or registry display
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS` or its name (its
+        ``encoding`` gives the curve).
 
     Returns
     -------
@@ -150,7 +113,7 @@ def display_encoding_transform(display: str):
     [0.0, 0.489, 1.0]
     """
     ocio = ocio_ops.module()
-    _, gamma, offset = DISPLAY_ENCODINGS[check_display(display)]
+    _, gamma, offset = registry.as_display(display, hdr=False).encoding
     if offset is None:
         t = ocio.ExponentTransform([gamma, gamma, gamma, 1.0])
         t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
@@ -164,7 +127,7 @@ def display_encoding_transform(display: str):
 PQ_CURVE = "CURVE - LINEAR_to_ST-2084"
 
 
-def hdr_encoding_transform(display: str):
+def hdr_encoding_transform(display: registry.DisplayLike):
     """An HDR display's CIE-XYZ-D65 (the display reference: Y = 1 at
         :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2) -> its code values.
 
@@ -178,7 +141,7 @@ def hdr_encoding_transform(display: str):
 
         Parameters
         ----------
-        display : str
+        display : str or registry display
             A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
 
         Returns
@@ -208,9 +171,13 @@ def hdr_encoding_transform(display: str):
         [[0.5807, 0.5807, 0.5807], [0.7518, 0.7518, 0.7518]]
     """
     ocio = ocio_ops.module()
-    entry = registry.hdr_display(display)
+    entry = registry.as_display(display)
+    if not isinstance(entry, registry.HDRDisplay):
+        raise ParameterError(
+            "display", f" must be one of {registry.HDR_DISPLAYS}, got {entry.name!r}"
+        )
     unit = registry.HDR_REFERENCE_WHITE / registry.OCIO_XYZ_UNIT
-    M = colorimetry.matrix_XYZ_to_RGB(entry.gamut)
+    M = colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)
     # the built-in curves are odd (OCIO >= 2.2 mirrors its half-float LUTs): a channel a
     # float32 round-off below 0 (a gamut face after a matrix pair that OPTIMIZATION_NONE
     # does not compose) would encode to a negative code, so the display RGB is clamped
@@ -230,7 +197,7 @@ def hdr_encoding_transform(display: str):
     )
 
 
-def display_colorspace_transform(display: str):
+def display_colorspace_transform(display: registry.DisplayLike):
     """CIE-XYZ-D65 (the display reference) -> code values of any display of
     :data:`ocio_thinfilm.registry.ALL_DISPLAYS`: the display matrix and encoding of an
     SDR display, :func:`hdr_encoding_transform` of an HDR one (the config's display
@@ -240,9 +207,10 @@ def display_colorspace_transform(display: str):
     >>> apply(display_colorspace_transform("sRGB"), [0.95047, 1.0, 1.08883]).round(3).tolist()
     [1.0, 1.0, 1.0]
     """
-    if registry.is_hdr(display):
-        return hdr_encoding_transform(display)
-    return ocio_ops.group([display_matrix_transform(display), display_encoding_transform(display)])
+    entry = registry.as_display(display)
+    if entry.hdr:
+        return hdr_encoding_transform(entry)
+    return ocio_ops.group([display_matrix_transform(entry), display_encoding_transform(entry)])
 
 
 def aces_gamut_compression_transform():

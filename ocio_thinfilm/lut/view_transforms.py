@@ -23,6 +23,7 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.clip_lut import (
@@ -33,7 +34,6 @@ from ocio_thinfilm.lut.clip_lut import (
 )
 from ocio_thinfilm.lut.display_transforms import (
     aces_gamut_compression_transform,
-    check_display,
     display_encoding_transform,
     display_matrix_transform,
     hdr_encoding_transform,
@@ -50,7 +50,7 @@ HLG_GAMMA = 1.2
 HLG_E_MAX = 3.0
 
 
-def _hlg_scene_ops(display, inverse=False):
+def _hlg_scene_ops(entry: registry.HDRDisplay, inverse: bool = False) -> list:
     """HLG display light -> scene light (or back), as OCIO's built-in
     ``DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit`` does it: CIE XYZ (Y = 1 at 203
     cd/m2) -> the gamut's RGB scaled so that the peak is E_MAX ** gamma, the BT.2100
@@ -58,9 +58,8 @@ def _hlg_scene_ops(display, inverse=False):
     / E_MAX and back to XYZ: the HLG signal's parallelepiped [0, 1] is the SDR gamut's.
     ``inverse``: the OOTF way back, ending in display-linear RGB (1 = 203 cd/m2)."""
     ocio = ocio_ops.module()
-    entry = registry.hdr_display(display)
     a = HLG_E_MAX**HLG_GAMMA * registry.HDR_REFERENCE_WHITE / entry.peak
-    M = colorimetry.matrix_XYZ_to_RGB(entry.gamut)
+    M = colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)
     if not inverse:
         return [
             ocio_ops.matrix(M * a),
@@ -74,7 +73,7 @@ def _hlg_scene_ops(display, inverse=False):
     ]
 
 
-def hdr_scaled(display: str, transforms: list) -> list:
+def hdr_scaled(display: registry.DisplayLike, transforms: list) -> list:
     """An SDR view's chain (CIE-XYZ-D65 -> display-linear RGB in [0, 1] of the HDR
     display's gamut, a list of OCIO transforms) as the HDR display's, ending in
     display-linear RGB in units of the reference white (203 cd/m2).
@@ -91,10 +90,10 @@ def hdr_scaled(display: str, transforms: list) -> list:
 
     Parameters
     ----------
-    display : str
-        A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
+    display : str or registry display
+        A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS` or its name.
     transforms : list
-        The chain for ``registry.gamut_of(display)``.
+        The chain for its gamut (``display.gamut``).
 
     Returns
     -------
@@ -118,14 +117,18 @@ def hdr_scaled(display: str, transforms: list) -> list:
     >>> (out / k).round(3).tolist()
     [[1.0, 1.0, 1.0], [1.0, 1.0, 1.0]]
     """
-    entry = registry.hdr_display(display)
+    entry = registry.as_display(display)
+    if not isinstance(entry, registry.HDRDisplay):
+        raise ParameterError(
+            "display", f" must be one of {registry.HDR_DISPLAYS}, got {entry.name!r}"
+        )
     if entry.transfer == "HLG":
-        return _hlg_scene_ops(display) + list(transforms) + _hlg_scene_ops(display, True)
+        return _hlg_scene_ops(entry) + list(transforms) + _hlg_scene_ops(entry, True)
     k = entry.scale
     return [ocio_ops.matrix(np.eye(3) / k)] + list(transforms) + [ocio_ops.matrix(np.eye(3) * k)]
 
 
-def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
+def view_linear_transform(display: registry.DisplayLike, view: str, size: int = CLIP_SIZE):
     """CIE-XYZ-D65 -> display-linear RGB in [0, 1] for ``view`` (not for Raw).
 
     ``Constant-Lightness Clip``: :func:`ocio_thinfilm.lut.clip_lut.clip_transform`
@@ -139,7 +142,7 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
 
     Parameters
     ----------
-    display : str
+    display : str or registry display
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
     view : str
         ``"Constant-Lightness Clip"``, ``"Channel Clamp"`` or
@@ -180,15 +183,14 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     ...
     ValueError: view must be one of (...), got 'Raw'
     """
-    if registry.is_hdr(display):
-        gamut = registry.gamut_of(display)
-        return group(hdr_scaled(display, [view_linear_transform(gamut, view, size)]))
-    check_display(display)
+    entry = registry.as_display(display)
+    if entry.hdr:
+        return group(hdr_scaled(entry, [view_linear_transform(entry.gamut, view, size)]))
     if view == "Constant-Lightness Clip":
-        return clip_transform(display, size)
+        return clip_transform(entry, size)
     if view == "Constant-Lightness Compress":
         return group(
-            compress_lut(display, clip_size=size).transforms() + [working_decoding_transform()]
+            compress_lut(entry, clip_size=size).transforms() + [working_decoding_transform()]
         )
     # the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range
     # takes to the lower bound) stay finite through the matrices at every
@@ -196,13 +198,13 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     # overflowed to Inf - Inf = NaN)
     if view == "Channel Clamp":
         return group(
-            [finite_limit_transform(), display_matrix_transform(display), ocio_ops.range_(0.0, 1.0)]
+            [finite_limit_transform(), display_matrix_transform(entry), ocio_ops.range_(0.0, 1.0)]
         )
     if view == "ACES Gamut Compression":
         return group(
             [
                 finite_limit_transform(),
-                display_matrix_transform(display),
+                display_matrix_transform(entry),
                 aces_gamut_compression_transform(),
                 ocio_ops.range_(0.0, 1.0),
             ]
@@ -210,7 +212,7 @@ def view_linear_transform(display: str, view: str, size: int = CLIP_SIZE):
     raise ValueError(f"view must be one of {VIEWS[:-1]}, got {view!r}")
 
 
-def view_transform(display: str, view: str, size: int = CLIP_SIZE):
+def view_transform(display: registry.DisplayLike, view: str, size: int = CLIP_SIZE):
     """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
 
     ``Raw`` passes values through unchanged (an empty group). The constant-lightness
@@ -224,7 +226,7 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
 
     Parameters
     ----------
-    display : str
+    display : str or registry display
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
     view : str
         A view of :data:`ocio_thinfilm.registry.VIEWS`.
@@ -262,36 +264,35 @@ def view_transform(display: str, view: str, size: int = CLIP_SIZE):
     >>> bool(np.array_equal(apply(view_transform("sRGB", "Raw"), px), np.float32(px)))
     True
     """
-    if registry.is_hdr(display):
+    entry = registry.as_display(display)
+    if entry.hdr:
         if view not in VIEWS:
             raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
         if view == "Raw":
             return group([])
-        gamut = registry.gamut_of(display)
         return group(
             [
-                view_linear_transform(display, view, size),
-                display_matrix_transform(gamut, inverse=True),
-                hdr_encoding_transform(display),
+                view_linear_transform(entry, view, size),
+                display_matrix_transform(entry.gamut, inverse=True),
+                hdr_encoding_transform(entry),
             ]
         )
-    check_display(display)
     if view not in VIEWS:
         raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
     if view == "Raw":
         return group([])
     if view == "Constant-Lightness Clip":
-        lut = clip_lut(display, size)
+        lut = clip_lut(entry, size)
         return group(
-            lut.transforms() + [working_decoding_transform(), display_encoding_transform(display)],
+            lut.transforms() + [working_decoding_transform(), display_encoding_transform(entry)],
             name=lut.name,
             id=transform_id("Gamut_Map", lut.name),
         )
     if view == "Constant-Lightness Compress":
-        soft = compress_lut(display, clip_size=size)
+        soft = compress_lut(entry, clip_size=size)
         return group(
-            soft.transforms() + [working_decoding_transform(), display_encoding_transform(display)],
+            soft.transforms() + [working_decoding_transform(), display_encoding_transform(entry)],
             name=soft.name,
             id=transform_id("Gamut_Map", soft.name),
         )
-    return group([view_linear_transform(display, view, size), display_encoding_transform(display)])
+    return group([view_linear_transform(entry, view, size), display_encoding_transform(entry)])

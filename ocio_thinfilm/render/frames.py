@@ -30,7 +30,7 @@ __all__ = [
     "DEFAULT_DISPLAY",
     "DEFAULT_VIEW",
     "EXR_COLORSPACE",
-    "PNG_COLORSPACE",
+    "png_colorspace",
     "render_scene",
     "draw_labels",
     "frame_paths",
@@ -50,14 +50,20 @@ EXR_DOC = (
 )
 
 
-#: How the PNG is tagged (OpenImageIO colour interop IDs): sRGB gets PNG's sRGB chunk,
-#: Display P3 a cICP chunk, Rec.2020 (BT.1886 gamma 2.4), the Raw view and the displays
-#: of other configs (an ACES config merged with ``bake --into``) no tag -- never a wrong
-#: sRGB one. The HDR displays get their cICP chunk (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1,
-#: P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
-PNG_COLORSPACE = {
-    d.name: d.png_colorspace for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST
-}
+def png_colorspace(display: str) -> str:
+    """How a PNG for ``display`` is tagged (an OpenImageIO colour interop ID, the
+    registry display's ``png_colorspace``): sRGB gets PNG's sRGB chunk, Display P3 and
+    Rec.2020 (BT.1886 gamma 2.4) a cICP chunk, the displays of other configs (an ACES
+    config merged with ``bake --into``) ``"data"``, no tag -- never a wrong sRGB one. The
+    HDR displays get their cICP chunk (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1, P3-D65 PQ: 12
+    16 0 1) and 16 bits per channel.
+
+    >>> png_colorspace("Display P3"), png_colorspace("ACES 1.0 - SDR Video")
+    ('srgb_p3d65_display', 'data')
+    """
+    entry = registry.find_display(display)
+    return "data" if entry is None else entry.png_colorspace
+
 
 #: The EXR ``DateTime`` (fixed, for byte-identical output): Eurographics Workshop on
 #: Photosimulation, Realism and Physics in Computer Graphics, Rennes, 11 June 1990.
@@ -76,14 +82,15 @@ def label_code(display: str) -> float:
     >>> round(label_code("sRGB"), 2), round(label_code("Rec.2100-PQ"), 3)
     (0.92, 0.561)
     """
-    if not registry.is_hdr(display):
+    entry = registry.find_display(display)
+    if entry is None or not entry.hdr:
         return LABEL_CODE
     from ocio_thinfilm.colour import colorimetry
     from ocio_thinfilm.lut import display_transforms, ocio_ops
 
     light = ((LABEL_CODE + 0.055) / 1.055) ** 2.4  # the sRGB EOTF of LABEL_CODE
-    grey = light * colorimetry.white_XYZ(registry.gamut_of(display))
-    return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(display), grey)[1])
+    grey = light * colorimetry.white_XYZ(entry.colorimetry)
+    return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(entry), grey)[1])
 
 
 def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.ndarray, bool]:
@@ -226,13 +233,14 @@ def save_frame(
         )
         raw_views = {v.name for v in registry.VIEW_LIST if v.raw}
         raw = all((region[2] or view) in raw_views for region in picture.regions)
-        png_tag = "data" if raw else PNG_COLORSPACE.get(display, "data")
+        png_tag = "data" if raw else png_colorspace(display)
+        entry = registry.find_display(display)
         # HDR code values need 16 bits (PQ: 8-bit steps are visible banding)
         png_job = pool.submit(
             write_image,
             out_dir / f"{stem}.png",
             rgb,
-            dtype="uint16" if registry.is_hdr(display) else "uint8",
+            dtype="uint16" if entry is not None and entry.hdr else "uint8",
             attributes={"png:compressionLevel": 3, "oiio:ColorSpace": png_tag},
             tx=tx,
         )
