@@ -111,9 +111,9 @@ def test_demo_prints_the_soap_film_colour(demo_run, colour):
 @pytest.mark.parametrize(
     "args,needle",
     [
-        (["demo", "--thickness", "-5", "--out", "x.png"], "thickness"),
+        (["demo", "--thickness", "-5", "--out", "x.png"], "--thickness"),
         (["demo", "--thickness", "abc"], "--thickness"),
-        (["demo", "--thickness", "nan", "--out", "x.png"], "thickness"),
+        (["demo", "--thickness", "nan", "--out", "x.png"], "--thickness"),
         (["no-such-command"], "no-such-command"),
         (["demo", "--out", "/proc/forbidden/x.png"], "/proc/forbidden"),
     ],
@@ -132,3 +132,43 @@ def test_bad_arguments_exit_2_with_one_line_error(tmp_path, args, needle):
     assert needle in errors[0]
     assert all(line.startswith("usage:") or line is errors[0] for line in lines), p.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize("value", ["-5", "nan", "inf"])
+def test_physics_errors_name_the_parameter_and_the_cli_its_option(tmp_path, value, capsys):
+    """The numeric core names its Python parameter (a ParameterError, a ValueError);
+    ``demo`` names the option for the same mistake, with the same detail."""
+    from ocio_thinfilm.cli import main as cli
+    from ocio_thinfilm.cli import demo
+    from ocio_thinfilm.io import ParameterError
+
+    with pytest.raises(ParameterError) as raised:
+        demo.soap_film_colour(float(value))
+    message = str(raised.value)
+    assert raised.value.parameter == "thickness" and message.startswith("thickness must be")
+    assert cli.main(["demo", "--thickness", value, "--out", str(tmp_path / "x.png")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"ocio-thinfilm demo: error: --{message}", err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_numeric_core_raises_parameter_errors():
+    """Every argument check of the numeric core names its parameter the same way."""
+    from ocio_thinfilm.colour import compress
+    from ocio_thinfilm.io import ParameterError
+    from ocio_thinfilm.lut import tables
+    from ocio_thinfilm.physics import sampling, spectra
+
+    cases = [
+        (lambda: spectra.optical_thickness(300.0, -1.0), "n"),
+        (lambda: sampling.wavelength_grid(400, 700, -5), "step"),
+        (lambda: sampling.check_wavelengths([500, 400]), "wavelengths"),
+        (lambda: sampling.as_count("layers", 0), "layers"),
+        (lambda: compress.compression_curve(0.5, threshold=1.5), "threshold"),
+        (lambda: tables.check_size(1, what="film_size"), "film_size"),
+    ]
+    for call, parameter in cases:
+        with pytest.raises(ParameterError) as raised:
+            call()
+        assert raised.value.parameter == parameter, raised.value
+        assert str(raised.value).startswith(parameter + " ")

@@ -35,6 +35,7 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
 
 __all__ = [
@@ -58,11 +59,11 @@ POWER = 1.2
 
 def _check(threshold, limit, power):
     if not (np.isfinite(threshold) and 0.0 < threshold < 1.0):
-        raise ValueError(f"threshold must be a number in (0, 1), got {threshold!r}")
+        raise ParameterError("threshold", f" must be a number in (0, 1), got {threshold!r}")
     if not (np.isfinite(limit) and limit > 1.0):
-        raise ValueError(f"limit must be a number greater than 1, got {limit!r}")
+        raise ParameterError("limit", f" must be a number greater than 1, got {limit!r}")
     if not (np.isfinite(power) and power > 0.0):
-        raise ValueError(f"power must be a positive number, got {power!r}")
+        raise ParameterError("power", f" must be a positive number, got {power!r}")
     return float(threshold), float(limit), float(power)
 
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, transform_id
 
@@ -173,9 +174,9 @@ def check_size(size, minimum=2, maximum=1 << 20, what="size"):
     """``size`` as an int if it is an integer in [minimum, maximum], else ValueError
     naming ``what`` and the range."""
     if isinstance(size, bool) or not isinstance(size, (int, np.integer)):
-        raise ValueError(f"{what} must be an integer, got {size!r}")
+        raise ParameterError(what, f" must be an integer, got {size!r}")
     if not minimum <= size <= maximum:
-        raise ValueError(f"{what} must be in [{minimum}, {maximum}], got {size}")
+        raise ParameterError(what, f" must be in [{minimum}, {maximum}], got {size}")
     return int(size)
 
 

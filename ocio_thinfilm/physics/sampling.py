@@ -35,6 +35,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from ocio_thinfilm.io import ParameterError
+
 __all__ = [
     "MAX_SAMPLES",
     "MAX_LAYERS",
@@ -79,19 +81,20 @@ def as_array(
         a = a.astype(np.float64, copy=False)
         check = a
     if check.size and not np.all(np.isfinite(check)):
-        raise ValueError(f"{name} must be finite{_range_text(minimum, maximum, strict, unit)}")
+        raise ParameterError(name, f" must be finite{_range_text(minimum, maximum, strict, unit)}")
     if minimum is not None and check.size:
         bad = check <= minimum if strict else check < minimum
         if np.any(bad):
-            raise ValueError(
-                f"{name} must be {'>' if strict else '>='} {minimum:g}{unit}"
+            raise ParameterError(
+                name,
+                f" must be {'>' if strict else '>='} {minimum:g}{unit}"
                 f"{'' if maximum is None else f' and <= {maximum:g}{unit}'}, "
-                f"got {check[bad].flat[0]:g}"
+                f"got {check[bad].flat[0]:g}",
             )
     if maximum is not None and check.size and np.any(check > maximum):
-        raise ValueError(
-            f"{name} must be in [{minimum:g}, {maximum:g}]{unit}, "
-            f"got {check[check > maximum].flat[0]:g}"
+        raise ParameterError(
+            name,
+            f" must be in [{minimum:g}, {maximum:g}]{unit}, got {check[check > maximum].flat[0]:g}",
         )
     return a
 
@@ -114,7 +117,7 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
     is not a number (a string is not parsed: ``layers='3'`` is refused), a ValueError
     for a number that is not an integer in range."""
     if isinstance(value, (bool, np.bool_)):
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
+        raise ParameterError(name, f" must be an integer >= {minimum}, got {value!r}")
     if not isinstance(value, (int, float, np.number)):  # a string is not parsed
         raise TypeError(
             f"{name} must be an integer >= {minimum}, got {value!r} ({type(value).__name__})"
@@ -122,7 +125,7 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
     f = float(value)
     if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):
         limit = f" and <= {maximum}" if maximum is not None else ""
-        raise ValueError(f"{name} must be an integer >= {minimum}{limit}, got {value!r}")
+        raise ParameterError(name, f" must be an integer >= {minimum}{limit}, got {value!r}")
     return int(f)
 
 
@@ -184,7 +187,7 @@ def check_wavelengths(wavelengths: npt.ArrayLike) -> np.ndarray:
     >>> check_wavelengths([500, 400])
     Traceback (most recent call last):
     ...
-    ValueError: wavelengths must be strictly increasing
+    ocio_thinfilm.io.ParameterError: wavelengths must be strictly increasing
     """
     if np.asarray(wavelengths).dtype.kind not in "biuf":  # a string is not parsed
         raise TypeError(
@@ -192,11 +195,11 @@ def check_wavelengths(wavelengths: npt.ArrayLike) -> np.ndarray:
         )
     wl = np.asarray(wavelengths, dtype=np.float64)
     if wl.ndim != 1 or wl.size == 0:
-        raise ValueError("wavelengths must be a non-empty 1-D array of nm values")
+        raise ParameterError("wavelengths", " must be a non-empty 1-D array of nm values")
     if not np.all(np.isfinite(wl)) or np.any(wl <= 0):
-        raise ValueError("wavelengths must be finite and > 0 nm")
+        raise ParameterError("wavelengths", " must be finite and > 0 nm")
     if wl.size > 1 and np.any(np.diff(wl) <= 0):
-        raise ValueError("wavelengths must be strictly increasing")
+        raise ParameterError("wavelengths", " must be strictly increasing")
     return wl
 
 
@@ -226,17 +229,19 @@ def wavelength_grid(start: float = 360.0, stop: float = 780.0, step: float = 5.0
         except (TypeError, ValueError):
             raise TypeError(f"{name} must be a number of nm, got {value!r}") from None
         if not np.isfinite(value):
-            raise ValueError(f"{name} must be finite, got {value}")
+            raise ParameterError(name, f" must be finite, got {value}")
     start, stop, step = float(start), float(stop), float(step)
     if not step > 0:
-        raise ValueError(f"step must be > 0 nm, got {step}")
+        raise ParameterError("step", f" must be > 0 nm, got {step}")
     if not (0 < start < stop):
         raise ValueError(f"wavelength range must satisfy 0 < start < stop, got {start}..{stop}")
     if step > stop - start:
-        raise ValueError(f"step must be at most stop - start ({stop - start:g} nm), got {step:g}")
+        raise ParameterError(
+            "step", f" must be at most stop - start ({stop - start:g} nm), got {step:g}"
+        )
     count = int(round((stop - start) / step)) + 1
     if count > MAX_SAMPLES:
-        raise ValueError(f"step {step:g} nm gives {count} samples; at most {MAX_SAMPLES}")
+        raise ParameterError("step", f" {step:g} nm gives {count} samples; at most {MAX_SAMPLES}")
     return check_wavelengths(start + step * np.arange(count))
 
 
