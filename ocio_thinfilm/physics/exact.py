@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.physics.sampling import (
     MAX_LAYERS,
     as_angle,
@@ -67,7 +68,7 @@ def _complex_index(name: str, n: npt.ArrayLike) -> np.ndarray:
     if n.dtype.kind != "c":
         n = as_index(name, n)
     elif np.any(n.real <= 0) or not np.all(np.isfinite(n)):
-        raise ValueError(f"{name} must have a finite real part > 0")
+        raise ParameterError(name, " must have a finite real part > 0")
     return n.astype(np.complex128)
 
 
@@ -333,9 +334,9 @@ def transfer_matrix_reflectance(
     n_list = [_complex_index("n_layers", n) for n in np.atleast_1d(n_layers)]
     d_list = np.atleast_1d(as_array("thicknesses", thicknesses, minimum=0.0, unit=" nm"))
     if not n_list:
-        raise ValueError("n_layers must list at least 1 layer (an empty stack is no film)")
+        raise ParameterError("n_layers", " must list at least 1 layer (an empty stack is no film)")
     if len(n_list) != d_list.size or d_list.ndim != 1:
-        raise ValueError("n_layers and thicknesses must be 1-D and of equal length")
+        raise ParameterError("n_layers", " and thicknesses must be 1-D and of equal length")
     n0 = _complex_index("n_incident", n_incident)
     ns = _complex_index("n_substrate", n_substrate)
     sin0 = np.sin(angle) + 0j

@@ -27,6 +27,7 @@ from typing import TypedDict
 import numpy as np
 import numpy.typing as npt
 
+from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.physics.sampling import (
     MAX_LAYERS,
     as_angle,
@@ -119,7 +120,7 @@ def optical_thickness(
         return t * np.sqrt(np.maximum(n * n - np.sin(theta) ** 2, 0.0))
     if mode == "literal":
         return t * n * np.cos(theta)
-    raise ValueError(f"mode must be 'refraction' or 'literal', got {mode!r}")
+    raise ParameterError("mode", f" must be 'refraction' or 'literal', got {mode!r}")
 
 
 def two_beam_reflectance(
