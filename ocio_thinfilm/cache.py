@@ -35,6 +35,8 @@ import functools
 import threading
 import weakref
 from collections import OrderedDict, namedtuple
+from collections.abc import Callable
+from typing import Any
 
 __all__ = ["Memo", "CacheInfo", "memoize", "clear", "info", "entries", "names"]
 
@@ -92,14 +94,16 @@ class Memo:
         return f"<Memo {self.name} ({len(self._values)}/{self.maxsize})>"
 
 
-def memoize(maxsize: int = 128, *, forget=None):
+def memoize(
+    maxsize: int = 128, *, forget: Callable[[], object] | None = None
+) -> Callable[[Callable[..., Any]], Memo]:
     """Decorator: the function as a :class:`Memo` of ``maxsize`` entries, registered
     in the store by its qualified name (a new memo of the same name replaces the old).
     ``forget``: a callable that removes the function's persistent entries (see
     :func:`clear`).
     """
 
-    def decorate(function):
+    def decorate(function: Callable[..., Any]) -> Memo:
         memo = Memo(function, maxsize, f"{function.__module__}.{function.__qualname__}", forget)
         with _STORE_LOCK:
             _STORE[memo.name] = memo

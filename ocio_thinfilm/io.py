@@ -40,12 +40,18 @@ import stat
 import sys
 import tempfile
 import threading
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, TypeAlias
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
 
 __all__ = [
     "UsageError",
     "ParameterError",
+    "StrPath",
     "MARKER",
     "TMP_PREFIX",
     "Transaction",
@@ -68,6 +74,9 @@ TMP_PREFIX = ".ocio-thinfilm-tmp-"
 #: Marker file of an owned output directory: one relative path per line.
 MARKER = ".ocio-thinfilm-owned"
 _MARKER_HEADER = "# ocio-thinfilm: files written by the last run (replaced or removed by the next)"
+
+#: A file-system path as the functions here accept it: a string or a path object.
+StrPath: TypeAlias = str | os.PathLike[str]
 
 
 class UsageError(ValueError):
@@ -188,7 +197,7 @@ def _remove(path: Path) -> None:
         pass
 
 
-def clean_stale(directory) -> list[Path]:
+def clean_stale(directory: StrPath) -> list[Path]:
     """Remove temporaries left in ``directory`` by killed runs; returns what went."""
     removed: list[Path] = []
     try:
@@ -235,7 +244,7 @@ def _write_fd(fd: int, data: bytes) -> None:
         view = view[n:]
 
 
-def write_bytes(path, data: bytes) -> None:
+def write_bytes(path: StrPath, data: bytes) -> None:
     """Create ``path`` (which must not exist) holding ``data``; every write, the fsync
     and the close are checked."""
     fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
@@ -254,7 +263,7 @@ _SIGNALS = tuple(
 
 
 @contextlib.contextmanager
-def deferred_signals():
+def deferred_signals() -> Iterator[None]:
     """Hold SIGINT/SIGTERM/SIGHUP/SIGQUIT back for the duration (main thread only):
     the renames of a commit run to the end; a pending signal is delivered after."""
     if threading.current_thread() is not threading.main_thread() or not hasattr(
@@ -269,7 +278,7 @@ def deferred_signals():
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
-def check_xml(path, name=None) -> None:
+def check_xml(path: StrPath, name: StrPath | None = None) -> None:
     """OSError naming ``name`` (default ``path``) unless ``path`` parses as XML to its
     end: a CLF truncated by a full disk is caught before it is renamed into place."""
     import xml.etree.ElementTree as ET
@@ -343,7 +352,7 @@ def _via_proc(p: Path) -> bool:
     return False
 
 
-def is_stdout(path) -> bool:
+def is_stdout(path: StrPath) -> bool:
     """True if ``path`` names this process's standard output (then messages should go
     to stderr, not into the data)."""
     try:
@@ -429,7 +438,7 @@ class Transaction:
             self._cleaned.add(key)
             clean_stale(directory)
 
-    def file(self, path, *, check=None) -> Path:
+    def file(self, path: StrPath, *, check: Callable[[Path], object] | None = None) -> Path:
         """Stage ``path``: returns the temporary path its content must be written to.
         ``check(tmp)`` (optional) raises if the written file is wrong."""
         mode, dest = _destination(path)
@@ -447,7 +456,7 @@ class Transaction:
             self._files.append(_Entry(dest, tmp, mode, check))
         return tmp
 
-    def write(self, path, data) -> Path:
+    def write(self, path: StrPath, data: str | bytes) -> Path:
         """Stage ``path`` with ``data`` (bytes or str, UTF-8), written and fsynced now."""
         tmp = self.file(path)
         try:
@@ -555,7 +564,7 @@ class Transaction:
 
 
 @contextlib.contextmanager
-def transaction():
+def transaction() -> Iterator[Transaction]:
     """``with transaction() as tx:`` stage files with ``tx.file`` / ``tx.write`` /
     ``tx.directory``; they are committed together when the block ends without an
     exception, and removed otherwise (also on Ctrl-C)."""
@@ -568,7 +577,7 @@ def transaction():
 
 
 @contextlib.contextmanager
-def atomic_file(path, suffix=None):
+def atomic_file(path: StrPath, suffix: str | None = None) -> Iterator[Path]:
     """Yield a temporary path next to ``path``; on success it is checked, fsynced and
     renamed onto ``path`` (permissions 0666 less the umask). Special files are
     written through; links to regular files are followed."""
@@ -629,7 +638,13 @@ def _read_marker(path: Path) -> set:
     return owned
 
 
-def claim_directory(path, *, parameter: str = "out", legacy=None, last=()) -> Claim:
+def claim_directory(
+    path: StrPath,
+    *,
+    parameter: str = "out",
+    legacy: Callable[[Path], set[str] | None] | None = None,
+    last: Iterable[str] = (),
+) -> Claim:
     """Check that ``path`` may be (re)written as an output directory of this tool.
 
     Allowed: missing, empty, holding :data:`MARKER`, or ``legacy(path)`` returning the
@@ -735,7 +750,7 @@ def _commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> Non
         _remove(stage)
 
 
-def check_writable(directory) -> Path:
+def check_writable(directory: StrPath) -> Path:
     """Fail early, with a one-line error, if ``directory`` cannot be created or written."""
     d = Path(directory)
     if os.fspath(directory) == "":
@@ -753,7 +768,7 @@ def check_writable(directory) -> Path:
     return d
 
 
-def check_output_file(path, parameter: str = "out") -> Path:
+def check_output_file(path: StrPath, parameter: str = "out") -> Path:
     """Fail early, with a one-line error, if the file ``path`` cannot be written: a
     directory in its place, or an unwritable directory (a :class:`ParameterError`
     naming ``parameter``, the caller's name for ``path``). Special files (written
@@ -768,7 +783,13 @@ def check_output_file(path, parameter: str = "out") -> Path:
 
 
 @contextlib.contextmanager
-def atomic_directory(path, *, parameter: str = "out", legacy=None, last=()):
+def atomic_directory(
+    path: StrPath,
+    *,
+    parameter: str = "out",
+    legacy: Callable[[Path], set[str] | None] | None = None,
+    last: Iterable[str] = (),
+) -> Iterator[Path]:
     """Yield a staging directory whose files replace ``path``'s own files on success.
 
     ``path`` must be missing, empty or owned (see :func:`claim_directory`); files in it
@@ -781,7 +802,15 @@ def atomic_directory(path, *, parameter: str = "out", legacy=None, last=()):
 # --------------------------------------------------------------------------- #
 # Images
 # --------------------------------------------------------------------------- #
-def write_image(path, pixels, *, channel_names=None, dtype=None, attributes=None, tx=None):
+def write_image(
+    path: StrPath,
+    pixels: npt.ArrayLike,
+    *,
+    channel_names: Iterable[str] | None = None,
+    dtype: str | None = None,
+    attributes: Mapping[str, Any] | None = None,
+    tx: Transaction | None = None,
+) -> Path:
     """Write ``pixels`` (H, W, C) with OpenImageIO, safely (see the module docstring).
 
     ``dtype`` defaults to uint8 for .png and half for .exr. Float data written to an
@@ -876,11 +905,13 @@ def _np_shape(a):
     return tuple(getattr(a, "shape", ()))
 
 
-def read_image(path):
+def read_image(path: StrPath) -> np.ndarray:
     """Read an image as float32 (H, W, C) with OpenImageIO."""
     import OpenImageIO as oiio
 
     buf = oiio.ImageBuf(str(path))
     if buf.has_error:
         raise OSError(f"cannot read {path}: {buf.geterror()}")
-    return buf.get_pixels(oiio.FLOAT)
+    pixels = buf.get_pixels(oiio.FLOAT)
+    assert pixels is not None  # has_error is False: the pixels were read
+    return pixels

@@ -213,3 +213,54 @@ def test_the_config_stage_writes_no_files(tmp_path):
     bad = tmp_path / "bad.py"
     bad.write_text("def f(p, t):\n    p.write_text(t)\n")
     assert _writes(bad) == [(2, "write_text")]
+
+
+def _unannotated(path: Path) -> list[str]:
+    """``"line name"`` of every public function of ``path`` (a module-level function or a
+    method of a public class, its name without a leading underscore) that lacks the
+    annotation of a parameter (``self`` and ``cls`` aside) or of its return value."""
+    tree = ast.parse(path.read_text())
+    found = []
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            members = [] if node.name.startswith("_") else node.body
+        else:
+            members = [node]
+        for f in members:
+            if not isinstance(f, ast.FunctionDef) or f.name.startswith("_"):
+                continue
+            a = f.args
+            params = [
+                p for p in a.posonlyargs + a.args + a.kwonlyargs if p.arg not in ("self", "cls")
+            ]
+            params += [p for p in (a.vararg, a.kwarg) if p is not None]
+            if f.returns is None or any(p.annotation is None for p in params):
+                found.append(f"{f.lineno} {f.name}")
+    return found
+
+
+def test_the_public_api_is_annotated(tmp_path):
+    """Every public function and method carries type hints, every parameter and the
+    return value (mypy checks the whole package: pyproject.toml, ``[tool.mypy]``)."""
+    offenders = {str(p.relative_to(PACKAGE)): _unannotated(p) for p in _modules()}
+    assert {k: v for k, v in offenders.items() if v} == {}
+    bad = tmp_path / "bad.py"
+    bad.write_text(
+        "def f(x: int, *a: int, k: str = '', **kw: int) -> int:\n"
+        "    return x\n"
+        "def g(x, y: int) -> int:\n"
+        "    return y\n"
+        "class C:\n"
+        "    def m(self, y: int):\n"
+        "        return y\n"
+        "    def n(self, *args) -> None:\n"
+        "        pass\n"
+        "    def _private(self, z):\n"
+        "        return z\n"
+        "class _Hidden:\n"
+        "    def m(self, y):\n"
+        "        return y\n"
+        "def _helper(w):\n"
+        "    return w\n"
+    )
+    assert _unannotated(bad) == ["3 g", "6 m", "8 n"]

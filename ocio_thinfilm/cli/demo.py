@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import sys
 
 import numpy as np
@@ -49,7 +50,7 @@ def soap_strip(
     return np.stack(rows).astype(np.float32)
 
 
-def run(args) -> int:
+def run(args: argparse.Namespace) -> int:
     """``ocio-thinfilm demo``: print one film's colour at every stage, write the strip."""
     out = check_output_file(args.out)
     text = sys.stderr if is_stdout(out) else sys.stdout  # keep a PNG on stdout clean
@@ -76,7 +77,7 @@ def run(args) -> int:
     return 0
 
 
-def register(sub) -> None:
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     """Add the ``demo`` command to the ``sub`` parsers."""
     p = sub.add_parser(
         "demo", help="print a soap film's colour and write a strip of Newton's colours"

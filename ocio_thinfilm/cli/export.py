@@ -8,6 +8,7 @@ Options are parsed and typed by argparse here; the library functions
 
 from __future__ import annotations
 
+import argparse
 import sys
 
 from ocio_thinfilm import registry
@@ -82,7 +83,7 @@ def _run_export(args) -> int:
     return 0
 
 
-def register(sub) -> None:
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     """Add the ``bake`` and ``export`` commands to the ``sub`` parsers."""
     p = sub.add_parser(
         "bake",

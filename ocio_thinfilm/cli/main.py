@@ -28,8 +28,13 @@ import os
 import signal
 import sys
 import warnings
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from ocio_thinfilm import __version__
+
+if TYPE_CHECKING:
+    import argparse
 
 #: Modules that contribute sub-commands, in the order ``--help`` lists them.
 COMMAND_MODULES = ("cli.demo", "cli.export", "cli.render", "cli.report")
@@ -122,7 +127,7 @@ def _explain(parser, message: str) -> str:
     return f"{message} (see '{parser.prog} --help')"
 
 
-def build_parser():
+def build_parser() -> argparse.ArgumentParser:
     """The ``ocio-thinfilm`` parser with every command module's sub-command."""
     import argparse
     import importlib
@@ -176,7 +181,7 @@ def _error(command, message) -> None:
     print(f"{where}: error: {text}", file=sys.stderr)
 
 
-def main(argv=None) -> int:
+def main(argv: Sequence[str] | None = None) -> int:
     """Run ``ocio-thinfilm`` with ``argv`` (default: the process's arguments); returns
     the exit code: 0, 1 for an unexpected failure, 2 for bad input, 128 + n for signal n."""
     as_program = argv is None
@@ -229,7 +234,9 @@ def _main(argv, set_command) -> int:
         print(f"{error.prog}: error: {' '.join(str(error).split())}", file=sys.stderr)
         return 2
     if not getattr(args, "func", None):
-        names = ", ".join(sorted(parser._subparsers._group_actions[0].choices))
+        group = parser._subparsers
+        assert group is not None  # build_parser added the sub-commands
+        names = ", ".join(sorted(map(str, group._group_actions[0].choices or ())))
         _error(None, f"no command given; choose from {names} (see '{PROG} --help')")
         return 2
     try:

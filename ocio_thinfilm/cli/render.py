@@ -15,6 +15,7 @@ import re
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.io import UsageError, check_output_file, check_writable, transaction
@@ -63,7 +64,7 @@ def frames_argument(text: str) -> list[int]:
     return list(range(a, b + 1))
 
 
-def integer_argument(lo: int, hi: int):
+def integer_argument(lo: int, hi: int) -> Callable[[str], int]:
     """argparse type: an integer in [lo, hi]."""
 
     def parse(text: str) -> int:
@@ -74,7 +75,7 @@ def integer_argument(lo: int, hi: int):
     return parse
 
 
-def run(args) -> int:
+def run(args: argparse.Namespace) -> int:
     """``ocio-thinfilm render``: every frame of the chosen scenes through the config, the
     outputs checked first and committed together (or one child process per frame)."""
     names = list(scene_module.SCENES) if args.scene == "all" else [args.scene]
@@ -187,7 +188,7 @@ def _render_frames_in_children(args, frames) -> int:
     return 0
 
 
-def register(sub) -> None:
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     """Add the ``render`` command to the ``sub`` parsers."""
     p = sub.add_parser(
         "render",

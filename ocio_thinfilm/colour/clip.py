@@ -33,6 +33,7 @@ Baselines for comparison: :func:`clamp_RGB` (per-channel clamp) and
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
@@ -129,7 +130,7 @@ def _fraction_to_boundary(values, grey):
     return t, outside
 
 
-def clip_RGB(RGB, display: registry.DisplayLike = "sRGB"):
+def clip_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.ndarray:
     """Constant-lightness clip of display-linear RGB into the unit cube (Section 3.2).
 
     The ray test of the paper's Section 3.2 in the display's RGB, where the
@@ -179,7 +180,7 @@ def clip_RGB(RGB, display: registry.DisplayLike = "sRGB"):
     return _apply(RGB, "RGB", kernel)
 
 
-def clip_XYZ(XYZ, display: registry.DisplayLike = "sRGB"):
+def clip_XYZ(XYZ: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.ndarray:
     """Constant-lightness clip of D65-relative XYZ into ``display``'s gamut (the
     paper's XYZ form). Returns XYZ, same shape and dtype.
 
@@ -208,7 +209,7 @@ def clip_XYZ(XYZ, display: registry.DisplayLike = "sRGB"):
     return _apply(XYZ, "XYZ", kernel)
 
 
-def in_gamut(RGB, tolerance: float = 0.0):
+def in_gamut(RGB: npt.ArrayLike, tolerance: float = 0.0) -> np.ndarray | np.bool_:
     """True where all channels lie in [-tolerance, 1 + tolerance].
 
     The paper's first step of the clip (Smits & Meyer 1990, Section 3.2) in the
@@ -245,7 +246,7 @@ def in_gamut(RGB, tolerance: float = 0.0):
     return np.all((a >= -tolerance) & (a <= 1.0 + tolerance), axis=-1)
 
 
-def clamp_RGB(RGB):
+def clamp_RGB(RGB: npt.ArrayLike) -> np.ndarray:
     """Baseline: the per-channel clamp to [0, 1] (NaN stays NaN).
 
     Each channel is clamped on its own, so an out-of-gamut colour changes luminance
@@ -272,7 +273,7 @@ def clamp_RGB(RGB):
     return np.clip(np.asarray(RGB), 0.0, 1.0)
 
 
-def aces_gamut_compress_RGB(RGB):
+def aces_gamut_compress_RGB(RGB: npt.ArrayLike) -> np.ndarray:
     """Baseline: OCIO's ACES 1.3 reference gamut compression (``ACES_GamutComp13``)
     applied to display-linear RGB, then a clamp to [0, 1]. Runs through an OCIO CPU
     processor; returns float32.

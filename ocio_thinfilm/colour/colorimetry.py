@@ -31,11 +31,14 @@ from __future__ import annotations
 import hashlib
 import inspect
 import os
+from collections.abc import Callable
 from functools import wraps
 from importlib import metadata
 from pathlib import Path
+from typing import Any, overload
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import cache
 from ocio_thinfilm.physics import sampling, spectra
@@ -82,7 +85,15 @@ def _cache_dir() -> Path | None:
     return Path(base) / "ocio-thinfilm"
 
 
-def persistent(function=None, *, modules=()):
+@overload
+def persistent(function: Callable[..., Any], *, modules: tuple[str, ...] = ()) -> cache.Memo: ...
+@overload
+def persistent(
+    function: None = None, *, modules: tuple[str, ...] = ()
+) -> Callable[[Callable[..., Any]], cache.Memo]: ...
+def persistent(
+    function: Callable[..., Any] | None = None, *, modules: tuple[str, ...] = ()
+) -> cache.Memo | Callable[[Callable[..., Any]], cache.Memo]:
     """Memoise a pure function of colour-science's datasets in memory and on disk.
 
     The key covers the arguments, the function's source, the full source of any
@@ -195,7 +206,9 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
 
 
 def spectral_weights(
-    wavelengths, observer: str = DEFAULT_OBSERVER, illuminant: str = DEFAULT_ILLUMINANT
+    wavelengths: npt.ArrayLike,
+    observer: str = DEFAULT_OBSERVER,
+    illuminant: str = DEFAULT_ILLUMINANT,
 ) -> np.ndarray:
     """Integration weights ``W`` (shape (len(wavelengths), 3)) so that
     ``XYZ = R @ W`` and the perfect reflector has Y = 1.
@@ -257,7 +270,10 @@ def spectral_weights(
 
 
 def reflectance_to_XYZ(
-    reflectance, wavelengths, observer: str = DEFAULT_OBSERVER, illuminant: str = DEFAULT_ILLUMINANT
+    reflectance: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    observer: str = DEFAULT_OBSERVER,
+    illuminant: str = DEFAULT_ILLUMINANT,
 ) -> np.ndarray:
     """Relative XYZ of reflectance spectra.
 
@@ -298,12 +314,12 @@ def _chunked_XYZ(model, values, wavelengths, observer, illuminant, chunk=4096):
 
 
 def film_XYZ(
-    optical_thickness_nm,
+    optical_thickness_nm: npt.ArrayLike,
     kind: str = "phase-change",
     *,
     step: float = 5.0,
     band_limited: bool = True,
-    wavelengths=None,
+    wavelengths: npt.ArrayLike | None = None,
     observer: str = DEFAULT_OBSERVER,
     illuminant: str = DEFAULT_ILLUMINANT,
 ) -> np.ndarray:
@@ -357,15 +373,15 @@ def film_XYZ(
 
 
 def morpho_XYZ(
-    theta_degrees,
+    theta_degrees: npt.ArrayLike,
     *,
     layers: int = spectra.MORPHO["layers"],
-    d1=spectra.MORPHO["d1"],
-    d2=spectra.MORPHO["d2"],
-    n=spectra.MORPHO["n"],
+    d1: npt.ArrayLike = spectra.MORPHO["d1"],
+    d2: npt.ArrayLike = spectra.MORPHO["d2"],
+    n: npt.ArrayLike = spectra.MORPHO["n"],
     step: float = 5.0,
     band_limited: bool = True,
-    wavelengths=None,
+    wavelengths: npt.ArrayLike | None = None,
     observer: str = DEFAULT_OBSERVER,
     illuminant: str = DEFAULT_ILLUMINANT,
 ) -> np.ndarray:
@@ -474,7 +490,7 @@ def matrix_XYZ_to_RGB(space: str = "sRGB") -> np.ndarray:
     return _matrix_cached(space).copy()
 
 
-def XYZ_to_RGB(XYZ, space: str = "sRGB") -> np.ndarray:
+def XYZ_to_RGB(XYZ: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
     """Linear RGB of ``space`` from D65-relative XYZ (last axis 3).
 
     Parameters
@@ -511,7 +527,7 @@ def XYZ_to_RGB(XYZ, space: str = "sRGB") -> np.ndarray:
     return np.asarray(XYZ) @ _matrix_cached(space).T
 
 
-def RGB_to_XYZ(RGB, space: str = "sRGB") -> np.ndarray:
+def RGB_to_XYZ(RGB: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
     """D65-relative XYZ from linear RGB of ``space`` (last axis 3).
 
     Parameters
@@ -570,7 +586,7 @@ def white_XYZ(space: str = "sRGB") -> np.ndarray:
     return RGB_to_XYZ(np.ones(3), space)
 
 
-def delta_E2000(XYZ_a, XYZ_b) -> np.ndarray:
+def delta_E2000(XYZ_a: npt.ArrayLike, XYZ_b: npt.ArrayLike) -> np.ndarray:
     """CIE Delta E 2000 between two D65-relative XYZ arrays (via CIELAB, D65 white).
 
     Both colours go to CIE 1976 L*a*b* with the D65 white (CIE 15:2004, Section 8.2.1)
@@ -629,7 +645,7 @@ def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
     return np.asarray(cmfs[np.asarray(wl_key)])
 
 
-def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
+def cmfs_at(wavelengths: npt.ArrayLike, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
     """Colour matching functions (x-bar, y-bar, z-bar) at ``wavelengths`` (nm),
     interpolated by colour-science; shape (len(wavelengths), 3).
 
@@ -669,7 +685,7 @@ def cmfs_at(wavelengths, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
     return _cmfs_cached(tuple(wl.tolist()), observer).copy()
 
 
-def spectral_locus_XYZ(Y: float = 1.0, wavelengths=None) -> np.ndarray:
+def spectral_locus_XYZ(Y: float = 1.0, wavelengths: npt.ArrayLike | None = None) -> np.ndarray:
     """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs
     (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm.
 

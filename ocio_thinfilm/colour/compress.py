@@ -33,6 +33,7 @@ finite in-gamut result, float32 or float64 in, same dtype out).
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.io import ParameterError
@@ -76,13 +77,13 @@ def _scale(threshold, limit, power):
 
 
 def compression_curve(
-    d,
+    d: npt.ArrayLike,
     threshold: float = THRESHOLD,
     limit: float = LIMIT,
     power: float = POWER,
     *,
     clipped: bool = True,
-):
+) -> np.ndarray:
     """The distance ``d`` (>= 0) after compression.
 
     ``d`` up to ``threshold`` is unchanged; beyond it,
@@ -110,8 +111,8 @@ def compression_curve(
 
 
 def compression_curve_inverse(
-    y, threshold: float = THRESHOLD, limit: float = LIMIT, power: float = POWER
-):
+    y: npt.ArrayLike, threshold: float = THRESHOLD, limit: float = LIMIT, power: float = POWER
+) -> np.ndarray:
     """The distance whose unclipped :func:`compression_curve` is ``y`` (``y`` below the
     asymptote threshold + s; at or above it: +inf).
 
@@ -144,7 +145,7 @@ def _distance(rgb, grey):
     return d
 
 
-def boundary_distance(RGB, display: registry.DisplayLike = "sRGB"):
+def boundary_distance(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.ndarray:
     """Normalised distance of display-linear ``RGB`` to ``display``'s gamut boundary
     along the paper's ray (0 at the grey, 1 on the boundary); NaN where Y <= 0 or
     Y >= 1 (no ray: the colour is black or white). Returns (N...,) float64.
@@ -168,12 +169,12 @@ def boundary_distance(RGB, display: registry.DisplayLike = "sRGB"):
 
 
 def compress_RGB(
-    RGB,
+    RGB: npt.ArrayLike,
     display: registry.DisplayLike = "sRGB",
     threshold: float = THRESHOLD,
     limit: float = LIMIT,
     power: float = POWER,
-):
+) -> np.ndarray:
     """Soft constant-lightness gamut compression of display-linear RGB.
 
     Parameters
@@ -233,12 +234,12 @@ def compress_RGB(
 
 
 def compress_XYZ(
-    XYZ,
+    XYZ: npt.ArrayLike,
     display: registry.DisplayLike = "sRGB",
     threshold: float = THRESHOLD,
     limit: float = LIMIT,
     power: float = POWER,
-):
+) -> np.ndarray:
     """:func:`compress_RGB` for D65-relative CIE XYZ (Y = 1 the display's white):
     XYZ in, XYZ out, same shape and dtype.
 

@@ -135,7 +135,7 @@ def lut_files(
     luts_by_display: dict,
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
-    compress_by_display=None,
+    compress_by_display: dict | None = None,
 ) -> dict:
     """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses:
     the thin-film tables and, per display, the two passes of its clip LUT
@@ -246,7 +246,7 @@ def config_data(
     soft_by_display = compress_luts(clip_size)
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
     ref = REFERENCE
-    cs = []
+    cs: list[dict[str, Any]] = []
     cs.append(
         dict(
             name=ref,
@@ -258,7 +258,7 @@ def config_data(
             "Y = 1 (CIE 1931 2 degree observer). The reference space.",
         )
     )
-    for name, (space, description) in LINEAR_SPACES.items():
+    for name, (linear, description) in LINEAR_SPACES.items():
         cs.append(
             dict(
                 name=name,
@@ -266,7 +266,7 @@ def config_data(
                 encoding="scene-linear",
                 categories=["file-io", "working-space"],
                 description=description,
-                to_reference=_matrix_to_reference(space),
+                to_reference=_matrix_to_reference(linear),
             )
         )
     acescct = _acescct_to_reference()
@@ -422,7 +422,12 @@ COMPRESS_NAMED_TRANSFORM = "Constant-Lightness Compress - {display} (display-lin
 TABLE_NAMED_TRANSFORM = "{space} to CIE-XYZ-D65"
 
 
-def clip_named_transform(lut, *, inline=False, luts=None):
+def clip_named_transform(
+    lut: clip_lut.ClipLUT,
+    *,
+    inline: bool = False,
+    luts: dict[str, ocio_ops.Transform] | None = None,
+) -> ocio_ops.Transform:
     """The constant-lightness clip of ``display`` on its own: display-linear RGB in,
     display-linear RGB in [0, 1] out (XYZ -> the two LUT passes -> decoded), for
     hosts that apply a named transform as a node (Nuke OCIONamedTransform, Houdini)."""
@@ -433,7 +438,12 @@ def clip_named_transform(lut, *, inline=False, luts=None):
     )
 
 
-def compress_named_transform(soft, *, inline=False, luts=None):
+def compress_named_transform(
+    soft: compress_lut.CompressLUT,
+    *,
+    inline: bool = False,
+    luts: dict[str, ocio_ops.Transform] | None = None,
+) -> ocio_ops.Transform:
     """The soft constant-lightness compression of a CompressLUT's display on its own:
     display-linear RGB in and out (as :func:`clip_named_transform`)."""
     return ocio_ops.group(
@@ -444,7 +454,11 @@ def compress_named_transform(soft, *, inline=False, luts=None):
 
 
 def named_transforms(
-    luts_by_display: dict, *, inline=False, luts=None, compress_by_display=None
+    luts_by_display: dict,
+    *,
+    inline: bool = False,
+    luts: dict[str, ocio_ops.Transform] | None = None,
+    compress_by_display: dict | None = None,
 ) -> list:
     """Named transforms (OCIO >= 2.0) as data: the clip per display of ``luts_by_display``
     (display -> ClipLUT), the compression per display of ``compress_by_display`` (display

@@ -3,6 +3,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ocio_thinfilm.lut.ocio_ops import Transform
+
 __all__ = [
     "colorspace_factory",
     "view_transform_factory",
@@ -11,7 +17,7 @@ __all__ = [
 ]
 
 
-def file_transform(filename):
+def file_transform(filename: str) -> Transform:
     """A ``FileTransform`` to ``filename`` (found on the config's search path)."""
     import PyOpenColorIO as ocio
 
@@ -30,17 +36,17 @@ def _reference_space(name):
 
 
 def colorspace_factory(
-    name,
-    family="",
-    encoding="",
-    categories=(),
-    description="",
-    to_reference=None,
-    from_reference=None,
-    is_data=False,
-    aliases=(),
-    reference_space="scene",
-):
+    name: str,
+    family: str = "",
+    encoding: str = "",
+    categories: Iterable[str] = (),
+    description: str = "",
+    to_reference: Transform | None = None,
+    from_reference: Transform | None = None,
+    is_data: bool = False,
+    aliases: Iterable[str] = (),
+    reference_space: str = "scene",
+) -> Any:
     """One ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES)."""
     import PyOpenColorIO as ocio
 
@@ -63,8 +69,12 @@ def colorspace_factory(
 
 
 def view_transform_factory(
-    name, family="", description="", from_reference=None, reference_space="scene"
-):
+    name: str,
+    family: str = "",
+    description: str = "",
+    from_reference: Transform | None = None,
+    reference_space: str = "scene",
+) -> Any:
     """One ``PyOpenColorIO.ViewTransform`` from data."""
     import PyOpenColorIO as ocio
 
@@ -77,7 +87,14 @@ def view_transform_factory(
     return vt
 
 
-def named_transform_factory(name, transform, family="", description="", categories=(), encoding=""):
+def named_transform_factory(
+    name: str,
+    transform: Transform,
+    family: str = "",
+    description: str = "",
+    categories: Iterable[str] = (),
+    encoding: str = "",
+) -> Any:
     """One ``PyOpenColorIO.NamedTransform`` (forward direction) from data."""
     import PyOpenColorIO as ocio
 

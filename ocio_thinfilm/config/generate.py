@@ -15,6 +15,8 @@ from ocio_thinfilm.config.factories import (
     named_transform_factory,
     view_transform_factory,
 )
+from ocio_thinfilm.io import StrPath
+from ocio_thinfilm.lut import ocio_ops
 
 __all__ = ["generate_config"]
 
@@ -24,8 +26,8 @@ def generate_config(
     *,
     validate: bool = True,
     search_path: str = LUT_DIRECTORY,
-    working_dir: str | None = None,
-):
+    working_dir: StrPath | None = None,
+) -> ocio_ops.Config:
     """Build (and by default validate) the OCIO config from ``data``."""
     import PyOpenColorIO as ocio
 

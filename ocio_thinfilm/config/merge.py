@@ -45,12 +45,13 @@ from __future__ import annotations
 
 import copy
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.io import ParameterError, StrPath
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = [
@@ -75,7 +76,7 @@ HOST_OCIO = (
 )
 
 
-def profile_readers(cfg) -> str:
+def profile_readers(cfg: ocio_ops.Config) -> str:
     """One line on who reads the config ``cfg``: its profile, the oldest OCIO that reads
     it (the profile's own version) and the hosts of :data:`HOST_OCIO` that refuse it.
 
@@ -107,7 +108,7 @@ MIN_PROFILE = (2, 1)
 MATCH_TOLERANCE = 2e-4
 
 
-def load_base(source):
+def load_base(source: StrPath) -> ocio_ops.Config:
     """The base config from a file or an ``ocio://`` URI (one-line errors)."""
     ocio = ocio_ops.module()
     text = str(source)
@@ -119,7 +120,7 @@ def load_base(source):
         raise ParameterError("source", f" {text}: {str(error).splitlines()[0]}") from None
 
 
-def colorspace_transform(cs, to_reference):
+def colorspace_transform(cs: Any, to_reference: bool) -> ocio_ops.Transform | None:
     """A colour space's transform to (or from) its reference, None for an identity
     (``cs``: a ``PyOpenColorIO.ColorSpace``)."""
     ocio = ocio_ops.module()
@@ -150,7 +151,7 @@ def _apply(cfg, transform, values):
     return ocio_ops.apply(transform, values, config=cfg).astype(np.float64)
 
 
-def interchange(cfg):
+def interchange(cfg: ocio_ops.Config) -> tuple[ocio_ops.Transform, ocio_ops.Transform]:
     """(scene reference -> CIE-XYZ-D65, CIE-XYZ-D65 -> display reference) of ``cfg``,
     from its ``cie_xyz_d65_interchange`` role (see the module docstring)."""
     ocio = ocio_ops.module()
@@ -328,14 +329,16 @@ def _matches(cfg):
     return found, units
 
 
-def match_displays(cfg):
+def match_displays(cfg: ocio_ops.Config) -> dict[str, tuple[str, str]]:
     """{display of ``cfg``: (its display colour space name, clip display)} for every
     display that the clip supports; the clip display of an HDR display is one of
     :data:`ocio_thinfilm.registry.HDR_DISPLAYS`."""
     return _matches(cfg)[0]
 
 
-def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
+def merge_config(
+    base: ocio_ops.Config, *, clip_size: int = clip_lut.CLIP_SIZE
+) -> tuple[ocio_ops.Config, dict[str, ocio_ops.Transform], dict[str, tuple[str, str]]]:
     """``base`` plus the additions (module docstring) as a new, validated-ready config,
     and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
     version = (base.getMajorVersion(), base.getMinorVersion())
@@ -354,7 +357,7 @@ def merge_config(base, *, clip_size=clip_lut.CLIP_SIZE):
     targets = {g for _, g in matches.values()}
     # one view transform per target: an HDR display of another luminance unit than the
     # first one matched to the same target is left alone
-    unit_of = {}
+    unit_of: dict[str, float] = {}
     for display, (_, target) in list(matches.items()):
         if display in units:
             if unit_of.setdefault(target, units[display]) != units[display]:

@@ -11,13 +11,15 @@ from __future__ import annotations
 import numbers
 import re
 import shutil
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.export import view as export_view
 from ocio_thinfilm.export.files import FORMATS, lut_contents, progress_bar, write_lut
-from ocio_thinfilm.io import ParameterError, check_xml, claim_directory, transaction
+from ocio_thinfilm.io import ParameterError, StrPath, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut, tables
 
 __all__ = [
@@ -37,7 +39,7 @@ DEFAULT_LUTS_DIR = "luts"
 CLIP_SIZES = (9, 129)
 
 
-def check_clip_size(clip_size) -> int:
+def check_clip_size(clip_size: int) -> int:
     """``clip_size`` as an int in :data:`CLIP_SIZES`, else a TypeError or a
     :class:`~ocio_thinfilm.io.ParameterError` naming it."""
     lo, hi = CLIP_SIZES
@@ -46,7 +48,7 @@ def check_clip_size(clip_size) -> int:
             f"clip_size must be an integer in [{lo}, {hi}], got {clip_size!r} "
             f"({type(clip_size).__name__})"
         )
-    if not lo <= clip_size <= hi:
+    if not lo <= int(clip_size) <= hi:
         raise ParameterError("clip_size", f" must be an integer in [{lo}, {hi}], got {clip_size!r}")
     return int(clip_size)
 
@@ -98,12 +100,12 @@ def _check_staged_clfs(directory, final):
 
 
 def write_config(
-    directory,
+    directory: StrPath,
     *,
     clip_size: int = clip_lut.CLIP_SIZE,
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
-    progress=None,
+    progress: Callable[[str], object] | None = None,
 ) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
@@ -143,13 +145,13 @@ def write_config(
 EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
 
 
-def export_set(directory, *, show_progress=False) -> list[Path]:
+def export_set(directory: StrPath, *, show_progress: bool = False) -> list[Path]:
     """The standalone set shipped in ``luts/``: every table in every format that can
     hold it with its domain, plus the common display LUTs
     (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
     a plain 65^3 .cube over [0, 1], which every reader applies alike), into
     ``directory``, which must exist."""
-    jobs = []
+    jobs: list[tuple[str, dict[str, Any], str]] = []
     for fmt in FORMATS:
         for kind in colorimetry.FILM_KINDS:
             if 1 in FORMATS[fmt][2]:
@@ -191,7 +193,11 @@ def export_set(directory, *, show_progress=False) -> list[Path]:
 
 
 def bake(
-    out=DEFAULT_CONFIG_DIR, *, clip_size=clip_lut.CLIP_SIZE, show_progress=False, luts=None
+    out: StrPath = DEFAULT_CONFIG_DIR,
+    *,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    show_progress: bool = False,
+    luts: StrPath | None = None,
 ) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) to ``out`` and, with
     ``luts``, the standalone LUT set (:func:`export_set`) to that directory.

@@ -36,15 +36,20 @@ from __future__ import annotations
 import math
 import numbers
 import sys
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import ParameterError, atomic_file, check_output_file
+from ocio_thinfilm.io import ParameterError, StrPath, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops, tables
 from ocio_thinfilm.physics.sampling import as_pair, as_real
+
+if TYPE_CHECKING:
+    from tqdm import tqdm
 
 __all__ = [
     "FORMATS",
@@ -104,7 +109,7 @@ def _validate(table, kind, display, index, value_range, size, fmt):
     size = DEFAULT_SIZE[table] if size is None else size
     if isinstance(size, bool) or not isinstance(size, numbers.Integral):
         raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
-    if not 2 <= size <= MAX_SIZE[table]:
+    if not 2 <= int(size) <= MAX_SIZE[table]:
         raise ParameterError("size", f" must be in [2, {MAX_SIZE[table]}] for {table}, got {size}")
     lo, hi = DEFAULT_RANGE[table] if value_range is None else as_pair("value_range", value_range)
     if not (math.isfinite(lo) and math.isfinite(hi)) or lo >= hi:
@@ -147,15 +152,15 @@ def _stem(table, kind, display, index):
 
 
 def lut_contents(
-    table,
+    table: str,
     *,
-    kind="phase-change",
-    display=None,
-    index=None,
-    value_range=None,
-    size=None,
-    progress=None,
-):
+    kind: str = "phase-change",
+    display: registry.DisplayLike | None = None,
+    index: float | None = None,
+    value_range: Sequence[float] | None = None,
+    size: int | None = None,
+    progress: Callable[[float], object] | None = None,
+) -> tuple[np.ndarray, ocio_ops.Transform, dict[str, Any]]:
     """(values array, LUT transform, metadata dict) for one standalone LUT.
 
     ``values``: (size, 3) or (size, size, size, 3), on the uniform grid over the
@@ -276,7 +281,9 @@ def _baker_config(lut, lo, hi):
 DOMAIN_SHAPER_SIZE = 1024
 
 
-def write_lut(path, fmt, values, lut, meta):
+def write_lut(
+    path: StrPath, fmt: str, values: np.ndarray, lut: ocio_ops.Transform, meta: Mapping[str, Any]
+) -> Path:
     """Write one LUT file with OCIO's writer for ``fmt`` (atomically). Every format
     takes the value itself: the domain ``meta["range"]`` is carried by the file."""
     import PyOpenColorIO as ocio
@@ -324,16 +331,16 @@ def write_lut(path, fmt, values, lut, meta):
 
 
 def export_lut(
-    table,
-    out=None,
+    table: str,
+    out: StrPath | None = None,
     *,
-    fmt=None,
-    kind="phase-change",
-    display=None,
-    index=None,
-    value_range=None,
-    size=None,
-    show_progress=False,
+    fmt: str | None = None,
+    kind: str = "phase-change",
+    display: registry.DisplayLike | None = None,
+    index: float | None = None,
+    value_range: Sequence[float] | None = None,
+    size: int | None = None,
+    show_progress: bool = False,
 ) -> Path:
     """Compute and write one standalone LUT; returns the path written."""
     display = registry.display_name(display)
@@ -357,7 +364,7 @@ def export_lut(
     return out
 
 
-def progress_bar(show, total, desc):
+def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
     """A tqdm progress bar on stderr: None unless ``show`` and stderr is a terminal (a
     log or a pipe gets no carriage-return residue, only the command's own lines)."""
     if not show or not sys.stderr.isatty():

@@ -18,7 +18,13 @@ from pathlib import Path
 from ocio_thinfilm import config
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export.bake import write_config
-from ocio_thinfilm.io import ParameterError, atomic_directory, atomic_file, check_writable
+from ocio_thinfilm.io import (
+    ParameterError,
+    StrPath,
+    atomic_directory,
+    atomic_file,
+    check_writable,
+)
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["write_merged", "bake_into", "write_archive", "bake_archive"]
@@ -37,7 +43,9 @@ def _copy_base_files(base, source, directory):
             shutil.copytree(src, dst)
 
 
-def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
+def write_merged(
+    source: StrPath, directory: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE
+) -> tuple[Path, dict[str, tuple[str, str]]]:
     """Write the merged config (``config.ocio``, ``luts/``) into the existing
     ``directory``; returns (config path, display matches)."""
     ocio = ocio_ops.module()
@@ -69,7 +77,7 @@ def write_merged(source, directory, *, clip_size=clip_lut.CLIP_SIZE):
     return path, matches
 
 
-def write_archive(config_path, out):
+def write_archive(config_path: StrPath, out: StrPath) -> Path:
     """Archive the config folder of ``config_path`` as ``out`` (``.ocioz``, OCIO >= 2.2
     to read), atomically."""
     ocio = ocio_ops.module()
@@ -83,7 +91,7 @@ def write_archive(config_path, out):
     return Path(out)
 
 
-def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
+def bake_into(source: StrPath, out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
     """``ocio-thinfilm bake --into SOURCE --out OUT``: a folder or an ``.ocioz``."""
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
@@ -98,7 +106,7 @@ def bake_into(source, out, *, clip_size=clip_lut.CLIP_SIZE):
     return out / "config.ocio"
 
 
-def bake_archive(out, *, clip_size=clip_lut.CLIP_SIZE):
+def bake_archive(out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
     """``ocio-thinfilm bake --out thinfilm.ocioz``: the project's config as an archive."""
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))

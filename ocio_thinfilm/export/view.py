@@ -64,13 +64,14 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.io import ParameterError, atomic_file, check_writable
+from ocio_thinfilm.io import ParameterError, StrPath, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics.sampling import as_pair
 
@@ -143,7 +144,9 @@ NO_NEGATIVE_SHAPER = ("ACEScg",)
 # --------------------------------------------------------------------------- #
 # The shaper
 # --------------------------------------------------------------------------- #
-def shaper_domain(linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None):
+def shaper_domain(
+    linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """(lo, hi) of the shaper over ``linear_space`` (one of :data:`LINEAR_SIBLING`'s
     values), the same for the three channels so that every grid node on the diagonal
     is a neutral (greys stay grey under tetrahedral interpolation): it covers the
@@ -180,7 +183,9 @@ def _shaper_to_linear(lo, hi):
     return ocio_ops.group([ocio_ops.matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
 
 
-def view_config(source: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None):
+def view_config(
+    source: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
+) -> tuple[ocio_ops.Config, str | None]:
     """The config in memory (LUTs inline, no files), plus the shaper colour space for
     ``source`` (for a ``size`` grid and ``display``) when it needs one. Returns (config,
     shaper space name or None)."""
@@ -290,7 +295,7 @@ def _stem(source, display, view):
     return set_name(source, display, view)
 
 
-def set_name(source, display, view):
+def set_name(source: str, display: str, view: str) -> str:
     """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``,
     ``ACEScct_to_Rec2020_ChannelClamp``."""
 
@@ -455,7 +460,15 @@ def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, de
 
 
 def export_view(
-    source, display, view, out=None, *, fmt=None, size=None, value_range=None, shaper=None
+    source: str | None,
+    display: registry.DisplayLike | None,
+    view: str | None,
+    out: StrPath | None = None,
+    *,
+    fmt: str | None = None,
+    size: int | None = None,
+    value_range: Sequence[float] | None = None,
+    shaper: bool | None = None,
 ) -> list[Path]:
     """Write the display LUT ``source`` -> ``display`` / ``view``; returns the paths
     written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``).
@@ -473,6 +486,7 @@ def export_view(
                 "fmt", f" is needed: no format can be told from {out!r} ({', '.join(VIEW_FORMATS)})"
             )
     size, value_range = _validate(source, display, view, size, fmt, value_range)
+    assert source is not None and display is not None and view is not None  # _validate
     cube_shaper = None
     if source in THIN_FILM_INPUTS:
         if shaper is not None:
@@ -486,7 +500,7 @@ def export_view(
         raise ParameterError("out", f" {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
 
-    cfg, shaper = view_config(source, size, display)
+    cfg, shaper_space = view_config(source, size, display)
     meta = _metadata(source, display, view)
     if source in THIN_FILM_INPUTS:
         description = _description(source, display, view, size, None, False)
@@ -507,22 +521,30 @@ def export_view(
             _write_group(
                 out,
                 fmt,
-                _baked_3d_transforms(cfg, source, shaper, display, view, size),
+                _baked_3d_transforms(cfg, source, shaper_space, display, view, size),
                 meta,
-                _description(source, display, view, size, shaper, True),
+                _description(source, display, view, size, shaper_space, True),
             )
         ]
     if fmt == "cube" and not cube_shaper:
-        shaper = None  # the plain form: the grid over ACEScct itself
-    description = _description(source, display, view, size, shaper, True)
-    if fmt == "spi3d" and shaper:
+        shaper_space = None  # the plain form: the grid over ACEScct itself
+    description = _description(source, display, view, size, shaper_space, True)
+    if fmt == "spi3d" and shaper_space:
         companion = out.with_name(out.stem + ".shaper.spi1d")
-        text3d = _bake_text(cfg, "spi3d", shaper, None, display, view, size, description)
+        text3d = _bake_text(cfg, "spi3d", shaper_space, None, display, view, size, description)
         text1d = _bake_text(
-            cfg, "spi1d", source, shaper, display, view, size, description, target=shaper
+            cfg,
+            "spi1d",
+            source,
+            shaper_space,
+            display,
+            view,
+            size,
+            description,
+            target=shaper_space,
         )
         return [_write_text(out, text3d), _write_text(companion, text1d)]
-    text = _bake_text(cfg, fmt, source, shaper, display, view, size, description)
+    text = _bake_text(cfg, fmt, source, shaper_space, display, view, size, description)
     if fmt == "cube":  # OCIO's writer has no title line: say which form the file is
-        text = _cube_title(source, display, view, size, bool(shaper)) + "\n" + text
+        text = _cube_title(source, display, view, size, bool(shaper_space)) + "\n" + text
     return [_write_text(out, text)]

@@ -48,6 +48,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import colorimetry
@@ -133,7 +134,7 @@ def white_size(size: int) -> int:
     return max(7, int(round(size * WHITE_SIZE / CLIP_SIZE)))
 
 
-def xyz_limit_transform():
+def xyz_limit_transform() -> ocio_ops.Transform:
     """Clamp XYZ to [0, :data:`~ocio_thinfilm.lut.ocio_ops.LIMIT`] per component before the chart.
 
     No physical colour has a negative X, Y or Z (the CIE 1931 matching functions are
@@ -160,7 +161,7 @@ def xyz_limit_transform():
     return ocio_ops.range_(0.0, ocio_ops.LIMIT)
 
 
-def xyY_forward_transform():
+def xyY_forward_transform() -> ocio_ops.Transform:
     """OCIO's analytic CIE XYZ -> xyY (``FIXED_FUNCTION_XYZ_TO_xyY``).
 
     ``x = X / (X + Y + Z)``, ``y = Y / (X + Y + Z)``, Y unchanged (CIE 15:2004,
@@ -187,7 +188,7 @@ def xyY_forward_transform():
     return ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY)
 
 
-def xyY_inverse_transform():
+def xyY_inverse_transform() -> ocio_ops.Transform:
     """OCIO's analytic xyY -> CIE XYZ (``FIXED_FUNCTION_XYZ_TO_xyY``, inverse).
 
     ``X = x Y / y``, ``Z = (1 - x - y) Y / y`` (CIE 15:2004, Section 7.3). After the
@@ -215,7 +216,7 @@ def _luminance(display):
     return np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display))[1]
 
 
-def clip_black_faces_RGB(RGB, display):
+def clip_black_faces_RGB(RGB: npt.ArrayLike, display: str) -> np.ndarray:
     """L: the clip against the faces R, G, B >= 0 only (float64, (N, 3) display RGB).
 
     ``Y <= 0`` gives black; otherwise the colour moves towards the grey of its Y until
@@ -268,7 +269,7 @@ def clip_black_faces_RGB(RGB, display):
     return out
 
 
-def clip_white_faces_RGB(RGB, display):
+def clip_white_faces_RGB(RGB: npt.ArrayLike, display: str) -> np.ndarray:
     """U = C o L o C with C(c) = 1 - c: the clip against R, G, B <= 1 only.
 
     C maps the display white to black and the faces R, G, B = 1 to the faces through
@@ -526,7 +527,7 @@ class ClipLUT:
     def name(self) -> str:
         return f"Constant-Lightness Clip {self.display}"
 
-    def black_core(self):
+    def black_core(self) -> ocio_ops.Transform:
         """CLF-writable black pass: the Lut3D; chart (u_a, u_b, Y) in, the chart
         coordinates of L(X) and Y out."""
         name = f"{self.name} Black Faces"
@@ -554,7 +555,7 @@ class ClipLUT:
             ),
         )
 
-    def white_core(self):
+    def white_core(self) -> ocio_ops.Transform:
         """CLF-writable white pass: per-channel shaper, Lut3D, its scale and a clamp;
         display-linear c_i / tops[i] in (no negative channel), display code values out."""
         name = f"{self.name} White Faces"
@@ -586,7 +587,9 @@ class ClipLUT:
             "(IEC 61966-2-1 piecewise curve)",
         )
 
-    def transforms(self, black=None, white=None):
+    def transforms(
+        self, black: ocio_ops.Transform | None = None, white: ocio_ops.Transform | None = None
+    ) -> list[ocio_ops.Transform]:
         """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
         [0, 1], sRGB-encoded (:data:`WORKING_ENCODING`); ``black`` / ``white`` replace
         the CLF-writable cores (e.g. by FileTransforms in the config)."""
@@ -641,7 +644,7 @@ def _convex_hull(points):
     pts = sorted(map(tuple, np.asarray(points, dtype=np.float64)))
 
     def half(seq):
-        out = []
+        out: list[tuple[float, ...]] = []
         for p in seq:
             while (
                 len(out) >= 2
@@ -674,6 +677,7 @@ def _project_triangle(p, V):
         if best is None:
             best, dist = q, d
         else:
+            assert best is not None and dist is not None
             nearer = d < dist
             best[nearer], dist[nearer] = q[nearer], d[nearer]
     return np.where(inside[:, None], p, best)
@@ -795,8 +799,8 @@ def _halves_inside(z, Vz, margin=2.0 * 0.5 / LUT_CODE_MAX):
         for _ in range(2):
             x = np.nextafter(x, np.float16(direction))
             steps.append(x)
-    steps = np.stack([s.astype(np.float64) for s in steps], axis=1)  # (N, 5, 2)
-    cand = np.stack(np.broadcast_arrays(steps[:, :, None, 0], steps[:, None, :, 1]), axis=-1)
+    grid = np.stack([s.astype(np.float64) for s in steps], axis=1)  # (N, 5, 2)
+    cand = np.stack(np.broadcast_arrays(grid[:, :, None, 0], grid[:, None, :, 1]), axis=-1)
     cand = cand.reshape(len(z), -1, 2)
     ok = (cand >= 0.0).all(axis=-1)
     # the third face: the edge of Vz that lies on neither axis
@@ -932,7 +936,7 @@ def clip_lut(
     return _clip_lut(name, size, check_size(white_edge, 7, 129, "white_edge"))
 
 
-def working_decoding_transform():
+def working_decoding_transform() -> ocio_ops.Transform:
     """sRGB code values (the white pass's output) -> display-linear RGB.
 
     The inverse of :func:`ocio_thinfilm.lut.display_transforms.display_encoding_transform`
@@ -962,7 +966,9 @@ def working_decoding_transform():
     return ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)])
 
 
-def clip_transform(display: registry.DisplayLike = "sRGB", size: int = CLIP_SIZE):
+def clip_transform(
+    display: registry.DisplayLike = "sRGB", size: int = CLIP_SIZE
+) -> ocio_ops.Transform:
     """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
     clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
     white-faces pass, which ends in display code values), then the display's EOTF.

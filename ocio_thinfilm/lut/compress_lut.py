@@ -40,6 +40,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import colorimetry
@@ -85,7 +86,13 @@ def _sigma(d, threshold, limit, power):
     return np.where(d > threshold, k, 1.0)
 
 
-def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT, power=soft.POWER):
+def soft_black_RGB(
+    RGB: npt.ArrayLike,
+    display: str,
+    threshold: float = soft.THRESHOLD,
+    limit: float = soft.LIMIT,
+    power: float = soft.POWER,
+) -> np.ndarray:
     """S_b: ``Y + sigma(d_black) (c - Y)``, d_black = (Y - min c) / Y, for display-linear
     (N, 3) RGB with Y > 0 (float64 out; rows with Y <= 0 unchanged)."""
     rgb = np.asarray(RGB, dtype=np.float64)
@@ -96,7 +103,13 @@ def soft_black_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT, pow
     return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]), rgb)
 
 
-def soft_white_RGB(RGB, display, threshold=soft.THRESHOLD, limit=soft.LIMIT, power=soft.POWER):
+def soft_white_RGB(
+    RGB: npt.ArrayLike,
+    display: str,
+    threshold: float = soft.THRESHOLD,
+    limit: float = soft.LIMIT,
+    power: float = soft.POWER,
+) -> np.ndarray:
     """S_w for display-linear (N, 3) RGB after L (no negative channel); float64 out.
 
     For 0 < Y < 1: ``d_black = f^-1((Y - min c) / Y)`` (the limit on the faces through
@@ -229,7 +242,7 @@ class CompressLUT:
     def name(self) -> str:
         return f"Constant-Lightness Compress {self.display}"
 
-    def black_core(self):
+    def black_core(self) -> ocio_ops.Transform:
         """CLF-writable S_b: chart (u_a, u_b, Y) in and out."""
         name = f"{self.name} Black Faces"
         t, lim, _ = self.parameters
@@ -250,7 +263,7 @@ class CompressLUT:
             output_descriptor="(u_a, u_b, Y) of the squeezed colour",
         )
 
-    def white_core(self):
+    def white_core(self) -> ocio_ops.Transform:
         """CLF-writable S_w: c_i / tops[i] in and out (after the clip's black pass)."""
         name = f"{self.name} White Faces"
         t, lim, _ = self.parameters
@@ -274,7 +287,13 @@ class CompressLUT:
             output_descriptor="the same, squeezed",
         )
 
-    def transforms(self, black=None, white=None, clip_black=None, clip_white=None):
+    def transforms(
+        self,
+        black: ocio_ops.Transform | None = None,
+        white: ocio_ops.Transform | None = None,
+        clip_black: ocio_ops.Transform | None = None,
+        clip_white: ocio_ops.Transform | None = None,
+    ) -> list[ocio_ops.Transform]:
         """CIE-XYZ-D65 -> display RGB in [0, 1], sRGB-encoded: the clip's chain with S_b
         before its black pass and S_w before its white pass; the arguments replace the
         CLF-writable cores (e.g. by FileTransforms in the config)."""

@@ -29,7 +29,9 @@ __all__ = [
 ]
 
 
-def display_matrix_transform(display: registry.DisplayLike, inverse: bool = False):
+def display_matrix_transform(
+    display: registry.DisplayLike, inverse: bool = False
+) -> ocio_ops.Transform:
     """CIE-XYZ-D65 -> display-linear RGB (or back) as an OCIO MatrixTransform.
 
     The matrix of :func:`ocio_thinfilm.colour.colorimetry.matrix_XYZ_to_RGB` (the
@@ -70,7 +72,7 @@ def display_matrix_transform(display: registry.DisplayLike, inverse: bool = Fals
     return ocio_ops.matrix(np.linalg.inv(M) if inverse else M)
 
 
-def display_encoding_transform(display: registry.DisplayLike):
+def display_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
     """Display-linear RGB -> display code values (the display's inverse EOTF).
 
     For the sRGB-encoded displays (sRGB, Display P3) the IEC 61966-2-1 piecewise
@@ -113,7 +115,9 @@ def display_encoding_transform(display: registry.DisplayLike):
     [0.0, 0.489, 1.0]
     """
     ocio = ocio_ops.module()
-    _, gamma, offset = registry.as_display(display, hdr=False).encoding
+    entry = registry.as_display(display, hdr=False)
+    assert isinstance(entry, registry.Display)  # hdr=False: an SDR display
+    _, gamma, offset = entry.encoding
     if offset is None:
         t = ocio.ExponentTransform([gamma, gamma, gamma, 1.0])
         t.setNegativeStyle(ocio.NEGATIVE_CLAMP)
@@ -127,7 +131,7 @@ def display_encoding_transform(display: registry.DisplayLike):
 PQ_CURVE = "CURVE - LINEAR_to_ST-2084"
 
 
-def hdr_encoding_transform(display: registry.DisplayLike):
+def hdr_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
     """An HDR display's CIE-XYZ-D65 (the display reference: Y = 1 at
         :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2) -> its code values.
 
@@ -197,7 +201,7 @@ def hdr_encoding_transform(display: registry.DisplayLike):
     )
 
 
-def display_colorspace_transform(display: registry.DisplayLike):
+def display_colorspace_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
     """CIE-XYZ-D65 (the display reference) -> code values of any display of
     :data:`ocio_thinfilm.registry.ALL_DISPLAYS`: the display matrix and encoding of an
     SDR display, :func:`hdr_encoding_transform` of an HDR one (the config's display
@@ -213,7 +217,7 @@ def display_colorspace_transform(display: registry.DisplayLike):
     return ocio_ops.group([display_matrix_transform(entry), display_encoding_transform(entry)])
 
 
-def aces_gamut_compression_transform():
+def aces_gamut_compression_transform() -> ocio_ops.Transform:
     """OCIO's ACES 1.3 reference gamut compression, the baseline view's core.
 
     ``FixedFunctionTransform(FIXED_FUNCTION_ACES_GAMUT_COMP_13)`` with

@@ -18,9 +18,18 @@ report and the benchmarks build their transforms from these.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+from types import ModuleType
+from typing import Any, TypeAlias
+
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
+    "Transform",
+    "Config",
+    "Processor",
+    "CPUProcessor",
     "VENDOR",
     "module",
     "transform_id",
@@ -36,11 +45,23 @@ __all__ = [
     "apply",
 ]
 
+# PyOpenColorIO ships no type stubs (mypy: ignore_missing_imports), so its objects are Any
+# to the type checker; these names say in signatures which OCIO object is meant.
+#: An OCIO transform (``PyOpenColorIO.Transform`` or a subclass): PyOpenColorIO ships no
+#: type stubs.
+Transform: TypeAlias = Any
+#: An OCIO config (``PyOpenColorIO.Config``): no type stubs either.
+Config: TypeAlias = Any
+#: An OCIO processor (``PyOpenColorIO.Processor``): no type stubs either.
+Processor: TypeAlias = Any
+#: An OCIO CPU processor (``PyOpenColorIO.CPUProcessor``): no type stubs either.
+CPUProcessor: TypeAlias = Any
+
 #: ``urn:aswf:ocio:transformId:1.0:<Vendor>:<Type>:<Name>:1.0`` (OpenColorIO-Config-ACES).
 VENDOR = "OCIO-ThinFilm"
 
 
-def module():
+def module() -> ModuleType:
     """The ``PyOpenColorIO`` module (imported here, on first use)."""
     import PyOpenColorIO as ocio
 
@@ -59,14 +80,14 @@ def transform_id(kind: str, name: str) -> str:
 
 
 def group(
-    transforms,
+    transforms: Iterable[Transform | None],
     *,
     name: str | None = None,
     description: str | None = None,
     id: str | None = None,
     input_descriptor: str | None = None,
     output_descriptor: str | None = None,
-):
+) -> Transform:
     """A ``GroupTransform`` of ``transforms`` (``None`` entries skipped) with CLF-style
     metadata."""
     ocio = module()
@@ -88,21 +109,21 @@ def group(
     return g
 
 
-def inverse(transforms):
+def inverse(transforms: Iterable[Transform | None]) -> Transform:
     """A GroupTransform of ``transforms`` (a list) applied in the inverse direction."""
     g = group(transforms)
     g.setDirection(module().TRANSFORM_DIR_INVERSE)
     return g
 
 
-def quantize(values, decimals: int = 7) -> np.ndarray:
+def quantize(values: npt.ArrayLike, decimals: int = 7) -> np.ndarray:
     """Round to ``decimals`` decimal places (and turn -0 into 0) before data go into a
     file: float64 results can differ in the last bits between runs (BLAS reduction
     order, memory alignment); rounded, the written files are byte-reproducible."""
     return np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0
 
 
-def matrix(m3=None, offset=(0.0, 0.0, 0.0)):
+def matrix(m3: npt.ArrayLike | None = None, offset: npt.ArrayLike = (0.0, 0.0, 0.0)) -> Transform:
     """A ``MatrixTransform``: ``m3`` (3x3, identity if None) and ``offset``, rounded to
     12 decimals."""
     ocio = module()
@@ -115,7 +136,7 @@ def matrix(m3=None, offset=(0.0, 0.0, 0.0)):
     )
 
 
-def range_(lo, hi):
+def range_(lo: float, hi: float) -> Transform:
     """A ``RangeTransform`` clamping to [lo, hi] (no scaling)."""
     r = module().RangeTransform()
     r.setMinInValue(lo)
@@ -131,13 +152,13 @@ def range_(lo, hi):
 LIMIT = 1e6
 
 
-def finite_limit_transform():
+def finite_limit_transform() -> Transform:
     """Clamp every component to [-LIMIT, LIMIT]: +-Inf become finite (and NaN, which
     OCIO's CPU Range sends to the lower bound)."""
     return range_(-LIMIT, LIMIT)
 
 
-def lut1d_transform(values, *, bitdepth: str | None = None):
+def lut1d_transform(values: np.ndarray, *, bitdepth: str | None = None) -> Transform:
     """An OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3).
 
     ``bitdepth="uint16"``: the values already lie on the 16-bit grid (in [0, 1]) and
@@ -154,7 +175,7 @@ def lut1d_transform(values, *, bitdepth: str | None = None):
     return t
 
 
-def lut3d_transform(values, *, bitdepth: str | None = None):
+def lut3d_transform(values: np.ndarray, *, bitdepth: str | None = None) -> Transform:
     """An OCIO Lut3DTransform (tetrahedral) holding ``values`` (N, N, N, 3), index
     [r][g][b]. ``bitdepth``: ``"uint16"`` (values on the 16-bit grid in [0, 1]) or
     ``"half"`` (values already rounded to half floats) are written as such in a CLF
@@ -173,7 +194,9 @@ def lut3d_transform(values, *, bitdepth: str | None = None):
     return t
 
 
-def apply(transform, pixels, *, config=None) -> np.ndarray:
+def apply(
+    transform: Transform, pixels: npt.ArrayLike, *, config: Config | None = None
+) -> np.ndarray:
     """Apply an OCIO transform to a (..., 3) array with OCIO's CPU processor.
 
     The input is converted to float32 and not modified; returns a new float32 array

@@ -23,8 +23,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 
-from ocio_thinfilm import cache
+from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import ParameterError
 from ocio_thinfilm.lut import ocio_ops
@@ -74,14 +75,14 @@ class Table1D:
     t0: float = 0.0
     description: str = ""
     name: str = ""
-    nodes: np.ndarray = field(default=None, repr=False)
+    nodes: np.ndarray | None = field(default=None, repr=False)
 
     @property
     def size(self) -> int:
         return int(self.values.shape[0])
 
     # -- numpy path -------------------------------------------------------- #
-    def shaper(self, x) -> np.ndarray:
+    def shaper(self, x: npt.ArrayLike) -> np.ndarray:
         """Normalised table coordinate u in [0, 1] (clamped) of pixel values ``x``."""
         x = np.nan_to_num(np.asarray(x, dtype=np.float64), nan=0.0)
         if self.encoding == "log":
@@ -91,7 +92,7 @@ class Table1D:
             u = (x - self.domain_min) / (self.domain_max - self.domain_min)
         return np.clip(u, 0.0, 1.0)
 
-    def lookup(self, x) -> np.ndarray:
+    def lookup(self, x: npt.ArrayLike) -> np.ndarray:
         """XYZ for pixel values ``x`` (any shape), by the same linear interpolation
         OCIO applies (returns shape ``x.shape + (3,)``, float64)."""
         u = self.shaper(x) * (self.size - 1)
@@ -104,7 +105,7 @@ class Table1D:
         return out
 
     # -- OCIO path --------------------------------------------------------- #
-    def shaper_transform(self):
+    def shaper_transform(self) -> ocio_ops.Transform:
         """OCIO transform: pixel value -> u in [0, 1] (before the LUT's clamp)."""
         ocio = ocio_ops.module()
         if self.encoding == "log":
@@ -119,7 +120,7 @@ class Table1D:
         span = self.domain_max - self.domain_min
         return ocio_ops.matrix(np.eye(3) / span, [-self.domain_min / span] * 3)
 
-    def lut_transform(self):
+    def lut_transform(self) -> ocio_ops.Transform:
         return lut1d_transform(self.values)
 
     def _black_node(self) -> bool:
@@ -128,7 +129,7 @@ class Table1D:
         black through OCIO as well (the LUT's clamp lands on that node)."""
         return self.encoding == "log" and bool(np.any(self.values[0] != 0.0))
 
-    def transform(self):
+    def transform(self) -> ocio_ops.Transform:
         """OCIO transform from the pixel encoding to CIE-XYZ-D65 (a GroupTransform
         with CLF metadata: shaper, then the Lut1D)."""
         ops = [self.lut_transform()]
@@ -170,7 +171,7 @@ class Table1D:
         return clip.clip_RGB(rgb, display) if clipped else rgb
 
 
-def check_size(size, minimum=2, maximum=1 << 20, what="size"):
+def check_size(size: int, minimum: int = 2, maximum: int = 1 << 20, what: str = "size") -> int:
     """``size`` as an int if it is an integer in [minimum, maximum], else ValueError
     naming ``what`` and the range."""
     if isinstance(size, bool) or not isinstance(size, (int, np.integer)):
@@ -330,13 +331,14 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 
 
 def thin_film_table(
-    space, *, film_size: int = FILM_SIZE, morpho_size: int = MORPHO_SIZE
+    space: registry.ThinFilmSpace, *, film_size: int = FILM_SIZE, morpho_size: int = MORPHO_SIZE
 ) -> Table1D:
     """The table behind a thin-film input space of the registry
     (:class:`ocio_thinfilm.registry.ThinFilmSpace`): :func:`film_table` or
     :func:`morpho_table` as its ``table`` field says, with its arguments."""
     if space.table == "film":
-        return film_table(*space.args, size=film_size)
+        # the registry checks that a film space's args are (kind,): mypy cannot see it
+        return film_table(*space.args, size=film_size)  # type: ignore[misc]
     if space.table == "morpho":
         return morpho_table(size=morpho_size)
     raise ValueError(f"thin-film space {space.name!r}: unknown table {space.table!r}")

@@ -128,7 +128,9 @@ def hdr_scaled(display: registry.DisplayLike, transforms: list) -> list:
     return [ocio_ops.matrix(np.eye(3) / k)] + list(transforms) + [ocio_ops.matrix(np.eye(3) * k)]
 
 
-def view_linear_transform(display: registry.DisplayLike, view: str, size: int = CLIP_SIZE):
+def view_linear_transform(
+    display: registry.DisplayLike, view: str, size: int = CLIP_SIZE
+) -> ocio_ops.Transform:
     """CIE-XYZ-D65 -> display-linear RGB in [0, 1] for ``view`` (not for Raw).
 
     ``Constant-Lightness Clip``: :func:`ocio_thinfilm.lut.clip_lut.clip_transform`
@@ -212,7 +214,9 @@ def view_linear_transform(display: registry.DisplayLike, view: str, size: int = 
     raise ValueError(f"view must be one of {VIEWS[:-1]}, got {view!r}")
 
 
-def view_transform(display: registry.DisplayLike, view: str, size: int = CLIP_SIZE):
+def view_transform(
+    display: registry.DisplayLike, view: str, size: int = CLIP_SIZE
+) -> ocio_ops.Transform:
     """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
 
     ``Raw`` passes values through unchanged (an empty group). The constant-lightness

@@ -16,12 +16,14 @@ output bytes are a function of the arguments.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.io import check_output_file, transaction, write_image
+from ocio_thinfilm.io import StrPath, Transaction, check_output_file, transaction, write_image
+from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.render import scenes as scene_module
 from ocio_thinfilm.render.processors import ConfigProcessors, display_image, make_lookup
 
@@ -93,7 +95,11 @@ def label_code(display: str) -> float:
     return float(ocio_ops.apply(display_transforms.hdr_encoding_transform(entry), grey)[1])
 
 
-def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.ndarray, bool]:
+def draw_labels(
+    rgb: np.ndarray,
+    labels: Sequence[tuple[float, float, str, float]],
+    code: float = LABEL_CODE,
+) -> tuple[np.ndarray, bool]:
     """Draw ``(x, y, text, size)`` captions, centred at x, with OpenImageIO's
     ``render_text`` and its bundled font, in the grey of code value ``code``. Returns
     (image, whether text was drawn)."""
@@ -111,7 +117,9 @@ def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.n
         drawn = drawn and bool(ok)
     if not drawn:
         return rgb, False
-    return buf.get_pixels(oiio.FLOAT), True
+    pixels = buf.get_pixels(oiio.FLOAT)
+    assert pixels is not None  # the buffer was filled above
+    return pixels, True
 
 
 # --------------------------------------------------------------------------- #
@@ -119,25 +127,26 @@ def draw_labels(rgb: np.ndarray, labels, code: float = LABEL_CODE) -> tuple[np.n
 # --------------------------------------------------------------------------- #
 def render_scene(
     name: str,
-    size=DEFAULT_SIZE,
+    size: tuple[int, int] = DEFAULT_SIZE,
     *,
     seed: int = 0,
     frame: int = 1,
     display: str = DEFAULT_DISPLAY,
     view: str = DEFAULT_VIEW,
-    lookup=None,
-    config=None,
-):
+    lookup: scene_module.Lookup | None = None,
+    config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
+) -> tuple[scene_module.Picture, np.ndarray]:
     """Render one frame through a config's processors: returns (picture,
     display-encoded RGB float32). ``config``: a :class:`ConfigProcessors`, a
     ``PyOpenColorIO.Config`` or a path (default: :data:`DEFAULT_CONFIG`); a ``lookup``
     from :func:`make_lookup` brings its own."""
     scene = scene_module.get_scene(name)
     width, height = size
+    carried = getattr(lookup, "processors", None)  # a make_lookup lookup's processors
     if isinstance(config, ConfigProcessors):
         processors = config
-    elif config is None and getattr(lookup, "processors", None) is not None:
-        processors = lookup.processors
+    elif config is None and carried is not None:
+        processors = carried
     else:
         processors = ConfigProcessors(config)
     lookup = lookup or make_lookup(processors)
@@ -176,15 +185,15 @@ def frame_paths(name: str, out_dir: Path, frame: int | None) -> list[Path]:
 
 def save_frame(
     name: str,
-    picture,
-    rgb,
+    picture: scene_module.Picture,
+    rgb: np.ndarray,
     out_dir: Path,
     *,
     seed: int,
     frame: int | None,
     display: str,
     view: str,
-    tx=None,
+    tx: Transaction | None = None,
 ) -> list[Path]:
     """Write a rendered frame as ``NAME[.####].exr`` and ``.png``; returns the paths.
 
@@ -250,15 +259,15 @@ def save_frame(
 def write_frame(
     name: str,
     out_dir: Path,
-    size,
+    size: tuple[int, int],
     *,
     seed: int,
     frame: int | None,
     display: str,
     view: str,
-    lookup=None,
-    config=None,
-    tx=None,
+    lookup: scene_module.Lookup | None = None,
+    config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
+    tx: Transaction | None = None,
 ) -> list[Path]:
     """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths."""
     picture, rgb = render_scene(

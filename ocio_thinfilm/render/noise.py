@@ -27,8 +27,10 @@ from __future__ import annotations
 
 import os
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import cache
 
@@ -142,27 +144,27 @@ def _noise_chunk(coords, perm, gperm):
         frac.append(fr)
         fade.append(_scurve(fr))
     # Hash prefixes over all but the last axis: 2^(dims-1) of them.
-    prefixes = {(): None}
+    prefixes: dict[tuple[int, ...], np.ndarray | None] = {(): None}
     for axis in range(dims - 1):
-        nxt = {}
+        nxt: dict[tuple[int, ...], np.ndarray | None] = {}
         for key, h in prefixes.items():
             for o in (0, 1):
                 idx = cell[axis] + o if h is None else h + cell[axis] + o
                 nxt[key + (o,)] = perm[idx]
         prefixes = nxt
     last = dims - 1
-    values = {}
+    values: dict[tuple[int, ...], Any] = {}
     for key, h in prefixes.items():
         for o in (0, 1):
             idx = cell[last] + o if h is None else h + cell[last] + o
             offsets = key + (o,)
-            d = gperm[0][idx] * (frac[0] - offsets[0]) if dims else None
+            d: Any = gperm[0][idx] * (frac[0] - offsets[0]) if dims else None
             for axis in range(1, dims):
                 d += gperm[axis][idx] * (frac[axis] - offsets[axis])
             values[offsets] = d
     # Blend along the last axis first, then inwards, with the s-curve weights.
     for axis in reversed(range(dims)):
-        merged = {}
+        merged: dict[tuple[int, ...], np.ndarray] = {}
         for key in {k[:axis] for k in values}:
             lo, hi = values[key + (0,)], values[key + (1,)]
             merged[key] = lo + fade[axis] * (hi - lo)
@@ -170,7 +172,13 @@ def _noise_chunk(coords, perm, gperm):
     return values[()]
 
 
-def noise(x, y=None, z=None, *, seed: int = 0) -> np.ndarray:
+def noise(
+    x: npt.ArrayLike,
+    y: npt.ArrayLike | None = None,
+    z: npt.ArrayLike | None = None,
+    *,
+    seed: int = 0,
+) -> np.ndarray:
     """Perlin gradient noise at the points ``(x[, y[, z]])`` (broadcast together).
 
     Returns float32 of the broadcast shape. Lattice period 256; deterministic for a
@@ -182,9 +190,9 @@ def noise(x, y=None, z=None, *, seed: int = 0) -> np.ndarray:
     coords = [c for c in (x, y, z) if c is not None]
     dims = len(coords)
     perm, gperm = _tables(seed, dims)
-    coords = np.broadcast_arrays(*[np.asarray(c, dtype=np.float32) for c in coords])
-    shape = coords[0].shape
-    flat = [np.ascontiguousarray(c).reshape(-1) for c in coords]
+    arrays = np.broadcast_arrays(*[np.asarray(c, dtype=np.float32) for c in coords])
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(c).reshape(-1) for c in arrays]
     if flat[0].size and not all(np.all(np.isfinite(c)) for c in flat):
         raise ValueError("noise coordinates must be finite")
     out = np.empty(flat[0].size, np.float32)
@@ -224,7 +232,13 @@ def _pool():
 
 
 def turbulence(
-    x, y=None, z=None, *, octaves: int = 6, seed: int = 0, filter_width=None
+    x: npt.ArrayLike,
+    y: npt.ArrayLike | None = None,
+    z: npt.ArrayLike | None = None,
+    *,
+    octaves: int = 6,
+    seed: int = 0,
+    filter_width: npt.ArrayLike | None = None,
 ) -> np.ndarray:
     """Perlin's turbulence ``sum_{i<octaves} |noise(2^i p)| / 2^i`` (float32).
 

@@ -20,13 +20,17 @@ from __future__ import annotations
 
 from importlib import resources
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.data import REFERENCE
-from ocio_thinfilm.io import ParameterError
-from ocio_thinfilm.lut import tables
+from ocio_thinfilm.io import ParameterError, StrPath
+from ocio_thinfilm.lut import ocio_ops, tables
+
+if TYPE_CHECKING:
+    from ocio_thinfilm.render.scenes import Lookup, Picture, TableSpec
 
 __all__ = [
     "DEFAULT_CONFIG",
@@ -67,7 +71,7 @@ DEFAULT_CONFIG = _checkout_config() or PACKAGE_CONFIG
 REFERENCE_SPACE = REFERENCE
 
 
-def table_colorspace(spec) -> str:
+def table_colorspace(spec: TableSpec) -> str:
     """The config's input colour space (pixel value -> CIE-XYZ-D65) of a scene's
     :class:`~.scenes.TableSpec`: the table the config ships for its kind."""
     lo, hi = spec.range
@@ -85,7 +89,7 @@ def table_colorspace(spec) -> str:
     return registry.thin_film_space_for_kind(spec.kind).name
 
 
-def load_config(config=None):
+def load_config(config: StrPath | None = None) -> ocio_ops.Config:
     """``PyOpenColorIO.Config`` of the file ``config`` (default :data:`DEFAULT_CONFIG`,
     baked with :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is
     the installed :data:`PACKAGE_CONFIG`)."""
@@ -174,13 +178,13 @@ class ConfigProcessors:
             self.created.append(key)
         return self._cpu[key]
 
-    def table(self, spec):
+    def table(self, spec: TableSpec) -> ocio_ops.CPUProcessor:
         space = table_colorspace(spec)
         return self._processor(
             f"colorspace:{space}", lambda: self.config.getProcessor(self._xyz_transform(space))
         )
 
-    def view(self, display: str, view: str):
+    def view(self, display: str, view: str) -> ocio_ops.CPUProcessor:
         import PyOpenColorIO as ocio
 
         def make():
@@ -218,7 +222,7 @@ def _apply(cpu, pixels) -> np.ndarray:
     return flat.reshape(out.shape)
 
 
-def build_table(spec):
+def build_table(spec: TableSpec) -> tables.Table1D:
     """The tables-module table for a scene's :class:`~.scenes.TableSpec` (computed
     here, not read from a config: for comparisons with what the config holds)."""
     lo, hi = spec.range
@@ -237,21 +241,23 @@ def _as_rgb(values: np.ndarray) -> np.ndarray:
     return np.repeat(v[..., None], 3, axis=-1)
 
 
-def make_lookup(processors: ConfigProcessors | None = None):
+def make_lookup(processors: ConfigProcessors | None = None) -> Lookup:
     """A scene ``lookup(spec, encoded)`` that applies the config's colour space of
     each table (pixel encoding -> CIE-XYZ-D65) with OCIO's CPU processor, each built
     once on first use."""
     processors = processors if processors is not None else ConfigProcessors()
 
-    def lookup(spec, encoded):
+    def lookup(spec: TableSpec, encoded: np.ndarray) -> np.ndarray:
         return _apply(processors.table(spec), _as_rgb(encoded))
 
-    lookup.processors = processors
+    # the processors travel with the lookup (render_scene reuses them); mypy does not
+    # model attributes set on a function
+    lookup.processors = processors  # type: ignore[attr-defined]
     return lookup
 
 
 def display_image(
-    picture, display: str, view: str, processors: ConfigProcessors | None = None
+    picture: Picture, display: str, view: str, processors: ConfigProcessors | None = None
 ) -> np.ndarray:
     """The display-encoded RGB of a scene's picture (float32, (H, W, 3)), each column
     region through its view (the config's display/view processors)."""

@@ -181,7 +181,9 @@ class SpectrumScene(Scene):
     ANGLES = (0.0, 60.0)
     STRIPS = ("spectrum", "film", "morpho")
 
-    def render(self, width, height, *, lookup, seed=0, frame=1):
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:
         header = max(2, int(round(height * 0.11)))
         gap = max(1, width // 64)
         panel = (width - (len(self.VIEWS) + 1) * gap) // len(self.VIEWS)
@@ -213,7 +215,11 @@ class SpectrumScene(Scene):
         cos_t = np.cos(np.radians(theta)).astype(np.float32)
         morpho = MorphoScene.EXPOSURE * lookup(MORPHO_TABLE, cos_t[:, None])[:, 0, :]
 
-        columns = [(spec, "wavelength", wl), (film, "thickness", t_opt), (morpho, "angle", theta)]
+        columns: list[tuple[np.ndarray, str, np.ndarray]] = [
+            (spec, "wavelength", wl),
+            (film, "thickness", t_opt),
+            (morpho, "angle", theta),
+        ]
         regions, labels = [], []
         font = int(min(header * 0.42, panel / (0.5 * max(map(len, self.VIEWS)))))
         small = int(font * 0.75)
@@ -281,7 +287,7 @@ class OilScene(Scene):
     FILM_GAIN = 0.4  # strength of the film's reflection of the sky
     WATER_SHEEN = 0.012  # Fresnel reflection of the sky by the bare water film
 
-    def camera_rays(self, width, height):
+    def camera_rays(self, width: int, height: int) -> tuple[np.ndarray, np.ndarray, np.float32]:
         """Unit ray directions (H, W, 3) of a pinhole camera (z up, looking along +y
         and down by PITCH) and the camera position."""
         x, y = _pixel_grid(width, height)
@@ -298,7 +304,9 @@ class OilScene(Scene):
         pixel_angle = 2 * tan_half / height
         return d, eye, pixel_angle
 
-    def render(self, width, height, *, lookup, seed=0, frame=1):
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:
         d, eye, pixel_angle = self.camera_rays(width, height)
         dz = np.minimum(d[..., 2], np.float32(-1e-3))
         s = -eye[2] / dz  # distance to the road
@@ -354,7 +362,9 @@ class OilScene(Scene):
         )
 
     @staticmethod
-    def asphalt(gx, gy, footprint, seed):
+    def asphalt(
+        gx: np.ndarray, gy: np.ndarray, footprint: np.ndarray | float, seed: int
+    ) -> np.ndarray:
         """Wet asphalt (XYZ). Two noise calls set the local bump scale (a blend between
         coarse and fine aggregate) and the roughness (the bumps' amplitude); very fine
         bumps go on top. Shaded by the bump slope under the overcast sky; the water
@@ -401,7 +411,9 @@ class SoapScene(Scene):
     RADIUS = 0.44  # of the image's smaller side
     FILM_GAIN = 0.85
 
-    def render(self, width, height, *, lookup, seed=0, frame=1):
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:
         x, y = _pixel_grid(width, height)
         r = np.float32(self.RADIUS * min(width, height))
         nx = (x - width / 2) / r
@@ -500,7 +512,9 @@ class MorphoScene(Scene):
     TILT_PERIOD = 48  # frames
     WAVES = 3.2  # waves across the image
 
-    def render(self, width, height, *, lookup, seed=0, frame=1):
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:
         x, y = _pixel_grid(width, height)
         side = np.float32(min(width, height))
         u, v = x / side, y / side
