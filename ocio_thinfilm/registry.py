@@ -22,7 +22,7 @@ it is validated once, at import (:func:`validate`).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar, TypeAlias
+from typing import ClassVar, Literal, TypeAlias, overload
 
 from ocio_thinfilm.io import ParameterError
 
@@ -342,6 +342,14 @@ def find_display(name: str) -> Display | HDRDisplay | None:
     return _BY_NAME.get(name) if isinstance(name, str) else None
 
 
+@overload
+def as_display(
+    display: DisplayLike, *, hdr: Literal[False], parameter: str = "display"
+) -> Display: ...
+@overload
+def as_display(
+    display: DisplayLike, *, hdr: bool = True, parameter: str = "display"
+) -> Display | HDRDisplay: ...
 def as_display(
     display: DisplayLike, *, hdr: bool = True, parameter: str = "display"
 ) -> Display | HDRDisplay:

@@ -116,7 +116,6 @@ def display_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transf
     """
     ocio = ocio_ops.module()
     entry = registry.as_display(display, hdr=False)
-    assert isinstance(entry, registry.Display)  # hdr=False: an SDR display
     _, gamma, offset = entry.encoding
     if offset is None:
         t = ocio.ExponentTransform([gamma, gamma, gamma, 1.0])
