@@ -176,8 +176,8 @@ def test_white_squeeze_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch
     for k in (0, -2, -1, 1, 2):
         w = w0 * (1.0 + k * np.finfo(float).eps)
         monkeypatch.setattr(compress_lut, "_luminance", lambda _d, w=w: w)
-        white = np.clip(compress_lut.soft_white_RGB(C, display), 0.0, tops) / tops
-        codes.append(compress_lut._half16(white))
+        params = (compress.THRESHOLD, compress.LIMIT, compress.POWER)
+        codes.append(compress_lut._squeeze_codes(C, display, params, tops))
     grey = np.all(C == C[:, :1], axis=1) & (C[:, 0] > 1.0)
     assert grey.any()  # the nodes that were at stake
     for other in codes[1:]:

@@ -215,7 +215,7 @@ def view_parts(
     luts: dict | None = None,
     inline: bool = False,
     compress: compress_lut.CompressLUT | None = None,
-) -> Any:
+) -> ocio_ops.Transform:
     """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
     the ClipLUT of the display's gamut (for the Constant-Lightness Clip),
     ``compress``: its CompressLUT (for the Constant-Lightness Compress), ``luts``: the

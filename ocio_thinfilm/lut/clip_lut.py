@@ -341,6 +341,14 @@ def _white_continuation(RGB, display):
     return np.where(((top > 1.0) & neutral)[..., None], 1.0, out)
 
 
+def _white_codes(C: np.ndarray, display: str) -> np.ndarray:
+    """The white pass's stored values at the (N, 3) nodes ``C``: U continued above
+    white (:func:`_white_continuation`), in the working encoding, / WHITE_SCALE, on the
+    16-bit grid."""
+    code = _encode(np.clip(_white_continuation(C, display), 0.0, None), WORKING_ENCODING)
+    return _q16(code / WHITE_SCALE)
+
+
 def _grow(first, length, cells):
     """``cells`` steps growing geometrically from ``first`` and summing to ``length``."""
     if cells <= 0:
@@ -859,7 +867,6 @@ def _clip_lut(display, size, white_edge):
     nodes, tops = _white_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
-    code = _encode(np.clip(_white_continuation(C, display), 0.0, None), WORKING_ENCODING)
     shaper = np.stack(
         [
             _shaper_values(nodes[i], 0.0, tops[i], along=lambda v: _encode(v, WORKING_ENCODING))
@@ -872,7 +879,7 @@ def _clip_lut(display, size, white_edge):
         display=display,
         size=size,
         black=_q16(black.astype(np.float16).astype(np.float64)),
-        white=_q16(code / WHITE_SCALE).reshape(n, n, n, 3),
+        white=_white_codes(C, display).reshape(n, n, n, 3),
         white_shaper=_q16(shaper),
         chart=P,
         tops=tops,

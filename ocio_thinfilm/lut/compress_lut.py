@@ -323,6 +323,14 @@ def _half16(values):
     return _q16(np.asarray(values).astype(np.float16).astype(np.float64))
 
 
+def _squeeze_codes(
+    C: np.ndarray, display: str, parameters: tuple[float, float, float], tops: np.ndarray
+) -> np.ndarray:
+    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops, half floats on the
+    16-bit grid (:func:`_half16`)."""
+    return _half16(np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops)
+
+
 @cache.memoize(maxsize=16)
 def _compress_lut(display, size, white_edge, parameters, clip_size):
     lut = clip_lut.clip_lut(display, clip_size)
@@ -346,13 +354,12 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     # function), keeps Y (stored sRGB-encoded, as the clip's white pass, the encoding's
     # curvature costs |dY|: docs/compress.md). Half floats rounded to the 16-bit grid, as the
     # black passes: half-float GPU textures see the CPU's values.
-    white = np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops
     shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
     out = CompressLUT(
         display=display,
         clip=lut,
         black=_half16(black),
-        white=_half16(white).reshape(n, n, n, 3),
+        white=_squeeze_codes(C, display, parameters, tops).reshape(n, n, n, 3),
         white_shaper=_q16(shaper),
         chart=P,
         parameters=parameters,
