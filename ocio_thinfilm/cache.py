@@ -11,16 +11,20 @@ the next call compute again.
 - :func:`memoize` -- decorator: a :class:`Memo` (least-recently-used, ``maxsize``
   entries, one computation at a time), registered in the store;
 - :func:`clear` -- empty every memo; with ``persistent=True`` also the memos' own
-  on-disk entries (those of :func:`ocio_thinfilm.colour.colorimetry.persistent`, which
-  are keyed by the code and colour-science's version, so they never go stale: clearing
-  them only costs the next process the computation);
+  on-disk entries (those of :func:`persistent`, which are keyed by the code and
+  colour-science's version, so they never go stale: clearing them only costs the next
+  process the computation);
+- :func:`persistent` -- decorator: a memo that also keeps its arrays on disk (the
+  colour-science weights, the clip's fitted nodes), for the next process;
 - :func:`info` -- ``{name: CacheInfo(hits, misses, maxsize, currsize)}``;
 - :func:`entries` -- ``{name: (key, ...)}``: what each memo holds now, e.g. which
   tables this process has computed (the tests' proof that a scene builds only what it
   needs).
 
 ``functools.lru_cache`` would do the memoising but hides its keys; this store shows
-them. It imports nothing from the package, so any module may use it.
+them. It imports nothing from the package at import time (:func:`persistent` writes its
+files with :func:`ocio_thinfilm.io.atomic_file` when it first saves), so any module may
+use it.
 
 >>> @memoize(maxsize=2)
 ... def square(x):
@@ -32,11 +36,17 @@ them. It imports nothing from the package, so any module may use it.
 from __future__ import annotations
 
 import functools
+import hashlib
+import inspect
+import os
 import threading
 import weakref
 from collections import OrderedDict, namedtuple
 from collections.abc import Callable
-from typing import Any
+from functools import wraps
+from importlib import metadata
+from pathlib import Path
+from typing import Any, overload
 
 __all__ = ["Memo", "CacheInfo", "memoize", "clear", "info", "entries", "names"]
 
@@ -145,3 +155,102 @@ def entries(prefix: str = "") -> dict:
 def names() -> tuple:
     """The registered memos' names."""
     return tuple(_memos())
+
+
+# --------------------------------------------------------------------------- #
+# On disk
+# --------------------------------------------------------------------------- #
+def _cache_dir() -> Path | None:
+    """``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables), else the user cache dir."""
+    setting = os.environ.get("OCIO_THINFILM_CACHE")
+    if setting is not None:
+        return None if setting in ("", "0") else Path(setting)
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "ocio-thinfilm"
+
+
+@overload
+def persistent(function: Callable[..., Any], *, modules: tuple[str, ...] = ()) -> Memo: ...
+@overload
+def persistent(
+    function: None = None, *, modules: tuple[str, ...] = ()
+) -> Callable[[Callable[..., Any]], Memo]: ...
+def persistent(
+    function: Callable[..., Any] | None = None, *, modules: tuple[str, ...] = ()
+) -> Memo | Callable[[Callable[..., Any]], Memo]:
+    """Memoise a pure function of colour-science's datasets in memory and on disk.
+
+    The key covers the arguments, the function's source, the full source of any
+    ``modules`` it depends on (names, read at the first call) and colour-science's
+    version, so changed code or a changed library never returns a stale array. A
+    cache that cannot be read or written is ignored. Use as ``@persistent`` or
+    ``@persistent(modules=("ocio_thinfilm.lut.tables",))``.
+
+    Parameters
+    ----------
+    function : callable, optional
+        The function to memoise. Its positional arguments must be hashable and have a
+        stable ``repr`` (tuples of floats, strings); keyword arguments are not
+        supported. Its result must be convertible by :func:`numpy.asarray`. ``None``
+        when used as ``@persistent(modules=...)``.
+    modules : tuple of str, optional
+        Importable module names whose full source also enters the key (for functions
+        whose result depends on code outside their own body).
+
+    Returns
+    -------
+    callable
+        The memoised function (or, with ``function=None``, a decorator making one).
+        It returns :class:`numpy.ndarray` (the value as saved with :func:`numpy.save`),
+        the same array object for repeated in-process calls (an in-memory
+        :func:`ocio_thinfilm.cache.memoize` of 64 entries): callers that hand the
+        array out should copy it.
+
+    Notes
+    -----
+    The on-disk store is ``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables it), else
+    ``$XDG_CACHE_HOME/ocio-thinfilm`` or ``~/.cache/ocio-thinfilm``; each entry is one
+    ``<name>-<sha256 prefix>.npy`` file written atomically;
+    ``ocio_thinfilm.cache.clear(persistent=True)`` removes them.
+    """
+    if function is None:
+        return lambda f: persistent(f, modules=modules)
+    source = inspect.getsource(function)
+
+    def forget():
+        """Remove this function's entries from the on-disk store."""
+        directory = _cache_dir()
+        if directory is not None and directory.is_dir():
+            for path in directory.glob(f"{function.__name__}-{'?' * 32}.npy"):
+                path.unlink(missing_ok=True)
+
+    @memoize(maxsize=64, forget=forget)
+    @wraps(function)
+    def wrapper(*args):
+        import numpy
+
+        directory = _cache_dir()
+        path = None
+        if directory is not None:
+            import importlib
+
+            code = [source] + [inspect.getsource(importlib.import_module(m)) for m in modules]
+            key = repr((args, code, metadata.version("colour-science")))
+            digest = hashlib.sha256(key.encode()).hexdigest()[:32]
+            path = directory / f"{function.__name__}-{digest}.npy"
+            try:
+                return numpy.load(path)
+            except (OSError, ValueError):
+                pass
+        value = numpy.asarray(function(*args))
+        if path is not None:
+            from ocio_thinfilm.io import atomic_file
+
+            try:
+                with atomic_file(path) as tmp:
+                    numpy.save(tmp, value)
+            except OSError:
+                pass
+        return value
+
+    return wrapper

@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar, Literal, TypeAlias, overload
 
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import ParameterError
 
 __all__ = [
     "Display",
@@ -368,7 +368,7 @@ def as_display(
 
     Raises
     ------
-    ocio_thinfilm.io.ParameterError
+    ocio_thinfilm.checks.ParameterError
         (a ValueError) for an unknown name, an HDR display where ``hdr=False``, or a
         display object that is not the registry's.
     TypeError
@@ -382,7 +382,7 @@ def as_display(
     >>> as_display("Rec.2100-PQ", hdr=False)
     Traceback (most recent call last):
     ...
-    ocio_thinfilm.io.ParameterError: display must be one of ('sRGB', ...), got 'Rec.2100-PQ'
+    ocio_thinfilm.checks.ParameterError: display must be one of ('sRGB', ...), got 'Rec.2100-PQ'
     """
     if isinstance(display, (Display, HDRDisplay)):
         entry = find_display(display.name)

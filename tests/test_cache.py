@@ -90,7 +90,7 @@ def test_a_memo_holds_at_most_maxsize_values_newest_kept():
 
 def test_clear_persistent_removes_the_disk_entries_too(tmp_path, monkeypatch):
     """``cache.clear(persistent=True)`` empties the memos and removes the on-disk entries
-    of :func:`colorimetry.persistent` functions (only theirs: other files stay)."""
+    of :func:`cache.persistent` functions (only theirs: other files stay)."""
     monkeypatch.setenv("OCIO_THINFILM_CACHE", str(tmp_path))
     calls = []
 
@@ -98,7 +98,7 @@ def test_clear_persistent_removes_the_disk_entries_too(tmp_path, monkeypatch):
         calls.append(x)
         return np.arange(3.0) * x**3
 
-    memo = colorimetry.persistent(cubed)
+    memo = cache.persistent(cubed)
     memo(2.0)
     other = tmp_path / "notes.txt"
     other.write_text("mine")
@@ -110,3 +110,30 @@ def test_clear_persistent_removes_the_disk_entries_too(tmp_path, monkeypatch):
     assert list(tmp_path.glob("cubed-*.npy")) == [] and other.read_text() == "mine"
     np.testing.assert_array_equal(memo(2.0), np.arange(3.0) * 8.0)
     assert calls == [2.0, 2.0]  # computed again
+
+
+def test_persistent_cache_returns_what_a_fresh_computation_gives(tmp_path, monkeypatch):
+    """The disk memo (cache.persistent): a value read back from the cache equals
+    the freshly computed one, another process's call reads the file instead of
+    computing, the key changes with the code it depends on, and "0" disables it."""
+
+    monkeypatch.setenv("OCIO_THINFILM_CACHE", str(tmp_path))
+    calls = []
+
+    def square(x):
+        calls.append(x)
+        return np.arange(4.0) * x
+
+    first = cache.persistent(square)(3.0)
+    assert calls == [3.0] and len(list(tmp_path.glob("square-*.npy"))) == 1
+    again = cache.persistent(square)(3.0)  # a new wrapper: empty in-memory cache
+    assert calls == [3.0]
+    np.testing.assert_array_equal(first, again)
+    np.testing.assert_array_equal(again, np.arange(4.0) * 3.0)
+
+    cache.persistent(square, modules=("ocio_thinfilm.physics.spectra",))(3.0)
+    assert calls == [3.0, 3.0]  # other dependencies: another key, computed again
+
+    monkeypatch.setenv("OCIO_THINFILM_CACHE", "0")
+    cache.persistent(square)(3.0)
+    assert calls == [3.0, 3.0, 3.0]

@@ -140,7 +140,7 @@ def test_physics_errors_name_the_parameter_and_the_cli_its_option(tmp_path, valu
     ``demo`` names the option for the same mistake, with the same detail."""
     from ocio_thinfilm.cli import main as cli
     from ocio_thinfilm.cli import demo
-    from ocio_thinfilm.io import ParameterError
+    from ocio_thinfilm.checks import ParameterError
 
     with pytest.raises(ParameterError) as raised:
         demo.soap_film_colour(float(value))
@@ -154,8 +154,9 @@ def test_physics_errors_name_the_parameter_and_the_cli_its_option(tmp_path, valu
 
 def test_the_numeric_core_raises_parameter_errors():
     """Every argument check of the numeric core names its parameter the same way."""
+    from ocio_thinfilm import checks
+    from ocio_thinfilm.checks import ParameterError
     from ocio_thinfilm.colour import compress
-    from ocio_thinfilm.io import ParameterError
     from ocio_thinfilm.lut import tables
     from ocio_thinfilm.physics import sampling, spectra
 
@@ -163,7 +164,7 @@ def test_the_numeric_core_raises_parameter_errors():
         (lambda: spectra.optical_thickness(300.0, -1.0), "n"),
         (lambda: sampling.wavelength_grid(400, 700, -5), "step"),
         (lambda: sampling.check_wavelengths([500, 400]), "wavelengths"),
-        (lambda: sampling.as_count("layers", 0), "layers"),
+        (lambda: checks.as_count("layers", 0), "layers"),
         (lambda: compress.compression_curve(0.5, threshold=1.5), "threshold"),
         (lambda: tables.check_size(1, what="film_size"), "film_size"),
     ]

@@ -330,30 +330,3 @@ def test_morpho_colour_is_blue_and_matches_colour(colour):
         np.testing.assert_allclose(got[i], colour_XYZ(colour, R, wl), atol=2e-5)
     xy = colour.XYZ_to_xy(got[0])
     assert xy[0] < 0.2 and xy[1] < 0.15
-
-
-def test_persistent_cache_returns_what_a_fresh_computation_gives(tmp_path, monkeypatch):
-    """The disk memo (colorimetry.persistent): a value read back from the cache equals
-    the freshly computed one, another process's call reads the file instead of
-    computing, the key changes with the code it depends on, and "0" disables it."""
-
-    monkeypatch.setenv("OCIO_THINFILM_CACHE", str(tmp_path))
-    calls = []
-
-    def square(x):
-        calls.append(x)
-        return np.arange(4.0) * x
-
-    first = colorimetry.persistent(square)(3.0)
-    assert calls == [3.0] and len(list(tmp_path.glob("square-*.npy"))) == 1
-    again = colorimetry.persistent(square)(3.0)  # a new wrapper: empty in-memory cache
-    assert calls == [3.0]
-    np.testing.assert_array_equal(first, again)
-    np.testing.assert_array_equal(again, np.arange(4.0) * 3.0)
-
-    colorimetry.persistent(square, modules=("ocio_thinfilm.physics.spectra",))(3.0)
-    assert calls == [3.0, 3.0]  # other dependencies: another key, computed again
-
-    monkeypatch.setenv("OCIO_THINFILM_CACHE", "0")
-    colorimetry.persistent(square)(3.0)
-    assert calls == [3.0, 3.0, 3.0]

@@ -37,11 +37,13 @@ _NUMBER = re.compile(rb"-?\d+\.?\d*(?:[eE][-+]?\d+)?")
 
 
 def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
-    """True if two files differ only in numeric tokens, each by at most one rounding
-    step -- 1e-7 for decimals (ocio_ops.quantize), one code for the 16-bit integer LUTs,
-    one half-float step (2^-10 relative) for the half-float LUT of the clip's first
-    pass -- the trace a different SIMD code path (numpy's or OCIO's CPU dispatch on
-    another CPU generation) can leave."""
+    """True if two files differ only in numeric tokens, each by at most a rounding step
+    -- 1e-7 for decimals (ocio_ops.quantize), five steps of the written precision for
+    the fixed-point ``.cube`` values OCIO's Baker computes in float32 through the whole
+    view (5e-6 at 6 decimals: float32 results a few tens of ulps apart), one
+    code for the 16-bit integer LUTs, one half-float step (2^-10 relative) for the
+    half-float LUT of the clip's first pass -- the trace a different SIMD code path
+    (numpy's or OCIO's CPU dispatch on another CPU generation) can leave."""
     if _NUMBER.sub(b"#", x) != _NUMBER.sub(b"#", y):
         return False
     tx, ty = _NUMBER.findall(x), _NUMBER.findall(y)
@@ -51,8 +53,19 @@ def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
     b = np.array([float(t) for t in ty])
     integer = np.array([b"." not in t and b"e" not in t.lower() for t in ty])
     half = b"16f" in y  # a CLF holding half floats
-    step = np.where(integer, 1.0, 1.5e-7 + (2.0**-10 if half else 1e-7) * np.abs(b))
-    return bool(np.all(np.abs(a - b) <= step))
+    decimals = np.array(
+        [len(t.split(b".")[1]) if b"." in t and b"e" not in t.lower() else 0 for t in ty]
+    )
+    written = np.where(decimals > 0, 5.001 * 10.0 ** -decimals.astype(float), 0.0)
+    step = np.where(
+        integer, 1.0, np.maximum(written, 1.5e-7 + (2.0**-10 if half else 1e-7) * np.abs(b))
+    )
+    close = np.abs(a - b) <= step
+    if b".cube" in x[:200] or b"LUT_3D_SIZE" in x:
+        # display code values: near black, BT.1886's pure power (code = L^(1/2.4)) turns
+        # 1e-7 of linear-light noise into 1e-3 of code value; compare those in light
+        close |= np.abs(np.clip(a, 0, None) ** 2.4 - np.clip(b, 0, None) ** 2.4) <= 4e-7
+    return bool(np.all(close))
 
 
 def _assert_identical_trees(a, b):
@@ -68,8 +81,8 @@ def _assert_identical_trees(a, b):
         drifted.append(rel)
     if drifted:
         pytest.xfail(
-            f"{len(drifted)} file(s) differ from the committed ones by one "
-            f"7-decimal rounding step only (CPU-dependent SIMD): {drifted[:3]}"
+            f"{len(drifted)} file(s) differ from the committed ones by "
+            f"rounding steps only (CPU-dependent SIMD): {drifted[:3]}"
         )
 
 

@@ -1,6 +1,6 @@
 """The package's layout is its pipeline: no module imports from a later stage.
 
-Stages in order (README, *How it is built*): the shared leaves ``cache``, ``io`` and
+Stages in order (README, *How it is built*): the shared leaves ``checks``, ``cache``, ``io`` and
 ``registry`` (plain data: the displays, views and thin-film spaces every stage reads,
 importing none of them); ``physics``; ``colour``; ``lut``; ``config``; ``export``;
 ``render``; ``cli``. Every import is checked, lazy ones inside functions included. The
@@ -19,6 +19,7 @@ import pytest
 
 PACKAGE = Path(__file__).resolve().parents[1] / "ocio_thinfilm"
 STAGES = [
+    "checks",
     "cache",
     "io",
     "registry",
@@ -31,7 +32,7 @@ STAGES = [
     "cli",
 ]
 RANK = {name: rank for rank, name in enumerate(STAGES)}
-RANK.update(cache=0, io=0, registry=0)  # the shared leaves
+RANK.update(checks=0, cache=0, io=0, registry=0)  # the shared leaves
 
 
 def _stage(dotted: str) -> str:

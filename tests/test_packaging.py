@@ -200,22 +200,44 @@ def test_the_wheel_requires_what_the_package_imports(built):
     ]
 
 
+def _see_this_environments_packages(python: Path) -> None:
+    """Make the running interpreter's packages (numpy, OpenColorIO, ...) importable in
+    the venv of ``python`` without installing them: a ``.pth`` file in its site-packages
+    lists this environment's site directories (a venv's own and, for a venv made with
+    ``--system-site-packages``, the base interpreter's). They come after the venv's own
+    site-packages, so the wheel installed there is the ``ocio_thinfilm`` imported; an
+    editable install of the checkout, if any, is skipped (its finder is not loaded)."""
+    venv_site = subprocess.run(
+        [str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.strip()
+    import site
+
+    dirs = [d for d in site.getsitepackages() + [site.getusersitepackages()] if Path(d).is_dir()]
+    (Path(venv_site) / "_ocio_thinfilm_test_deps.pth").write_text(
+        "".join(f"{d}\n" for d in dict.fromkeys(dirs))
+    )
+
+
 @pytest.mark.slow
 def test_the_installed_wheel_renders_from_an_empty_directory(built, tmp_path):
-    """``pip install`` of the wheel into a new venv (its requirements from this
-    environment: ``--system-site-packages --no-deps``; .ci/run installs them from the
-    index into a bare venv), then ``ocio-thinfilm render`` from an empty directory: it
-    reads the wheel's config, writes only the renders (nothing beside the installed
-    code), and matches the same render through the checkout's configs/thinfilm."""
+    """``pip install`` of the wheel into a new venv (``--no-deps``: its requirements are
+    seen from the environment running the tests, which may itself be a venv: a ``.pth``
+    file lists that environment's site-packages after the new venv's own; .ci/run
+    installs them from the index into a bare venv), then ``ocio-thinfilm render`` from an
+    empty directory: it reads the wheel's config, writes only the renders (nothing beside
+    the installed code), and matches the same render through the checkout's
+    configs/thinfilm."""
     from ocio_thinfilm.cli import main as cli
     from ocio_thinfilm.io import read_image
 
     _, wheel = built
     venv = tmp_path / "venv"
-    subprocess.run(
-        [sys.executable, "-m", "venv", "--system-site-packages", str(venv)], check=True, timeout=300
-    )
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True, timeout=300)
     python = venv / "bin" / "python"
+    _see_this_environments_packages(python)
     install = subprocess.run(
         [
             str(python),
@@ -303,7 +325,7 @@ def test_a_checkout_renders_through_its_configs_thinfilm():
 def test_a_missing_installed_config_is_an_error_not_a_bake(tmp_path, monkeypatch):
     """The installed config is read-only package data: when it is missing (an install
     without its data), nothing is baked beside the code."""
-    from ocio_thinfilm.io import ParameterError
+    from ocio_thinfilm.checks import ParameterError
     from ocio_thinfilm.render import processors
 
     installed = tmp_path / "site" / "ocio_thinfilm" / "data" / "thinfilm" / "config.ocio"

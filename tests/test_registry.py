@@ -83,7 +83,7 @@ def test_file_stems_come_from_the_registry():
 def test_displays_are_passed_as_objects_or_names():
     """``as_display`` is the one look-up by name: a registry display passes as itself, a
     name gives its display, and what is neither is refused naming the parameter."""
-    from ocio_thinfilm.io import ParameterError
+    from ocio_thinfilm.checks import ParameterError
 
     for entry in registry.ALL_DISPLAY_LIST:
         assert registry.as_display(entry) is entry

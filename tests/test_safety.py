@@ -23,6 +23,8 @@ from pathlib import Path
 import pytest
 
 from ocio_thinfilm import io
+from ocio_thinfilm.io import durable
+from ocio_thinfilm.io import temporaries as io_temporaries
 from ocio_thinfilm.cli import main as cli
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -49,7 +51,7 @@ def temporaries(*directories) -> list:
         for d in directories
         if Path(d).exists()
         for p in Path(d).rglob("*")
-        if p.name.startswith(io.TMP_PREFIX) or p.name.endswith(".old")
+        if p.name.startswith(io.TMP_PREFIX)
     ]
 
 
@@ -169,33 +171,50 @@ def test_rebake_replaces_only_its_own_files(tmp_path, capsys):
     config_loads(cfg)
 
 
-def test_committed_config_without_marker_is_recognised(tmp_path, capsys):
+def test_the_committed_outputs_carry_their_markers(tmp_path, capsys):
+    """configs/thinfilm and luts/ are committed with the ownership marker, listing
+    exactly the files git holds there, so a fresh clone's bake replaces them in place;
+    a copy without the marker (or with a user's file in it) is refused."""
     import shutil
 
+    for directory in (CONFIG_DIR, ROOT / "luts"):
+        tracked = subprocess.run(
+            ["git", "ls-files", "--", "."],
+            cwd=directory,
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout.split()
+        if not tracked:
+            pytest.skip("not a git checkout")
+        assert set(tracked) - {io.MARKER} == marker_files(directory), directory
+        assert io.MARKER in tracked
     cfg = tmp_path / "thinfilm"
-    # as committed: a working copy may hold the (git-ignored) marker of a local bake
-    committed = shutil.ignore_patterns(".ocio-thinfilm-*")
-    shutil.copytree(CONFIG_DIR, cfg, ignore=committed)
+    shutil.copytree(CONFIG_DIR, cfg)
     assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
     assert marker_files(cfg) == files_under(cfg)
     config_loads(cfg)
-    # ... but not once a user's file sits in it
     shutil.rmtree(cfg)
-    shutil.copytree(CONFIG_DIR, cfg, ignore=committed)
-    (cfg / "README.txt").write_text("mine")
+    shutil.copytree(CONFIG_DIR, cfg, ignore=shutil.ignore_patterns(io.MARKER))
     code, _, err = cli_run(["bake", "--out", str(cfg), "--quiet"], capsys)
     one_line_error(code, err, "--out")
+    shutil.rmtree(cfg)
+    shutil.copytree(CONFIG_DIR, cfg)
+    (cfg / "README.txt").write_text("mine")
+    assert cli_run(["bake", "--out", str(cfg), "--quiet", "--clip-size", "9"], capsys)[0] == 0
+    assert (cfg / "README.txt").read_text() == "mine"
 
 
 def test_stale_temporaries_of_dead_processes_are_removed(tmp_path):
     dead = subprocess.Popen([sys.executable, "-c", "pass"])
     dead.wait()
     live = os.getppid()  # pytest's parent: alive for the whole test
-    stale = tmp_path / f"{io.TMP_PREFIX}{io._self_id().split('-')[0]}-{dead.pid}-1-ab-x.clf"
+    host = io_temporaries.self_id().split("-")[0]
+    stale = tmp_path / f"{io.TMP_PREFIX}{host}-{dead.pid}-1-ab-x.clf"
     stale.write_text("half")
     keep = (
-        tmp_path / f"{io.TMP_PREFIX}{io._self_id().split('-')[0]}-{live}-"
-        f"{io._start_time(live)}-cd-y.clf"
+        tmp_path / f"{io.TMP_PREFIX}{io_temporaries.self_id().split('-')[0]}-{live}-"
+        f"{io_temporaries.start_time(live)}-cd-y.clf"
     )
     keep.write_text("in use")
     foreign = tmp_path / f"{io.TMP_PREFIX}0badf00d-{dead.pid}-1-ef-z.clf"
@@ -474,7 +493,7 @@ def test_failing_fsync_keeps_the_old_files(tmp_path, capsys, monkeypatch):
     def enospc(path):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
 
-    monkeypatch.setattr(io, "_fsync_file", enospc)
+    monkeypatch.setattr(durable, "fsync_file", enospc)
     for argv in (
         ["export", "film", "--out", str(good), "--quiet"],
         ["demo", "--out", str(png)],
@@ -686,26 +705,11 @@ def test_bake_luts_nested_in_out_is_refused(tmp_path, capsys):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_leftovers_of_the_old_directory_swap_are_removed(tmp_path, capsys, baked):
-    """A kill during the old ``atomic_directory`` left ``.cfg.XXXXXXXX`` / ``.cfg.old``
-    (a whole bake each); a user's look-alike directory with other files stays."""
-    for name in (".cfg.k3j9x_2a", ".cfg.old"):
-        baked(tmp_path / name)
-        (tmp_path / name / io.MARKER).unlink()  # the old versions wrote no marker
-    (tmp_path / ".cfg.abcdefgh").mkdir()
-    (tmp_path / ".cfg.abcdefgh" / "mine.txt").write_text("the user's")
-    assert (
-        cli_run(["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "9"], capsys)[0]
-        == 0
-    )
-    assert sorted(p.name for p in tmp_path.iterdir()) == [".cfg.abcdefgh", "cfg"]
-
-
 def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch):
     def enospc(path):
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
 
-    monkeypatch.setattr(io, "_fsync_file", enospc)
+    monkeypatch.setattr(durable, "fsync_file", enospc)
     code, _, err = cli_run(
         [
             "export",

@@ -69,7 +69,7 @@ def run_report(out="reports", quick: bool = False, progress: bool = True) -> Pat
     Parameters
     ----------
     out : str or pathlib.Path, optional
-        The output folder (created; :class:`ocio_thinfilm.io.UsageError` if not writable).
+        The output folder (created; :class:`ocio_thinfilm.checks.UsageError` if not writable).
     quick : bool, optional
         Smaller sweeps (about 30 s; the test suite's mode).
     progress : bool, optional

@@ -14,7 +14,8 @@ import sys
 from ocio_thinfilm import registry
 from ocio_thinfilm.export import bake as bake_module
 from ocio_thinfilm.export.files import FORMATS, export_lut
-from ocio_thinfilm.io import UsageError, is_stdout
+from ocio_thinfilm.checks import UsageError
+from ocio_thinfilm.io import is_stdout
 from ocio_thinfilm.lut import clip_lut
 
 __all__ = ["register"]

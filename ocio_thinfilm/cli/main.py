@@ -161,7 +161,7 @@ PARAMETER_DEST = {
 
 
 def _option_message(parser, command, error) -> str:
-    """A :class:`~ocio_thinfilm.io.ParameterError`'s message naming ``command``'s option
+    """A :class:`~ocio_thinfilm.checks.ParameterError`'s message naming ``command``'s option
     for the parameter (``value_range`` -> ``--range``); the parameter's own name when the
     command has no such option."""
     sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
@@ -213,12 +213,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     return code
 
 
+def _interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
+    """The KeyboardInterrupt (our signal handlers raise one) that ``error`` was raised
+    from or while handling, if any."""
+    seen = set()
+    current: BaseException | None = error
+    while current is not None and id(current) not in seen:
+        if isinstance(current, KeyboardInterrupt):
+            return current
+        seen.add(id(current))
+        current = current.__cause__ or current.__context__
+    return None
+
+
 def _set(name):
     _state["command"] = name
 
 
 def _main(argv, set_command) -> int:
-    from ocio_thinfilm.io import ParameterError, UsageError
+    from ocio_thinfilm.checks import ParameterError, UsageError
 
     parser = build_parser()
     try:
@@ -262,6 +275,11 @@ def _main(argv, set_command) -> int:
     except KeyboardInterrupt:
         raise
     except Exception as error:  # noqa: BLE001 -- one line for the farm's logs
+        interrupt = _interrupt_behind(error)
+        if interrupt is not None:
+            # a signal that arrived while a C extension was being imported surfaces as
+            # its ImportError ("initialization failed") raised from the interrupt
+            raise interrupt from None
         ocio = sys.modules.get("PyOpenColorIO")
         if ocio is not None and isinstance(error, ocio.Exception):
             _error(command, f"OpenColorIO: {error}")

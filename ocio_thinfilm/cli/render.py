@@ -18,7 +18,8 @@ import time
 from collections.abc import Callable
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.io import UsageError, check_output_file, check_writable, transaction
+from ocio_thinfilm.checks import UsageError
+from ocio_thinfilm.io import check_output_file, check_writable, transaction
 from ocio_thinfilm.render import frames as render
 from ocio_thinfilm.render import scenes as scene_module
 from ocio_thinfilm.render.processors import ConfigProcessors, make_lookup

@@ -21,7 +21,7 @@ CHECKOUT = Path(__file__).resolve().parents[2]
 
 def _run_report():
     """``evaluation.report.run_report`` from the checkout, or a one-line UsageError."""
-    from ocio_thinfilm.io import UsageError
+    from ocio_thinfilm.checks import UsageError
 
     if not (CHECKOUT / "evaluation" / "report" / "__init__.py").is_file():
         raise UsageError(

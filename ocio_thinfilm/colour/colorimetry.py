@@ -28,19 +28,12 @@ them and colour-science's version: only the first process imports colour.
 
 from __future__ import annotations
 
-import hashlib
-import inspect
-import os
-from collections.abc import Callable
-from functools import wraps
-from importlib import metadata
-from pathlib import Path
-from typing import Any, overload
 
 import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import cache
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.physics import sampling, spectra
 
 __all__ = [
@@ -76,101 +69,7 @@ RGB_SPACES = {
 FILM_KINDS = ("phase-change", "no-phase-change")
 
 
-def _cache_dir() -> Path | None:
-    """``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables), else the user cache dir."""
-    setting = os.environ.get("OCIO_THINFILM_CACHE")
-    if setting is not None:
-        return None if setting in ("", "0") else Path(setting)
-    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
-    return Path(base) / "ocio-thinfilm"
-
-
-@overload
-def persistent(function: Callable[..., Any], *, modules: tuple[str, ...] = ()) -> cache.Memo: ...
-@overload
-def persistent(
-    function: None = None, *, modules: tuple[str, ...] = ()
-) -> Callable[[Callable[..., Any]], cache.Memo]: ...
-def persistent(
-    function: Callable[..., Any] | None = None, *, modules: tuple[str, ...] = ()
-) -> cache.Memo | Callable[[Callable[..., Any]], cache.Memo]:
-    """Memoise a pure function of colour-science's datasets in memory and on disk.
-
-    The key covers the arguments, the function's source, the full source of any
-    ``modules`` it depends on (names, read at the first call) and colour-science's
-    version, so changed code or a changed library never returns a stale array. A
-    cache that cannot be read or written is ignored. Use as ``@persistent`` or
-    ``@persistent(modules=("ocio_thinfilm.lut.tables",))``.
-
-    Parameters
-    ----------
-    function : callable, optional
-        The function to memoise. Its positional arguments must be hashable and have a
-        stable ``repr`` (tuples of floats, strings); keyword arguments are not
-        supported. Its result must be convertible by :func:`numpy.asarray`. ``None``
-        when used as ``@persistent(modules=...)``.
-    modules : tuple of str, optional
-        Importable module names whose full source also enters the key (for functions
-        whose result depends on code outside their own body).
-
-    Returns
-    -------
-    callable
-        The memoised function (or, with ``function=None``, a decorator making one).
-        It returns :class:`numpy.ndarray` (the value as saved with :func:`numpy.save`),
-        the same array object for repeated in-process calls (an in-memory
-        :func:`ocio_thinfilm.cache.memoize` of 64 entries): callers that hand the
-        array out should copy it.
-
-    Notes
-    -----
-    The on-disk store is ``$OCIO_THINFILM_CACHE`` (empty or ``0`` disables it), else
-    ``$XDG_CACHE_HOME/ocio-thinfilm`` or ``~/.cache/ocio-thinfilm``; each entry is one
-    ``<name>-<sha256 prefix>.npy`` file written atomically;
-    ``ocio_thinfilm.cache.clear(persistent=True)`` removes them.
-    """
-    if function is None:
-        return lambda f: persistent(f, modules=modules)
-    source = inspect.getsource(function)
-
-    def forget():
-        """Remove this function's entries from the on-disk store."""
-        directory = _cache_dir()
-        if directory is not None and directory.is_dir():
-            for path in directory.glob(f"{function.__name__}-{'?' * 32}.npy"):
-                path.unlink(missing_ok=True)
-
-    @cache.memoize(maxsize=64, forget=forget)
-    @wraps(function)
-    def wrapper(*args):
-        directory = _cache_dir()
-        path = None
-        if directory is not None:
-            import importlib
-
-            code = [source] + [inspect.getsource(importlib.import_module(m)) for m in modules]
-            key = repr((args, code, metadata.version("colour-science")))
-            digest = hashlib.sha256(key.encode()).hexdigest()[:32]
-            path = directory / f"{function.__name__}-{digest}.npy"
-            try:
-                return np.load(path)
-            except (OSError, ValueError):
-                pass
-        value = np.asarray(function(*args))
-        if path is not None:
-            from ocio_thinfilm.io import atomic_file
-
-            try:
-                with atomic_file(path) as tmp:
-                    np.save(tmp, value)
-            except OSError:
-                pass
-        return value
-
-    return wrapper
-
-
-@persistent
+@cache.persistent
 def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray:
     import colour
 
@@ -178,12 +77,14 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
     try:
         cmfs = colour.MSDS_CMFS[observer]
     except KeyError:
-        raise ValueError(f"observer must be one of colour.MSDS_CMFS, got {observer!r}") from None
+        raise ParameterError(
+            "observer", f" must be one of colour.MSDS_CMFS, got {observer!r}"
+        ) from None
     try:
         sd = colour.SDS_ILLUMINANTS[illuminant]
     except KeyError:
-        raise ValueError(
-            f"illuminant must be one of colour.SDS_ILLUMINANTS, got {illuminant!r}"
+        raise ParameterError(
+            "illuminant", f" must be one of colour.SDS_ILLUMINANTS, got {illuminant!r}"
         ) from None
     # colour-science interpolates (Sprague for the 1 nm CMFs / 5 nm D65) and holds the
     # end values constant outside the tabulated range.
@@ -361,7 +262,7 @@ def film_XYZ(
     [0.475, 0.5, 0.544]
     """
     if kind not in FILM_KINDS:
-        raise ValueError(f"kind must be one of {FILM_KINDS}, got {kind!r}")
+        raise ParameterError("kind", f" must be one of {FILM_KINDS}, got {kind!r}")
     wl = sampling.wavelength_grid(step=step) if wavelengths is None else wavelengths
 
     def model(t):
@@ -425,14 +326,14 @@ def morpho_XYZ(
     return _chunked_XYZ(model, theta_degrees, wl, observer, illuminant)
 
 
-@persistent
+@cache.persistent
 def _matrix_cached(space: str) -> np.ndarray:
     import colour
 
     if space == "CIE-XYZ-D65":
         return np.eye(3)
     if space not in RGB_SPACES:
-        raise ValueError(f"space must be one of {sorted(RGB_SPACES)}, got {space!r}")
+        raise ParameterError("space", f" must be one of {sorted(RGB_SPACES)}, got {space!r}")
     cs = colour.RGB_COLOURSPACES[RGB_SPACES[space]]
     # Normalised primary matrix from the primaries and white: RGB = 1 is the white.
     rgb_to_xyz = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
@@ -634,14 +535,16 @@ def delta_E2000(XYZ_a: npt.ArrayLike, XYZ_b: npt.ArrayLike) -> np.ndarray:
     return colour.delta_E(lab_a, lab_b, method="CIE 2000")
 
 
-@persistent
+@cache.persistent
 def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
     import colour
 
     try:
         cmfs = colour.MSDS_CMFS[observer]
     except KeyError:
-        raise ValueError(f"observer must be one of colour.MSDS_CMFS, got {observer!r}") from None
+        raise ParameterError(
+            "observer", f" must be one of colour.MSDS_CMFS, got {observer!r}"
+        ) from None
     return np.asarray(cmfs[np.asarray(wl_key)])
 
 

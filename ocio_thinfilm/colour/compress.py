@@ -36,7 +36,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
 
 __all__ = [

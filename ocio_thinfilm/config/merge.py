@@ -51,7 +51,8 @@ import numpy as np
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import ParameterError, StrPath
+from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.io import StrPath
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = [

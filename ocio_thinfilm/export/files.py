@@ -44,9 +44,10 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import ParameterError, StrPath, atomic_file, check_output_file
+from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops, tables
-from ocio_thinfilm.physics.sampling import as_pair, as_real
+from ocio_thinfilm.checks import as_choice, as_pair, as_real
 
 if TYPE_CHECKING:
     from tqdm import tqdm
@@ -82,24 +83,19 @@ DEFAULT_RANGE = {"film": (0.0, 1.5), "morpho": (0.0, 1.0), "clip": (-0.5, 1.5)}
 # Validation
 # --------------------------------------------------------------------------- #
 def _validate(table, kind, display, index, value_range, size, fmt):
-    if table not in TABLES:
-        raise ValueError(f"unknown table {table!r}; choose from {', '.join(TABLES)}, view")
-    if fmt not in FORMATS:
-        raise ValueError(f"unknown format {fmt!r}; choose from {', '.join(FORMATS)}")
+    as_choice("table", table, TABLES)
+    as_choice("fmt", fmt, FORMATS)
     dims = 3 if table == "clip" else 1
     if dims not in FORMATS[fmt][2]:
         allowed = [f for f, spec in FORMATS.items() if dims in spec[2]]
         raise ValueError(
             f"format {fmt} cannot hold a {dims}D LUT; for {table} use {', '.join(allowed)}"
         )
-    if display is not None and display not in clip.DISPLAYS:
-        raise ValueError(f"unknown display {display!r}; choose from {', '.join(clip.DISPLAYS)}")
+    if display is not None:
+        as_choice("display", display, clip.DISPLAYS)
     if table == "clip" and display is None:
         raise ParameterError("display", " is required for the clip (the gamut to clip into)")
-    if kind not in colorimetry.FILM_KINDS:
-        raise ValueError(
-            f"unknown film kind {kind!r}; choose from {', '.join(colorimetry.FILM_KINDS)}"
-        )
+    as_choice("kind", kind, colorimetry.FILM_KINDS)
     if index is not None:
         index = as_real("index", index)
         if table != "film":

@@ -18,13 +18,8 @@ from pathlib import Path
 from ocio_thinfilm import config
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export.bake import write_config
-from ocio_thinfilm.io import (
-    ParameterError,
-    StrPath,
-    atomic_directory,
-    atomic_file,
-    check_writable,
-)
+from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.io import StrPath, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 __all__ = ["write_merged", "bake_into", "write_archive", "bake_archive"]

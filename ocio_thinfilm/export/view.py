@@ -71,9 +71,10 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.io import ParameterError, StrPath, atomic_file, check_writable
+from ocio_thinfilm.checks import ParameterError, as_choice
+from ocio_thinfilm.io import StrPath, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
-from ocio_thinfilm.physics.sampling import as_pair
+from ocio_thinfilm.checks import as_pair
 
 __all__ = [
     "VIEW_FORMATS",
@@ -239,20 +240,14 @@ def _validate(source, display, view, size, fmt, value_range):
     spaces = [cs["name"] for cs in config_module.config_data(inline=True).colorspaces]
     if source is None:
         raise ParameterError("source", " is needed: a colour space of the config")
-    if source not in spaces:
-        raise ValueError(f"unknown colour space {source!r}; choose from {', '.join(spaces)}")
+    as_choice("source", source, spaces)
     if display is None:
         raise ParameterError("display", f" is needed: one of {', '.join(registry.ALL_DISPLAYS)}")
-    if display not in registry.ALL_DISPLAYS:
-        raise ValueError(
-            f"unknown display {display!r}; choose from {', '.join(registry.ALL_DISPLAYS)}"
-        )
+    as_choice("display", display, registry.ALL_DISPLAYS)
     if view is None:
         raise ParameterError("view", f" is needed: one of {', '.join(registry.VIEWS)}")
-    if view not in registry.VIEWS:
-        raise ValueError(f"unknown view {view!r}; choose from {', '.join(registry.VIEWS)}")
-    if fmt not in VIEW_FORMATS:
-        raise ValueError(f"unknown format {fmt!r}; choose from {', '.join(VIEW_FORMATS)}")
+    as_choice("view", view, registry.VIEWS)
+    as_choice("fmt", fmt, VIEW_FORMATS)
     if size is not None and (isinstance(size, bool) or not isinstance(size, (int, np.integer))):
         raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
     one_d = source in THIN_FILM_INPUTS

@@ -830,7 +830,7 @@ def _q16(values):
     return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX + 0.0
 
 
-@colorimetry.persistent(modules=("ocio_thinfilm.lut.clip_lut", "ocio_thinfilm.colour.colorimetry"))
+@cache.persistent(modules=("ocio_thinfilm.lut.clip_lut", "ocio_thinfilm.colour.colorimetry"))
 def _black_nodes(display, size):
     """The black pass's (u_a, u_b) node values as stored, (size * size + 2, 2): the
     nodes' z = sign (u - origin) (L at the nodes, the outside ones fitted and rounded

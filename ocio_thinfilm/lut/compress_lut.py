@@ -157,7 +157,7 @@ def _chart_coordinates(P, XYZ):
         return c[:, :2] / s[:, None], s
 
 
-@colorimetry.persistent(
+@cache.persistent(
     modules=(
         "ocio_thinfilm.lut.compress_lut",
         "ocio_thinfilm.lut.clip_lut",

@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import ocio_ops
 

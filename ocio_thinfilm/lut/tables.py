@@ -27,7 +27,7 @@ import numpy.typing as npt
 
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import as_choice, as_count, as_positive
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, transform_id
 
@@ -172,20 +172,10 @@ class Table1D:
 
 
 def check_size(size: int, minimum: int = 2, maximum: int = 1 << 20, what: str = "size") -> int:
-    """``size`` as an int if it is an integer in [minimum, maximum], else ValueError
-    naming ``what`` and the range."""
-    if isinstance(size, bool) or not isinstance(size, (int, np.integer)):
-        raise ParameterError(what, f" must be an integer, got {size!r}")
-    if not minimum <= size <= maximum:
-        raise ParameterError(what, f" must be in [{minimum}, {maximum}], got {size}")
-    return int(size)
-
-
-def _check_positive(name, value):
-    value = float(value)
-    if not np.isfinite(value) or value <= 0:
-        raise ValueError(f"{name} must be a positive finite number, got {value:g}")
-    return value
+    """``size`` as an int if it is an integer in [minimum, maximum] (a TypeError naming
+    ``what`` for what is not a number: ``"65"`` is not parsed; a
+    :class:`~ocio_thinfilm.checks.ParameterError` otherwise)."""
+    return as_count(what, size, minimum, maximum)
 
 
 @cache.memoize(maxsize=32)
@@ -267,12 +257,11 @@ def film_table(
     >>> film_table("no-phase-change").lookup(0.0).round(3).tolist()
     [0.95, 1.0, 1.089]
     """
-    if kind not in FILM_KINDS:
-        raise ValueError(f"film kind must be one of {FILM_KINDS}, got {kind!r}")
+    kind = as_choice("kind", kind, FILM_KINDS)
     size = check_size(size)
-    tmax = _check_positive("max thickness (um)", max_thickness_um)
-    t0 = _check_positive("t0 (um)", t0_um)
-    step = _check_positive("spectral step (nm)", step)
+    tmax = as_positive("max_thickness_um", max_thickness_um)
+    t0 = as_positive("t0_um", t0_um)
+    step = as_positive("step", step)
     return _film_table(kind, size, tmax, t0, step)
 
 
@@ -326,7 +315,7 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
     True
     """
     size = check_size(size)
-    step = _check_positive("spectral step (nm)", step)
+    step = as_positive("step", step)
     return _morpho_table(size, step)
 
 

@@ -23,7 +23,7 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.clip_lut import (
@@ -211,7 +211,7 @@ def view_linear_transform(
                 ocio_ops.range_(0.0, 1.0),
             ]
         )
-    raise ValueError(f"view must be one of {VIEWS[:-1]}, got {view!r}")
+    raise ParameterError("view", f" must be one of {VIEWS[:-1]}, got {view!r}")
 
 
 def view_transform(
@@ -271,7 +271,7 @@ def view_transform(
     entry = registry.as_display(display)
     if entry.hdr:
         if view not in VIEWS:
-            raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
+            raise ParameterError("view", f" must be one of {VIEWS}, got {view!r}")
         if view == "Raw":
             return group([])
         return group(
@@ -282,7 +282,7 @@ def view_transform(
             ]
         )
     if view not in VIEWS:
-        raise ValueError(f"view must be one of {VIEWS}, got {view!r}")
+        raise ParameterError("view", f" must be one of {VIEWS}, got {view!r}")
     if view == "Raw":
         return group([])
     if view == "Constant-Lightness Clip":

@@ -4,8 +4,8 @@
   wavelength samples (nm) and their trapezoid-rule bins;
 - :func:`phase`, :func:`cosine_series` -- the round-trip phase of an optical path and
   the band-limited sum of a cosine series in it (below);
-- :func:`as_array`, :func:`as_count`, :func:`as_angle`, :func:`as_index` -- argument
-  checks: one place that words every error message.
+- :func:`as_angle`, :func:`as_index` -- the physical arguments' checks (built on
+  :mod:`ocio_thinfilm.checks`, which words every error message).
 
 Band-limited integration
 ------------------------
@@ -35,15 +35,11 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import ParameterError, as_array, short_repr
 
 __all__ = [
     "MAX_SAMPLES",
     "MAX_LAYERS",
-    "as_array",
-    "as_count",
-    "as_real",
-    "as_pair",
     "as_angle",
     "as_index",
     "check_wavelengths",
@@ -55,98 +51,8 @@ __all__ = [
 
 
 # --------------------------------------------------------------------------- #
-# Argument checks: one place that words every error message.
+# The physical arguments (ocio_thinfilm.checks words every message).
 # --------------------------------------------------------------------------- #
-def as_array(
-    name: str,
-    value: npt.ArrayLike,
-    *,
-    minimum: float | None = None,
-    maximum: float | None = None,
-    strict: bool = False,
-    unit: str = "",
-) -> np.ndarray:
-    """``value`` as a float64 (or complex) array, finite and within the bounds, else a
-    ValueError naming ``name``, the bounds and the first offending value (a TypeError
-    for what is not numbers: a string is not parsed, ``n='1.33'`` is refused)."""
-    a = np.asarray(value)
-    if a.dtype.kind not in "biufc":
-        raise TypeError(
-            f"{name} must be a number or an array of numbers, got "
-            f"{_short(value)} ({type(value).__name__})"
-        )
-    if a.dtype.kind == "c":
-        check = a.real
-    else:
-        a = a.astype(np.float64, copy=False)
-        check = a
-    if check.size and not np.all(np.isfinite(check)):
-        raise ParameterError(name, f" must be finite{_range_text(minimum, maximum, strict, unit)}")
-    if minimum is not None and check.size:
-        bad = check <= minimum if strict else check < minimum
-        if np.any(bad):
-            raise ParameterError(
-                name,
-                f" must be {'>' if strict else '>='} {minimum:g}{unit}"
-                f"{'' if maximum is None else f' and <= {maximum:g}{unit}'}, "
-                f"got {check[bad].flat[0]:g}",
-            )
-    if maximum is not None and check.size and np.any(check > maximum):
-        raise ParameterError(
-            name,
-            f" must be in [{minimum:g}, {maximum:g}]{unit}, got {check[check > maximum].flat[0]:g}",
-        )
-    return a
-
-
-def _short(value: object) -> str:
-    text = repr(value)
-    return text if len(text) <= 40 else text[:37] + "..."
-
-
-def _range_text(minimum: float | None, maximum: float | None, strict: bool, unit: str) -> str:
-    if minimum is None:
-        return ""
-    if maximum is None:
-        return f" and {'>' if strict else '>='} {minimum:g}{unit}"
-    return f" and in [{minimum:g}, {maximum:g}]{unit}"
-
-
-def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
-    """An integer parameter (layers, harmonics): a TypeError naming it for a value that
-    is not a number (a string is not parsed: ``layers='3'`` is refused), a ValueError
-    for a number that is not an integer in range."""
-    if isinstance(value, (bool, np.bool_)):
-        raise ParameterError(name, f" must be an integer >= {minimum}, got {value!r}")
-    if not isinstance(value, (int, float, np.number)):  # a string is not parsed
-        raise TypeError(
-            f"{name} must be an integer >= {minimum}, got {value!r} ({type(value).__name__})"
-        )
-    f = float(value)
-    if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):
-        limit = f" and <= {maximum}" if maximum is not None else ""
-        raise ParameterError(name, f" must be an integer >= {minimum}{limit}, got {value!r}")
-    return int(f)
-
-
-def as_real(name: str, value: object) -> float:
-    """A real-number parameter as a float; a TypeError naming it for what is not one
-    (a string is not parsed, a bool is not a number). Ranges are the caller's to check."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(
-        value, (int, float, np.integer, np.floating)
-    ):
-        raise TypeError(f"{name} must be a number, got {_short(value)} ({type(value).__name__})")
-    return float(value)
-
-
-def as_pair(name: str, value: Any) -> tuple[float, float]:
-    """Two real numbers ``(lo, hi)`` as floats; a TypeError naming ``name`` otherwise."""
-    if isinstance(value, (str, bytes)) or np.ndim(value) != 1 or len(value) != 2:
-        raise TypeError(f"{name} must be two numbers (lo, hi), got {_short(value)}")
-    lo, hi = value
-    return as_real(name, lo), as_real(name, hi)
-
-
 #: Largest wavelength grid :func:`wavelength_grid` makes, and most Eq. 9 layers.
 MAX_SAMPLES = 10_000_000
 MAX_LAYERS = 100_000
@@ -187,11 +93,11 @@ def check_wavelengths(wavelengths: npt.ArrayLike) -> np.ndarray:
     >>> check_wavelengths([500, 400])
     Traceback (most recent call last):
     ...
-    ocio_thinfilm.io.ParameterError: wavelengths must be strictly increasing
+    ocio_thinfilm.checks.ParameterError: wavelengths must be strictly increasing
     """
     if np.asarray(wavelengths).dtype.kind not in "biuf":  # a string is not parsed
         raise TypeError(
-            f"wavelengths must be a number array of nm values, got {_short(wavelengths)}"
+            f"wavelengths must be a number array of nm values, got {short_repr(wavelengths)}"
         )
     wl = np.asarray(wavelengths, dtype=np.float64)
     if wl.ndim != 1 or wl.size == 0:

@@ -27,12 +27,10 @@ from typing import TypedDict
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm.io import ParameterError
+from ocio_thinfilm.checks import ParameterError, as_array, as_count
 from ocio_thinfilm.physics.sampling import (
     MAX_LAYERS,
     as_angle,
-    as_array,
-    as_count,
     as_index,
     check_wavelengths,
     cosine_series,

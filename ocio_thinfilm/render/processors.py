@@ -26,7 +26,8 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.data import REFERENCE
-from ocio_thinfilm.io import ParameterError, StrPath
+from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.io import StrPath
 from ocio_thinfilm.lut import ocio_ops, tables
 
 if TYPE_CHECKING:
@@ -202,7 +203,7 @@ class ConfigProcessors:
         return self._processor(f"view:{display}/{view}", make)
 
     def check_display_view(self, display: str, view: str) -> None:
-        """A :class:`~ocio_thinfilm.io.ParameterError` naming ``display`` or ``view``
+        """A :class:`~ocio_thinfilm.checks.ParameterError` naming ``display`` or ``view``
         unless the config has ``display`` with ``view``."""
         displays = list(self.config.getDisplays())
         if display not in displays:

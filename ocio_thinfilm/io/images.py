@@ -1,0 +1,137 @@
+"""Image files through OpenImageIO, written safely: the file is staged in a
+:class:`~ocio_thinfilm.io.transactions.Transaction`, and decoded in full before it may
+replace anything (OpenImageIO's PNG writer does not always report a full disk)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from ocio_thinfilm.io.destinations import StrPath
+from ocio_thinfilm.io.transactions import Transaction, transaction
+
+
+__all__ = [
+    "write_image",
+    "read_image",
+]
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+
+def write_image(
+    path: StrPath,
+    pixels: npt.ArrayLike,
+    *,
+    channel_names: Iterable[str] | None = None,
+    dtype: str | None = None,
+    attributes: Mapping[str, Any] | None = None,
+    tx: Transaction | None = None,
+) -> Path:
+    """Write ``pixels`` (H, W, C) with OpenImageIO, safely (see the module docstring).
+
+    ``dtype`` defaults to uint8 for .png and half for .exr. Float data written to an
+    8-bit file is taken as 0..1 and rounded (OpenImageIO's own conversion).
+    ``attributes`` values may be int, float, str or a tuple of floats (e.g. the EXR
+    ``chromaticities``). OpenImageIO stamps EXRs with the current ``DateTime``
+    unless an attribute sets it: pass a fixed one for byte-reproducible files.
+    ``tx``: stage the file in this :class:`Transaction` (committed by the caller)
+    instead of committing it on return.
+    """
+    if tx is None:
+        with transaction() as own:
+            return write_image(
+                path,
+                pixels,
+                channel_names=channel_names,
+                dtype=dtype,
+                attributes=attributes,
+                tx=own,
+            )
+    import numpy as np
+    import OpenImageIO as oiio
+
+    path = Path(path)
+    pixels = np.ascontiguousarray(pixels)
+    if pixels.ndim == 2:
+        pixels = pixels[:, :, None]
+    h, w, c = pixels.shape
+    # A name without an extension (/dev/stdout, a FIFO) is written as PNG.
+    ext = path.suffix.lower() or ".png"
+    if dtype is None:
+        dtype = "uint8" if ext == ".png" else "half"
+    spec = oiio.ImageSpec(w, h, c, dtype)
+    if channel_names:
+        spec.channelnames = tuple(channel_names)
+    if ext == ".exr":
+        spec.attribute("compression", "zip")
+    for key, value in (attributes or {}).items():
+        if isinstance(value, (tuple, list)):
+            spec.attribute(key, oiio.TypeDesc(f"float[{len(value)}]"), tuple(map(float, value)))
+        else:
+            spec.attribute(key, value)
+    tmp = tx.file(path)
+    out = oiio.ImageOutput.create(str(path) if path.suffix else ext.lstrip("."))
+    if out is None:
+        raise OSError(f"cannot write {path}: {oiio.geterror() or 'unknown image format'}")
+    if not out.open(str(tmp), spec):
+        raise OSError(f"cannot write {path}: {out.geterror() or oiio.geterror()}")
+    ok = out.write_image(pixels.astype(np.float32) if pixels.dtype.kind == "f" else pixels)
+    closed = out.close()
+    # OpenImageIO's PNG writer reports short writes (a full disk) only through
+    # geterror(): any message there is a failure, whatever the return values said.
+    message = out.geterror()
+    if not (ok and closed) or message:
+        first = (message or "write failed").strip().splitlines()[0]
+        raise OSError(f"cannot write {path}: {first}")
+    # It does not always say even that (a full disk can leave a 0-byte PNG and report
+    # success): decode what was written, in full, before it may replace anything.
+    _check_image_file(tmp, path, (h, w, c))
+    return path
+
+
+def _check_image_file(tmp, path, shape) -> None:
+    import OpenImageIO as oiio
+
+    h, w, c = shape
+    inp = oiio.ImageInput.open(str(tmp))
+    if inp is None:
+        raise OSError(
+            f"cannot write {path}: the written file does not read back "
+            f"({(oiio.geterror() or 'unreadable').strip().splitlines()[0]}); "
+            "disk full?"
+        )
+    try:
+        spec = inp.spec()
+        data = (
+            inp.read_image(0, 0, 0, c, "uint8")
+            if (spec.width, spec.height, spec.nchannels) == (w, h, c)
+            else None
+        )
+        problem = inp.geterror()
+    finally:
+        inp.close()
+    if data is None or problem or _np_shape(data) != (h, w, c):
+        raise OSError(
+            f"cannot write {path}: the written file is incomplete "
+            f"({(problem or 'wrong size').strip().splitlines()[0]}); disk full?"
+        )
+
+
+def _np_shape(a):
+    return tuple(getattr(a, "shape", ()))
+
+
+def read_image(path: StrPath) -> np.ndarray:
+    """Read an image as float32 (H, W, C) with OpenImageIO."""
+    import OpenImageIO as oiio
+
+    buf = oiio.ImageBuf(str(path))
+    if buf.has_error:
+        raise OSError(f"cannot read {path}: {buf.geterror()}")
+    pixels = buf.get_pixels(oiio.FLOAT)
+    assert pixels is not None  # has_error is False: the pixels were read
+    return pixels
