@@ -1,8 +1,8 @@
 """ocio-thinfilm: Smits & Meyer's "Newton's Colors" (1990) as a colour-managed tool.
 
 The sub-packages are the pipeline's stages, in order; each imports only from the
-ones before it and from the shared leaves (:mod:`.registry`, :mod:`.cache`,
-:mod:`.io`):
+ones before it and from the shared leaves (:mod:`.checks`, :mod:`.registry`,
+:mod:`.cache`, :mod:`.io`):
 
 - :mod:`.physics`     thin-film reflectance spectra (paper Section 2, Eq. 5-14)
 - :mod:`.colour`      spectra -> CIE XYZ -> linear RGB (Section 2.1) and the
@@ -19,4 +19,12 @@ What the tests, benchmarks and report measure against is not in this package: it
 the repository's top-level ``evaluation`` package, beside ``benchmarks/``.
 """
 
-__version__ = "0.1.0"
+from importlib import metadata as _metadata
+
+try:
+    #: The installed distribution's version (one place: ``pyproject.toml``).
+    __version__ = _metadata.version("ocio-thinfilm")
+except _metadata.PackageNotFoundError:  # imported from a checkout that is not installed
+    __version__ = "0+unknown"
+
+__all__ = ["__version__"]

@@ -31,6 +31,16 @@ __all__ = [
     "HDRDisplay",
     "View",
     "ThinFilmSpace",
+    "Encoding",
+    "SceneSpace",
+    "EncodedSpace",
+    "REFERENCE",
+    "RGB_COLORIMETRY",
+    "SCENE_LINEAR_LIST",
+    "SCENE_LINEAR_SPACES",
+    "ENCODED_LIST",
+    "ENCODED_SPACES",
+    "linear_space_of",
     "DISPLAY_LIST",
     "HDR_DISPLAY_LIST",
     "VIEW_LIST",
@@ -56,11 +66,22 @@ __all__ = [
 
 
 @dataclass(frozen=True)
+class Encoding:
+    """An SDR display's encoding (inverse EOTF): ``description``; ``gamma``; ``offset``
+    -- an offset is the sRGB-style piecewise curve (IEC 61966-2-1), ``None`` a pure
+    power (ITU-R BT.1886 with a black level of 0)."""
+
+    description: str
+    gamma: float
+    offset: float | None = None
+
+
+@dataclass(frozen=True)
 class Display:
     """A display of the config.
 
     ``name``: the OCIO display name (also the gamut the clip works in);
-    ``colorimetry``: its RGB space in :data:`.colorimetry.RGB_SPACES` (primaries,
+    ``colorimetry``: its RGB space in :data:`RGB_COLORIMETRY` (primaries,
     white); ``colorspace``: the config's display colour space; ``description``: that
     colour space's description; ``encoding``: (description, gamma, offset) of the
     inverse EOTF -- an offset is the sRGB-style piecewise curve, ``None`` a pure power
@@ -72,7 +93,7 @@ class Display:
     colorimetry: str
     colorspace: str
     description: str
-    encoding: tuple
+    encoding: Encoding
     lut_stem: str
     png_colorspace: str
 
@@ -181,14 +202,18 @@ class ThinFilmSpace:
     """A thin-film input colour space (pixel value -> CIE-XYZ-D65): ``name``,
     ``table`` (``"film"`` or ``"morpho"``: :func:`ocio_thinfilm.lut.tables.film_table` /
     :func:`ocio_thinfilm.lut.tables.morpho_table`), ``args`` for that factory,
-    ``lut_stem`` (its CLF file in the config) and ``file_stem`` (the standalone LUT
-    files of its table, ``ocio-thinfilm export``)."""
+    ``lut_stem`` (its CLF file in the config), ``file_stem`` (the standalone LUT
+    files of its table, ``ocio-thinfilm export``), ``pixel`` (what the pixel value
+    is), ``default_range`` and ``default_size`` (of an exported 1D LUT of it)."""
 
     name: str
     table: str
     args: tuple
     lut_stem: str
     file_stem: str
+    pixel: str
+    default_range: tuple[float, float]
+    default_size: int
 
     @property
     def kind(self) -> str:
@@ -196,35 +221,35 @@ class ThinFilmSpace:
         return self.args[0] if self.table == "film" else "morpho"
 
 
-_SRGB_PIECEWISE = ("sRGB piecewise (IEC 61966-2-1)", 2.4, 0.055)
+_SRGB_PIECEWISE = Encoding("sRGB piecewise (IEC 61966-2-1)", gamma=2.4, offset=0.055)
 
 DISPLAY_LIST = (
     Display(
-        "sRGB",
-        "sRGB",
-        "sRGB - Display",
-        "sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, sRGB piecewise encoding",
-        _SRGB_PIECEWISE,
-        "sRGB",
-        "srgb_rec709_display",
+        name="sRGB",
+        colorimetry="sRGB",
+        colorspace="sRGB - Display",
+        description="sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, sRGB piecewise encoding",
+        encoding=_SRGB_PIECEWISE,
+        lut_stem="sRGB",
+        png_colorspace="srgb_rec709_display",
     ),
     Display(
-        "Display P3",
-        "Display P3",
-        "Display P3 - Display",
-        "Apple Display P3: P3 primaries, D65, sRGB piecewise encoding",
-        _SRGB_PIECEWISE,
-        "DisplayP3",
-        "srgb_p3d65_display",
+        name="Display P3",
+        colorimetry="Display P3",
+        colorspace="Display P3 - Display",
+        description="Apple Display P3: P3 primaries, D65, sRGB piecewise encoding",
+        encoding=_SRGB_PIECEWISE,
+        lut_stem="DisplayP3",
+        png_colorspace="srgb_p3d65_display",
     ),
     Display(
-        "Rec.2020",
-        "Rec.2020",
-        "Rec.1886 Rec.2020 - Display",
-        "ITU-R BT.2020 primaries, D65, BT.1886 gamma 2.4 encoding",
-        ("BT.1886 gamma 2.4", 2.4, None),
-        "Rec2020",
-        "g24_rec2020_display",
+        name="Rec.2020",
+        colorimetry="Rec.2020",
+        colorspace="Rec.1886 Rec.2020 - Display",
+        description="ITU-R BT.2020 primaries, D65, BT.1886 gamma 2.4 encoding",
+        encoding=Encoding("BT.1886 gamma 2.4", gamma=2.4),
+        lut_stem="Rec2020",
+        png_colorspace="g24_rec2020_display",
     ),
 )
 
@@ -232,41 +257,42 @@ _SDR = {d.name: d for d in DISPLAY_LIST}
 
 HDR_DISPLAY_LIST = (
     HDRDisplay(
-        "Rec.2100-PQ",
-        _SDR["Rec.2020"],
-        "Rec.2100-PQ - Display",
-        "ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 encoding, "
-        "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
-        "PQ",
-        "DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ",
-        1000.0,
-        "Rec2100PQ",
-        "pq_rec2020_display",
+        name="Rec.2100-PQ",
+        gamut=_SDR["Rec.2020"],
+        colorspace="Rec.2100-PQ - Display",
+        description="ITU-R BT.2100 PQ display: Rec.2020 primaries, D65, SMPTE ST 2084 "
+        "encoding, 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference "
+        "white)",
+        transfer="PQ",
+        builtin="DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ",
+        peak=1000.0,
+        lut_stem="Rec2100PQ",
+        png_colorspace="pq_rec2020_display",
     ),
     HDRDisplay(
-        "Rec.2100-HLG",
-        _SDR["Rec.2020"],
-        "Rec.2100-HLG - Display",
-        "ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the BT.2100 "
-        "OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
+        name="Rec.2100-HLG",
+        gamut=_SDR["Rec.2020"],
+        colorspace="Rec.2100-HLG - Display",
+        description="ITU-R BT.2100 HLG display: Rec.2020 primaries, D65, HLG with the "
+        "BT.2100 OOTF for a 1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 "
         "reference white)",
-        "HLG",
-        "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit",
-        1000.0,
-        "Rec2100HLG",
-        "hlg_rec2020_display",
+        transfer="HLG",
+        builtin="DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit",
+        peak=1000.0,
+        lut_stem="Rec2100HLG",
+        png_colorspace="hlg_rec2020_display",
     ),
     HDRDisplay(
-        "P3-D65 PQ",
-        _SDR["Display P3"],
-        "ST2084-P3-D65 - Display",
-        "P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, 1000 cd/m2 "
-        "peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
-        "PQ",
-        "DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65",
-        1000.0,
-        "P3D65PQ",
-        "pq_p3d65_display",
+        name="P3-D65 PQ",
+        gamut=_SDR["Display P3"],
+        colorspace="ST2084-P3-D65 - Display",
+        description="P3-D65 PQ display: P3 primaries, D65, SMPTE ST 2084 encoding, "
+        "1000 cd/m2 peak; CIE XYZ Y = 1 is 203 cd/m2 (ITU-R BT.2408 reference white)",
+        transfer="PQ",
+        builtin="DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65",
+        peak=1000.0,
+        lut_stem="P3D65PQ",
+        png_colorspace="pq_p3d65_display",
     ),
 )
 
@@ -297,27 +323,122 @@ VIEW_LIST = (
 
 THIN_FILM_LIST = (
     ThinFilmSpace(
-        "Thin Film Phase-Change Thickness",
-        "film",
-        ("phase-change",),
-        "ThinFilm_PhaseChange_Thickness",
-        "ThinFilm_PhaseChange",
+        name="Thin Film Phase-Change Thickness",
+        table="film",
+        args=("phase-change",),
+        lut_stem="ThinFilm_PhaseChange_Thickness",
+        file_stem="ThinFilm_PhaseChange",
+        pixel="optical thickness t' in um",
+        default_range=(0.0, 1.5),
+        default_size=4096,
     ),
     ThinFilmSpace(
-        "Thin Film No-Phase-Change Thickness",
-        "film",
-        ("no-phase-change",),
-        "ThinFilm_NoPhaseChange_Thickness",
-        "ThinFilm_NoPhaseChange",
+        name="Thin Film No-Phase-Change Thickness",
+        table="film",
+        args=("no-phase-change",),
+        lut_stem="ThinFilm_NoPhaseChange_Thickness",
+        file_stem="ThinFilm_NoPhaseChange",
+        pixel="optical thickness t' in um",
+        default_range=(0.0, 1.5),
+        default_size=4096,
     ),
     ThinFilmSpace(
-        "Thin Film Morpho Iridescence",
-        "morpho",
-        (),
-        "ThinFilm_Morpho_Iridescence",
-        "ThinFilm_Morpho",
+        name="Thin Film Morpho Iridescence",
+        table="morpho",
+        args=(),
+        lut_stem="ThinFilm_Morpho_Iridescence",
+        file_stem="ThinFilm_Morpho",
+        pixel="cos(theta), the facing ratio N.V",
+        default_range=(0.0, 1.0),
+        default_size=1024,
     ),
 )
+
+
+@dataclass(frozen=True)
+class SceneSpace:
+    """A scene-linear RGB colour space of the config: ``name`` (the config's colour
+    space), ``colorimetry`` (its primaries and white: a key of
+    :data:`RGB_COLORIMETRY`), ``description``, and ``shaper_from_zero``: whether a
+    display LUT's shaper over it starts at 0 (negative values clamped to the gamut's
+    boundary: the ACES working gamut AP1, where a mirrored shaper would spend a fifth
+    of its grid on the few colours outside it)."""
+
+    name: str
+    colorimetry: str
+    description: str
+    shaper_from_zero: bool = False
+
+
+@dataclass(frozen=True)
+class EncodedSpace:
+    """A colour space of the config that encodes a scene-linear one: ``name``,
+    ``linear`` (the :class:`SceneSpace` it encodes), ``builtin`` (OCIO's built-in
+    transform from it to ACES2065-1), ``description``, and ``plain``: whether its
+    code values in [0, 1] cover every value the views need (then a display LUT from
+    it is a plain 3D LUT over [0, 1])."""
+
+    name: str
+    linear: str
+    builtin: str
+    description: str
+    plain: bool = False
+
+
+#: The reference space of the scene and of the displays (CIE XYZ, D65 white, Y = 1 for
+#: the perfect reflector).
+REFERENCE = "CIE-XYZ-D65"
+
+#: Our names of RGB colorimetries (primaries and white) -> colour-science's
+#: ``colour.RGB_COLOURSPACES`` names.
+RGB_COLORIMETRY = {
+    "sRGB": "sRGB",
+    "Rec.709": "ITU-R BT.709",
+    "Display P3": "Display P3",
+    "Rec.2020": "ITU-R BT.2020",
+    "ACEScg": "ACEScg",
+    "ACES2065-1": "ACES2065-1",
+}
+
+SCENE_LINEAR_LIST = (
+    SceneSpace(
+        name="ACES2065-1",
+        colorimetry="ACES2065-1",
+        description="ACES2065-1: AP0 primaries, ACES white (Bradford from D65)",
+    ),
+    SceneSpace(
+        name="ACEScg",
+        colorimetry="ACEScg",
+        description="ACEScg: AP1 primaries, ACES white (Bradford from D65)",
+        shaper_from_zero=True,
+    ),
+    SceneSpace(
+        name="Linear Rec.709 (sRGB)",
+        colorimetry="Rec.709",
+        description="Scene-linear Rec.709 / sRGB primaries, D65",
+    ),
+    SceneSpace(
+        name="Linear P3-D65",
+        colorimetry="Display P3",
+        description="Scene-linear P3 primaries, D65",
+    ),
+    SceneSpace(
+        name="Linear Rec.2020",
+        colorimetry="Rec.2020",
+        description="Scene-linear Rec.2020 primaries, D65",
+    ),
+)
+
+ENCODED_LIST = (
+    EncodedSpace(
+        name="ACEScct",
+        linear="ACEScg",
+        builtin="ACEScct_to_ACES2065-1",
+        description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
+        plain=True,
+    ),
+)
+
 
 #: Names, in order (DISPLAYS: the SDR displays, the gamuts the clip is baked for).
 DISPLAYS = tuple(d.name for d in DISPLAY_LIST)
@@ -327,6 +448,8 @@ ALL_DISPLAY_LIST: tuple[Display | HDRDisplay, ...] = DISPLAY_LIST + HDR_DISPLAY_
 ALL_DISPLAYS = DISPLAYS + HDR_DISPLAYS
 VIEWS = tuple(v.name for v in VIEW_LIST)
 THIN_FILM_SPACES = tuple(s.name for s in THIN_FILM_LIST)
+SCENE_LINEAR_SPACES = tuple(s.name for s in SCENE_LINEAR_LIST)
+ENCODED_SPACES = tuple(s.name for s in ENCODED_LIST)
 
 #: A display of the registry, SDR or HDR.
 AnyDisplay: TypeAlias = "Display | HDRDisplay"
@@ -420,6 +543,19 @@ def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
     raise ValueError(f"no thin-film colour space for table kind {kind!r}")
 
 
+def linear_space_of(name: str) -> SceneSpace | None:
+    """The scene-linear space holding the RGB of the config's colour space ``name``:
+    itself for a :class:`SceneSpace`, the encoded one's for an :class:`EncodedSpace`,
+    ``None`` for any other (the reference XYZ included)."""
+    by_name = {s.name: s for s in SCENE_LINEAR_LIST}
+    if name in by_name:
+        return by_name[name]
+    for e in ENCODED_LIST:
+        if e.name == name:
+            return by_name[e.linear]
+    return None
+
+
 #: File stem of the clip's LUT files (the config's passes and ``export clip``).
 CLIP_FILE_STEM = "ConstantLightnessClip"
 #: File stem of the compression's own LUT files (the config's squeezes).
@@ -458,8 +594,8 @@ def validate() -> None:
                 f"registry: display {d.name!r}: the clip looks its matrix up by "
                 f"name, so its colorimetry space must be {d.name!r}"
             )
-        text, gamma, offset = d.encoding
-        if not text or not gamma > 0 or not (offset is None or 0 < offset < 1):
+        e = d.encoding
+        if not e.description or not e.gamma > 0 or not (e.offset is None or 0 < e.offset < 1):
             raise ValueError(f"registry: display {d.name!r}: bad encoding {d.encoding!r}")
         if d.colorspace in THIN_FILM_SPACES or not d.colorspace:
             raise ValueError(f"registry: display {d.name!r}: bad colour space {d.colorspace!r}")
@@ -479,6 +615,26 @@ def validate() -> None:
         raise ValueError("registry: exactly one raw view, listed last")
     if any(not v.description for v in VIEW_LIST if not v.raw):
         raise ValueError("registry: every view but the raw one needs a description")
+    spaces_all = (
+        [REFERENCE]
+        + list(SCENE_LINEAR_SPACES)
+        + list(ENCODED_SPACES)
+        + list(THIN_FILM_SPACES)
+        + [d.colorspace for d in ALL_DISPLAY_LIST]
+    )
+    if len(set(spaces_all)) != len(spaces_all):
+        raise ValueError(f"registry: colour space names must be unique: {spaces_all}")
+    for c in SCENE_LINEAR_LIST:
+        if c.colorimetry not in RGB_COLORIMETRY:
+            raise ValueError(f"registry: {c.name!r}: unknown colorimetry {c.colorimetry!r}")
+    for d in DISPLAY_LIST:
+        if d.colorimetry not in RGB_COLORIMETRY:
+            raise ValueError(f"registry: {d.name!r}: unknown colorimetry {d.colorimetry!r}")
+    for encoded in ENCODED_LIST:
+        if encoded.linear not in SCENE_LINEAR_SPACES:
+            raise ValueError(
+                f"registry: {encoded.name!r} encodes an unknown space {encoded.linear!r}"
+            )
     kinds = [s.kind for s in THIN_FILM_LIST]
     if len(set(kinds)) != len(kinds):
         raise ValueError(f"registry: one thin-film space per table kind: {kinds}")

@@ -31,6 +31,7 @@ _HIDE_SCIPY = 'import sys; sys.modules["scipy"] = None\n'
 _PRODUCT_CALLS = """
 import json, sys
 import numpy as np
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.physics import sampling
 from ocio_thinfilm.cli import demo
@@ -46,7 +47,7 @@ out = {
                                   [[0.21, 0.3, 0.4], [0.5, 0.45, 0.55]]),
     "demo_sRGB": demo._encode(np.linspace(0.0, 1.0, 11)[:, None].repeat(3, 1)),
 }
-for space in colorimetry.RGB_SPACES:
+for space in registry.RGB_COLORIMETRY:
     out["matrix " + space] = colorimetry.matrix_XYZ_to_RGB(space)
     out["white " + space] = colorimetry.white_XYZ(space)
 out = {k: np.asarray(v, np.float64).tolist() for k, v in out.items()}
@@ -153,8 +154,10 @@ def test_the_wheel_holds_the_package_and_its_config_only(built):
         top_level = archive.read(next(n for n in names if n.endswith("top_level.txt")))
     dist_info = {n for n in names if n.split("/")[0].endswith(".dist-info")}
     code = names - dist_info - set(data)
-    # every module of the package, and nothing else: no evaluation, benchmarks or tests
-    assert code == _source_modules()
+    # every module of the package and its PEP 561 marker, and nothing else: no
+    # evaluation, benchmarks or tests
+    assert code == _source_modules() | {"ocio_thinfilm/py.typed"}
+    assert any(n.endswith(".dist-info/licenses/LICENSE") for n in dist_info), dist_info
     assert top_level.decode().split() == ["ocio_thinfilm"]
     assert not any(
         part in ("evaluation", "benchmarks", "tests") for n in names for part in n.split("/")

@@ -130,7 +130,7 @@ def test_the_colorimetry_knows_the_registrys_spaces_and_kinds():
     """The registry imports nothing of the pipeline, so the names it gives the
     colorimetry are checked here: every display's RGB space and every film table's kind."""
     for d in registry.ALL_DISPLAY_LIST:
-        assert d.colorimetry in colorimetry.RGB_SPACES
+        assert d.colorimetry in registry.RGB_COLORIMETRY
     for s in registry.THIN_FILM_LIST:
         assert s.kind in colorimetry.FILM_KINDS + ("morpho",)
 
@@ -159,7 +159,11 @@ def test_entries_are_frozen():
         (
             "DISPLAY_LIST",
             registry.DISPLAY_LIST[:2]
-            + (dataclasses.replace(registry.DISPLAY_LIST[2], encoding=("BT.1886", 0.0, None)),),
+            + (
+                dataclasses.replace(
+                    registry.DISPLAY_LIST[2], encoding=registry.Encoding("BT.1886", gamma=0.0)
+                ),
+            ),
             "encoding",
         ),
         ("VIEW_LIST", registry.VIEW_LIST[::-1], "raw view"),
@@ -186,9 +190,11 @@ def test_adding_a_display_is_one_entry(tmp_path):
     anchor = "\nDISPLAY_LIST = (\n"
     assert source.count(anchor) == 1
     entry = (
-        '    Display("Rec.709", "Rec.709", "Rec.1886 Rec.709 - Display", "BT.709 primaries, '
-        'D65, BT.1886 gamma 2.4", ("BT.1886 gamma 2.4", 2.4, None), "Rec709", '
-        '"g24_rec709_display"),\n'
+        '    Display(name="Rec.709", colorimetry="Rec.709", '
+        'colorspace="Rec.1886 Rec.709 - Display", '
+        'description="BT.709 primaries, D65, BT.1886 gamma 2.4", '
+        'encoding=Encoding("BT.1886 gamma 2.4", gamma=2.4), lut_stem="Rec709", '
+        'png_colorspace="g24_rec709_display"),\n'
     )
     (package / "registry.py").write_text(source.replace(anchor, anchor + entry))
     code = (
@@ -200,7 +206,7 @@ def test_adding_a_display_is_one_entry(tmp_path):
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
         "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
         "    render.png_colorspace('Rec.709'),\n"
-        "    display_transforms.registry.as_display('Rec.709').encoding[0]]))\n"
+        "    display_transforms.registry.as_display('Rec.709').encoding.description]))\n"
     )
     env = dict(os.environ, PYTHONPATH=str(tmp_path))
     out = subprocess.run(

@@ -71,7 +71,7 @@ def _space(display: registry.DisplayLike) -> str:
 def _display_matrix(display: registry.DisplayLike) -> np.ndarray:
     """XYZ -> RGB of ``display`` (:func:`_space`)."""
     display = _space(display)
-    if display not in colorimetry.RGB_SPACES:
+    if display not in registry.RGB_COLORIMETRY:
         raise ValueError(f"display must be one of {DISPLAYS}, got {display!r}")
     return colorimetry.matrix_XYZ_to_RGB(display)
 

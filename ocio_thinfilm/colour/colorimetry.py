@@ -32,14 +32,13 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import cache
+from ocio_thinfilm import cache, registry
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.physics import sampling, spectra
 
 __all__ = [
     "DEFAULT_OBSERVER",
     "DEFAULT_ILLUMINANT",
-    "RGB_SPACES",
     "spectral_weights",
     "reflectance_to_XYZ",
     "film_XYZ",
@@ -55,16 +54,6 @@ __all__ = [
 
 DEFAULT_OBSERVER = "CIE 1931 2 Degree Standard Observer"
 DEFAULT_ILLUMINANT = "D65"
-
-#: Our names for RGB spaces -> colour-science colourspace names.
-RGB_SPACES = {
-    "sRGB": "sRGB",
-    "Rec.709": "ITU-R BT.709",
-    "Display P3": "Display P3",
-    "Rec.2020": "ITU-R BT.2020",
-    "ACEScg": "ACEScg",
-    "ACES2065-1": "ACES2065-1",
-}
 
 FILM_KINDS = ("phase-change", "no-phase-change")
 
@@ -332,9 +321,11 @@ def _matrix_cached(space: str) -> np.ndarray:
 
     if space == "CIE-XYZ-D65":
         return np.eye(3)
-    if space not in RGB_SPACES:
-        raise ParameterError("space", f" must be one of {sorted(RGB_SPACES)}, got {space!r}")
-    cs = colour.RGB_COLOURSPACES[RGB_SPACES[space]]
+    if space not in registry.RGB_COLORIMETRY:
+        raise ParameterError(
+            "space", f" must be one of {sorted(registry.RGB_COLORIMETRY)}, got {space!r}"
+        )
+    cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[space]]
     # Normalised primary matrix from the primaries and white: RGB = 1 is the white.
     rgb_to_xyz = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
     d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
@@ -358,8 +349,8 @@ def matrix_XYZ_to_RGB(space: str = "sRGB") -> np.ndarray:
     Parameters
     ----------
     space : str, optional
-        A key of :data:`RGB_SPACES` (default ``"sRGB"``), or ``"CIE-XYZ-D65"`` for the
-        identity.
+        A key of :data:`.registry.RGB_COLORIMETRY` (default ``"sRGB"``), or
+        ``"CIE-XYZ-D65"`` for the identity.
 
     Returns
     -------
@@ -399,7 +390,8 @@ def XYZ_to_RGB(XYZ: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
     XYZ : array_like
         CIE XYZ (D65 perfect reflector at Y = 1), last axis 3, any leading shape.
     space : str, optional
-        A key of :data:`RGB_SPACES` (default ``"sRGB"``) or ``"CIE-XYZ-D65"``.
+        A key of :data:`.registry.RGB_COLORIMETRY` (default ``"sRGB"``) or
+        ``"CIE-XYZ-D65"``.
 
     Returns
     -------
@@ -436,7 +428,8 @@ def RGB_to_XYZ(RGB: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
     RGB : array_like
         Linear RGB of ``space``, last axis 3, any leading shape.
     space : str, optional
-        A key of :data:`RGB_SPACES` (default ``"sRGB"``) or ``"CIE-XYZ-D65"``.
+        A key of :data:`.registry.RGB_COLORIMETRY` (default ``"sRGB"``) or
+        ``"CIE-XYZ-D65"``.
 
     Returns
     -------
@@ -467,7 +460,8 @@ def white_XYZ(space: str = "sRGB") -> np.ndarray:
     Parameters
     ----------
     space : str, optional
-        A key of :data:`RGB_SPACES` (default ``"sRGB"``) or ``"CIE-XYZ-D65"``.
+        A key of :data:`.registry.RGB_COLORIMETRY` (default ``"sRGB"``) or
+        ``"CIE-XYZ-D65"``.
 
     Returns
     -------

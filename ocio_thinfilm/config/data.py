@@ -36,8 +36,6 @@ __all__ = [
     "CONFIG_NAME",
     "PROFILE_VERSION",
     "LUT_DIRECTORY",
-    "REFERENCE",
-    "LINEAR_SPACES",
     "ROLES",
     "ConfigData",
     "named_lut",
@@ -57,18 +55,6 @@ __all__ = [
 CONFIG_NAME = "ocio-thinfilm"
 PROFILE_VERSION = (2, 1)
 LUT_DIRECTORY = "luts"
-
-#: Scene-linear RGB spaces: name -> (colorimetry space, description).
-LINEAR_SPACES = {
-    "ACES2065-1": ("ACES2065-1", "ACES2065-1: AP0 primaries, ACES white (Bradford from D65)"),
-    "ACEScg": ("ACEScg", "ACEScg: AP1 primaries, ACES white (Bradford from D65)"),
-    "Linear Rec.709 (sRGB)": ("Rec.709", "Scene-linear Rec.709 / sRGB primaries, D65"),
-    "Linear P3-D65": ("Display P3", "Scene-linear P3 primaries, D65"),
-    "Linear Rec.2020": ("Rec.2020", "Scene-linear Rec.2020 primaries, D65"),
-}
-
-#: The reference space of the scene and of the displays.
-REFERENCE = "CIE-XYZ-D65"
 
 #: Views that show the data unchanged (the config's Raw colour space).
 _RAW_VIEWS = tuple(v.name for v in registry.VIEW_LIST if v.raw)
@@ -245,7 +231,7 @@ def config_data(
     by_display = clip_luts(clip_size)
     soft_by_display = compress_luts(clip_size)
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
-    ref = REFERENCE
+    ref = registry.REFERENCE
     cs: list[dict[str, Any]] = []
     cs.append(
         dict(
@@ -258,28 +244,28 @@ def config_data(
             "Y = 1 (CIE 1931 2 degree observer). The reference space.",
         )
     )
-    for name, (linear, description) in LINEAR_SPACES.items():
+    for linear in registry.SCENE_LINEAR_LIST:
         cs.append(
             dict(
-                name=name,
+                name=linear.name,
                 family="Scene-Linear",
                 encoding="scene-linear",
                 categories=["file-io", "working-space"],
-                description=description,
-                to_reference=_matrix_to_reference(linear),
+                description=linear.description,
+                to_reference=_matrix_to_reference(linear.colorimetry),
             )
         )
-    acescct = _acescct_to_reference()
-    cs.append(
-        dict(
-            name="ACEScct",
-            family="ACES",
-            encoding="log",
-            categories=["file-io", "working-space"],
-            description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
-            to_reference=acescct,
+    for encoded in registry.ENCODED_LIST:
+        cs.append(
+            dict(
+                name=encoded.name,
+                family="ACES",
+                encoding="log",
+                categories=["file-io", "working-space"],
+                description=encoded.description,
+                to_reference=_builtin_to_reference(encoded.builtin),
+            )
         )
-    )
     cs.append(
         dict(
             name="sRGB - Texture",
@@ -518,15 +504,10 @@ def named_transforms(
     return out
 
 
-def _acescct_to_reference():
-    """ACEScct -> CIE-XYZ-D65: inverse ACEScct curve (LogCameraTransform), AP1 -> XYZ."""
+def _builtin_to_reference(builtin: str) -> ocio_ops.Transform:
+    """An encoded ACES space -> CIE-XYZ-D65: OCIO's built-in transform to ACES2065-1
+    (``ACEScct_to_ACES2065-1``: the ACEScct curve of Academy S-2016-001 and AP1 -> AP0),
+    then AP0 -> XYZ."""
     import PyOpenColorIO as ocio
 
-    curve = ocio.LogCameraTransform([0.0078125] * 3)
-    curve.setBase(2.0)
-    curve.setLogSideSlopeValue([1.0 / 17.52] * 3)
-    curve.setLogSideOffsetValue([9.72 / 17.52] * 3)
-    curve.setLinSideSlopeValue([1.0] * 3)
-    curve.setLinSideOffsetValue([0.0] * 3)
-    curve.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return ocio_ops.group([curve, _matrix_to_reference("ACEScg")])
+    return ocio_ops.group([ocio.BuiltinTransform(builtin), _matrix_to_reference("ACES2065-1")])

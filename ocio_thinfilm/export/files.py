@@ -74,9 +74,21 @@ FORMATS = {
 TABLES = ("film", "morpho", "clip")
 #: Formats with no way to state their input domain: only usable over exactly [0, 1].
 NO_DOMAIN = ("spi3d",)
-DEFAULT_SIZE = {"film": 4096, "morpho": 1024, "clip": 33}
+_FILM_DEFAULTS = registry.thin_film_space_for_kind("phase-change")
+_MORPHO_DEFAULTS = registry.thin_film_space_for_kind("morpho")
+#: Default entries and input range of each table: the thin-film spaces' (registry), and
+#: for the clip over display-linear RGB a 33^3 grid over [-0.5, 1.5].
+DEFAULT_SIZE = {
+    "film": _FILM_DEFAULTS.default_size,
+    "morpho": _MORPHO_DEFAULTS.default_size,
+    "clip": 33,
+}
 MAX_SIZE = {"film": 1 << 20, "morpho": 1 << 20, "clip": 129}
-DEFAULT_RANGE = {"film": (0.0, 1.5), "morpho": (0.0, 1.0), "clip": (-0.5, 1.5)}
+DEFAULT_RANGE = {
+    "film": _FILM_DEFAULTS.default_range,
+    "morpho": _MORPHO_DEFAULTS.default_range,
+    "clip": (-0.5, 1.5),
+}
 
 
 # --------------------------------------------------------------------------- #

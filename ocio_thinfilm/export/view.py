@@ -14,7 +14,7 @@ curve onto [0, 1] that is part of the file:
 - ``.cube`` (OCIO's ``resolve_cube`` writer), two forms, each saying which in its first line:
 
   - *plain* (the default for inputs whose code values in [0, 1] already cover what the
-    view needs, :data:`PLAIN_INPUTS`: ACEScct): nothing but ``LUT_3D_SIZE`` and the
+    view needs: ACEScct): nothing but ``LUT_3D_SIZE`` and the
     table over the default [0, 1] domain, which every reader applies alike (ffmpeg's
     ``lut3d``, OBS, OpenShot, three.js, Photoshop, Resolve, OCIO, colour-science:
     several of them ignore ``LUT_1D_*`` and ``DOMAIN_*`` lines);
@@ -80,9 +80,6 @@ __all__ = [
     "VIEW_FORMATS",
     "DEFAULT_VIEW_SIZE",
     "SHAPER_SIZE",
-    "LINEAR_SIBLING",
-    "PLAIN_INPUTS",
-    "THIN_FILM_INPUTS",
     "shaper_domain",
     "view_config",
     "export_view",
@@ -104,42 +101,36 @@ SHAPER_SIZE = 4096
 SHAPER_GAMMA = 2.0
 #: Lower bound of the shaper's upper end (scene-linear; 1.0 is the display white).
 SHAPER_MIN_HI = 1.5
-#: Input space -> the config space holding its linear RGB (the shaper works there).
-LINEAR_SIBLING = {
-    "CIE-XYZ-D65": "CIE-XYZ-D65",
-    "ACES2065-1": "ACES2065-1",
-    "ACEScg": "ACEScg",
-    "ACEScct": "ACEScg",
-    "Linear Rec.709 (sRGB)": "Linear Rec.709 (sRGB)",
-    "Linear P3-D65": "Linear P3-D65",
-    "Linear Rec.2020": "Linear Rec.2020",
-}
-#: Inputs whose code values in [0, 1] cover every value the views need (ACEScct 1.0
-#: is linear 222.9, far above the display white that every view maps brighter
-#: colours to): their ``.cube`` is a plain 3D LUT over [0, 1] unless the Resolve form
-#: is asked for.
-PLAIN_INPUTS = ("ACEScct",)
-#: colorimetry name of each linear sibling.
-_COLORIMETRY = {
-    "CIE-XYZ-D65": "CIE-XYZ-D65",
-    "ACES2065-1": "ACES2065-1",
-    "ACEScg": "ACEScg",
-    "Linear Rec.709 (sRGB)": "Rec.709",
-    "Linear P3-D65": "Display P3",
-    "Linear Rec.2020": "Rec.2020",
-}
-#: Thin-film input spaces -> (what the pixel is, default range, default size).
-THIN_FILM_INPUTS = {
-    "Thin Film Phase-Change Thickness": ("optical thickness t' in um", (0.0, 1.5), 4096),
-    "Thin Film No-Phase-Change Thickness": ("optical thickness t' in um", (0.0, 1.5), 4096),
-    "Thin Film Morpho Iridescence": ("cos(theta), the facing ratio N.V", (0.0, 1.0), 1024),
-}
 SHAPER_SPACE = "ocio-thinfilm export shaper"
-#: Linear spaces whose shaper starts at 0: AP1 is the ACES working gamut (ACEScg,
-#: ACEScct), and a mirrored square root spends a fifth of the grid on the few object
-#: colours outside it (down to -0.09) -- measured ACEScct -> sRGB 65^3: max ΔE2000
-#: 4.4 with them, 2.2 without. Values below 0 are clamped (to the AP1 boundary).
-NO_NEGATIVE_SHAPER = ("ACEScg",)
+# --------------------------------------------------------------------------- #
+# The input spaces (names and their properties from the registry)
+# --------------------------------------------------------------------------- #
+#: Thin-film input spaces: a 1D LUT each.
+_THIN_FILM = {s.name: s for s in registry.THIN_FILM_LIST}
+#: Inputs whose code values in [0, 1] cover every value the views need (ACEScct 1.0
+#: is linear 222.9, far above the display white that every view maps brighter colours
+#: to): their ``.cube`` is a plain 3D LUT over [0, 1] unless the Resolve form is asked for.
+_PLAIN_INPUTS = tuple(e.name for e in registry.ENCODED_LIST if e.plain)
+
+
+def _linear_sibling(source: str) -> str | None:
+    """The config space holding ``source``'s linear RGB (the shaper works there): the
+    reference XYZ or a scene-linear space itself, an encoded space's linear one; None
+    for the others (thin-film and display spaces)."""
+    if source == registry.REFERENCE:
+        return source
+    space = registry.linear_space_of(source)
+    return None if space is None else space.name
+
+
+def _shaper_from_zero(linear_space: str) -> bool:
+    space = registry.linear_space_of(linear_space)
+    return space is not None and space.shaper_from_zero
+
+
+def _colorimetry(linear_space: str) -> str:
+    space = registry.linear_space_of(linear_space)
+    return registry.REFERENCE if space is None else space.colorimetry
 
 
 # --------------------------------------------------------------------------- #
@@ -148,22 +139,25 @@ NO_NEGATIVE_SHAPER = ("ACEScg",)
 def shaper_domain(
     linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(lo, hi) of the shaper over ``linear_space`` (one of :data:`LINEAR_SIBLING`'s
-    values), the same for the three channels so that every grid node on the diagonal
+    """(lo, hi) of the shaper over ``linear_space`` (the reference XYZ or a scene-linear
+    space of the registry), the same for the three channels so that every grid node on the diagonal
     is a neutral (greys stay grey under tetrahedral interpolation): it covers the
     channel extremes of all object colours under D65 (optimal colours: reflectance
     1 where a channel's spectral weight is positive, 0 elsewhere, and the reverse),
-    widened by 10 %, and at least [0, 1.5] (AP1 spaces: from 0, see
-    :data:`NO_NEGATIVE_SHAPER`). (Nudging it so that black and white fall on grid
+    widened by 10 %, and at least [0, 1.5] (from 0 for a space whose
+    ``shaper_from_zero`` is set: AP1, the ACES working gamut -- a mirrored square root
+    spends a fifth of the grid on the few object colours outside it, down to -0.09;
+    measured ACEScct -> sRGB 65^3: max ΔE2000 4.4 with them, 2.2 without; values below
+    0 are clamped to the AP1 boundary). (Nudging it so that black and white fall on grid
     nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
     2.2; ``size`` is kept for that reason in the signature.) For an HDR ``display`` the
     upper end is at least 1.5 times its peak (1000 / 203 in units of the reference
     white), so highlights up to the peak are not clamped by the shaper."""
     wl = np.arange(360.0, 781.0, 1.0)
     W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
-    w = W @ colorimetry.matrix_XYZ_to_RGB(_COLORIMETRY[linear_space]).T
+    w = W @ colorimetry.matrix_XYZ_to_RGB(_colorimetry(linear_space)).T
     lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
-    if linear_space in NO_NEGATIVE_SHAPER:
+    if _shaper_from_zero(linear_space):
         lo = 0.0
     least = SHAPER_MIN_HI * (1.0 if display is None else registry.as_display(display).scale)
     hi = max(least, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
@@ -195,9 +189,9 @@ def view_config(
     from ocio_thinfilm import config as config_module
 
     cfg = config_module.generate_config(config_module.config_data(inline=True), validate=False)
-    if source not in LINEAR_SIBLING:
+    sibling = _linear_sibling(source)
+    if sibling is None:
         return cfg, None
-    sibling = LINEAR_SIBLING[source]
     lo, hi = shaper_domain(sibling, size, display)
     to_ref = cfg.getColorSpace(sibling).getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
     parts = [_shaper_to_linear(lo, hi)] + ([to_ref] if to_ref is not None else [])
@@ -219,16 +213,16 @@ def view_config(
 def _cube_shaper(source, fmt, shaper):
     """Whether a 3D ``.cube`` of ``source`` carries the 1D shaper (the Resolve form)."""
     if shaper is None:
-        return source not in PLAIN_INPUTS
+        return source not in _PLAIN_INPUTS
     if fmt != "cube":
         raise ParameterError(
             "shaper", f" applies to .cube files, not .{fmt} (its shaper is part of the format)"
         )
-    if not shaper and source not in PLAIN_INPUTS:
+    if not shaper and source not in _PLAIN_INPUTS:
         raise ParameterError(
             "shaper",
             f"=False (a plain .cube) needs an input whose values "
-            f"lie in [0, 1] ({', '.join(PLAIN_INPUTS)}); {source} "
+            f"lie in [0, 1] ({', '.join(_PLAIN_INPUTS)}); {source} "
             "takes the Resolve form",
         )
     return bool(shaper)
@@ -250,9 +244,10 @@ def _validate(source, display, view, size, fmt, value_range):
     as_choice("fmt", fmt, VIEW_FORMATS)
     if size is not None and (isinstance(size, bool) or not isinstance(size, (int, np.integer))):
         raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
-    one_d = source in THIN_FILM_INPUTS
+    one_d = source in _THIN_FILM
     if one_d:
-        what, default_range, default_size = THIN_FILM_INPUTS[source]
+        film = _THIN_FILM[source]
+        default_range, default_size = film.default_range, film.default_size
         if fmt in ("csp", "spi3d"):
             raise ValueError(
                 f"{source} takes one value per pixel, a 1D LUT: use cube, "
@@ -266,7 +261,7 @@ def _validate(source, display, view, size, fmt, value_range):
         if lo < 0 or (source == "Thin Film Morpho Iridescence" and hi > 1) or hi > 100:
             raise ParameterError(
                 "value_range",
-                f" for {source} ({what}) must lie in "
+                f" for {source} ({film.pixel}) must lie in "
                 f"{'0..1' if 'Morpho' in source else '0..100'}, "
                 f"got {lo:g} {hi:g}",
             )
@@ -309,10 +304,12 @@ def _description(source, display, view, size, shaper, baked):
         f"pixel values of {source}; output: {display} display code values."
     )
     if shaper:
-        lo, hi = shaper_domain(LINEAR_SIBLING[source], size, display)
+        sibling = _linear_sibling(source)
+        assert sibling is not None  # a 3D input: XYZ, scene-linear or encoded
+        lo, hi = shaper_domain(sibling, size, display)
         text += (
             f" Shaper: sign(x)|x|^(1/2) per channel of linear "
-            f"{LINEAR_SIBLING[source]} over {lo:.6g}..{hi:.6g} (clamped beyond)."
+            f"{sibling} over {lo:.6g}..{hi:.6g} (clamped beyond)."
         )
     if baked:
         text += f" 3D LUT {size}^3, tetrahedral."
@@ -443,7 +440,7 @@ def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, de
         source, display, view, ocio.TRANSFORM_DIR_FORWARD
     ).getDefaultCPUProcessor().applyRGB(px)
     values = px.astype(np.float64)
-    what = THIN_FILM_INPUTS[source][0]
+    what = _THIN_FILM[source].pixel
     lut_meta = dict(
         meta,
         input=f"{source}: {what}",
@@ -468,9 +465,9 @@ def export_view(
     """Write the display LUT ``source`` -> ``display`` / ``view``; returns the paths
     written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``).
 
-    ``shaper`` (``.cube`` only): None -- the plain 3D form for :data:`PLAIN_INPUTS`,
+    ``shaper`` (``.cube`` only): None -- the plain 3D form for the plain inputs (ACEScct),
     the Resolve form (1D shaper + 3D) for the others; True -- the Resolve form;
-    False -- the plain form (only for :data:`PLAIN_INPUTS`)."""
+    False -- the plain form (only for the plain inputs (ACEScct))."""
     import PyOpenColorIO as ocio
 
     display = registry.display_name(display)
@@ -483,7 +480,7 @@ def export_view(
     size, value_range = _validate(source, display, view, size, fmt, value_range)
     assert source is not None and display is not None and view is not None  # _validate
     cube_shaper = None
-    if source in THIN_FILM_INPUTS:
+    if source in _THIN_FILM:
         if shaper is not None:
             raise ParameterError("shaper", f" applies to 3D LUTs; {source} gives a 1D LUT")
     elif fmt == "cube" or shaper is not None:
@@ -497,7 +494,7 @@ def export_view(
 
     cfg, shaper_space = view_config(source, size, display)
     meta = _metadata(source, display, view)
-    if source in THIN_FILM_INPUTS:
+    if source in _THIN_FILM:
         description = _description(source, display, view, size, None, False)
         return [
             _write_1d(out, fmt, cfg, source, display, view, size, value_range, meta, description)

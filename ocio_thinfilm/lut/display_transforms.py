@@ -116,7 +116,7 @@ def display_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transf
     """
     ocio = ocio_ops.module()
     entry = registry.as_display(display, hdr=False)
-    _, gamma, offset = entry.encoding
+    gamma, offset = entry.encoding.gamma, entry.encoding.offset
     if offset is None:
         t = ocio.ExponentTransform([gamma, gamma, gamma, 1.0])
         t.setNegativeStyle(ocio.NEGATIVE_CLAMP)

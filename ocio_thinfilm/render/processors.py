@@ -25,7 +25,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.config.data import REFERENCE
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.io import StrPath
 from ocio_thinfilm.lut import ocio_ops, tables
@@ -36,7 +35,6 @@ if TYPE_CHECKING:
 __all__ = [
     "DEFAULT_CONFIG",
     "PACKAGE_CONFIG",
-    "REFERENCE_SPACE",
     "table_colorspace",
     "load_config",
     "ConfigProcessors",
@@ -69,7 +67,6 @@ def _checkout_config() -> Path | None:
 #: :data:`PACKAGE_CONFIG`. Nothing is ever written beside the installed code.
 DEFAULT_CONFIG = _checkout_config() or PACKAGE_CONFIG
 #: The config's reference, the EXR's colour space: tables go to it, views start at it.
-REFERENCE_SPACE = REFERENCE
 
 
 def table_colorspace(spec: TableSpec) -> str:
@@ -150,7 +147,7 @@ class ConfigProcessors:
             if cs is None:
                 raise ParameterError(
                     "config",
-                    f": no {REFERENCE_SPACE} colour space and no scene_linear role to reach it",
+                    f": no {registry.REFERENCE} colour space and no scene_linear role to reach it",
                 )
             scene_to_xyz, _ = merge.interchange(self.config)
             self._bridge = (
@@ -163,8 +160,8 @@ class ConfigProcessors:
         """A processor-ready transform ``source`` colour space -> CIE-XYZ-D65."""
         import PyOpenColorIO as ocio
 
-        if self.config.getColorSpace(REFERENCE_SPACE) is not None:
-            return ocio.ColorSpaceTransform(source, REFERENCE_SPACE)
+        if self.config.getColorSpace(registry.REFERENCE) is not None:
+            return ocio.ColorSpaceTransform(source, registry.REFERENCE)
         linear, to_xyz = self._xyz_bridge()
         return ocio.GroupTransform([ocio.ColorSpaceTransform(source, linear), to_xyz])
 
@@ -189,9 +186,9 @@ class ConfigProcessors:
         import PyOpenColorIO as ocio
 
         def make():
-            if self.config.getColorSpace(REFERENCE_SPACE) is not None:
+            if self.config.getColorSpace(registry.REFERENCE) is not None:
                 return self.config.getProcessor(
-                    REFERENCE_SPACE, display, view, ocio.TRANSFORM_DIR_FORWARD
+                    registry.REFERENCE, display, view, ocio.TRANSFORM_DIR_FORWARD
                 )
             linear, to_xyz = self._xyz_bridge()
             from_xyz = ocio.GroupTransform([to_xyz])
