@@ -7,7 +7,7 @@
    Airy sum (``exact.airy_reflectance``, s and p averaged) against
    colour-science's transfer-matrix method ``colour.phenomena.thin_film_tmm`` on the
    same grid, in the same run. Best of several repeats; the ratio is the speed-up.
-   The issue asks for >= 20x for the closed form. Also checks that Airy and
+   The goal is >= 20x for the closed form. Also checks that Airy and
    colour's TMM agree (max |dR|) so the comparison is like for like.
 2. The constant-lightness clip, XYZ and RGB forms, on a 4096 x 2160 float32 image
    of out-of-gamut-heavy colours, in Mpixel/s (best of repeats), with the
@@ -66,7 +66,7 @@ def bench_spectra(repeats):
     print(f"  colour.phenomena.thin_film_tmm       {t_tmm * 1e3:9.1f} ms")
     print(
         f"  spectra.two_beam_reflectance (Eq. 7) {t_two_beam * 1e3:9.1f} ms   "
-        f"{t_tmm / t_two_beam:6.1f}x faster  (issue: >= 20x)"
+        f"{t_tmm / t_two_beam:6.1f}x faster  (goal: >= 20x)"
     )
     print(
         f"  exact.airy_reflectance (exact)     {t_airy * 1e3:9.1f} ms   "
@@ -118,7 +118,7 @@ def main(argv=None):
     print()
     verdict = "PASS" if ratio_closed >= 20 else "FAIL"
     print(
-        f"closed form vs thin_film_tmm: {ratio_closed:.1f}x ({verdict}, issue asks >= 20x); "
+        f"closed form vs thin_film_tmm: {ratio_closed:.1f}x ({verdict}, goal >= 20x); "
         f"Airy: {ratio_airy:.1f}x"
     )
     return 0

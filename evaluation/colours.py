@@ -87,7 +87,7 @@ def spectral_mixtures(n: int = 20000, seed: int = 3, max_Y: float = 0.99) -> np.
 
 
 def gamut_map_sets() -> dict:
-    """The clip issue's test sets (CIE-XYZ-D65), by name: ``object`` (object and
+    """The gamut maps' test sets (CIE-XYZ-D65), by name: ``object`` (object and
     interference colours, :func:`object_colours`), ``monochromatic`` (380-700 nm at
     Y = 0.02, 0.1, 0.3, 0.6), ``ap0`` (20,000 random colours inside ACES AP0 with
     0 <= Y <= 1) and ``mixtures`` (:func:`spectral_mixtures`)."""

@@ -80,14 +80,14 @@ def test_bad_parameters_raise_value_error_naming_them(call, name):
     ],
 )
 def test_numbers_of_the_wrong_type_raise_type_error_naming_them(call, name):
-    """A string is refused, not parsed (``n='1.33'`` used to return numbers)."""
+    """A string is refused, not parsed (``n='1.33'`` is not a number)."""
     with pytest.raises(TypeError, match=rf"^{name} must be a number"):
         call()
 
 
 @pytest.mark.parametrize("layers", ["3", "many", b"3", None, [3]])
 def test_counts_of_the_wrong_type_raise_type_error_naming_them(layers):
-    # a string is refused, not parsed: layers='3' used to return numbers
+    # a string is refused, not parsed: layers='3' is not a count
     with pytest.raises(TypeError, match="layers"):
         spectra.multilayer_reflectance(100.0, [500.0], layers)
 

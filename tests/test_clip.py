@@ -4,9 +4,9 @@ References used: a bisection along the segment from the grey point to the colour
 (the gamut is convex and contains its grey, so the furthest in-gamut point of that
 segment is found by bisection without any plane algebra), display matrices built
 here from colour-science's primaries (``colour.normalised_primary_matrix``), the
-geometric definitions in the issue (in gamut, Y preserved, on the segment to the
-grey, idempotent), and the published ACES 1.3 reference gamut compression formula
-for the OCIO baseline.
+geometric definitions of the clip (Smits & Meyer 1990, Section 3.2: in gamut, Y
+preserved, on the segment to the grey, idempotent), and the published ACES 1.3
+reference gamut compression formula for the OCIO baseline.
 """
 
 from __future__ import annotations
@@ -148,7 +148,7 @@ def test_in_gamut_unchanged_bit_for_bit(dtype):
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_non_positive_Y_is_black_and_Y_above_white_is_white(display):
-    """Reference: the issue's definition -- Y <= 0 gives black, Y >= Y_white gives
+    """Reference: the clip's definition -- Y <= 0 gives black, Y >= Y_white gives
     the display white (RGB = 1), whatever X and Z are."""
     _, rgb_to_xyz, white = reference_matrices(display)
     XYZ = np.array(
@@ -341,7 +341,8 @@ def test_dtype_and_whole_image_shapes(dtype, fn):
 
 
 def test_bad_display_name():
-    """Reference: the issue's contract -- ValueError naming the parameter."""
+    """Reference: the package's argument contract (ocio_thinfilm.checks) -- a
+    ValueError naming the parameter."""
     with pytest.raises(ValueError, match="display"):
         clip.clip_XYZ(np.zeros(3), "CRT-1990")
     with pytest.raises(ValueError, match="display"):
@@ -363,7 +364,7 @@ def _grey(XYZ, display):
     display=st.sampled_from(DISPLAYS),
 )
 def test_clip_properties(seed, scale, display):
-    """Reference: the issue's definitions, checked with matrices built here from
+    """Reference: the clip's definitions (Section 3.2), checked with matrices built here from
     colour's primaries: output in the gamut (1e-6), Y preserved for 0 <= Y <= Y_white,
     idempotent, identity inside the gamut, and the output on the segment from the
     input to its grey (same direction, not beyond the input)."""

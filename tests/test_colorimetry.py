@@ -118,7 +118,8 @@ def test_other_observers_and_illuminants(colour, observer, illuminant):
     ],
 )
 def test_bad_names_and_values_raise(call, name):
-    """Reference: the issue's contract -- ValueError naming the parameter."""
+    """Reference: the package's argument contract (ocio_thinfilm.checks) -- a
+    ValueError naming the parameter."""
     with pytest.raises(ValueError, match=name):
         call()
 
@@ -216,7 +217,7 @@ def thick_scan():
 @pytest.mark.parametrize("kind", ["phase-change", "no-phase-change"])
 def test_band_limited_5nm_within_half_a_delta_E_up_to_100um(thick_scan, kind):
     """Reference: brute-force 0.1 nm sampling (independent: no band limiting).
-    Issue requirement: Delta E2000 <= 0.5 for every t' up to 100 um."""
+    Target: Delta E2000 <= 0.5 for every t' up to 100 um (the band-limited tables' accuracy)."""
     t, out = thick_scan
     band, _ = out[kind]
     assert band.max() <= 0.5, (band.max(), t[band.argmax()])

@@ -140,7 +140,7 @@ def test_committed_config_size():
 @pytest.mark.xfail(
     strict=True,
     reason="the compression view's LUTs (4.5 MB per display) "
-    "take the config past the clip issue's 25 MB budget",
+    "take the config past the clip's 25 MB budget (load time: docs/gamut_map.md)",
 )
 def test_committed_config_within_size_budget():
     assert _config_size() <= 25_000_000

@@ -380,14 +380,16 @@ BAD_CALLS = [
     "name,call", BAD_CALLS, ids=[f"{i}-{c[0]}" for i, c in enumerate(BAD_CALLS)]
 )
 def test_bad_input_raises_value_error_naming_the_parameter(name, call):
-    """Reference: the issue's contract -- ValueError whose message names the parameter."""
+    """Reference: the package's argument contract (ocio_thinfilm.checks) -- a
+    ValueError whose message names the parameter."""
     with pytest.raises(ValueError) as info:
         call()
     assert name in str(info.value)
 
 
 def test_range_messages_state_the_allowed_range():
-    """Reference: the issue's contract -- the message gives the allowed range."""
+    """Reference: the package's argument contract (ocio_thinfilm.checks) -- the
+    message gives the allowed range."""
     with pytest.raises(ValueError, match=r"theta.*\[0, 90\]"):
         spectra.optical_thickness(1.0, 1.33, 95.0)
     with pytest.raises(ValueError, match=r"thickness.*>= 0"):
