@@ -39,6 +39,11 @@ TOL = 2.0 / 255.0
 #: (the clip's black pass, the compression's squeezes) leave 1e-5 of white (4e-6 of the
 #: peak) above it reaches 2.29/255 (P3-D65 PQ clip), 3.31/255 (P3-D65 PQ compression)
 #: and 2.34/255 (Rec.2100-PQ compression), 0.002-0.004 cd/m2 of light.
+#: All four come from the 3D LUTs' 16-bit codes, which lie up to 7.6e-6 from the half
+#: floats the texture holds (no code but 0 and 1 is a half float): a CPU processor with
+#: the 3D LUT values rounded to half floats gives the GPU's result to 0.2-0.45/255
+#: (measured once). Half-float LUT files (CLF 16f) would meet 2/255 at twice the text
+#: (config 39 MB instead of 24 MB, over its size budget; docs/hdr.md).
 REACHED = {
     ("Rec.2020", "Constant-Lightness Compress", "f2"): 2.2 / 255.0,
     ("P3-D65 PQ", "Constant-Lightness Clip", "f2"): 2.35 / 255.0,
