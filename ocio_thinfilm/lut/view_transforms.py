@@ -65,10 +65,10 @@ def _hlg_luma_chart(a: float) -> np.ndarray:
     built-in display transform (whose luminance is Y). Through the BT.2020 matrix a
     colour with a large X or Z and a small Y (the XYZ (1e4, 0, 1) of an imaginary
     colour) has RGB channels of 1e4 whose weighted sum cancels, and the float32
-    round-off of that sum and of the matrix back (1e-3 there) became its scene-light
-    Y: a dim colour on one processor and black on another. With X and Z scaled down
-    by p before they enter the sum, the round-off shrinks by p, and Y of the result
-    comes back exactly 0 for Y = 0."""
+    round-off of that sum and of the matrix back (1e-3 there) would become its
+    scene-light Y, which the clip keeps: a dim colour whose size depends on the
+    processor's rounding (CPU or GPU). With X and Z scaled down by p before they enter
+    the sum, that round-off shrinks by p (to 1e-6 of X)."""
     p = HLG_CHART_XZ
     w0, w1, w2 = (float(w) for w in HLG_LUMA)
     return np.array(
