@@ -195,3 +195,40 @@ def test_thickness_spaces_black_below_zero(baked_config, space, level):
     np.testing.assert_allclose(px[5:7], np.repeat(0.5 * white[None], 2, 0), atol=2e-3)
     at_zero = np.zeros(3) if "No-Phase" not in space else white  # sin^2(0), cos^2(0)
     np.testing.assert_allclose(px[7], at_zero, atol=2e-3)
+
+
+# --------------------------------------------------------------------------- #
+# The SDR display colour spaces' code limit
+# --------------------------------------------------------------------------- #
+def test_display_code_limit_is_the_code_of_the_input_limit():
+    """Reference: colour-science's IEC 61966-2-1 encoding and BT.1886 inverse EOTF of
+    display light 1e6 (ocio_ops.LIMIT, the limit of every scene space's input); the
+    display colour space passes codes up to it and clamps beyond, on the way from XYZ
+    and (through OCIO's inverse) on the way back."""
+    import colour
+
+    from ocio_thinfilm.lut import display_transforms, ocio_ops
+
+    limits = {d: display_transforms.code_limit(d) for d in ("sRGB", "Display P3", "Rec.2020")}
+    expected = colour.cctf_encoding(ocio_ops.LIMIT, function="sRGB")
+    assert limits["sRGB"] == pytest.approx(expected, rel=1e-12)
+    assert limits["Display P3"] == pytest.approx(expected, rel=1e-12)
+    assert limits["Rec.2020"] == pytest.approx(
+        colour.models.eotf_inverse_BT1886(ocio_ops.LIMIT), rel=1e-12
+    )
+    # ordinary codes round-trip unchanged; 1e30 and +Inf become the limit
+    t = display_transforms.display_colorspace_transform("sRGB")
+    code = np.array([[0.2, 0.5, 1.0], [-0.1, 0.3, 1.5], [1e30, np.inf, 0.0]], np.float32)
+    xyz = ocio_ops.apply(ocio_ops.inverse([t]), code)
+    assert np.isfinite(xyz).all()
+    back = ocio_ops.apply(t, xyz)
+    np.testing.assert_allclose(back[:2], code[:2], rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(back[2, :2], limits["sRGB"], rtol=1e-4)
+
+
+@pytest.mark.parametrize("display", ["Rec.2100-PQ", "no such display"])
+def test_display_code_limit_names_its_parameter(display):
+    from ocio_thinfilm.lut import display_transforms
+
+    with pytest.raises(ValueError, match="^display must be one of"):
+        display_transforms.code_limit(display)

@@ -245,6 +245,103 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
     assert not bad, bad[:10]
 
 
+#: Every level of OCIO's optimiser (the display spaces' own tests: NONE composes nothing).
+ALL_LEVELS = (
+    "OPTIMIZATION_NONE",
+    "OPTIMIZATION_LOSSLESS",
+    "OPTIMIZATION_VERY_GOOD",
+    "OPTIMIZATION_GOOD",
+    "OPTIMIZATION_DRAFT",
+    "OPTIMIZATION_DEFAULT",
+)
+
+
+def _nonfinite_probe():
+    """Code values a display colour space can be handed: ordinary, huge (1e30, 3e38,
+    float32 max), infinite and NaN, every combination of three."""
+    v = np.array(
+        [0.0, 0.5, 1.0, -1.0, 1e30, -1e30, 3e38, -3e38, F32_MAX, -F32_MAX, np.inf, -np.inf, np.nan],
+        dtype=np.float32,
+    )
+    return np.ascontiguousarray(np.stack(np.meshgrid(v, v, v, indexing="ij"), -1).reshape(-1, 3))
+
+
+def _lowest_and_highest(x):
+    """``x`` with NaN and -Inf replaced by -float32 max and +Inf by float32 max: the
+    config's definition of non-finite input (every input space limits its components
+    first, and OCIO's Range sends NaN to the lower bound)."""
+    y = np.where(np.isnan(x) | (x == -np.inf), -F32_MAX, x)
+    return np.ascontiguousarray(np.where(y == np.inf, F32_MAX, y).astype(np.float32))
+
+
+def _cpu(proc, level, x):
+    cpu = proc.getOptimizedCPUProcessor(
+        ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, level)
+    )
+    px = np.ascontiguousarray(x, dtype=np.float32).copy()
+    cpu.applyRGB(px)
+    return px
+
+
+@pytest.mark.parametrize("level", ALL_LEVELS)
+def test_display_spaces_as_input_are_finite_at_every_level(cfg, level):
+    """Every display colour space (SDR and HDR) as the input of every view of every
+    display, converted to CIE-XYZ-D65 and to every other display colour space, at every
+    optimisation level: finite output for any input, float32 max and +-Inf included;
+    views in the code range [0, 1].
+
+    Non-finite input, defined: a NaN component counts as the lowest value and +-Inf as
+    the highest / lowest, so the output equals that of the same pixel with float32
+    max in their place (computed here by the same processor on those finite pixels).
+    Analytic expectations: an all-NaN or all -Inf pixel is black through every view
+    (no light), an all +Inf pixel the view's white at its peak (what a grey 1000 times
+    the reference white gives, from CIE-XYZ-D65)."""
+    x = _nonfinite_probe()
+    substituted = _lowest_and_highest(x)
+    nan, neg, pos = (
+        np.flatnonzero(np.all(f(x), axis=1))
+        for f in (np.isnan, lambda a: a == -np.inf, lambda a: a == np.inf)
+    )
+    white = np.float32([[0.95047, 1.0, 1.08883]]) * np.float32(1000.0)
+    sources = [
+        cs.getName()
+        for cs in cfg.getColorSpaces()
+        if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY
+    ]
+    assert len(sources) == 6
+    bad = []
+    for src in sources:
+        targets = [(d, v) for d in cfg.getDisplays() for v in cfg.getViews(d) if v != "Raw"]
+        # (a conversion of a space to itself is no conversion: OCIO passes it through)
+        targets += [(None, dst) for dst in ["CIE-XYZ-D65", *sources] if dst != src]
+        for display, view in targets:
+            if display is None:
+                proc = cfg.getProcessor(src, view)
+            else:
+                proc = cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)
+            out = _cpu(proc, level, x)
+            what = (src, display, view)
+            if not np.isfinite(out).all():
+                bad.append((*what, "non-finite", x[~np.isfinite(out).all(1)][0].tolist()))
+                continue
+            if not np.array_equal(out, _cpu(proc, level, substituted)):
+                bad.append((*what, "NaN/Inf not the lowest/highest value"))
+            if display is None:
+                continue
+            if out.min() < -TOL or out.max() > 1.0 + TOL:
+                bad.append((*what, "out of range", float(out.min()), float(out.max())))
+            peak = _cpu(
+                cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD),
+                level,
+                white,
+            )
+            if np.abs(out[np.r_[nan, neg]]).max() > 1e-5:
+                bad.append((*what, "NaN / -Inf not black", out[nan].tolist()))
+            if np.abs(out[pos] - peak).max() > 1e-3:
+                bad.append((*what, "+Inf not the peak white", out[pos].tolist(), peak.tolist()))
+    assert not bad, bad[:10]
+
+
 def test_documented_numbers_come_from_the_benchmark(load_benchmark, marked):
     """docs/gamut_map.md's measured tables and the README's status line of the clip
     views are what benchmarks/bench_gamut_map.py renders from

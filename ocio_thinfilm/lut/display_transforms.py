@@ -7,6 +7,8 @@
   -> code values (PQ or HLG, OCIO's built-in display transforms);
 - :func:`display_colorspace_transform` -- any display's CIE-XYZ-D65 -> code values
   (its display colour space);
+- :func:`code_limit` -- the largest code value an SDR display's colour space passes
+  (the code of display light :data:`~ocio_thinfilm.lut.ocio_ops.LIMIT`);
 - :func:`aces_gamut_compression_transform` -- OCIO's ACES 1.3 reference gamut
   compression, the baseline view the clip is compared with.
 """
@@ -25,6 +27,7 @@ __all__ = [
     "display_encoding_transform",
     "hdr_encoding_transform",
     "display_colorspace_transform",
+    "code_limit",
     "aces_gamut_compression_transform",
 ]
 
@@ -200,11 +203,54 @@ def hdr_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
     )
 
 
+def code_limit(display: registry.DisplayLike) -> float:
+    """The code value of display-linear :data:`~ocio_thinfilm.lut.ocio_ops.LIMIT` (1e6
+    times the display white) through an SDR display's encoding: IEC 61966-2-1's
+    ``1.055 L ** (1 / 2.4) - 0.055`` for the sRGB-encoded displays, BT.1886's
+    ``L ** (1 / 2.4)`` for Rec.2020.
+
+    Parameters
+    ----------
+    display : str or registry display
+        A display of :data:`ocio_thinfilm.registry.DISPLAYS` or its name.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    ValueError
+        For an unknown display or an HDR one (its codes are limited to [0, 1]).
+
+    Examples
+    --------
+    >>> round(code_limit("sRGB"), 2), round(code_limit("Rec.2020"), 2)
+    (333.57, 316.23)
+    """
+    entry = registry.as_display(display, hdr=False)
+    gamma, offset = entry.encoding.gamma, entry.encoding.offset
+    if offset is None:
+        return float(ocio_ops.LIMIT ** (1.0 / gamma))
+    return float((1.0 + offset) * ocio_ops.LIMIT ** (1.0 / gamma) - offset)
+
+
 def display_colorspace_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
     """CIE-XYZ-D65 (the display reference) -> code values of any display of
     :data:`ocio_thinfilm.registry.ALL_DISPLAYS`: the display matrix and encoding of an
     SDR display, :func:`hdr_encoding_transform` of an HDR one (the config's display
     colour spaces).
+
+    An SDR display's code values end in a clamp to +-:func:`code_limit`, the codes of
+    display light +-1e6 (no real pixel comes near it). OCIO applies a display colour
+    space in reverse to convert from it (a display space as a view's input, or to
+    CIE-XYZ-D65), and then the clamp comes first: code values of 1e30 or +-Inf would
+    decode to +-Inf (1e30 ** 2.4 overflows float32) and the matrix to XYZ would turn
+    Inf - Inf into NaN. Limited, they decode to at most 1e6, like every scene space's
+    input (:func:`ocio_thinfilm.lut.ocio_ops.finite_limit_transform`); NaN counts as
+    the lower bound, as in OCIO's Range on the CPU and the GPU. The clamp is last on
+    the way from XYZ, so a view's decoding and the display's encoding still meet and
+    cancel in OCIO's optimiser.
 
     >>> from ocio_thinfilm.lut.ocio_ops import apply
     >>> apply(display_colorspace_transform("sRGB"), [0.95047, 1.0, 1.08883]).round(3).tolist()
@@ -213,7 +259,14 @@ def display_colorspace_transform(display: registry.DisplayLike) -> ocio_ops.Tran
     entry = registry.as_display(display)
     if entry.hdr:
         return hdr_encoding_transform(entry)
-    return ocio_ops.group([display_matrix_transform(entry), display_encoding_transform(entry)])
+    c = code_limit(entry)
+    return ocio_ops.group(
+        [
+            display_matrix_transform(entry),
+            display_encoding_transform(entry),
+            ocio_ops.range_(-c, c),
+        ]
+    )
 
 
 def aces_gamut_compression_transform() -> ocio_ops.Transform:

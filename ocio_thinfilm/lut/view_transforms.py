@@ -22,7 +22,6 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.compress_lut import compress_lut
@@ -48,23 +47,61 @@ __all__ = ["view_linear_transform", "view_transform", "hdr_scaled"]
 #: scene-linear range of OCIO's built-in HLG display transform (E in [0, 3]).
 HLG_GAMMA = 1.2
 HLG_E_MAX = 3.0
+#: The luminance weights of BT.2100's OOTF (Table 5, Y_S = 0.2627 R + 0.6780 G + 0.0593 B)
+#: as OCIO's ``FIXED_FUNCTION_REC2100_SURROUND`` applies them (float32 constants, on the
+#: CPU and in its GLSL alike).
+HLG_LUMA = np.array([0.2627, 0.6780, 0.0593], dtype=np.float32).astype(np.float64)
+#: Scale of X and Z in :func:`_hlg_luma_chart` (a power of two: exact in float32 and in
+#: the 12 decimals of :func:`ocio_thinfilm.lut.ocio_ops.matrix`).
+HLG_CHART_XZ = 2.0**-12
+
+
+def _hlg_luma_chart(a: float) -> np.ndarray:
+    """The matrix N taking CIE XYZ to the vector v that ``REC2100_SURROUND`` scales,
+    with HLG_LUMA . v = a Y exactly and v_0 = p X, v_2 = p Z (p = :data:`HLG_CHART_XZ`).
+
+    The OOTF multiplies all three channels by the same function of HLG_LUMA . v, so
+    any N with that luminance row gives the same scaled XYZ as the BT.2020 RGB of the
+    built-in display transform (whose luminance is Y). Through the BT.2020 matrix a
+    colour with a large X or Z and a small Y (the XYZ (1e4, 0, 1) of an imaginary
+    colour) has RGB channels of 1e4 whose weighted sum cancels, and the float32
+    round-off of that sum and of the matrix back (1e-3 there) would become its
+    scene-light Y, which the clip keeps: a dim colour whose size depends on the
+    processor's rounding (CPU or GPU). With X and Z scaled down by p before they enter
+    the sum, that round-off shrinks by p (to 1e-6 of X)."""
+    p = HLG_CHART_XZ
+    w0, w1, w2 = (float(w) for w in HLG_LUMA)
+    return np.array(
+        [
+            [p, 0.0, 0.0],
+            [-w0 * p / w1, a / w1, -w2 * p / w1],
+            [0.0, 0.0, p],
+        ]
+    )
 
 
 def _hlg_scene_ops(entry: registry.HDRDisplay, inverse: bool = False) -> list:
     """HLG display light -> scene light (or back), as OCIO's built-in
-    ``DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit`` does it: CIE XYZ (Y = 1 at 203
-    cd/m2) -> the gamut's RGB scaled so that the peak is E_MAX ** gamma, the BT.2100
-    inverse OOTF (``FIXED_FUNCTION_REC2100_SURROUND``, RGB Y ** (1 / gamma - 1)), then
-    / E_MAX and back to XYZ: the HLG signal's parallelepiped [0, 1] is the SDR gamut's.
-    ``inverse``: the OOTF way back, ending in display-linear RGB (1 = 203 cd/m2)."""
+    ``DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit`` does it: the BT.2100 inverse OOTF
+    (``FIXED_FUNCTION_REC2100_SURROUND``, each pixel scaled by Y ** (1 / gamma - 1) of
+    its luminance Y in units where the peak is E_MAX ** gamma), then / E_MAX: the HLG
+    signal's parallelepiped [0, 1] is the SDR gamut's.
+
+    The way in starts with :func:`ocio_thinfilm.lut.ocio_ops.finite_limit_transform`
+    (components limited to +-1e6, as every SDR view starts; +-Inf and NaN become
+    finite before the OOTF, which would give NaN or Inf for them) and applies the
+    OOTF to XYZ through :func:`_hlg_luma_chart` (luminance exact, no cancellation
+    between large channels). ``inverse``: the OOTF way back, from display-linear RGB
+    of the chain (in [0, 1]) to display-linear RGB (1 = 203 cd/m2)."""
     ocio = ocio_ops.module()
     a = HLG_E_MAX**HLG_GAMMA * registry.HDR_REFERENCE_WHITE / entry.peak
-    M = colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)
     if not inverse:
+        N = _hlg_luma_chart(a)
         return [
-            ocio_ops.matrix(M * a),
+            finite_limit_transform(),
+            ocio_ops.matrix(N),
             ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND, [1.0 / HLG_GAMMA]),
-            ocio_ops.matrix(np.linalg.inv(M) / HLG_E_MAX),
+            ocio_ops.matrix(np.linalg.inv(N) * a / HLG_E_MAX),
         ]
     return [
         ocio_ops.matrix(np.eye(3) * HLG_E_MAX),
