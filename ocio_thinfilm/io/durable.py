@@ -25,7 +25,13 @@ if TYPE_CHECKING:
 
 
 def current_umask() -> int:
-    """Return the process's umask (set to 0 and back for an instant to read it)."""
+    """Return the process's umask (set to 0 and back for an instant to read it).
+
+    Returns
+    -------
+    int
+        The umask, e.g. ``0o022``.
+    """
     mask = os.umask(0)
     os.umask(mask)
     return mask

@@ -82,9 +82,14 @@ FOREIGN_STALE_SECONDS = 24 * 3600
 
 
 def self_id() -> str:
-    """Return this process's part of temporary names: ``<host key>-<pid>-<start time>``.
+    """Return this process's part of temporary names.
 
     Recomputed after a fork; the start time is ``0`` where it cannot be read.
+
+    Returns
+    -------
+    str
+        ``<host key>-<pid>-<start time>``.
     """
     pid = os.getpid()
     if _SELF["pid"] != pid:  # recomputed after a fork
