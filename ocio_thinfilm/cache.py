@@ -59,9 +59,27 @@ _STORE_LOCK = threading.Lock()
 
 
 class Memo:
-    """A memoised pure function: ``memo(*args)`` is ``function(*args)``, computed once
-    per argument tuple (positional, hashable) while fewer than ``maxsize`` newer keys
-    have been used; calls are serialised while a value is computed."""
+    """A memoised pure function, registered in the store by :func:`memoize`.
+
+    ``memo(*args)`` is ``function(*args)``, computed once per argument tuple
+    (positional, hashable) while fewer than ``maxsize`` newer keys have been used (the
+    least recently used key goes first); calls are serialised while a value is
+    computed.
+
+    Parameters
+    ----------
+    function : callable
+        The pure function; its positional arguments must be hashable (keyword arguments
+        are not supported).
+    maxsize : int
+        Number of entries kept.
+    name : str
+        The memo's name in the store (:func:`memoize` gives the qualified name).
+    forget : callable, optional
+        Called without arguments by :func:`clear` with ``persistent=True``: removes what
+        the function keeps outside this process (its on-disk entries); ``None``
+        (default) if nothing.
+    """
 
     def __init__(self, function, maxsize: int, name: str, forget=None):
         functools.update_wrapper(self, function)
@@ -74,6 +92,7 @@ class Memo:
         self._hits = self._misses = 0
 
     def __call__(self, *args):
+        """Return ``function(*args)``, from the memo when it holds ``args``."""
         with self._lock:
             if args in self._values:
                 self._hits += 1
@@ -87,30 +106,67 @@ class Memo:
             return value
 
     def cache_clear(self) -> None:
+        """Empty the memo and reset its statistics (its on-disk entries stay)."""
         with self._lock:
             self._values.clear()
             self._hits = self._misses = 0
 
     def cache_info(self) -> CacheInfo:
+        """Return the memo's statistics.
+
+        Returns
+        -------
+        CacheInfo
+            ``(hits, misses, maxsize, currsize)``, as ``functools.lru_cache`` gives them.
+        """
         with self._lock:
             return CacheInfo(self._hits, self._misses, self.maxsize, len(self._values))
 
     def keys(self) -> tuple:
-        """The argument tuples held now, oldest first."""
+        """Return the argument tuples held now.
+
+        Returns
+        -------
+        tuple of tuple
+            The keys, least recently used first.
+        """
         with self._lock:
             return tuple(self._values)
 
     def __repr__(self) -> str:
+        """Return ``<Memo name (currsize/maxsize)>``."""
         return f"<Memo {self.name} ({len(self._values)}/{self.maxsize})>"
 
 
 def memoize(
     maxsize: int = 128, *, forget: Callable[[], object] | None = None
 ) -> Callable[[Callable[..., Any]], Memo]:
-    """Decorator: the function as a :class:`Memo` of ``maxsize`` entries, registered
-    in the store by its qualified name (a new memo of the same name replaces the old).
-    ``forget``: a callable that removes the function's persistent entries (see
-    :func:`clear`).
+    """Make a decorator that memoises a function as a :class:`Memo` in the store.
+
+    The memo is registered by the function's qualified name (``module.qualname``); a
+    new memo of the same name replaces the old one in the store.
+
+    Parameters
+    ----------
+    maxsize : int, optional
+        Number of entries kept (default 128).
+    forget : callable, optional
+        A callable without arguments that removes the function's persistent entries
+        (called by :func:`clear` with ``persistent=True``); ``None`` (default) if it
+        keeps none.
+
+    Returns
+    -------
+    callable
+        The decorator: function -> :class:`Memo`.
+
+    Examples
+    --------
+    >>> @memoize(maxsize=1)
+    ... def double(x):
+    ...     return 2 * x
+    >>> double(1), double(2), double.keys()
+    (2, 4, ((2,),))
     """
 
     def decorate(function: Callable[..., Any]) -> Memo:
@@ -128,8 +184,15 @@ def _memos() -> dict:
 
 
 def clear(*, persistent: bool = False) -> None:
-    """Empty every memo of the store; with ``persistent``, also remove their on-disk
-    entries (each memo's ``forget``)."""
+    """Empty every memo of the store.
+
+    Parameters
+    ----------
+    persistent : bool, optional
+        Also remove the memos' on-disk entries (each memo's ``forget``); default
+        ``False``. The on-disk entries never go stale: removing them only costs the
+        next process the computation.
+    """
     for memo in _memos().values():
         memo.cache_clear()
         if persistent and memo.forget is not None:
@@ -137,14 +200,32 @@ def clear(*, persistent: bool = False) -> None:
 
 
 def info() -> dict:
-    """``{name: CacheInfo(hits, misses, maxsize, currsize)}`` of every memo."""
+    """Return the statistics of every memo.
+
+    Returns
+    -------
+    dict
+        ``{name: CacheInfo(hits, misses, maxsize, currsize)}``, sorted by name.
+    """
     return {name: memo.cache_info() for name, memo in _memos().items()}
 
 
 def entries(prefix: str = "") -> dict:
-    """``{name: keys}`` of the memos whose name starts with ``prefix`` and that hold
-    at least one value (e.g. ``entries("ocio_thinfilm.lut.")``: the tables and clip
-    LUTs computed in this process and still cached)."""
+    """Return what the memos hold now.
+
+    Parameters
+    ----------
+    prefix : str, optional
+        Only memos whose name starts with it (default ``""``: all), e.g.
+        ``"ocio_thinfilm.lut."`` for the tables and clip LUTs computed in this process
+        and still cached.
+
+    Returns
+    -------
+    dict
+        ``{name: keys}`` (:meth:`Memo.keys`) of the matching memos that hold at least
+        one value, sorted by name.
+    """
     return {
         name: memo.keys()
         for name, memo in _memos().items()
@@ -153,7 +234,13 @@ def entries(prefix: str = "") -> dict:
 
 
 def names() -> tuple:
-    """The registered memos' names."""
+    """Return the registered memos' names.
+
+    Returns
+    -------
+    tuple of str
+        The qualified names, sorted.
+    """
     return tuple(_memos())
 
 

@@ -38,14 +38,42 @@ _T = TypeVar("_T")
 
 
 class UsageError(ValueError):
-    """A bad command-line argument: the CLI prints it on one line and exits with 2."""
+    """A bad command-line argument that is no library parameter.
+
+    The command line prints it on one line and exits with 2.
+    """
 
 
 class ParameterError(ValueError):
-    """A library function's argument outside what it allows, naming the Python parameter:
+    """A library function's argument outside what it allows, naming the parameter.
+
     ``str(error)`` is ``parameter + detail`` (``"index applies to film tables only"``,
     ``"value_range: thickness must not be negative, got -1"``). The command line
-    names its option instead (:meth:`for_option`; ``--index applies to ...``)."""
+    names its option instead (:meth:`for_option`; ``--index applies to ...``).
+
+    Parameters
+    ----------
+    parameter : str
+        The Python parameter's name: the start of the message.
+    detail : str
+        The rest of the message, beginning with its separator (``" must be ..."``,
+        ``": thickness ..."``).
+
+    Attributes
+    ----------
+    parameter : str
+        The parameter's name, as given.
+    detail : str
+        The rest of the message, as given.
+
+    Examples
+    --------
+    >>> error = ParameterError("size", " must be in [2, 1048576], got 1")
+    >>> str(error)
+    'size must be in [2, 1048576], got 1'
+    >>> error.for_option("--size")
+    '--size must be in [2, 1048576], got 1'
+    """
 
     def __init__(self, parameter: str, detail: str) -> None:
         super().__init__(parameter + detail)
@@ -53,7 +81,18 @@ class ParameterError(ValueError):
         self.detail = detail
 
     def for_option(self, option: str) -> str:
-        """The message with ``option`` (e.g. ``--range``) in place of the parameter."""
+        """Return the message with ``option`` in place of the parameter.
+
+        Parameters
+        ----------
+        option : str
+            The command-line option that gave the value, e.g. ``--range``.
+
+        Returns
+        -------
+        str
+            ``option + detail``.
+        """
         return option + self.detail
 
 
@@ -66,9 +105,50 @@ def as_array(
     strict: bool = False,
     unit: str = "",
 ) -> np.ndarray:
-    """``value`` as a float64 (or complex) array, finite and within the bounds, else a
-    ValueError naming ``name``, the bounds and the first offending value (a TypeError
-    for what is not numbers: a string is not parsed, ``n='1.33'`` is refused)."""
+    """Return ``value`` as a finite float64 (or complex) array within the bounds.
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error messages.
+    value : array_like
+        A number or an array of numbers (bool, integer, float or complex). A string is
+        not parsed: ``n='1.33'`` is refused.
+    minimum : float, optional
+        Lower bound of the values (of their real parts for complex values); ``None``
+        (default) for none.
+    maximum : float, optional
+        Upper bound, inclusive; ``None`` (default) for none. The message of a value
+        above it states ``minimum`` too, so give both.
+    strict : bool, optional
+        Whether values must be greater than ``minimum`` (default ``False``: greater
+        or equal).
+    unit : str, optional
+        Appended to the bounds in the messages (e.g. ``" nm"``); default none.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``value`` as a float64 array (no copy when it already is one); complex values
+        stay complex.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not a number or an array of numbers.
+    ParameterError
+        If a value (a real part) is not finite or lies outside the bounds; the message
+        names ``name``, the bounds and the first offending value.
+
+    Examples
+    --------
+    >>> as_array("thickness", [0, 250.5], minimum=0.0)
+    array([  0. , 250.5])
+    >>> as_array("thickness", [-1.0], minimum=0.0, unit=" nm")
+    Traceback (most recent call last):
+    ...
+    ocio_thinfilm.checks.ParameterError: thickness must be >= 0 nm, got -1
+    """
     a = np.asarray(value)
     if a.dtype.kind not in "biufc":
         raise TypeError(
@@ -100,7 +180,23 @@ def as_array(
 
 
 def short_repr(value: object) -> str:
-    """``repr(value)``, cut to 40 characters for an error message."""
+    """Return ``repr(value)``, cut to 40 characters for an error message.
+
+    Parameters
+    ----------
+    value : object
+        Any object.
+
+    Returns
+    -------
+    str
+        ``repr(value)``, or its first 37 characters followed by ``...``.
+
+    Examples
+    --------
+    >>> short_repr("x" * 50)
+    "'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx..."
+    """
     text = repr(value)
     return text if len(text) <= 40 else text[:37] + "..."
 
@@ -114,9 +210,42 @@ def _range_text(minimum: float | None, maximum: float | None, strict: bool, unit
 
 
 def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
-    """An integer parameter (layers, harmonics): a TypeError naming it for a value that
-    is not a number (a string is not parsed: ``layers='3'`` is refused), a ValueError
-    for a number that is not an integer in range."""
+    """Return an integer parameter (layers, harmonics) as an int, checked.
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error messages.
+    value : object
+        The value: an int, a float or a NumPy number equal to an integer (``3.0`` is
+        accepted). A string is not parsed (``layers='3'`` is refused).
+    minimum : int, optional
+        Smallest allowed value (default 1).
+    maximum : int, optional
+        Largest allowed value; ``None`` (default) for none.
+
+    Returns
+    -------
+    int
+        ``value`` as an int.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not a number.
+    ParameterError
+        If ``value`` is a bool, not finite, not an integer or outside
+        ``[minimum, maximum]``.
+
+    Examples
+    --------
+    >>> as_count("layers", 12.0)
+    12
+    >>> as_count("layers", 3.5, 1, 10)
+    Traceback (most recent call last):
+    ...
+    ocio_thinfilm.checks.ParameterError: layers must be an integer in [1, 10], got 3.5
+    """
     if isinstance(value, (bool, np.bool_)):
         raise ParameterError(name, f" must be an integer >= {minimum}, got {value!r}")
     if not isinstance(value, (int, float, np.number)):  # a string is not parsed
@@ -131,8 +260,28 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
 
 
 def as_real(name: str, value: object) -> float:
-    """A real-number parameter as a float; a TypeError naming it for what is not one
-    (a string is not parsed, a bool is not a number). Ranges are the caller's to check."""
+    """Return a real-number parameter as a float.
+
+    Ranges (and finiteness) are the caller's to check.
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error message.
+    value : object
+        An int, a float or a NumPy integer or floating-point number.
+
+    Returns
+    -------
+    float
+        ``value`` as a float.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not a real number: a string is not parsed, a bool is not a
+        number.
+    """
     if isinstance(value, (bool, np.bool_)) or not isinstance(
         value, (int, float, np.integer, np.floating)
     ):
@@ -143,7 +292,33 @@ def as_real(name: str, value: object) -> float:
 
 
 def as_pair(name: str, value: Any) -> tuple[float, float]:
-    """Two real numbers ``(lo, hi)`` as floats; a TypeError naming ``name`` otherwise."""
+    """Return two real numbers ``(lo, hi)`` as floats.
+
+    Their order, range and finiteness are the caller's to check.
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error message.
+    value : sequence of two numbers
+        A one-dimensional sequence or array of exactly two real numbers.
+
+    Returns
+    -------
+    tuple of float
+        ``(lo, hi)``.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is a string, not one-dimensional, not of length 2 or holds
+        something that is not a real number (:func:`as_real`).
+
+    Examples
+    --------
+    >>> as_pair("value_range", [0, 1.5])
+    (0.0, 1.5)
+    """
     if isinstance(value, (str, bytes)) or np.ndim(value) != 1 or len(value) != 2:
         raise TypeError(f"{name} must be two numbers (lo, hi), got {short_repr(value)}")
     lo, hi = value
@@ -151,8 +326,27 @@ def as_pair(name: str, value: Any) -> tuple[float, float]:
 
 
 def as_positive(name: str, value: object) -> float:
-    """A finite real number > 0 as a float: a TypeError naming ``name`` for what is not
-    a number (a string is not parsed), a :class:`ParameterError` otherwise."""
+    """Return a finite real number > 0 as a float.
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error messages.
+    value : object
+        A real number (as :func:`as_real` accepts).
+
+    Returns
+    -------
+    float
+        ``value`` as a float.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not a real number (a string is not parsed).
+    ParameterError
+        If ``value`` is not finite or not > 0.
+    """
     f = as_real(name, value)
     if not np.isfinite(f) or f <= 0:
         raise ParameterError(name, f" must be a finite number > 0, got {f:g}")
@@ -160,9 +354,29 @@ def as_positive(name: str, value: object) -> float:
 
 
 def as_choice(name: str, value: _T, choices: Iterable[_T]) -> _T:
-    """``value`` if it is one of ``choices``, else a :class:`ParameterError` naming
-    ``name`` and listing the choices.
+    """Return ``value`` if it is one of ``choices``.
 
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error message.
+    value : object
+        The value to check; an unhashable or uncomparable value is no choice.
+    choices : iterable
+        The allowed values.
+
+    Returns
+    -------
+    object
+        ``value`` itself.
+
+    Raises
+    ------
+    ParameterError
+        If ``value`` is not one of ``choices``; the message lists them.
+
+    Examples
+    --------
     >>> as_choice("kind", "morpho", ("phase-change", "morpho"))
     'morpho'
     >>> as_choice("kind", "oil", ("phase-change", "morpho"))

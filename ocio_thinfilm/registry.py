@@ -67,9 +67,18 @@ __all__ = [
 
 @dataclass(frozen=True)
 class Encoding:
-    """An SDR display's encoding (inverse EOTF): ``description``; ``gamma``; ``offset``
-    -- an offset is the sRGB-style piecewise curve (IEC 61966-2-1), ``None`` a pure
-    power (ITU-R BT.1886 with a black level of 0)."""
+    """An SDR display's encoding (inverse EOTF).
+
+    Parameters
+    ----------
+    description : str
+        What the encoding is, for the config's descriptions.
+    gamma : float
+        The exponent, > 0.
+    offset : float, optional
+        In (0, 1): the sRGB-style piecewise curve (IEC 61966-2-1) with this offset;
+        ``None`` (default): a pure power (ITU-R BT.1886 with a black level of 0).
+    """
 
     description: str
     gamma: float
@@ -78,15 +87,26 @@ class Encoding:
 
 @dataclass(frozen=True)
 class Display:
-    """A display of the config.
+    """An SDR display of the config.
 
-    ``name``: the OCIO display name (also the gamut the clip works in);
-    ``colorimetry``: its RGB space in :data:`RGB_COLORIMETRY` (primaries,
-    white); ``colorspace``: the config's display colour space; ``description``: that
-    colour space's description; ``encoding``: (description, gamma, offset) of the
-    inverse EOTF -- an offset is the sRGB-style piecewise curve, ``None`` a pure power
-    (BT.1886); ``lut_stem``: the display's part of LUT file names;
-    ``png_colorspace``: the OpenImageIO colour interop ID a PNG for it is tagged with.
+    Parameters
+    ----------
+    name : str
+        The OCIO display name (also the gamut the clip works in).
+    colorimetry : str
+        Its RGB space (primaries, white), a key of :data:`RGB_COLORIMETRY`; equal to
+        ``name`` (:func:`validate`).
+    colorspace : str
+        The config's display colour space.
+    description : str
+        That colour space's description.
+    encoding : Encoding
+        The inverse EOTF: an offset is the sRGB-style piecewise curve, ``None`` a pure
+        power (BT.1886).
+    lut_stem : str
+        The display's part of LUT file names.
+    png_colorspace : str
+        The OpenImageIO colour interop ID a PNG for it is tagged with.
     """
 
     name: str
@@ -111,18 +131,44 @@ class Display:
         return 1.0
 
     def clip_lut_stem(self, white: bool = False) -> str:
-        """File stem of this display's clip LUT: the pass against the faces through
-        black (``white=False``) or through white.
+        """Return the file stem of one of this display's two clip LUTs.
 
+        Parameters
+        ----------
+        white : bool, optional
+            The pass against the faces through white (``True``) or through black
+            (``False``, the default).
+
+        Returns
+        -------
+        str
+            ``ConstantLightnessClip_<lut_stem>_BlackFaces`` or ``..._WhiteFaces``.
+
+        Examples
+        --------
         >>> as_display("Display P3").clip_lut_stem(white=True)
         'ConstantLightnessClip_DisplayP3_WhiteFaces'
         """
         return f"{CLIP_FILE_STEM}_{self.lut_stem}" + ("_WhiteFaces" if white else "_BlackFaces")
 
     def compress_lut_stem(self, white: bool = False) -> str:
-        """File stem of this display's compression squeeze before the clip's pass
-        against the faces through black (``white=False``) or through white.
+        """Return the file stem of one of this display's two compression squeezes.
 
+        The squeeze comes before the clip's pass against the same faces.
+
+        Parameters
+        ----------
+        white : bool, optional
+            The squeeze before the pass against the faces through white (``True``) or
+            through black (``False``, the default).
+
+        Returns
+        -------
+        str
+            ``ConstantLightnessCompress_<lut_stem>_BlackFaces`` or ``..._WhiteFaces``.
+
+        Examples
+        --------
         >>> as_display("sRGB").compress_lut_stem()
         'ConstantLightnessCompress_sRGB_BlackFaces'
         """
@@ -139,19 +185,36 @@ OCIO_XYZ_UNIT = 100.0
 
 @dataclass(frozen=True)
 class HDRDisplay:
-    """An HDR display of the config: the parallelepiped of its primaries scaled to the
-    peak luminance, so every view is the SDR one of ``gamut`` scaled by
-    ``peak / HDR_REFERENCE_WHITE`` (the clip is scale-covariant: the same LUT files).
+    """An HDR display of the config.
 
-    ``name``: the OCIO display name; ``gamut``: the SDR display of :data:`DISPLAYS` with
-    its primaries and white (whose clip LUTs it reuses); ``colorspace``: the config's
-    display colour space; ``description``: its description; ``transfer``: ``"PQ"``
-    (SMPTE ST 2084) or ``"HLG"`` (ARIB STD-B67 with the BT.2100 OOTF for ``peak``);
-    ``builtin``: OCIO's built-in display transform (CIE XYZ with Y = 1 at
-    :data:`OCIO_XYZ_UNIT` cd/m2 -> code values; OCIO >= 2.1); ``peak``: peak white in
-    cd/m2; ``lut_stem``: the display's part of file names; ``png_colorspace``: the
-    OpenImageIO colour interop ID a (16-bit) PNG for it is tagged with (OpenImageIO 3
-    writes it as the PNG cICP chunk, ITU-T H.273 code points).
+    Its volume is the parallelepiped of its primaries scaled to the peak luminance, so
+    every view is the SDR one of ``gamut`` scaled by ``peak / HDR_REFERENCE_WHITE`` (the
+    clip is scale-covariant: the same LUT files).
+
+    Parameters
+    ----------
+    name : str
+        The OCIO display name.
+    gamut : Display
+        The SDR display of :data:`DISPLAY_LIST` with its primaries and white (whose clip
+        LUTs it reuses).
+    colorspace : str
+        The config's display colour space.
+    description : str
+        That colour space's description.
+    transfer : str
+        ``"PQ"`` (SMPTE ST 2084) or ``"HLG"`` (ARIB STD-B67 with the BT.2100 OOTF for
+        ``peak``).
+    builtin : str
+        OCIO's built-in display transform (CIE XYZ with Y = 1 at :data:`OCIO_XYZ_UNIT`
+        cd/m2 -> code values; OCIO >= 2.1), ``"DISPLAY - CIE-XYZ-D65_to_..."``.
+    peak : float
+        Peak white in cd/m2, above :data:`HDR_REFERENCE_WHITE`.
+    lut_stem : str
+        The display's part of file names.
+    png_colorspace : str
+        The OpenImageIO colour interop ID a (16-bit) PNG for it is tagged with
+        (OpenImageIO 3 writes it as the PNG cICP chunk, ITU-T H.273 code points).
     """
 
     name: str
@@ -174,23 +237,58 @@ class HDRDisplay:
 
     @property
     def scale(self) -> float:
-        """Peak white in units of the reference white: the display volume is the
-        gamut's RGB parallelepiped up to this value (1000 / 203 = 4.926)."""
+        """Peak white in units of the reference white (1000 / 203 = 4.926).
+
+        The display volume is the gamut's RGB parallelepiped up to this value.
+        """
         return self.peak / HDR_REFERENCE_WHITE
 
     def clip_lut_stem(self, white: bool = False) -> str:
-        """The clip LUT of its gamut (the same files, scaled)."""
+        """Return the file stem of its gamut's clip LUT (the same files, scaled).
+
+        Parameters
+        ----------
+        white : bool, optional
+            The pass against the faces through white (``True``) or through black
+            (``False``, the default).
+
+        Returns
+        -------
+        str
+            :meth:`Display.clip_lut_stem` of :attr:`gamut`.
+        """
         return self.gamut.clip_lut_stem(white)
 
     def compress_lut_stem(self, white: bool = False) -> str:
-        """The compression squeeze of its gamut (the same files, scaled)."""
+        """Return the file stem of its gamut's compression squeeze (the same files, scaled).
+
+        Parameters
+        ----------
+        white : bool, optional
+            The squeeze before the pass against the faces through white (``True``) or
+            through black (``False``, the default).
+
+        Returns
+        -------
+        str
+            :meth:`Display.compress_lut_stem` of :attr:`gamut`.
+        """
         return self.gamut.compress_lut_stem(white)
 
 
 @dataclass(frozen=True)
 class View:
-    """A view of every display: ``name``, ``description`` (of its view transforms;
-    empty for ``Raw``) and ``raw`` (data passed through: no view transform)."""
+    """A view of every display.
+
+    Parameters
+    ----------
+    name : str
+        The OCIO view name.
+    description : str, optional
+        The description of its view transforms; empty (the default) for ``Raw``.
+    raw : bool, optional
+        Whether the view passes data through (no view transform); default ``False``.
+    """
 
     name: str
     description: str = ""
@@ -199,12 +297,29 @@ class View:
 
 @dataclass(frozen=True)
 class ThinFilmSpace:
-    """A thin-film input colour space (pixel value -> CIE-XYZ-D65): ``name``,
-    ``table`` (``"film"`` or ``"morpho"``: :func:`ocio_thinfilm.lut.tables.film_table` /
-    :func:`ocio_thinfilm.lut.tables.morpho_table`), ``args`` for that factory,
-    ``lut_stem`` (its CLF file in the config), ``file_stem`` (the standalone LUT
-    files of its table, ``ocio-thinfilm export``), ``pixel`` (what the pixel value
-    is), ``default_range`` and ``default_size`` (of an exported 1D LUT of it)."""
+    """A thin-film input colour space (pixel value -> CIE-XYZ-D65).
+
+    Parameters
+    ----------
+    name : str
+        The config's colour space name.
+    table : str
+        ``"film"`` or ``"morpho"``: :func:`ocio_thinfilm.lut.tables.film_table` or
+        :func:`ocio_thinfilm.lut.tables.morpho_table`.
+    args : tuple
+        Positional arguments for that factory: ``(kind,)`` for a film, ``()`` for the
+        Morpho table.
+    lut_stem : str
+        Stem of its CLF file in the config.
+    file_stem : str
+        Stem of the standalone LUT files of its table (``ocio-thinfilm export``).
+    pixel : str
+        What the pixel value is.
+    default_range : tuple of float
+        Default input range of an exported 1D LUT of it.
+    default_size : int
+        Default number of entries of an exported 1D LUT of it.
+    """
 
     name: str
     table: str
@@ -357,12 +472,21 @@ THIN_FILM_LIST = (
 
 @dataclass(frozen=True)
 class SceneSpace:
-    """A scene-linear RGB colour space of the config: ``name`` (the config's colour
-    space), ``colorimetry`` (its primaries and white: a key of
-    :data:`RGB_COLORIMETRY`), ``description``, and ``shaper_from_zero``: whether a
-    display LUT's shaper over it starts at 0 (negative values clamped to the gamut's
-    boundary: the ACES working gamut AP1, where a mirrored shaper would spend a fifth
-    of its grid on the few colours outside it)."""
+    """A scene-linear RGB colour space of the config.
+
+    Parameters
+    ----------
+    name : str
+        The config's colour space name.
+    colorimetry : str
+        Its primaries and white: a key of :data:`RGB_COLORIMETRY`.
+    description : str
+        The colour space's description.
+    shaper_from_zero : bool, optional
+        Whether a display LUT's shaper over it starts at 0 (negative values clamped to
+        the gamut's boundary: the ACES working gamut AP1, where a mirrored shaper would
+        spend a fifth of its grid on the few colours outside it); default ``False``.
+    """
 
     name: str
     colorimetry: str
@@ -372,11 +496,22 @@ class SceneSpace:
 
 @dataclass(frozen=True)
 class EncodedSpace:
-    """A colour space of the config that encodes a scene-linear one: ``name``,
-    ``linear`` (the :class:`SceneSpace` it encodes), ``builtin`` (OCIO's built-in
-    transform from it to ACES2065-1), ``description``, and ``plain``: whether its
-    code values in [0, 1] cover every value the views need (then a display LUT from
-    it is a plain 3D LUT over [0, 1])."""
+    """A colour space of the config that encodes a scene-linear one.
+
+    Parameters
+    ----------
+    name : str
+        The config's colour space name.
+    linear : str
+        The name of the :class:`SceneSpace` it encodes.
+    builtin : str
+        OCIO's built-in transform from it to ACES2065-1.
+    description : str
+        The colour space's description.
+    plain : bool, optional
+        Whether its code values in [0, 1] cover every value the views need (then a
+        display LUT from it is a plain 3D LUT over [0, 1]); default ``False``.
+    """
 
     name: str
     linear: str
@@ -460,8 +595,24 @@ _BY_NAME: dict[str, Display | HDRDisplay] = {d.name: d for d in ALL_DISPLAY_LIST
 
 
 def find_display(name: str) -> Display | HDRDisplay | None:
-    """The registry's display called ``name``, ``None`` if it has none (a display of
-    another config, e.g. one merged with ``bake --into``)."""
+    """Return the registry's display called ``name``, if it has one.
+
+    Parameters
+    ----------
+    name : str
+        A display name; anything that is not a string finds nothing.
+
+    Returns
+    -------
+    Display, HDRDisplay or None
+        The display, or ``None`` for a name the registry does not have (a display of
+        another config, e.g. one merged with ``bake --into``).
+
+    Examples
+    --------
+    >>> find_display("Rec.2100-PQ").peak, find_display("ACES 1.0 - SDR Video")
+    (1000.0, None)
+    """
     return _BY_NAME.get(name) if isinstance(name, str) else None
 
 
@@ -476,8 +627,9 @@ def as_display(
 def as_display(
     display: DisplayLike, *, hdr: bool = True, parameter: str = "display"
 ) -> Display | HDRDisplay:
-    """The registry's display for ``display``, a :class:`Display` or :class:`HDRDisplay`
-    of the registry or its name: the one look-up by name, at a public function's door.
+    """Return the registry's display for ``display``, a display object or its name.
+
+    The one look-up by name, at a public function's door.
 
     Parameters
     ----------
@@ -487,7 +639,12 @@ def as_display(
     hdr : bool, optional
         Whether HDR displays are allowed (default ``True``).
     parameter : str, optional
-        The caller's parameter name, for the error messages.
+        The caller's parameter name, for the error messages (default ``"display"``).
+
+    Returns
+    -------
+    Display or HDRDisplay
+        The registry's display (an :class:`HDRDisplay` only with ``hdr=True``).
 
     Raises
     ------
@@ -527,16 +684,64 @@ def as_display(
 
 
 def display_name(display: DisplayLike | None, *, parameter: str = "display") -> str | None:
-    """The name of ``display``: a registry display object gives its name (checked with
-    :func:`as_display`), a name or ``None`` passes unchanged (for functions that check
-    names against a config of their own), anything else is a TypeError."""
+    """Return the name of ``display``.
+
+    A registry display object gives its name (checked with :func:`as_display`); a name
+    or ``None`` passes unchanged, unchecked (for functions that check names against a
+    config of their own).
+
+    Parameters
+    ----------
+    display : str, Display, HDRDisplay or None
+        A display name, one of the registry's display objects, or ``None``.
+    parameter : str, optional
+        The caller's parameter name, for the error messages (default ``"display"``).
+
+    Returns
+    -------
+    str or None
+        The name, or ``None``.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        For a display object that is not the registry's.
+    TypeError
+        For anything else.
+
+    Examples
+    --------
+    >>> display_name(as_display("sRGB")), display_name("any name"), display_name(None)
+    ('sRGB', 'any name', None)
+    """
     if display is None or isinstance(display, str):
         return display
     return as_display(display, parameter=parameter).name
 
 
 def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
-    """The thin-film input space holding the table of ``kind``."""
+    """Return the thin-film input space holding the table of ``kind``.
+
+    Parameters
+    ----------
+    kind : str
+        ``"phase-change"``, ``"no-phase-change"`` or ``"morpho"``.
+
+    Returns
+    -------
+    ThinFilmSpace
+        The space of :data:`THIN_FILM_LIST` whose :attr:`ThinFilmSpace.kind` is ``kind``.
+
+    Raises
+    ------
+    ValueError
+        If no space holds that kind.
+
+    Examples
+    --------
+    >>> thin_film_space_for_kind("morpho").name
+    'Thin Film Morpho Iridescence'
+    """
     for space in THIN_FILM_LIST:
         if space.kind == kind:
             return space
@@ -544,9 +749,24 @@ def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
 
 
 def linear_space_of(name: str) -> SceneSpace | None:
-    """The scene-linear space holding the RGB of the config's colour space ``name``:
-    itself for a :class:`SceneSpace`, the encoded one's for an :class:`EncodedSpace`,
-    ``None`` for any other (the reference XYZ included)."""
+    """Return the scene-linear space holding the RGB of the config's colour space ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A colour space name of the config.
+
+    Returns
+    -------
+    SceneSpace or None
+        The space itself for a :class:`SceneSpace`, the one it encodes for an
+        :class:`EncodedSpace`, ``None`` for any other (the reference XYZ included).
+
+    Examples
+    --------
+    >>> linear_space_of("ACEScct").name, linear_space_of("CIE-XYZ-D65")
+    ('ACEScg', None)
+    """
     by_name = {s.name: s for s in SCENE_LINEAR_LIST}
     if name in by_name:
         return by_name[name]
@@ -563,12 +783,20 @@ COMPRESS_FILE_STEM = "ConstantLightnessCompress"
 
 
 def validate() -> None:
-    """Names unique and non-empty, encodings well formed, LUT stems file-name safe and
-    unique, exactly one raw view, last. Raises ValueError. The clip's math
-    (:mod:`.clip`, :mod:`.tables`) looks matrices up by the display's name, so a
-    display's name must equal its colorimetry space. (That the colorimetry knows those
-    spaces and the film kinds is checked by ``tests/test_registry.py``: the registry
-    imports nothing of the pipeline.)"""
+    """Check the registry's entries against each other (run once, at import).
+
+    Names unique and non-empty, encodings well formed, LUT stems file-name safe and
+    unique, exactly one raw view, last. The clip's math (:mod:`.clip`, :mod:`.tables`)
+    looks matrices up by the display's name, so a display's name must equal its
+    colorimetry space. (That the colorimetry knows those spaces and the film kinds is
+    checked by ``tests/test_registry.py``: the registry imports nothing of the
+    pipeline.)
+
+    Raises
+    ------
+    ValueError
+        Naming the first entry that breaks a rule.
+    """
     import re
 
     for kind, names in (

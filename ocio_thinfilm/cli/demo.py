@@ -15,7 +15,25 @@ SOAP_INDEX = 1.33
 
 
 def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 0.0) -> dict:
-    """Every stage's value for one soap film (phase change, n = 1.33)."""
+    """Return every stage's value for one soap film (phase change, n = 1.33).
+
+    Parameters
+    ----------
+    thickness_nm : float
+        Physical film thickness in nm.
+    display : str, optional
+        The SDR display whose linear RGB and clip are shown (default ``"sRGB"``).
+    theta : float, optional
+        Viewing angle in degrees from the normal (default 0, normal incidence).
+
+    Returns
+    -------
+    dict
+        ``optical_thickness_nm`` (float, t' = n t cos(theta_t)), ``XYZ`` (D65, white
+        Y = 1), ``linear_rgb`` (the display's linear RGB, unclipped), ``clipped_rgb``
+        (after the constant-lightness clip) and ``encoded`` (the clipped RGB, clamped to
+        [0, 1] and encoded with the sRGB curve whatever the display).
+    """
     t_opt = spectra.optical_thickness(thickness_nm, SOAP_INDEX, theta)
     XYZ = colorimetry.film_XYZ(t_opt)
     rgb = colorimetry.XYZ_to_RGB(XYZ, display)
@@ -38,8 +56,25 @@ def _encode(rgb):
 def soap_strip(
     width: int = 1024, height: int = 96, max_thickness_nm: float = 2000.0, display: str = "sRGB"
 ) -> np.ndarray:
-    """Display-encoded strip of soap-film colours, physical thickness 0..max left to
-    right. Top half: constant-lightness clip; bottom half: per-channel clamp."""
+    """Return a display-encoded strip of soap-film colours (n = 1.33, normal incidence).
+
+    Physical thickness 0..max left to right. Top half: constant-lightness clip; bottom
+    half: per-channel clamp; both encoded with the sRGB curve.
+
+    Parameters
+    ----------
+    width, height : int, optional
+        Size in pixels (default 1024 x 96).
+    max_thickness_nm : float, optional
+        Physical thickness at the right edge, in nm (default 2000).
+    display : str, optional
+        The SDR display whose gamut the colours are clipped into (default ``"sRGB"``).
+
+    Returns
+    -------
+    numpy.ndarray
+        float32 (height, width, 3) code values in [0, 1].
+    """
     t = np.linspace(0.0, max_thickness_nm, width)
     rgb = colorimetry.XYZ_to_RGB(
         colorimetry.film_XYZ(spectra.optical_thickness(t, SOAP_INDEX)), display
@@ -51,7 +86,26 @@ def soap_strip(
 
 
 def run(args: argparse.Namespace) -> int:
-    """``ocio-thinfilm demo``: print one film's colour at every stage, write the strip."""
+    """Run ``ocio-thinfilm demo``: print one film's colour at every stage, write the strip.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed options: ``thickness`` (nm) and ``out`` (the PNG). The text goes to
+        stderr when ``out`` is standard output.
+
+    Returns
+    -------
+    int
+        The exit code, 0.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``out``, if it cannot be written.
+    OSError
+        If the PNG cannot be written.
+    """
     out = check_output_file(args.out)
     text = sys.stderr if is_stdout(out) else sys.stdout  # keep a PNG on stdout clean
     result = soap_film_colour(args.thickness)
@@ -78,7 +132,13 @@ def run(args: argparse.Namespace) -> int:
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Add the ``demo`` command to the ``sub`` parsers."""
+    """Add the ``demo`` command to the ``sub`` parsers.
+
+    Parameters
+    ----------
+    sub : argparse._SubParsersAction
+        The sub-parsers of the ``ocio-thinfilm`` parser.
+    """
     p = sub.add_parser(
         "demo", help="print a soap film's colour and write a strip of Newton's colours"
     )

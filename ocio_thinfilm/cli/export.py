@@ -12,9 +12,9 @@ import argparse
 import sys
 
 from ocio_thinfilm import registry
+from ocio_thinfilm.checks import UsageError
 from ocio_thinfilm.export import bake as bake_module
 from ocio_thinfilm.export.files import FORMATS, export_lut
-from ocio_thinfilm.checks import UsageError
 from ocio_thinfilm.io import is_stdout
 from ocio_thinfilm.lut import clip_lut
 
@@ -85,7 +85,13 @@ def _run_export(args) -> int:
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Add the ``bake`` and ``export`` commands to the ``sub`` parsers."""
+    """Add the ``bake`` and ``export`` commands to the ``sub`` parsers.
+
+    Parameters
+    ----------
+    sub : argparse._SubParsersAction
+        The sub-parsers of the ``ocio-thinfilm`` parser.
+    """
     p = sub.add_parser(
         "bake",
         help="write the OpenColorIO config folder (config.ocio + luts/*.clf)",

@@ -43,7 +43,18 @@ _HANDLED = ("SIGINT", "SIGTERM", "SIGHUP")
 
 
 class Interrupted(KeyboardInterrupt):
-    """Raised by the signal handler: a KeyboardInterrupt that knows its signal."""
+    """Raised by the signal handler: a KeyboardInterrupt that knows its signal.
+
+    Parameters
+    ----------
+    signum : int, optional
+        The signal's number (default SIGINT).
+
+    Attributes
+    ----------
+    signum : int
+        The signal's number.
+    """
 
     def __init__(self, signum=signal.SIGINT):
         super().__init__(signum)
@@ -104,7 +115,7 @@ def _parser_class():
 
 
 def _explain(parser, message: str) -> str:
-    """argparse's message, made to say what is allowed and where the help is."""
+    """Return argparse's message, made to say what is allowed and where the help is."""
     import re
 
     m = re.match(r"argument (\S+?)(?:/\S+)?: invalid (float|int) value: (.*)", message)
@@ -128,7 +139,16 @@ def _explain(parser, message: str) -> str:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The ``ocio-thinfilm`` parser with every command module's sub-command."""
+    """Build the ``ocio-thinfilm`` parser with every command module's sub-command.
+
+    A command module that is not installed (:data:`COMMAND_MODULES`) is left out.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The parser; its errors raise instead of exiting (:func:`main` prints them on
+        one line).
+    """
     import argparse
     import importlib
 
@@ -161,9 +181,11 @@ PARAMETER_DEST = {
 
 
 def _option_message(parser, command, error) -> str:
-    """A :class:`~ocio_thinfilm.checks.ParameterError`'s message naming ``command``'s option
-    for the parameter (``value_range`` -> ``--range``); the parameter's own name when the
-    command has no such option."""
+    """Return a :class:`~ocio_thinfilm.checks.ParameterError`'s message naming an option.
+
+    The option of ``command`` for the parameter (``value_range`` -> ``--range``); the
+    parameter's own name when the command has no such option.
+    """
     sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
     dest = PARAMETER_DEST.get(command, {}).get(error.parameter) or PARAMETER_DEST[None].get(
         error.parameter, error.parameter
@@ -182,8 +204,30 @@ def _error(command, message) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run ``ocio-thinfilm`` with ``argv`` (default: the process's arguments); returns
-    the exit code: 0, 1 for an unexpected failure, 2 for bad input, 128 + n for signal n."""
+    """Run ``ocio-thinfilm`` with ``argv``.
+
+    Errors are one line on stderr; SIGINT, SIGTERM and SIGHUP print ``interrupted``
+    (see the module docstring).
+
+    Parameters
+    ----------
+    argv : sequence of str, optional
+        The arguments after the program name. ``None`` (default): the process's own,
+        run as the program -- the process then ends with ``os._exit`` at exit, right
+        after flushing its output (a signal arriving meanwhile still sets the exit
+        code).
+
+    Returns
+    -------
+    int
+        The exit code: 0, 1 for an unexpected failure, 2 for bad input, 128 + n for
+        signal n.
+
+    Raises
+    ------
+    SystemExit
+        For ``--help`` and ``--version`` when ``argv`` is given.
+    """
     as_program = argv is None
     if as_program:
         # colour-science warns on import that SciPy is absent; nothing the command calls
@@ -214,8 +258,10 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
-    """The KeyboardInterrupt (our signal handlers raise one) that ``error`` was raised
-    from or while handling, if any."""
+    """Return the KeyboardInterrupt that ``error`` was raised from or while handling.
+
+    Our signal handlers raise one; ``None`` if there is none in the chain.
+    """
     seen = set()
     current: BaseException | None = error
     while current is not None and id(current) not in seen:
@@ -295,8 +341,10 @@ def _main(argv, set_command) -> int:
 
 
 def _exit_soon(code: int) -> None:
-    """End the program now: flush, then ``os._exit`` at the first atexit call (no
-    interpreter shutdown, during which a signal would kill the process silently)."""
+    """End the program soon: flush, then ``os._exit`` at the first atexit call.
+
+    No interpreter shutdown, during which a signal would kill the process silently.
+    """
     import atexit
 
     def record(signum, frame):

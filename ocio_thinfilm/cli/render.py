@@ -33,7 +33,29 @@ SCENE_CHOICES = tuple(scene_module.SCENES) + ("all",)
 
 
 def size_argument(text: str) -> tuple[int, int]:
-    """``W`` or ``WxH`` -> (W, H), each side in [16, 8192], W*H <= 4096^2."""
+    """Parse ``--size``: ``W`` or ``WxH`` -> (W, H).
+
+    Parameters
+    ----------
+    text : str
+        ``W`` or ``WxH`` in pixels (spaces allowed), each side in [16, 8192] and
+        W * H <= 4096^2.
+
+    Returns
+    -------
+    tuple of int
+        (W, H); ``W`` alone is a square.
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        For anything else.
+
+    Examples
+    --------
+    >>> size_argument("640x480"), size_argument("512")
+    ((640, 480), (512, 512))
+    """
     m = re.fullmatch(r"\s*([+-]?\d+)\s*(?:[xX]\s*([+-]?\d+)\s*)?", str(text))
     if not m:
         raise argparse.ArgumentTypeError(
@@ -54,7 +76,28 @@ def size_argument(text: str) -> tuple[int, int]:
 
 
 def frames_argument(text: str) -> list[int]:
-    """``A-B`` (or ``N``) -> [A, ..., B] with 1 <= A <= B <= 9999."""
+    """Parse ``--frames``: ``A-B`` (or ``N``) -> [A, ..., B].
+
+    Parameters
+    ----------
+    text : str
+        ``A-B`` or ``N``, with 1 <= A <= B <= 9999.
+
+    Returns
+    -------
+    list of int
+        The frames, in order.
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        For anything else.
+
+    Examples
+    --------
+    >>> frames_argument("3-5"), frames_argument("12")
+    ([3, 4, 5], [12])
+    """
     m = re.fullmatch(r"\s*(\d+)\s*(?:-\s*(\d+)\s*)?", str(text))
     if not m:
         raise argparse.ArgumentTypeError(f"{text!r}: expected A-B (e.g. 1-24) or a single frame N")
@@ -66,7 +109,24 @@ def frames_argument(text: str) -> list[int]:
 
 
 def integer_argument(lo: int, hi: int) -> Callable[[str], int]:
-    """argparse type: an integer in [lo, hi]."""
+    """Return an argparse type that parses an integer in [lo, hi].
+
+    Parameters
+    ----------
+    lo, hi : int
+        The bounds, inclusive.
+
+    Returns
+    -------
+    callable
+        ``parse(text) -> int``; it raises :class:`argparse.ArgumentTypeError` for
+        anything but digits (spaces around them allowed) of a value in [lo, hi].
+
+    Examples
+    --------
+    >>> integer_argument(1, 64)(" 8 ")
+    8
+    """
 
     def parse(text: str) -> int:
         if not re.fullmatch(r"\s*\d+\s*", str(text)) or not lo <= int(text) <= hi:
@@ -77,8 +137,34 @@ def integer_argument(lo: int, hi: int) -> Callable[[str], int]:
 
 
 def run(args: argparse.Namespace) -> int:
-    """``ocio-thinfilm render``: every frame of the chosen scenes through the config, the
-    outputs checked first and committed together (or one child process per frame)."""
+    """Run ``ocio-thinfilm render``: every frame of the chosen scenes through the config.
+
+    The outputs are checked first and committed together; a range of more than one
+    frame runs one child process per frame, ``--jobs`` at a time.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed options: ``scene`` (or ``"all"``), ``size``, ``frames``, ``out``,
+        ``seed``, ``display``, ``view``, ``config``, ``jobs`` and ``quiet``.
+
+    Returns
+    -------
+    int
+        The exit code, 0.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``config``, ``display``, ``view`` or ``out``, for a config, display,
+        view or output that cannot be used.
+    UsageError
+        If a frame's child process failed (its last error line).
+    ValueError
+        If the output directory cannot be created or written.
+    OSError
+        If a file cannot be written.
+    """
     names = list(scene_module.SCENES) if args.scene == "all" else [args.scene]
     size, frames = args.size, args.frames
     out_dir = check_writable(args.out)
@@ -148,7 +234,7 @@ def _child_command(args, frame: int) -> list[str]:
 
 
 def _render_frames_in_children(args, frames) -> int:
-    """One process per frame, ``--jobs`` at a time (what a render farm does)."""
+    """Render one process per frame, ``--jobs`` at a time (what a render farm does)."""
     pending = list(frames)
     running: list[tuple[int, subprocess.Popen]] = []
     failed = None
@@ -190,7 +276,13 @@ def _render_frames_in_children(args, frames) -> int:
 
 
 def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Add the ``render`` command to the ``sub`` parsers."""
+    """Add the ``render`` command to the ``sub`` parsers.
+
+    Parameters
+    ----------
+    sub : argparse._SubParsersAction
+        The sub-parsers of the ``ocio-thinfilm`` parser.
+    """
     p = sub.add_parser(
         "render",
         help="render the paper's example scenes (Figures 4-7) through the LUTs",

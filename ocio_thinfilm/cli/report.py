@@ -48,7 +48,13 @@ def _run(args) -> int:
 
 
 def register(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Add the ``report`` command to the parsers."""
+    """Add the ``report`` command to the parsers.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        The sub-parsers of the ``ocio-thinfilm`` parser.
+    """
     p = subparsers.add_parser(
         "report",
         help="measure error against run time, peers, stability and throughput (from a checkout)",

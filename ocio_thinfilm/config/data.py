@@ -83,7 +83,36 @@ ROLES = {
 # --------------------------------------------------------------------------- #
 @dataclass
 class ConfigData:
-    """The config as data (cf. OpenColorIO-Config-ACES ``ConfigData``)."""
+    """The config as data (cf. OpenColorIO-Config-ACES ``ConfigData``).
+
+    Parameters
+    ----------
+    name : str
+        The config's name.
+    description : str
+        The config's description.
+    roles : dict
+        Role -> colour space name.
+    colorspaces : list of dict
+        Keyword arguments of :func:`~ocio_thinfilm.config.factories.colorspace_factory`.
+    view_transforms : list of dict
+        Keyword arguments of
+        :func:`~ocio_thinfilm.config.factories.view_transform_factory`; the first is the
+        default view transform.
+    displays : dict
+        Display -> list of view dicts: ``name`` with ``view_transform`` and
+        ``display_colorspace``, or ``name`` with ``colorspace`` (a Raw view).
+    file_rules : list of dict
+        ``name``, ``colorspace``, ``pattern``, ``extension``; the rule named
+        ``Default`` gives only its colour space.
+    luts : dict, optional
+        LUT file name -> GroupTransform (CLF-writable).
+    named_transforms : list of dict, optional
+        Keyword arguments of
+        :func:`~ocio_thinfilm.config.factories.named_transform_factory`.
+    profile_version : tuple of int, optional
+        The config's (major, minor) profile version (default :data:`PROFILE_VERSION`).
+    """
 
     name: str
     description: str
@@ -98,19 +127,70 @@ class ConfigData:
 
 
 def named_lut(stem: str) -> str:
-    """The config's file name of the LUT ``stem`` (CLF, in :data:`LUT_DIRECTORY`)."""
+    """Return the config's file name of the LUT ``stem`` (CLF, in :data:`LUT_DIRECTORY`).
+
+    Parameters
+    ----------
+    stem : str
+        The LUT's file stem (e.g. a :class:`~ocio_thinfilm.registry.ThinFilmSpace`'s
+        ``lut_stem``).
+
+    Returns
+    -------
+    str
+        ``stem + ".clf"``.
+
+    Examples
+    --------
+    >>> named_lut("ThinFilm_Morpho_Iridescence")
+    'ThinFilm_Morpho_Iridescence.clf'
+    """
     return f"{stem}.clf"
 
 
 def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
-    """Display -> its :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` of edge ``clip_size``,
-    for every display of the registry (each computed once, then cached)."""
+    """Return the clip LUTs of every SDR display of the registry.
+
+    Parameters
+    ----------
+    clip_size : int, optional
+        Edge length of the clip's black pass, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+
+    Returns
+    -------
+    dict
+        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
+        :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` (each computed once, then cached).
+
+    Raises
+    ------
+    ValueError
+        For a ``clip_size`` outside [9, 129].
+    """
     return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
 
 
 def compress_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
-    """Display -> its :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT` (running with
-    the clip LUTs of edge ``clip_size``), for every display of the registry."""
+    """Return the compression LUTs of every SDR display of the registry.
+
+    Parameters
+    ----------
+    clip_size : int, optional
+        Edge length of the clip LUTs they run with, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+
+    Returns
+    -------
+    dict
+        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
+        :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT`.
+
+    Raises
+    ------
+    ValueError
+        For a ``clip_size`` outside [9, 129].
+    """
     return {
         display: compress_lut.compress_lut(display, clip_size=clip_size)
         for display in registry.DISPLAYS
@@ -123,10 +203,36 @@ def lut_files(
     morpho_size: int = tables.MORPHO_SIZE,
     compress_by_display: dict | None = None,
 ) -> dict:
-    """LUT file name -> GroupTransform (CLF-writable) for every LUT the config uses:
-    the thin-film tables and, per display, the two passes of its clip LUT
-    (``luts_by_display``: :func:`clip_luts`) and the two squeezes of its compression
-    (``compress_by_display``: :func:`compress_luts`)."""
+    """Return every LUT file the config uses.
+
+    The thin-film tables and, per display, the two passes of its clip LUT and the two
+    squeezes of its compression.
+
+    Parameters
+    ----------
+    luts_by_display : dict
+        SDR display (name or registry display) -> its ClipLUT (:func:`clip_luts`).
+    film_size : int, optional
+        Entries of the thickness tables (default
+        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
+    morpho_size : int, optional
+        Entries of the Morpho angle table (default
+        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
+    compress_by_display : dict, optional
+        SDR display -> its CompressLUT (:func:`compress_luts`); ``None`` (default) for
+        no compression files.
+
+    Returns
+    -------
+    dict
+        LUT file name (:func:`named_lut`) -> GroupTransform (CLF-writable).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``luts_by_display`` or ``compress_by_display``, for a key that is not an
+        SDR display of the registry.
+    """
     files = {}
     for space in registry.THIN_FILM_LIST:
         table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
@@ -143,13 +249,15 @@ def lut_files(
 
 
 def _lut_reference(name, luts, inline):
-    """The LUT file ``name``: its transform (``inline``) or a FileTransform to it."""
+    """Return the LUT file ``name``: its transform (``inline``) or a FileTransform to it."""
     return luts[name] if inline else file_transform(name)
 
 
 def _clip_passes(lut, luts, inline):
-    """The clip chain of ``lut`` with its two passes as in the config: CIE-XYZ-D65 ->
-    sRGB code values of the clipped display RGB."""
+    """Return the clip chain of ``lut`` with its two passes as in the config.
+
+    CIE-XYZ-D65 -> sRGB code values of the clipped display RGB.
+    """
     entry = registry.as_display(lut.display)
     cores = [
         _lut_reference(named_lut(entry.clip_lut_stem(white)), luts, inline)
@@ -159,8 +267,10 @@ def _clip_passes(lut, luts, inline):
 
 
 def _compress_passes(soft, luts, inline):
-    """The compression chain of ``soft`` (a CompressLUT) with its two squeezes and the
-    clip's two passes as in the config: CIE-XYZ-D65 -> sRGB code values."""
+    """Return the compression chain of ``soft`` (a CompressLUT) as in the config.
+
+    Its two squeezes and the clip's two passes: CIE-XYZ-D65 -> sRGB code values.
+    """
     entry = registry.as_display(soft.display)
     cores = [
         _lut_reference(named_lut(stem(white)), luts, inline)
@@ -171,18 +281,22 @@ def _compress_passes(soft, luts, inline):
 
 
 def _matrix_to_reference(space):
-    """Linear RGB of ``space`` -> CIE-XYZ-D65, after limiting the components to
-    +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes above ~7.9)
-    would overflow the matrix to Inf - Inf = NaN, which no later op can repair at
-    OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6."""
+    """Return linear RGB of ``space`` -> CIE-XYZ-D65, the components limited first.
+
+    The limit is +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes
+    above ~7.9) would overflow the matrix to Inf - Inf = NaN, which no later op can
+    repair at OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6.
+    """
     M = colorimetry.matrix_XYZ_to_RGB(space)
     return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
 
 
 def _linear_parts(gamut, view, lut, luts, inline, compress=None):
-    """CIE-XYZ-D65 -> display-linear RGB in [0, 1] of the SDR display ``gamut`` for one
-    view, as a list of transforms (the config's LUT files for the clip and the
-    compression)."""
+    """Return CIE-XYZ-D65 -> display-linear RGB in [0, 1] of one view of an SDR display.
+
+    A list of transforms, for the SDR display ``gamut`` (the config's LUT files for
+    the clip and the compression).
+    """
     if view == "Constant-Lightness Compress":
         return _compress_passes(compress, luts, inline) + [clip_lut.working_decoding_transform()]
     if view == "Constant-Lightness Clip":
@@ -202,13 +316,45 @@ def view_parts(
     inline: bool = False,
     compress: compress_lut.CompressLUT | None = None,
 ) -> ocio_ops.Transform:
-    """CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view; ``lut``:
-    the ClipLUT of the display's gamut (for the Constant-Lightness Clip),
-    ``compress``: its CompressLUT (for the Constant-Lightness Compress), ``luts``: the
-    LUT files. An HDR display's view is its gamut's chain (the same LUT files) between
-    the exact scales of :func:`ocio_thinfilm.lut.view_transforms.hdr_scaled`, whatever
-    the chain: the display reference then has Y = 1 at 203 cd/m2 and the volume up to
-    peak / 203."""
+    """Return CIE-XYZ-D65 (scene) -> CIE-XYZ-D65 (display reference) for one view.
+
+    An HDR display's view is its gamut's chain (the same LUT files) between the exact
+    scales of :func:`ocio_thinfilm.lut.view_transforms.hdr_scaled`, whatever the chain:
+    the display reference then has Y = 1 at 203 cd/m2 and the volume up to
+    peak / 203.
+
+    Parameters
+    ----------
+    display : str, Display or HDRDisplay
+        A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS` or its name.
+    view : str
+        A view of :data:`ocio_thinfilm.registry.VIEWS` other than ``Raw``.
+    lut : ClipLUT, optional
+        The ClipLUT of the display's gamut; required for the Constant-Lightness Clip
+        and the Constant-Lightness Compress.
+    luts : dict, optional
+        The LUT files (:func:`lut_files`); required with ``inline=True``.
+    inline : bool, optional
+        Put the LUTs into the transform (``True``) or refer to the config's LUT files
+        by FileTransform (``False``, the default).
+    compress : CompressLUT, optional
+        The CompressLUT of the display's gamut; required for the Constant-Lightness
+        Compress.
+
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
+        The view transform's ``from_reference`` transform.
+
+    Raises
+    ------
+    ParameterError
+        For a display that is not the registry's.
+    TypeError
+        For a ``display`` that is neither a name nor a registry display.
+    ValueError
+        For an unknown view (``Raw`` included).
+    """
     entry = registry.as_display(display)
     linear = _linear_parts(entry.gamut, view, lut, luts, inline, compress)
     if entry.hdr:
@@ -225,9 +371,35 @@ def config_data(
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
 ) -> ConfigData:
-    """The config as data. ``inline=True`` puts the LUTs into the transforms
-    (an in-memory config needing no files, for baking and tests); otherwise colour
-    spaces refer to ``luts/*.clf`` by FileTransform."""
+    """Return the config as data.
+
+    Parameters
+    ----------
+    inline : bool, optional
+        Put the LUTs into the transforms (an in-memory config needing no files, for
+        baking and tests) if ``True``; otherwise (the default) colour spaces refer to
+        ``luts/*.clf`` by FileTransform.
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    film_size : int, optional
+        Entries of the thickness tables (default
+        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
+    morpho_size : int, optional
+        Entries of the Morpho angle table (default
+        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
+
+    Returns
+    -------
+    ConfigData
+        Every colour space, view transform, display, role, file rule and named
+        transform, and the LUT files (``luts``).
+
+    Raises
+    ------
+    ValueError
+        For a size out of range.
+    """
     by_display = clip_luts(clip_size)
     soft_by_display = compress_luts(clip_size)
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
@@ -414,9 +586,27 @@ def clip_named_transform(
     inline: bool = False,
     luts: dict[str, ocio_ops.Transform] | None = None,
 ) -> ocio_ops.Transform:
-    """The constant-lightness clip of ``display`` on its own: display-linear RGB in,
-    display-linear RGB in [0, 1] out (XYZ -> the two LUT passes -> decoded), for
-    hosts that apply a named transform as a node (Nuke OCIONamedTransform, Houdini)."""
+    """Return the constant-lightness clip of ``lut``'s display on its own.
+
+    Display-linear RGB in, display-linear RGB in [0, 1] out (XYZ -> the two LUT passes
+    -> decoded), for hosts that apply a named transform as a node (Nuke
+    OCIONamedTransform, Houdini).
+
+    Parameters
+    ----------
+    lut : ClipLUT
+        The display's clip LUT.
+    inline : bool, optional
+        Put the LUTs into the transform (``True``) or refer to the LUT files by
+        FileTransform (``False``, the default).
+    luts : dict, optional
+        The LUT files (:func:`lut_files`); required with ``inline=True``.
+
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
+        The named transform's transform.
+    """
     return ocio_ops.group(
         [display_transforms.display_matrix_transform(lut.display, inverse=True)]
         + _clip_passes(lut, luts, inline)
@@ -430,8 +620,25 @@ def compress_named_transform(
     inline: bool = False,
     luts: dict[str, ocio_ops.Transform] | None = None,
 ) -> ocio_ops.Transform:
-    """The soft constant-lightness compression of a CompressLUT's display on its own:
-    display-linear RGB in and out (as :func:`clip_named_transform`)."""
+    """Return the soft constant-lightness compression of ``soft``'s display on its own.
+
+    Display-linear RGB in and out (as :func:`clip_named_transform`).
+
+    Parameters
+    ----------
+    soft : CompressLUT
+        The display's compression LUT.
+    inline : bool, optional
+        Put the LUTs into the transform (``True``) or refer to the LUT files by
+        FileTransform (``False``, the default).
+    luts : dict, optional
+        The LUT files (:func:`lut_files`); required with ``inline=True``.
+
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
+        The named transform's transform.
+    """
     return ocio_ops.group(
         [display_transforms.display_matrix_transform(soft.display, inverse=True)]
         + _compress_passes(soft, luts, inline)
@@ -446,10 +653,32 @@ def named_transforms(
     luts: dict[str, ocio_ops.Transform] | None = None,
     compress_by_display: dict | None = None,
 ) -> list:
-    """Named transforms (OCIO >= 2.0) as data: the clip per display of ``luts_by_display``
-    (display -> ClipLUT), the compression per display of ``compress_by_display`` (display
-    -> CompressLUT) and the three thin-film tables (pixel value in, CIE-XYZ-D65 out, whatever the
-    config's reference space: merged configs add the same ones)."""
+    """Return the named transforms (OCIO >= 2.0) as data.
+
+    The clip and the compression per display, and the three thin-film tables (pixel
+    value in, CIE-XYZ-D65 out, whatever the config's reference space: merged configs
+    add the same ones).
+
+    Parameters
+    ----------
+    luts_by_display : dict
+        Display name -> ClipLUT: one clip named transform each
+        (:data:`CLIP_NAMED_TRANSFORM`).
+    inline : bool, optional
+        Put the LUTs into the transforms (``True``) or refer to the LUT files by
+        FileTransform (``False``, the default).
+    luts : dict, optional
+        The LUT files (:func:`lut_files`); required with ``inline=True``.
+    compress_by_display : dict, optional
+        Display name -> CompressLUT: one compression named transform each
+        (:data:`COMPRESS_NAMED_TRANSFORM`); ``None`` (default) for none.
+
+    Returns
+    -------
+    list of dict
+        Keyword arguments of
+        :func:`~ocio_thinfilm.config.factories.named_transform_factory`.
+    """
 
     def gamut_map(name, display, what, transform):
         return dict(
@@ -505,9 +734,11 @@ def named_transforms(
 
 
 def _builtin_to_reference(builtin: str) -> ocio_ops.Transform:
-    """An encoded ACES space -> CIE-XYZ-D65: OCIO's built-in transform to ACES2065-1
-    (``ACEScct_to_ACES2065-1``: the ACEScct curve of Academy S-2016-001 and AP1 -> AP0),
-    then AP0 -> XYZ."""
+    """Return an encoded ACES space -> CIE-XYZ-D65.
+
+    OCIO's built-in transform to ACES2065-1 (``ACEScct_to_ACES2065-1``: the ACEScct
+    curve of Academy S-2016-001 and AP1 -> AP0), then AP0 -> XYZ.
+    """
     import PyOpenColorIO as ocio
 
     return ocio_ops.group([ocio.BuiltinTransform(builtin), _matrix_to_reference("ACES2065-1")])

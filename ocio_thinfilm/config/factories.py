@@ -1,5 +1,8 @@
-"""Small factories: one OCIO object from one dict of :func:`ocio_thinfilm.config.data.config_data`
-(as OpenColorIO-Config-ACES builds its configs)."""
+"""Small factories: one OCIO object from one dict of the config's data.
+
+The dicts are those of :func:`ocio_thinfilm.config.data.config_data` (as
+OpenColorIO-Config-ACES builds its configs).
+"""
 
 from __future__ import annotations
 
@@ -18,7 +21,23 @@ __all__ = [
 
 
 def file_transform(filename: str) -> Transform:
-    """A ``FileTransform`` to ``filename`` (found on the config's search path)."""
+    """Return a ``FileTransform`` to ``filename`` (found on the config's search path).
+
+    Parameters
+    ----------
+    filename : str
+        The LUT file's name, relative to the config's search path.
+
+    Returns
+    -------
+    PyOpenColorIO.FileTransform
+        With OCIO's default interpolation.
+
+    Examples
+    --------
+    >>> file_transform("ThinFilm_Morpho_Iridescence.clf").getSrc()
+    'ThinFilm_Morpho_Iridescence.clf'
+    """
     import PyOpenColorIO as ocio
 
     t = ocio.FileTransform(filename)
@@ -27,7 +46,7 @@ def file_transform(filename: str) -> Transform:
 
 
 def _reference_space(name):
-    """``"scene"`` or ``"display"`` -> OCIO's ReferenceSpaceType."""
+    """Return OCIO's ReferenceSpaceType for ``"scene"`` or ``"display"``."""
     import PyOpenColorIO as ocio
 
     if name not in ("scene", "display"):
@@ -47,7 +66,47 @@ def colorspace_factory(
     aliases: Iterable[str] = (),
     reference_space: str = "scene",
 ) -> Any:
-    """One ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES)."""
+    """Return one ``PyOpenColorIO.ColorSpace`` from data (cf. OpenColorIO-Config-ACES).
+
+    Parameters
+    ----------
+    name : str
+        The colour space's name.
+    family : str, optional
+        Its family (``/``-separated levels).
+    encoding : str, optional
+        Its encoding (``scene-linear``, ``sdr-video``, ``log``, ``data`` ...).
+    categories : iterable of str, optional
+        Its categories.
+    description : str, optional
+        Its description.
+    to_reference : PyOpenColorIO.Transform, optional
+        Its transform to the reference space.
+    from_reference : PyOpenColorIO.Transform, optional
+        Its transform from the reference space.
+    is_data : bool, optional
+        Whether it holds non-colour data (default ``False``).
+    aliases : iterable of str, optional
+        Other names of it.
+    reference_space : str, optional
+        ``"scene"`` (default) or ``"display"``: the reference it is defined against.
+
+    Returns
+    -------
+    PyOpenColorIO.ColorSpace
+        With 32-bit float bit depth.
+
+    Raises
+    ------
+    ValueError
+        For a ``reference_space`` other than ``"scene"`` or ``"display"``.
+
+    Examples
+    --------
+    >>> raw = colorspace_factory("Raw", encoding="data", is_data=True, aliases=["Utility - Raw"])
+    >>> raw.getName(), raw.isData(), list(raw.getAliases())
+    ('Raw', True, ['Utility - Raw'])
+    """
     import PyOpenColorIO as ocio
 
     cs = ocio.ColorSpace(_reference_space(reference_space))
@@ -75,7 +134,30 @@ def view_transform_factory(
     from_reference: Transform | None = None,
     reference_space: str = "scene",
 ) -> Any:
-    """One ``PyOpenColorIO.ViewTransform`` from data."""
+    """Return one ``PyOpenColorIO.ViewTransform`` from data.
+
+    Parameters
+    ----------
+    name : str
+        The view transform's name.
+    family : str, optional
+        Its family.
+    description : str, optional
+        Its description.
+    from_reference : PyOpenColorIO.Transform, optional
+        Its transform from the scene (or display) reference to the display reference.
+    reference_space : str, optional
+        ``"scene"`` (default) or ``"display"``: the reference it starts from.
+
+    Returns
+    -------
+    PyOpenColorIO.ViewTransform
+
+    Raises
+    ------
+    ValueError
+        For a ``reference_space`` other than ``"scene"`` or ``"display"``.
+    """
     import PyOpenColorIO as ocio
 
     vt = ocio.ViewTransform(_reference_space(reference_space))
@@ -95,7 +177,27 @@ def named_transform_factory(
     categories: Iterable[str] = (),
     encoding: str = "",
 ) -> Any:
-    """One ``PyOpenColorIO.NamedTransform`` (forward direction) from data."""
+    """Return one ``PyOpenColorIO.NamedTransform`` (forward direction) from data.
+
+    Parameters
+    ----------
+    name : str
+        The named transform's name.
+    transform : PyOpenColorIO.Transform
+        Its forward transform.
+    family : str, optional
+        Its family.
+    description : str, optional
+        Its description.
+    categories : iterable of str, optional
+        Its categories.
+    encoding : str, optional
+        Its encoding.
+
+    Returns
+    -------
+    PyOpenColorIO.NamedTransform
+    """
     import PyOpenColorIO as ocio
 
     nt = ocio.NamedTransform()

@@ -7,7 +7,6 @@ stage writes no file: :func:`ocio_thinfilm.export.bake.write_config` writes the 
 
 from __future__ import annotations
 
-
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.data import LUT_DIRECTORY, ConfigData, config_data
 from ocio_thinfilm.config.factories import (
@@ -28,7 +27,31 @@ def generate_config(
     search_path: str = LUT_DIRECTORY,
     working_dir: StrPath | None = None,
 ) -> ocio_ops.Config:
-    """Build (and by default validate) the OCIO config from ``data``."""
+    """Build (and by default validate) the OCIO config from ``data``.
+
+    Parameters
+    ----------
+    data : ConfigData, optional
+        The config as data; default :func:`~ocio_thinfilm.config.data.config_data`
+        (LUTs referred to by FileTransform).
+    validate : bool, optional
+        Whether to validate the config (default ``True``).
+    search_path : str, optional
+        The config's search path (default :data:`LUT_DIRECTORY`, ``"luts"``).
+    working_dir : str or os.PathLike, optional
+        The config's working directory, against which the search path is resolved
+        (default: none set).
+
+    Returns
+    -------
+    PyOpenColorIO.Config
+        The config; its active views are :data:`ocio_thinfilm.registry.VIEWS`.
+
+    Raises
+    ------
+    PyOpenColorIO.Exception
+        If the validation fails.
+    """
     import PyOpenColorIO as ocio
 
     data = data or config_data()

@@ -1,5 +1,6 @@
-"""Add the thin-film spaces and the constant-lightness clip to an existing OCIO config
-(``ocio-thinfilm bake --into CONFIG``), as a new ``Config`` (written by
+"""Add the thin-film spaces and the constant-lightness clip to an existing OCIO config.
+
+The result of ``ocio-thinfilm bake --into CONFIG`` is a new ``Config`` (written by
 :mod:`ocio_thinfilm.export.merged`, also as an OCIO archive, ``.ocioz``).
 
 Studios run the ACES studio/CG configs (OCIO ships them built in, ``ocio://...``) and
@@ -50,8 +51,8 @@ from typing import Any
 import numpy as np
 
 from ocio_thinfilm import config, registry
-from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import StrPath
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
@@ -78,9 +79,23 @@ HOST_OCIO = (
 
 
 def profile_readers(cfg: ocio_ops.Config) -> str:
-    """One line on who reads the config ``cfg``: its profile, the oldest OCIO that reads
-    it (the profile's own version) and the hosts of :data:`HOST_OCIO` that refuse it.
+    """Return one line on who reads the config ``cfg``.
 
+    Its profile, the oldest OCIO that reads it (the profile's own version) and the hosts
+    of :data:`HOST_OCIO` that refuse it.
+
+    Parameters
+    ----------
+    cfg : PyOpenColorIO.Config
+        The config.
+
+    Returns
+    -------
+    str
+        The line.
+
+    Examples
+    --------
     >>> import PyOpenColorIO as ocio
     >>> cfg = ocio.Config.CreateRaw(); cfg.setMajorVersion(2); cfg.setMinorVersion(1)
     >>> profile_readers(cfg)
@@ -110,7 +125,24 @@ MATCH_TOLERANCE = 2e-4
 
 
 def load_base(source: StrPath) -> ocio_ops.Config:
-    """The base config from a file or an ``ocio://`` URI (one-line errors)."""
+    """Load the base config from a file or an ``ocio://`` URI, with one-line errors.
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        A config file, or a built-in config's URI (e.g.
+        ``ocio://studio-config-latest``).
+
+    Returns
+    -------
+    PyOpenColorIO.Config
+
+    Raises
+    ------
+    ParameterError
+        Naming ``source``: no such file, or OCIO cannot load it (the first line of
+        OCIO's message).
+    """
     ocio = ocio_ops.module()
     text = str(source)
     if not text.startswith("ocio://") and not Path(text).is_file():
@@ -122,8 +154,23 @@ def load_base(source: StrPath) -> ocio_ops.Config:
 
 
 def colorspace_transform(cs: Any, to_reference: bool) -> ocio_ops.Transform | None:
-    """A colour space's transform to (or from) its reference, None for an identity
-    (``cs``: a ``PyOpenColorIO.ColorSpace``)."""
+    """Return a colour space's transform to (or from) its reference.
+
+    The transform of the other direction is inverted when the colour space has only
+    that one.
+
+    Parameters
+    ----------
+    cs : PyOpenColorIO.ColorSpace
+        The colour space.
+    to_reference : bool
+        ``True`` for the transform to the reference, ``False`` for the one from it.
+
+    Returns
+    -------
+    PyOpenColorIO.Transform or None
+        The transform, ``None`` for an identity (no transform either way).
+    """
     ocio = ocio_ops.module()
     want, other = (
         (ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)
@@ -153,8 +200,27 @@ def _apply(cfg, transform, values):
 
 
 def interchange(cfg: ocio_ops.Config) -> tuple[ocio_ops.Transform, ocio_ops.Transform]:
-    """(scene reference -> CIE-XYZ-D65, CIE-XYZ-D65 -> display reference) of ``cfg``,
-    from its ``cie_xyz_d65_interchange`` role (see the module docstring)."""
+    """Return ``cfg``'s conversions between its references and CIE-XYZ-D65.
+
+    From its ``cie_xyz_d65_interchange`` role (see the module docstring).
+
+    Parameters
+    ----------
+    cfg : PyOpenColorIO.Config
+        The config.
+
+    Returns
+    -------
+    tuple of PyOpenColorIO.GroupTransform
+        (scene reference -> CIE-XYZ-D65, CIE-XYZ-D65 -> display reference).
+
+    Raises
+    ------
+    ValueError
+        If the config has no ``cie_xyz_d65_interchange`` role, no view transform that
+        reaches it (or no view transform at all), or a conversion that is not linear
+        (checked numerically).
+    """
     ocio = ocio_ops.module()
     roles = dict(cfg.getRoles())
     name = roles.get("cie_xyz_d65_interchange")
@@ -205,8 +271,11 @@ def interchange(cfg: ocio_ops.Config) -> tuple[ocio_ops.Transform, ocio_ops.Tran
 
 
 def _display_colorspace(cfg, display):
-    """The display colour space of ``display``: the one its views use (the colour space
-    named like the display for ``<USE_DISPLAY_NAME>``)."""
+    """Return the display colour space of ``display``: the one its views use.
+
+    The colour space named like the display for ``<USE_DISPLAY_NAME>``; ``None`` if no
+    view uses a display-referred colour space that is not data.
+    """
     ocio = ocio_ops.module()
     for view in cfg.getViews(display):
         name = cfg.getDisplayViewColorSpaceName(display, view)
@@ -223,10 +292,13 @@ def _display_colorspace(cfg, display):
 
 
 def _match_gamut(cfg, xyz_to_display, cs):
-    """The clip display whose primaries and white ``cs`` has (SDR, any per-channel
-    encoding with white at code 1), or None. XYZ of in-gamut RGB of the candidate gamut
-    goes through the colour space's own processor; a grey ramp gives the encoding
-    curve, and every colour must come out as that curve applied per channel."""
+    """Return the clip display whose primaries and white ``cs`` has, or None.
+
+    SDR, any per-channel encoding with white at code 1. XYZ of in-gamut RGB of the
+    candidate gamut goes through the colour space's own processor; a grey ramp gives
+    the encoding curve, and every colour must come out as that curve applied per
+    channel.
+    """
     if cs.getEncoding() in ("hdr-video", "edr-video"):
         return None
     transform = ocio_ops.group([xyz_to_display, colorspace_transform(cs, to_reference=False)])
@@ -266,8 +338,11 @@ def _match_gamut(cfg, xyz_to_display, cs):
 
 
 def _hdr_nits(transfer, code):
-    """HDR code values -> absolute display light in cd/m2 (colour-science's ST 2084
-    EOTF, or the BT.2100 HLG EOTF for a 1000 cd/m2 peak with black at 0)."""
+    """Return the absolute display light in cd/m2 of HDR code values.
+
+    colour-science's ST 2084 EOTF, or the BT.2100 HLG EOTF for a 1000 cd/m2 peak with
+    black at 0.
+    """
     import colour
 
     code = np.asarray(code, dtype=np.float64)
@@ -277,10 +352,14 @@ def _hdr_nits(transfer, code):
 
 
 def _match_hdr(cfg, xyz_to_display, cs):
-    """(HDR display of the registry, cd/m2 per unit of ``cfg``'s display reference) whose
-    primaries, white and encoding ``cs`` has, or None: in-gamut RGB of the candidate gamut
-    up to the peak goes through the colour space's own processor and, decoded with the
-    candidate's EOTF, must be that RGB times one luminance per unit (from the white)."""
+    """Return the registry's HDR display that ``cs`` encodes for, or None.
+
+    As (HDR display of the registry, cd/m2 per unit of ``cfg``'s display reference),
+    for the display whose primaries, white and encoding ``cs`` has: in-gamut RGB of the
+    candidate gamut up to the peak goes through the colour space's own processor and,
+    decoded with the candidate's EOTF, must be that RGB times one luminance per unit
+    (from the white).
+    """
     transform = ocio_ops.group([xyz_to_display, colorspace_transform(cs, to_reference=False)])
     rng = np.random.default_rng(7)
     rgb = np.vstack(
@@ -310,8 +389,11 @@ def _match_hdr(cfg, xyz_to_display, cs):
 
 
 def _matches(cfg):
-    """({display: (display colour space name, clip display or HDR display)},
-    {display: cd/m2 per display-reference unit} for the HDR ones)."""
+    """Return the displays of ``cfg`` the clip supports, and the HDR ones' units.
+
+    As ({display: (display colour space name, clip display or HDR display)},
+    {display: cd/m2 per display-reference unit} for the HDR ones).
+    """
     _, xyz_to_display = interchange(cfg)
     found, units = {}, {}
     for display in cfg.getDisplays():
@@ -331,17 +413,67 @@ def _matches(cfg):
 
 
 def match_displays(cfg: ocio_ops.Config) -> dict[str, tuple[str, str]]:
-    """{display of ``cfg``: (its display colour space name, clip display)} for every
-    display that the clip supports; the clip display of an HDR display is one of
-    :data:`ocio_thinfilm.registry.HDR_DISPLAYS`."""
+    """Return the displays of ``cfg`` that the clip supports.
+
+    Found by running each display colour space's own processor on test colours (see
+    the module docstring), whatever its name and encoding.
+
+    Parameters
+    ----------
+    cfg : PyOpenColorIO.Config
+        The config.
+
+    Returns
+    -------
+    dict
+        {display of ``cfg``: (its display colour space name, clip display)}; the clip
+        display of an SDR display is one of :data:`ocio_thinfilm.registry.DISPLAYS`,
+        of an HDR display one of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
+
+    Raises
+    ------
+    ValueError
+        As :func:`interchange`.
+    """
     return _matches(cfg)[0]
 
 
 def merge_config(
     base: ocio_ops.Config, *, clip_size: int = clip_lut.CLIP_SIZE
 ) -> tuple[ocio_ops.Config, dict[str, ocio_ops.Transform], dict[str, tuple[str, str]]]:
-    """``base`` plus the additions (module docstring) as a new, validated-ready config,
-    and {LUT file name: GroupTransform} of the files it needs in ``luts/``."""
+    """Return ``base`` plus the additions (module docstring) as a new config.
+
+    The result is not validated here (its LUT files are not written yet:
+    :func:`ocio_thinfilm.export.merged.write_merged` writes and validates it). An HDR
+    display whose luminance unit differs from that of the first display matched to
+    the same target is left alone.
+
+    Parameters
+    ----------
+    base : PyOpenColorIO.Config
+        The config to extend (:func:`load_base`); it is not changed (a deep copy is
+        extended). Its profile must be 2.1 or newer.
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+
+    Returns
+    -------
+    config : PyOpenColorIO.Config
+        The merged config; ``luts`` is added to its search path.
+    luts : dict
+        {LUT file name: GroupTransform} of the files it needs in ``luts/``.
+    matches : dict
+        {display: (display colour space name, clip display)} of the displays given the
+        views (:func:`match_displays`).
+
+    Raises
+    ------
+    ValueError
+        If the profile is older than 2.1, the conversions cannot be found
+        (:func:`interchange`), no display matches, or a colour space, view transform,
+        named transform or view to add already exists (merged before?).
+    """
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
         raise ValueError(

@@ -13,10 +13,10 @@ from pathlib import Path
 from typing import Any
 
 from ocio_thinfilm import config, registry
+from ocio_thinfilm.checks import ParameterError, as_count
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.export import view as export_view
 from ocio_thinfilm.export.files import FORMATS, lut_contents, progress_bar, write_lut
-from ocio_thinfilm.checks import ParameterError, as_count
 from ocio_thinfilm.io import StrPath, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut, tables
 
@@ -38,7 +38,34 @@ CLIP_SIZES = (9, 129)
 
 
 def check_clip_size(clip_size: int) -> int:
-    """``clip_size`` as an int in :data:`CLIP_SIZES` (:func:`ocio_thinfilm.checks.as_count`)."""
+    """Return ``clip_size`` as an int in the range :data:`CLIP_SIZES` allows.
+
+    Parameters
+    ----------
+    clip_size : int
+        Edge length of the clip LUTs: an integer in [9, 129] (a float equal to one is
+        accepted, :func:`ocio_thinfilm.checks.as_count`).
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    TypeError
+        If ``clip_size`` is not a number.
+    ParameterError
+        Naming ``clip_size``, for a bool, a non-integer or a value outside [9, 129].
+
+    Examples
+    --------
+    >>> check_clip_size(65)
+    65
+    >>> check_clip_size(7)
+    Traceback (most recent call last):
+    ...
+    ocio_thinfilm.checks.ParameterError: clip_size must be an integer in [9, 129], got 7
+    """
     lo, hi = CLIP_SIZES
     return as_count("clip_size", clip_size, lo, hi)
 
@@ -58,9 +85,41 @@ def write_config(
 ) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
-    ``progress``: optional callable ``progress(step_name)`` called once per file.
-    Returns the config path. The files carry no timestamps: equal inputs give equal
-    bytes.
+    The files are written in place, not atomically: the directory is meant to be a
+    staging directory (:func:`bake` commits it). The config is validated and every
+    display view's and colour space's processor built before ``config.ocio`` is
+    written. The files carry no timestamps: equal inputs give equal bytes.
+
+    Parameters
+    ----------
+    directory : str or os.PathLike
+        The directory to write into.
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    film_size : int, optional
+        Entries of the thickness tables (default
+        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
+    morpho_size : int, optional
+        Entries of the Morpho angle table (default
+        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
+    progress : callable, optional
+        ``progress(step_name)``, called once per file written (the LUT file's name,
+        then ``"config.ocio"``).
+
+    Returns
+    -------
+    pathlib.Path
+        The config path, ``directory / "config.ocio"``.
+
+    Raises
+    ------
+    ValueError
+        For a size out of range.
+    PyOpenColorIO.Exception
+        If the config does not validate or a processor cannot be built.
+    OSError
+        If a file cannot be written.
     """
     import PyOpenColorIO as ocio
 
@@ -95,11 +154,30 @@ EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
 
 
 def export_set(directory: StrPath, *, show_progress: bool = False) -> list[Path]:
-    """The standalone set shipped in ``luts/``: every table in every format that can
-    hold it with its domain, plus the common display LUTs
-    (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness Clip as
-    a plain 65^3 .cube over [0, 1], which every reader applies alike), into
-    ``directory``, which must exist."""
+    """Write the standalone LUT set shipped in ``luts/`` into ``directory``.
+
+    Every table in every format that can hold it with its domain, plus the common
+    display LUTs (:data:`EXPORT_SET_VIEWS`: ACEScct -> each display's Constant-Lightness
+    Clip as a plain 65^3 .cube over [0, 1], which every reader applies alike). Each file
+    is written atomically on its own.
+
+    Parameters
+    ----------
+    directory : str or os.PathLike
+        The directory, which must exist.
+    show_progress : bool, optional
+        Show a progress bar on stderr when it is a terminal (default ``False``).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    OSError
+        If a file cannot be written.
+    """
     jobs: list[tuple[str, dict[str, Any], str]] = []
     for fmt in FORMATS:
         for kind in colorimetry.FILM_KINDS:
@@ -148,8 +226,7 @@ def bake(
     show_progress: bool = False,
     luts: StrPath | None = None,
 ) -> Path:
-    """Write the config folder (config.ocio + luts/*.clf) to ``out`` and, with
-    ``luts``, the standalone LUT set (:func:`export_set`) to that directory.
+    """Write the config folder (config.ocio + luts/*.clf) and, optionally, the LUT set.
 
     Both directories must be new, empty, or written by an earlier bake (they then hold
     the marker :data:`.io.MARKER`; files they list are replaced or removed, nothing
@@ -157,6 +234,38 @@ def bake(
     committed file by file with ``config.ocio`` last, so a failure (a full disk,
     Ctrl-C) leaves both directories as they were, and a kill leaves each a complete,
     loadable set of files.
+
+    Parameters
+    ----------
+    out : str or os.PathLike, optional
+        The config directory (default :data:`DEFAULT_CONFIG_DIR`).
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (:func:`check_clip_size`;
+        default :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    show_progress : bool, optional
+        Show a progress bar on stderr when it is a terminal (default ``False``).
+    luts : str or os.PathLike, optional
+        Also write the standalone LUT set (:func:`export_set`) to this directory,
+        which must not be, contain or lie inside ``out``; ``None`` (default) for none.
+
+    Returns
+    -------
+    pathlib.Path
+        The config path, ``out/config.ocio`` (a link ``out`` resolved).
+
+    Raises
+    ------
+    TypeError
+        If ``clip_size`` is not a number.
+    ParameterError
+        Naming ``clip_size``, ``out`` or ``luts``: a size out of range, a directory
+        this tool may not write (:func:`ocio_thinfilm.io.claim_directory`), or ``luts``
+        overlapping ``out``.
+    ValueError
+        If a directory cannot be created or written.
+    OSError
+        ``"cannot write ...: ..."`` if a file cannot be written; nothing is then
+        replaced.
     """
     clip_size = check_clip_size(clip_size)
     claim = claim_directory(out, parameter="out", last=("config.ocio",))

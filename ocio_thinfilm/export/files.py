@@ -43,11 +43,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ocio_thinfilm import registry
+from ocio_thinfilm.checks import ParameterError, as_choice, as_pair, as_real
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops, tables
-from ocio_thinfilm.checks import as_choice, as_pair, as_real
 
 if TYPE_CHECKING:
     from tqdm import tqdm
@@ -169,10 +168,53 @@ def lut_contents(
     size: int | None = None,
     progress: Callable[[float], object] | None = None,
 ) -> tuple[np.ndarray, ocio_ops.Transform, dict[str, Any]]:
-    """(values array, LUT transform, metadata dict) for one standalone LUT.
+    """Compute one standalone LUT: its values, its transform and its metadata.
 
-    ``values``: (size, 3) or (size, size, size, 3), on the uniform grid over the
-    normalised input p in [0, 1].
+    Parameters
+    ----------
+    table : str
+        ``"film"`` (thickness table), ``"morpho"`` (angle table) or ``"clip"`` (the
+        constant-lightness clip as a 3D LUT over display-linear RGB).
+    kind : str, optional
+        The film kind, ``"phase-change"`` (default) or ``"no-phase-change"``; checked
+        for every table, used by ``"film"``.
+    display : str or Display, optional
+        An SDR display of :data:`ocio_thinfilm.registry.DISPLAYS` (or the registry's
+        object): the gamut to clip into. Required for ``"clip"``; for a table it makes
+        the output clipped display-linear RGB instead of CIE XYZ. Default ``None``.
+    index : float, optional
+        For ``"film"`` only: a refractive index n in [1, 10] that makes the input the
+        physical thickness t (t' = n t, normal incidence). Default ``None``.
+    value_range : sequence of two floats, optional
+        The input range MIN < MAX: thickness in micrometres (film: from 0, at most
+        1000), cos(theta) within [0, 1] (morpho), display-linear RGB per channel
+        containing [0, 1] (clip). Default :data:`DEFAULT_RANGE`.
+    size : int, optional
+        Entries (1D) or grid edge (3D), an integer in [2, 1048576] for the tables and
+        [2, 129] for the clip. Default :data:`DEFAULT_SIZE`.
+    progress : callable, optional
+        ``progress(fraction)``, called with fractions of the work that add up to 1.
+
+    Returns
+    -------
+    values : numpy.ndarray
+        (size, 3) or (size, size, size, 3), on the uniform grid over the normalised
+        input p in [0, 1].
+    lut : PyOpenColorIO.Transform
+        The LUT1D or LUT3D transform of ``values``.
+    meta : dict
+        ``name`` (the file stem), ``input``, ``output``, ``description``, ``range``
+        (lo, hi), ``size`` and ``id``.
+
+    Raises
+    ------
+    TypeError
+        For a ``size``, ``index`` or ``value_range`` that is not numbers, or a display
+        object that is neither a name nor a registry display.
+    ParameterError
+        Naming the parameter, for a value it does not allow (an unknown table, kind or
+        display, a missing display for ``"clip"``, an ``index`` for another table or
+        out of range, a ``size`` or ``value_range`` out of range).
     """
     display = registry.display_name(display)
     size, value_range = _validate(table, kind, display, index, value_range, size, "clf")
@@ -180,7 +222,7 @@ def lut_contents(
 
 
 def _contents(table, kind, display, index, value_range, size, progress):
-    """:func:`lut_contents` of arguments already validated."""
+    """Compute :func:`lut_contents` of arguments already validated."""
     lo, hi = value_range
     x = np.linspace(lo, hi, size)
     if table == "film":
@@ -246,7 +288,7 @@ def _contents(table, kind, display, index, value_range, size, progress):
 
 
 def _baker_config(lut, lo, hi):
-    """A minimal in-memory config for baking ``lut`` over the input domain [lo, hi]:
+    """Return a minimal in-memory config for baking ``lut`` over the input domain [lo, hi].
 
     - ``input`` (the reference): the raw value -- thickness, cos(theta) or RGB;
     - ``output``: from the reference, the range matrix (x - lo) / (hi - lo) then ``lut``;
@@ -292,8 +334,39 @@ DOMAIN_SHAPER_SIZE = 1024
 def write_lut(
     path: StrPath, fmt: str, values: np.ndarray, lut: ocio_ops.Transform, meta: Mapping[str, Any]
 ) -> Path:
-    """Write one LUT file with OCIO's writer for ``fmt`` (atomically). Every format
-    takes the value itself: the domain ``meta["range"]`` is carried by the file."""
+    """Write one LUT file with OCIO's writer for ``fmt``, atomically.
+
+    Every format takes the value itself: the domain ``meta["range"]`` is carried by the
+    file (CLF: a range matrix before the LUT; the others: the Baker's shaper).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file to write.
+    fmt : str
+        A key of :data:`FORMATS` that can hold the LUT's dimension (not checked here:
+        :func:`export_lut` checks it).
+    values : numpy.ndarray
+        The LUT's values (:func:`lut_contents`): (size, 3) or (size, size, size, 3).
+    lut : PyOpenColorIO.Transform
+        The LUT's transform (:func:`lut_contents`).
+    meta : mapping
+        Its metadata (:func:`lut_contents`): ``name``, ``id``, ``description``,
+        ``input``, ``output``, ``range`` and ``size``.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    ValueError
+        For a format without an input domain (``spi3d``) and a range other than
+        [0, 1].
+    OSError
+        If the file cannot be written.
+    """
     import PyOpenColorIO as ocio
 
     writer, ext, _ = FORMATS[fmt]
@@ -350,7 +423,44 @@ def export_lut(
     size: int | None = None,
     show_progress: bool = False,
 ) -> Path:
-    """Compute and write one standalone LUT; returns the path written."""
+    """Compute and write one standalone LUT.
+
+    Parameters
+    ----------
+    table : str
+        ``"film"``, ``"morpho"`` or ``"clip"`` (see :func:`lut_contents`).
+    out : str or os.PathLike, optional
+        The file to write; default a name from the options (the LUT's stem and the
+        format's extension) in the current directory.
+    fmt : str, optional
+        A key of :data:`FORMATS` that can hold the table (film and morpho: clf, cube,
+        spi1d; clip: clf, cube, csp, and spi3d only over [0, 1]); default ``out``'s
+        extension, else ``"clf"``.
+    kind, display, index, value_range, size
+        As for :func:`lut_contents`.
+    show_progress : bool, optional
+        Show a progress bar on stderr when it is a terminal (default ``False``).
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    TypeError
+        As :func:`lut_contents`.
+    ParameterError
+        Naming the parameter, as :func:`lut_contents`; naming ``fmt`` for an unknown
+        format, or when none is given and ``out``'s extension names none; naming
+        ``out`` when it cannot be written
+        (:func:`~ocio_thinfilm.io.destinations.check_output_file`).
+    ValueError
+        For a format that cannot hold the table or its range, or an unwritable
+        directory.
+    OSError
+        If the file cannot be written.
+    """
     display = registry.display_name(display)
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
@@ -373,8 +483,25 @@ def export_lut(
 
 
 def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
-    """A tqdm progress bar on stderr: None unless ``show`` and stderr is a terminal (a
-    log or a pipe gets no carriage-return residue, only the command's own lines)."""
+    """Return a tqdm progress bar on stderr, or None.
+
+    None unless ``show`` and stderr is a terminal (a log or a pipe gets no
+    carriage-return residue, only the command's own lines).
+
+    Parameters
+    ----------
+    show : bool
+        Whether a bar is wanted.
+    total : float
+        The bar's total (a count of steps, or 1.0 for fractions).
+    desc : str
+        Its label.
+
+    Returns
+    -------
+    tqdm.tqdm or None
+        The bar (the caller closes it), or ``None``.
+    """
     if not show or not sys.stderr.isatty():
         return None
     from tqdm import tqdm

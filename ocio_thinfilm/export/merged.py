@@ -1,6 +1,7 @@
-"""``ocio-thinfilm bake --into`` and ``.ocioz`` archives: the merged config
-(:func:`ocio_thinfilm.config.merge.merge_config`) and archives of a config folder,
-written safely.
+"""``ocio-thinfilm bake --into`` and ``.ocioz`` archives, written safely.
+
+The merged config (:func:`ocio_thinfilm.config.merge.merge_config`) and archives of
+a config folder:
 
 - :func:`write_merged` -- a merged config's ``config.ocio`` and ``luts/`` into a
   directory (checked: it validates and every added view's processor builds);
@@ -16,9 +17,9 @@ import tempfile
 from pathlib import Path
 
 from ocio_thinfilm import config
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export.bake import write_config
-from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.io import StrPath, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
@@ -26,7 +27,7 @@ __all__ = ["write_merged", "bake_into", "write_archive", "bake_archive"]
 
 
 def _copy_base_files(base, source, directory):
-    """A base config file's relative search-path folders, copied next to the result."""
+    """Copy a base config file's relative search-path folders next to the result."""
     if str(source).startswith("ocio://"):
         return
     root = Path(source).resolve().parent
@@ -41,8 +42,45 @@ def _copy_base_files(base, source, directory):
 def write_merged(
     source: StrPath, directory: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE
 ) -> tuple[Path, dict[str, tuple[str, str]]]:
-    """Write the merged config (``config.ocio``, ``luts/``) into the existing
-    ``directory``; returns (config path, display matches)."""
+    """Write the merged config (``config.ocio``, ``luts/``) into the existing ``directory``.
+
+    The base config file's relative search-path folders are copied beside it. The
+    files are written in place, not atomically (the directory is meant to be a staging
+    directory: :func:`bake_into`). The config is validated, and the processors of every
+    view of the matched displays and of every named transform are built, before
+    ``config.ocio`` is written.
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        The base config: a file or an ``ocio://`` URI
+        (:func:`~ocio_thinfilm.config.merge.load_base`).
+    directory : str or os.PathLike
+        The directory to write into.
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+
+    Returns
+    -------
+    path : pathlib.Path
+        The config path, ``directory / "config.ocio"``.
+    matches : dict
+        {display: (display colour space name, clip display)} of the displays given the
+        views (:func:`~ocio_thinfilm.config.merge.merge_config`).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``source``, if it cannot be loaded.
+    ValueError
+        If the base cannot be extended (see
+        :func:`~ocio_thinfilm.config.merge.merge_config`).
+    PyOpenColorIO.Exception
+        If the result does not validate or a processor cannot be built.
+    OSError
+        If a file cannot be written.
+    """
     ocio = ocio_ops.module()
     base = merge.load_base(source)
     cfg, luts, matches = merge.merge_config(base, clip_size=clip_size)
@@ -73,8 +111,30 @@ def write_merged(
 
 
 def write_archive(config_path: StrPath, out: StrPath) -> Path:
-    """Archive the config folder of ``config_path`` as ``out`` (``.ocioz``, OCIO >= 2.2
-    to read), atomically."""
+    """Archive the config folder of ``config_path`` as ``out``, atomically.
+
+    Parameters
+    ----------
+    config_path : str or os.PathLike
+        The config file; its folder and search paths go into the archive.
+    out : str or os.PathLike
+        The archive to write (``.ocioz``; OCIO >= 2.2 reads it).
+
+    Returns
+    -------
+    pathlib.Path
+        ``out``.
+
+    Raises
+    ------
+    ValueError
+        If the config is not archivable (absolute or parent search paths or LUT
+        paths).
+    PyOpenColorIO.Exception
+        If the config cannot be loaded.
+    OSError
+        If the archive cannot be written.
+    """
     ocio = ocio_ops.module()
     cfg = ocio.Config.CreateFromFile(str(config_path))
     if not cfg.isArchivable():
@@ -87,7 +147,38 @@ def write_archive(config_path: StrPath, out: StrPath) -> Path:
 
 
 def bake_into(source: StrPath, out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
-    """``ocio-thinfilm bake --into SOURCE --out OUT``: a folder or an ``.ocioz``."""
+    """Merge into the base config and write the result: ``bake --into SOURCE --out OUT``.
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        The base config: a file or an ``ocio://`` URI.
+    out : str or os.PathLike
+        An ``.ocioz`` archive to write atomically (:func:`write_archive`), or an output
+        directory: new, empty or written by an earlier run (its files are committed
+        together, ``config.ocio`` included).
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+
+    Returns
+    -------
+    pathlib.Path
+        The archive, or ``out / "config.ocio"``.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``source`` (it cannot be loaded) or ``out`` (not a directory, or a
+        directory this tool may not write).
+    ValueError
+        If ``out``'s directory cannot be written, or the base cannot be extended
+        (:func:`~ocio_thinfilm.config.merge.merge_config`, :func:`write_archive`).
+    PyOpenColorIO.Exception
+        If the result does not validate or a processor cannot be built.
+    OSError
+        If a file cannot be written.
+    """
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
     if out.suffix.lower() == ".ocioz":
@@ -102,7 +193,28 @@ def bake_into(source: StrPath, out: StrPath, *, clip_size: int = clip_lut.CLIP_S
 
 
 def bake_archive(out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
-    """``ocio-thinfilm bake --out thinfilm.ocioz``: the project's config as an archive."""
+    """Write the project's config as an archive: ``bake --out thinfilm.ocioz``.
+
+    Parameters
+    ----------
+    out : str or os.PathLike
+        The ``.ocioz`` archive to write, atomically.
+    clip_size : int, optional
+        Edge length of the clip LUTs, an integer in [9, 129] (default
+        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+
+    Returns
+    -------
+    pathlib.Path
+        ``out``.
+
+    Raises
+    ------
+    ValueError
+        If ``out``'s directory cannot be written, or for a ``clip_size`` out of range.
+    OSError
+        If the archive cannot be written.
+    """
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,11 +1,11 @@
-"""Where an output goes: a regular file replaced atomically, or a special file written
-through.
+"""Where an output goes: a regular file replaced atomically, or a special file written through.
 
 An existing destination that is not a regular file (``/dev/null``, ``/dev/full``, a
 FIFO, ``/dev/stdout``, anything reached through ``/proc/*/fd``) is written through:
 opened and written, never replaced or created. A symbolic link to a regular file (or a
 dangling one) is followed: its target is replaced in the target's directory and the
-link itself is kept. A directory where a file should go is a one-line error."""
+link itself is kept. A directory where a file should go is a one-line error.
+"""
 
 from __future__ import annotations
 
@@ -35,7 +35,26 @@ _FD_ALIAS = re.compile(r"/dev/(stdin|stdout|stderr)|/dev/fd/(\d+)|/proc/self/fd/
 
 
 def fd_alias(p: Path) -> int | None:
-    """The descriptor number of /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N."""
+    """Return the open file descriptor that ``p`` names, if it names one.
+
+    Parameters
+    ----------
+    p : pathlib.Path
+        A path; relative paths are taken from the current directory (links are not
+        followed).
+
+    Returns
+    -------
+    int or None
+        0, 1 or 2 for ``/dev/stdin``, ``/dev/stdout``, ``/dev/stderr``; N for
+        ``/dev/fd/N`` or ``/proc/self/fd/N``; ``None`` for any other path or a
+        descriptor that is not open.
+
+    Examples
+    --------
+    >>> fd_alias(Path("/dev/stdout")), fd_alias(Path("/tmp/frame.exr"))
+    (1, None)
+    """
     m = _FD_ALIAS.fullmatch(os.path.abspath(p))
     if not m:
         return None
@@ -52,7 +71,7 @@ def fd_alias(p: Path) -> int | None:
 
 
 def _via_proc(p: Path) -> bool:
-    """True if following ``p``'s links passes through /proc (a process's descriptor)."""
+    """Return whether following ``p``'s links passes through /proc (a descriptor)."""
     current = os.path.abspath(p)
     for _ in range(40):
         if current.startswith("/proc/"):
@@ -64,8 +83,23 @@ def _via_proc(p: Path) -> bool:
 
 
 def is_stdout(path: StrPath) -> bool:
-    """True if ``path`` names this process's standard output (then messages should go
-    to stderr, not into the data)."""
+    """Return whether ``path`` names this process's standard output.
+
+    Then messages should go to stderr, not into the data.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Any path.
+
+    Returns
+    -------
+    bool
+        ``True`` for ``/dev/stdout`` (or another alias of descriptor 1), or for the
+        file that standard output is redirected to (same device and inode, not a
+        character device); ``False`` otherwise, also when ``path`` or the descriptor
+        cannot be examined.
+    """
     try:
         a, b = os.stat(path), os.fstat(1)
     except (OSError, ValueError):
@@ -78,8 +112,32 @@ def is_stdout(path: StrPath) -> bool:
 
 
 def destination(path: StrPath) -> tuple[str, Path]:
-    """('replace', where) for a regular file (or nothing yet) to replace atomically, or
-    ('through', path) for an existing special file to write through."""
+    """Return how an output to ``path`` is written, and where.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The output path (not empty).
+
+    Returns
+    -------
+    tuple of (str, pathlib.Path)
+        ``("replace", where)`` for a regular file (or nothing yet) to replace
+        atomically -- ``where`` is the link's target for a symbolic link, else ``path``
+        -- or ``("through", path)`` for an existing special file (a device, a FIFO, a
+        descriptor alias such as ``/dev/stdout``) to write through.
+
+    Raises
+    ------
+    ValueError
+        If ``path`` is empty, is a directory, cannot be examined (e.g. permission
+        denied), or its parent exists and is not a directory.
+
+    Examples
+    --------
+    >>> destination("/dev/null")
+    ('through', PosixPath('/dev/null'))
+    """
     text = os.fspath(path)
     if text == "":
         raise ValueError("output path is empty")
@@ -104,7 +162,27 @@ def destination(path: StrPath) -> tuple[str, Path]:
 
 
 def check_writable(directory: StrPath) -> Path:
-    """Fail early, with a one-line error, if ``directory`` cannot be created or written."""
+    """Fail early, with a one-line error, if ``directory`` cannot be created or written.
+
+    The nearest existing directory on the way to ``directory`` must be writable (tried
+    with a real temporary file: ``access()`` says yes to root everywhere).
+
+    Parameters
+    ----------
+    directory : str or os.PathLike
+        The directory; ``""`` is the current directory.
+
+    Returns
+    -------
+    pathlib.Path
+        ``directory`` as a path (``.`` for ``""``).
+
+    Raises
+    ------
+    ValueError
+        ``"<directory>: directory is not writable"``, also when the nearest existing
+        path on the way is not a directory.
+    """
     d = Path(directory)
     if os.fspath(directory) == "":
         d = Path(".")
@@ -122,10 +200,31 @@ def check_writable(directory: StrPath) -> Path:
 
 
 def check_output_file(path: StrPath, parameter: str = "out") -> Path:
-    """Fail early, with a one-line error, if the file ``path`` cannot be written: a
-    directory in its place, or an unwritable directory (a :class:`ParameterError`
-    naming ``parameter``, the caller's name for ``path``). Special files (written
-    through) need only exist."""
+    """Fail early, with a one-line error, if the file ``path`` cannot be written.
+
+    Special files (written through) need only exist.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The output file.
+    parameter : str, optional
+        The caller's name for ``path``, for the error message (default ``"out"``).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path`` as a path (as given: a link is not resolved).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``parameter``, for what :func:`destination` refuses (an empty path, a
+        directory in its place, a parent that is not a directory).
+    ValueError
+        From :func:`check_writable` (not naming ``parameter``) when the file's
+        directory cannot be created or written.
+    """
     try:
         mode, dest = destination(path)
     except ValueError as error:

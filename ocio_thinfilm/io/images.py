@@ -1,6 +1,9 @@
-"""Image files through OpenImageIO, written safely: the file is staged in a
-:class:`~ocio_thinfilm.io.transactions.Transaction`, and decoded in full before it may
-replace anything (OpenImageIO's PNG writer does not always report a full disk)."""
+"""Image files through OpenImageIO, written safely.
+
+The file is staged in a :class:`~ocio_thinfilm.io.transactions.Transaction`, and
+decoded in full before it may replace anything (OpenImageIO's PNG writer does not
+always report a full disk).
+"""
 
 from __future__ import annotations
 
@@ -10,7 +13,6 @@ from typing import TYPE_CHECKING, Any
 
 from ocio_thinfilm.io.destinations import StrPath
 from ocio_thinfilm.io.transactions import Transaction, transaction
-
 
 __all__ = [
     "write_image",
@@ -31,15 +33,44 @@ def write_image(
     attributes: Mapping[str, Any] | None = None,
     tx: Transaction | None = None,
 ) -> Path:
-    """Write ``pixels`` (H, W, C) with OpenImageIO, safely (see the module docstring).
+    """Write ``pixels`` with OpenImageIO, safely (see the module docstring).
 
-    ``dtype`` defaults to uint8 for .png and half for .exr. Float data written to an
-    8-bit file is taken as 0..1 and rounded (OpenImageIO's own conversion).
-    ``attributes`` values may be int, float, str or a tuple of floats (e.g. the EXR
-    ``chromaticities``). OpenImageIO stamps EXRs with the current ``DateTime``
-    unless an attribute sets it: pass a fixed one for byte-reproducible files.
-    ``tx``: stage the file in this :class:`Transaction` (committed by the caller)
-    instead of committing it on return.
+    OpenImageIO stamps EXRs with the current ``DateTime`` unless an attribute sets it:
+    pass a fixed one for byte-reproducible files.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The image file; its extension chooses the format (an EXR is ZIP-compressed
+        unless ``attributes`` says otherwise). A name without an extension
+        (``/dev/stdout``, a FIFO) is written as PNG.
+    pixels : array_like
+        (H, W, C) or (H, W) values. Float data written to an 8- or 16-bit file is
+        taken as 0..1 and rounded (OpenImageIO's own conversion).
+    channel_names : iterable of str, optional
+        Names of the C channels (default: OpenImageIO's, R, G, B, A ...).
+    dtype : str, optional
+        OpenImageIO's pixel type of the file (``"uint8"``, ``"uint16"``, ``"half"``,
+        ``"float"`` ...); default uint8 for a PNG (or no extension) and half for
+        anything else.
+    attributes : mapping, optional
+        Metadata: values may be int, float, str or a tuple (list) of floats (e.g. the
+        EXR ``chromaticities``).
+    tx : Transaction, optional
+        Stage the file in this transaction (committed by the caller) instead of
+        committing it on return.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    OSError
+        ``"cannot write <path>: ..."`` if OpenImageIO cannot create or write the file,
+        or the written file does not decode in full (e.g. a full disk); nothing is
+        then replaced.
     """
     if tx is None:
         with transaction() as own:
@@ -126,7 +157,23 @@ def _np_shape(a):
 
 
 def read_image(path: StrPath) -> np.ndarray:
-    """Read an image as float32 (H, W, C) with OpenImageIO."""
+    """Read an image with OpenImageIO.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        Any image file OpenImageIO reads.
+
+    Returns
+    -------
+    numpy.ndarray
+        float32 (H, W, C) pixels.
+
+    Raises
+    ------
+    OSError
+        ``"cannot read <path>: ..."`` if OpenImageIO cannot read it.
+    """
     import OpenImageIO as oiio
 
     buf = oiio.ImageBuf(str(path))

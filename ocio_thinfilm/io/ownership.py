@@ -6,7 +6,8 @@ removed; anything else in the directory is left alone, and a non-empty directory
 without the marker is refused. A commit renames files one by one with the directory
 kept (the caller names the file to rename last, e.g. ``config.ocio``) and the marker
 always lists every file of ours present, so at every instant the directory holds
-complete files and loads."""
+complete files and loads.
+"""
 
 from __future__ import annotations
 
@@ -16,11 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ocio_thinfilm.checks import ParameterError
-
-from ocio_thinfilm.io import destinations
-from ocio_thinfilm.io import durable
-from ocio_thinfilm.io import faults
-from ocio_thinfilm.io import temporaries
+from ocio_thinfilm.io import destinations, durable, faults, temporaries
 
 __all__ = [
     "MARKER",
@@ -38,8 +35,21 @@ _MARKER_HEADER = "# ocio-thinfilm: files written by the last run (replaced or re
 
 
 class Claim:
-    """A directory this run may write: where, whether it exists, which files in it are
-    ours (relative POSIX paths), and the parameter that named it (for messages)."""
+    """A directory this run may write, as :func:`claim_directory` found it.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The directory (a link's target when ``path`` was a link to a directory).
+    exists : bool
+        Whether it exists.
+    owned : set of str
+        The files in it that are ours (relative POSIX paths from its marker).
+    parameter : str
+        The parameter that named it (for messages).
+    last : iterable of str, optional
+        Relative paths to rename after all others (e.g. ``config.ocio``).
+    """
 
     def __init__(self, path: Path, exists: bool, owned: set, parameter: str, last=()):
         self.path, self.exists, self.owned, self.parameter = path, exists, owned, parameter
@@ -67,10 +77,33 @@ def claim_directory(
 ) -> Claim:
     """Check that ``path`` may be (re)written as an output directory of this tool.
 
-    Allowed: missing, empty, or holding :data:`MARKER`. Anything else is a
-    :class:`ParameterError` naming ``parameter`` (the caller's name for ``path``): the
-    directory holds files this tool did not write. ``last``: relative paths to rename
-    after all others (e.g. ``config.ocio``).
+    Allowed: missing, empty, or holding :data:`MARKER`; temporaries of killed runs in it
+    are removed. Nothing else is written.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The output directory; a link to a directory is kept, and what it points to is
+        written.
+    parameter : str, optional
+        The caller's name for ``path``, for the error messages (default ``"out"``).
+    last : iterable of str, optional
+        Relative paths to rename after all others (e.g. ``config.ocio``).
+
+    Returns
+    -------
+    Claim
+        The directory, whether it exists and the files in it that are ours.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``parameter``: an empty ``path``, a file that is not a directory, a
+        :data:`MARKER` that is not a file, or a non-empty directory without the marker
+        (it holds files this tool did not write).
+    ValueError
+        From :func:`ocio_thinfilm.io.destinations.check_writable`, if the directory
+        cannot be created or written.
     """
     text = os.fspath(path)
     if text.strip() == "":
@@ -112,6 +145,35 @@ def _write_marker(directory: Path, files, umask) -> None:
 
 
 def commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> None:
+    """Move the staged files of ``claim`` into place: the directory part of a commit.
+
+    A new directory is the stage itself, marker included, renamed into place at once. An
+    existing one is locked (``flock``) and changed file by file so that it always holds
+    complete files that load: the marker first lists the old and the new files, then the
+    files are renamed (the claim's ``last`` ones at the end), the previous run's files
+    that this one does not write are removed, and the marker is rewritten to list
+    exactly the new files. The stage is removed in the end.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claimed directory.
+    stage : pathlib.Path
+        The staging directory holding the new files, on the same filesystem.
+    files : list of str
+        The staged files, relative POSIX paths.
+    umask : int
+        The umask the permissions are computed with (files 0666, directories 0777,
+        less the umask).
+
+    Raises
+    ------
+    ParameterError
+        If a directory that was missing at the claim appeared meanwhile and is not
+        empty (nothing is replaced).
+    OSError
+        From the renames, the marker's write or the lock.
+    """
     new = set(files)
     for d in [stage, *(p for p in stage.rglob("*") if p.is_dir())]:
         os.chmod(d, 0o777 & ~umask)

@@ -1,5 +1,7 @@
-"""Signals held back while a commit renames its files (POSIX ``pthread_sigmask``): a
-Ctrl-C or a farm's SIGTERM arrives after the last rename, never between two."""
+"""Signals held back while a commit renames its files (POSIX ``pthread_sigmask``).
+
+A Ctrl-C or a farm's SIGTERM arrives after the last rename, never between two.
+"""
 
 from __future__ import annotations
 
@@ -20,8 +22,17 @@ _SIGNALS = tuple(
 
 @contextlib.contextmanager
 def deferred_signals() -> Iterator[None]:
-    """Hold SIGINT/SIGTERM/SIGHUP/SIGQUIT back for the duration (main thread only):
-    the renames of a commit run to the end; a pending signal is delivered after."""
+    """Hold SIGINT, SIGTERM, SIGHUP and SIGQUIT back for the duration of the block.
+
+    The renames of a commit run to the end; a pending signal is delivered after. Only
+    in the main thread where ``signal.pthread_sigmask`` exists (POSIX); elsewhere the
+    block runs with signals as they are.
+
+    Yields
+    ------
+    None
+        While the signals are blocked.
+    """
     if threading.current_thread() is not threading.main_thread() or not hasattr(
         signal, "pthread_sigmask"
     ):

@@ -33,7 +33,19 @@ TMP_PREFIX = ".ocio-thinfilm-tmp-"
 
 
 def start_time(pid: int) -> str:
-    """The process's start time in clock ticks since boot (Linux), '' if unknown."""
+    """Return a process's start time, in clock ticks since boot (Linux ``/proc``).
+
+    Parameters
+    ----------
+    pid : int
+        The process id.
+
+    Returns
+    -------
+    str
+        The start time as digits, ``""`` if it cannot be read (no such process, no
+        ``/proc``).
+    """
     try:
         with open(f"/proc/{pid}/stat", "rb") as f:
             data = f.read()
@@ -43,9 +55,11 @@ def start_time(pid: int) -> str:
 
 
 def _host_key() -> str:
-    """8 hex digits naming this machine, boot and pid namespace: a pid in a temporary's
-    name is only meaningful where this key matches (not on another host sharing an
-    NFS render directory, nor in another container)."""
+    """Return 8 hex digits naming this machine, boot and pid namespace.
+
+    A pid in a temporary's name is only meaningful where this key matches (not on
+    another host sharing an NFS render directory, nor in another container).
+    """
     import hashlib
     import socket
 
@@ -68,6 +82,15 @@ FOREIGN_STALE_SECONDS = 24 * 3600
 
 
 def self_id() -> str:
+    """Return this process's part of temporary names.
+
+    Recomputed after a fork; the start time is ``0`` where it cannot be read.
+
+    Returns
+    -------
+    str
+        ``<host key>-<pid>-<start time>``.
+    """
     pid = os.getpid()
     if _SELF["pid"] != pid:  # recomputed after a fork
         _SELF.update(pid=pid, start=start_time(pid) or "0", host=_SELF["host"] or _host_key())
@@ -75,6 +98,18 @@ def self_id() -> str:
 
 
 def tmp_name(label: str) -> str:
+    """Return a new temporary name ending in ``label``.
+
+    Parameters
+    ----------
+    label : str
+        The end of the name (e.g. the destination's file name).
+
+    Returns
+    -------
+    str
+        ``TMP_PREFIX + self_id() + "-" + <8 random hex digits> + "-" + label``.
+    """
     return f"{TMP_PREFIX}{self_id()}-{secrets.token_hex(4)}-{label}"
 
 
@@ -82,8 +117,24 @@ _TMP_RE = re.compile(re.escape(TMP_PREFIX) + r"([0-9a-f]{8})-(\d+)-(\d+)-[0-9a-f
 
 
 def is_stale(name: str, directory: StrPath | None = None) -> bool:
-    """True for a temporary of ours whose process is gone (or whose pid was reused);
-    one made on another host or in another container counts as stale after a day."""
+    """Return whether ``name`` is a temporary left by a killed run.
+
+    Parameters
+    ----------
+    name : str
+        A file name.
+    directory : str or os.PathLike, optional
+        The directory holding it, to read its age; without it a temporary of another
+        host is never stale.
+
+    Returns
+    -------
+    bool
+        ``True`` for a temporary of ours whose process is gone (or whose pid was
+        reused); one made on another host or in another container counts as stale
+        once older than :data:`FOREIGN_STALE_SECONDS` (a day). ``False`` for any
+        other name.
+    """
     m = _TMP_RE.match(name)
     if not m:
         return False
@@ -112,6 +163,20 @@ def is_stale(name: str, directory: StrPath | None = None) -> bool:
 
 
 def remove_path(path: Path) -> None:
+    """Remove a file, a link or a directory tree; a missing one is no error.
+
+    A directory tree is removed as far as it can be (errors ignored).
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        What to remove (a link is removed, not what it points to).
+
+    Raises
+    ------
+    OSError
+        If a file or link exists and cannot be removed.
+    """
     try:
         if path.is_dir() and not path.is_symlink():
             shutil.rmtree(path, ignore_errors=True)
@@ -122,7 +187,18 @@ def remove_path(path: Path) -> None:
 
 
 def clean_stale(directory: StrPath) -> list[Path]:
-    """Remove temporaries left in ``directory`` by killed runs; returns what went."""
+    """Remove the temporaries left in ``directory`` by killed runs.
+
+    Parameters
+    ----------
+    directory : str or os.PathLike
+        The directory; one that cannot be listed is left alone.
+
+    Returns
+    -------
+    list of pathlib.Path
+        What was removed.
+    """
     removed: list[Path] = []
     try:
         names = os.listdir(directory)

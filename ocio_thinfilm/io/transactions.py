@@ -5,7 +5,8 @@ writer's own result, the close, an XML parse of ``.clf``/``.ctf`` files), fsynce
 only then renamed into place; a command that writes several files stages them all in
 one :class:`Transaction` and commits them together, so a failure anywhere leaves every
 previous output as it was. Signals are held back while the renames run
-(:mod:`.signals`)."""
+(:mod:`.signals`).
+"""
 
 from __future__ import annotations
 
@@ -18,14 +19,8 @@ from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.io import destinations, durable, faults, ownership, signals, temporaries
 from ocio_thinfilm.io.destinations import StrPath
-
-from ocio_thinfilm.io import destinations
-from ocio_thinfilm.io import durable
-from ocio_thinfilm.io import faults
-from ocio_thinfilm.io import ownership
-from ocio_thinfilm.io import signals
-from ocio_thinfilm.io import temporaries
 
 __all__ = [
     "Transaction",
@@ -52,6 +47,12 @@ class Transaction:
     ``tx.directory(claim)`` a staging directory whose tree replaces the claimed
     directory's own files. :meth:`commit` checks and fsyncs everything, then renames
     it all into place with signals held back; :meth:`abort` removes what was staged.
+    Usually made by :func:`transaction`.
+
+    Attributes
+    ----------
+    done : bool
+        Whether the transaction was committed.
     """
 
     def __init__(self):
@@ -64,8 +65,10 @@ class Transaction:
         self.done = False
 
     def _mkdirs(self, directory: Path) -> None:
-        """Create ``directory`` and its missing parents, remembering them (an aborted
-        transaction removes them again if they are still empty)."""
+        """Create ``directory`` and its missing parents, remembering them.
+
+        An aborted transaction removes them again if they are still empty.
+        """
         missing = []
         d = Path(directory)
         while not d.exists() and not d.is_symlink() and d != d.parent:
@@ -82,8 +85,31 @@ class Transaction:
             temporaries.clean_stale(directory)
 
     def file(self, path: StrPath, *, check: Callable[[Path], object] | None = None) -> Path:
-        """Stage ``path``: returns the temporary path its content must be written to.
-        ``check(tmp)`` (optional) raises if the written file is wrong."""
+        """Stage ``path``: return the temporary path its content must be written to.
+
+        A regular file (or a new one) is staged beside its destination (the directory is
+        created if missing; killed runs' temporaries there are removed); a special file
+        (written through at the commit) in a scratch directory.
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+            The destination (:func:`ocio_thinfilm.io.destinations.destination`).
+        check : callable, optional
+            ``check(tmp)``, run at the commit, raises (an OSError) if the written file is
+            wrong. ``.clf`` and ``.ctf`` files are always parsed as XML.
+
+        Returns
+        -------
+        pathlib.Path
+            The temporary path.
+
+        Raises
+        ------
+        ValueError
+            If ``path`` is staged twice in this transaction, or cannot be written
+            (:func:`~ocio_thinfilm.io.destinations.destination`).
+        """
         mode, dest = destinations.destination(path)
         with self._lock:
             if any(e.dest == dest for e in self._files):
@@ -100,7 +126,27 @@ class Transaction:
         return tmp
 
     def write(self, path: StrPath, data: str | bytes) -> Path:
-        """Stage ``path`` with ``data`` (bytes or str, UTF-8), written and fsynced now."""
+        """Stage ``path`` with ``data``, written and fsynced now.
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+            The destination.
+        data : str or bytes
+            The content; a str is encoded as UTF-8.
+
+        Returns
+        -------
+        pathlib.Path
+            The temporary path.
+
+        Raises
+        ------
+        OSError
+            ``"cannot write <path>: ..."`` if the temporary cannot be written.
+        ValueError
+            As :meth:`file`.
+        """
         tmp = self.file(path)
         try:
             durable.write_bytes(tmp, data.encode("utf-8") if isinstance(data, str) else bytes(data))
@@ -109,7 +155,20 @@ class Transaction:
         return tmp
 
     def directory(self, claim: ownership.Claim) -> Path:
-        """A new, empty staging directory for ``claim`` (on the same filesystem)."""
+        """Return a new, empty staging directory for ``claim`` (on the same filesystem).
+
+        Parameters
+        ----------
+        claim : ocio_thinfilm.io.ownership.Claim
+            The claimed output directory
+            (:func:`~ocio_thinfilm.io.ownership.claim_directory`).
+
+        Returns
+        -------
+        pathlib.Path
+            The staging directory: inside the claimed directory when it exists, else beside
+            it (the missing parents are created).
+        """
         with self._lock:
             if claim.exists:
                 self._clean(claim.path)
@@ -168,6 +227,23 @@ class Transaction:
         return plans
 
     def commit(self) -> None:
+        """Check, fsync and rename everything staged into place; a second call does nothing.
+
+        Every staged file must exist and pass its checks before anything is renamed.
+        Special files are written through first (with signals deliverable: opening a FIFO
+        waits for its reader); then, with signals held back, regular files are renamed
+        (permissions 0666 less the umask) and the claimed directories committed
+        (:func:`~ocio_thinfilm.io.ownership.commit_directory`).
+
+        Raises
+        ------
+        OSError
+            ``"cannot write <destination>: ..."`` if a file is missing, fails its check or
+            cannot be written; nothing has been renamed when it comes from the checks.
+        ParameterError
+            If a claimed directory holds, in the place of a staged file, a file this tool
+            did not write or a directory.
+        """
         if self.done:
             return
         faults.fault_point("before-commit")
@@ -190,6 +266,11 @@ class Transaction:
         self.abort()  # scratch directories
 
     def abort(self) -> None:
+        """Remove what was staged; after a failed commit also the directories it created.
+
+        Called by :func:`transaction` in every case (after a commit it removes only the
+        scratch directories); safe to call more than once.
+        """
         for e in self._files:
             if e.mode == "replace":
                 temporaries.remove_path(e.tmp)
@@ -208,9 +289,17 @@ class Transaction:
 
 @contextlib.contextmanager
 def transaction() -> Iterator[Transaction]:
-    """``with transaction() as tx:`` stage files with ``tx.file`` / ``tx.write`` /
+    """Open a :class:`Transaction` for a ``with`` block.
+
+    ``with transaction() as tx:`` stage files with ``tx.file`` / ``tx.write`` /
     ``tx.directory``; they are committed together when the block ends without an
-    exception, and removed otherwise (also on Ctrl-C)."""
+    exception, and removed otherwise (also on Ctrl-C).
+
+    Yields
+    ------
+    Transaction
+        The transaction, committed when the block ends normally.
+    """
     tx = Transaction()
     try:
         yield tx
@@ -221,9 +310,33 @@ def transaction() -> Iterator[Transaction]:
 
 @contextlib.contextmanager
 def atomic_file(path: StrPath, suffix: str | None = None) -> Iterator[Path]:
-    """Yield a temporary path next to ``path``; on success it is checked, fsynced and
-    renamed onto ``path`` (permissions 0666 less the umask). Special files are
-    written through; links to regular files are followed."""
+    """Write one file atomically: yield a temporary path next to ``path``.
+
+    On success the temporary is checked, fsynced and renamed onto ``path``
+    (permissions 0666 less the umask). Special files are written through; links to
+    regular files are followed.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The destination.
+    suffix : str, optional
+        Not used.
+
+    Yields
+    ------
+    pathlib.Path
+        The temporary path to write to.
+
+    Raises
+    ------
+    OSError
+        Reworded to name ``path`` (not the temporary), for a failure of the block's
+        write or of the commit.
+    ValueError
+        If ``path`` cannot be written
+        (:func:`~ocio_thinfilm.io.destinations.destination`).
+    """
     with transaction() as tx:
         tmp = tx.file(path)
         try:
@@ -263,10 +376,33 @@ def atomic_directory(
     parameter: str = "out",
     last: Iterable[str] = (),
 ) -> Iterator[Path]:
-    """Yield a staging directory whose files replace ``path``'s own files on success.
+    """Write a directory's files together: yield a staging directory for ``path``.
 
-    ``path`` must be missing, empty or owned (see :func:`claim_directory`); files in it
-    that this tool did not write are never touched."""
+    On success the staged files replace ``path``'s own files (see
+    :func:`~ocio_thinfilm.io.ownership.commit_directory`); files in it that this tool
+    did not write are never touched.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The output directory: missing, empty or owned (see
+        :func:`~ocio_thinfilm.io.ownership.claim_directory`).
+    parameter : str, optional
+        The caller's name for ``path``, for the error messages (default ``"out"``).
+    last : iterable of str, optional
+        Relative paths to rename after all others (e.g. ``config.ocio``).
+
+    Yields
+    ------
+    pathlib.Path
+        The staging directory.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``parameter``, if ``path`` may not be written (see
+        :func:`~ocio_thinfilm.io.ownership.claim_directory`).
+    """
     claim = ownership.claim_directory(path, parameter=parameter, last=last)
     with transaction() as tx:
         yield tx.directory(claim)

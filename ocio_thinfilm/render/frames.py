@@ -53,13 +53,26 @@ EXR_DOC = (
 
 
 def png_colorspace(display: str) -> str:
-    """How a PNG for ``display`` is tagged (an OpenImageIO colour interop ID, the
-    registry display's ``png_colorspace``): sRGB gets PNG's sRGB chunk, Display P3 and
-    Rec.2020 (BT.1886 gamma 2.4) a cICP chunk, the displays of other configs (an ACES
-    config merged with ``bake --into``) ``"data"``, no tag -- never a wrong sRGB one. The
-    HDR displays get their cICP chunk (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1, P3-D65 PQ: 12
-    16 0 1) and 16 bits per channel.
+    """Return how a PNG for ``display`` is tagged.
 
+    sRGB gets PNG's sRGB chunk, Display P3 and Rec.2020 (BT.1886 gamma 2.4) a cICP
+    chunk, the displays of other configs (an ACES config merged with ``bake --into``)
+    ``"data"``, no tag -- never a wrong sRGB one. The HDR displays get their cICP chunk
+    (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1, P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
+
+    Parameters
+    ----------
+    display : str
+        A display name, of the registry or of another config.
+
+    Returns
+    -------
+    str
+        An OpenImageIO colour interop ID (the registry display's ``png_colorspace``), or
+        ``"data"`` for a display the registry does not have.
+
+    Examples
+    --------
     >>> png_colorspace("Display P3"), png_colorspace("ACES 1.0 - SDR Video")
     ('srgb_p3d65_display', 'data')
     """
@@ -77,10 +90,24 @@ LABEL_CODE = 0.92
 
 
 def label_code(display: str) -> float:
-    """The captions' code value on ``display``: :data:`LABEL_CODE` on SDR displays; on
+    """Return the captions' code value on ``display``.
+
+    :data:`LABEL_CODE` on SDR displays (and on displays the registry does not have); on
     the registry's HDR displays the code of the same light relative to the 203 cd/m2
     reference white (graphics white of ITU-R BT.2408), not 0.92 of the PQ / HLG range.
 
+    Parameters
+    ----------
+    display : str
+        A display name.
+
+    Returns
+    -------
+    float
+        The code value, in [0, 1].
+
+    Examples
+    --------
     >>> round(label_code("sRGB"), 2), round(label_code("Rec.2100-PQ"), 3)
     (0.92, 0.561)
     """
@@ -100,9 +127,26 @@ def draw_labels(
     labels: Sequence[tuple[float, float, str, float]],
     code: float = LABEL_CODE,
 ) -> tuple[np.ndarray, bool]:
-    """Draw ``(x, y, text, size)`` captions, centred at x, with OpenImageIO's
-    ``render_text`` and its bundled font, in the grey of code value ``code``. Returns
-    (image, whether text was drawn)."""
+    """Draw captions with OpenImageIO's ``render_text`` and its bundled font.
+
+    Parameters
+    ----------
+    rgb : numpy.ndarray
+        (H, W, 3) display code values.
+    labels : sequence of (float, float, str, float)
+        ``(x, y, text, size)`` captions: the text centred at x, its baseline at y
+        (pixels, truncated to integers), ``size`` its height in pixels.
+    code : float, optional
+        The captions' grey, a code value (default :data:`LABEL_CODE`).
+
+    Returns
+    -------
+    image : numpy.ndarray
+        float32 (H, W, 3) with the captions; ``rgb`` itself when there are no labels
+        or when a caption could not be drawn (then none is drawn).
+    drawn : bool
+        Whether the captions were drawn (``True`` without labels).
+    """
     if not labels:
         return rgb, True
     import OpenImageIO as oiio
@@ -136,10 +180,46 @@ def render_scene(
     lookup: scene_module.Lookup | None = None,
     config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
 ) -> tuple[scene_module.Picture, np.ndarray]:
-    """Render one frame through a config's processors: returns (picture,
-    display-encoded RGB float32). ``config``: a :class:`ConfigProcessors`, a
-    ``PyOpenColorIO.Config`` or a path (default: :data:`DEFAULT_CONFIG`); a ``lookup``
-    from :func:`make_lookup` brings its own."""
+    """Render one frame of a scene through a config's processors.
+
+    Parameters
+    ----------
+    name : str
+        A scene of :data:`ocio_thinfilm.render.scenes.SCENES`.
+    size : tuple of int, optional
+        (width, height) in pixels (default :data:`DEFAULT_SIZE`).
+    seed : int, optional
+        Noise seed, an integer >= 0 (default 0).
+    frame : int, optional
+        Frame number, 1 the still (default 1).
+    display : str, optional
+        A display of the config (default :data:`DEFAULT_DISPLAY`).
+    view : str, optional
+        A view of that display (default :data:`DEFAULT_VIEW`); a scene's columns may
+        name their own (the spectrum scene's).
+    lookup : callable, optional
+        A scene lookup from :func:`~ocio_thinfilm.render.processors.make_lookup`; it
+        brings its own processors, used when ``config`` is ``None``. Default: one made
+        for the config.
+    config : ConfigProcessors, PyOpenColorIO.Config, str or os.PathLike, optional
+        The config: its processors, the config itself or its file (default:
+        :data:`ocio_thinfilm.render.processors.DEFAULT_CONFIG`).
+
+    Returns
+    -------
+    picture : ocio_thinfilm.render.scenes.Picture
+        The scene-linear picture (CIE XYZ) and its AOVs.
+    rgb : numpy.ndarray
+        float32 (H, W, 3) display code values in [0, 1], with the scene's captions.
+
+    Raises
+    ------
+    ValueError
+        For an unknown scene.
+    ParameterError
+        Naming ``config``: it cannot be loaded, or lacks a colour space, display or
+        view the frame needs.
+    """
     scene = scene_module.get_scene(name)
     width, height = size
     carried = getattr(lookup, "processors", None)  # a make_lookup lookup's processors
@@ -178,7 +258,27 @@ def _exr_attributes(scene, picture, *, seed, frame, display, view):
 
 
 def frame_paths(name: str, out_dir: Path, frame: int | None) -> list[Path]:
-    """The EXR and PNG paths of one frame of one scene."""
+    """Return the EXR and PNG paths of one frame of one scene.
+
+    Parameters
+    ----------
+    name : str
+        The scene's name.
+    out_dir : pathlib.Path
+        The output directory.
+    frame : int or None
+        The frame number (``NAME.####``), or ``None`` for the still (``NAME``).
+
+    Returns
+    -------
+    list of pathlib.Path
+        ``[out_dir / "NAME[.####].exr", out_dir / "NAME[.####].png"]``.
+
+    Examples
+    --------
+    >>> [p.name for p in frame_paths("oil", Path("renders"), 12)]
+    ['oil.0012.exr', 'oil.0012.png']
+    """
     stem = name if frame is None else f"{name}.{frame:04d}"
     return [Path(out_dir) / f"{stem}.exr", Path(out_dir) / f"{stem}.png"]
 
@@ -195,11 +295,50 @@ def save_frame(
     view: str,
     tx: Transaction | None = None,
 ) -> list[Path]:
-    """Write a rendered frame as ``NAME[.####].exr`` and ``.png``; returns the paths.
+    """Write a rendered frame as ``NAME[.####].exr`` and ``.png``.
 
     The pair is one transaction (:mod:`.io`): both files are written aside and checked,
     then renamed together, so a failed EXR never leaves a new PNG beside an old EXR.
-    With ``tx`` they join the caller's transaction instead (committed by the caller)."""
+
+    Parameters
+    ----------
+    name : str
+        The scene's name (a key of :data:`ocio_thinfilm.render.scenes.SCENES`).
+    picture : ocio_thinfilm.render.scenes.Picture
+        The scene-linear picture: the EXR's R, G, B (CIE XYZ) and AOV channels.
+    rgb : numpy.ndarray
+        (H, W, 3) display code values in [0, 1]: the PNG (16 bits per channel for an
+        HDR display of the registry, else 8).
+    out_dir : pathlib.Path
+        The output directory.
+    seed : int
+        The noise seed, recorded in the EXR.
+    frame : int or None
+        The frame number, or ``None`` for the still (frame 1, no number in the names).
+    display : str
+        The PNG's display (recorded, and choosing its tag: :func:`png_colorspace`).
+    view : str
+        The PNG's view (recorded; a picture shown only through ``Raw`` views gets a
+        ``"data"`` tag).
+    tx : Transaction, optional
+        Join the caller's transaction (committed by the caller) instead of committing
+        the pair on return.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The EXR and PNG paths.
+
+    Raises
+    ------
+    ValueError
+        For an unknown scene.
+    ParameterError
+        Naming ``out_dir``, if a file cannot be written there (see
+        :func:`~ocio_thinfilm.io.destinations.check_output_file`).
+    OSError
+        If a file cannot be written.
+    """
     if tx is None:
         with transaction() as own:
             return save_frame(
@@ -269,7 +408,48 @@ def write_frame(
     config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
     tx: Transaction | None = None,
 ) -> list[Path]:
-    """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths."""
+    """Render one frame of a scene and write ``NAME[.####].exr`` and ``.png``.
+
+    :func:`render_scene` then :func:`save_frame`.
+
+    Parameters
+    ----------
+    name : str
+        A scene of :data:`ocio_thinfilm.render.scenes.SCENES`.
+    out_dir : pathlib.Path
+        The output directory.
+    size : tuple of int
+        (width, height) in pixels.
+    seed : int
+        Noise seed, an integer >= 0.
+    frame : int or None
+        Frame number, or ``None`` for the still (rendered as frame 1).
+    display : str
+        A display of the config.
+    view : str
+        A view of that display.
+    lookup : callable, optional
+        As for :func:`render_scene`.
+    config : ConfigProcessors, PyOpenColorIO.Config, str or os.PathLike, optional
+        As for :func:`render_scene`.
+    tx : Transaction, optional
+        As for :func:`save_frame`.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The EXR and PNG paths.
+
+    Raises
+    ------
+    ValueError
+        For an unknown scene.
+    ParameterError
+        Naming ``config`` or ``out_dir`` (see :func:`render_scene`,
+        :func:`save_frame`).
+    OSError
+        If a file cannot be written.
+    """
     picture, rgb = render_scene(
         name,
         size,

@@ -46,9 +46,12 @@ MEAN_ABS_NOISE = {1: 0.37, 2: 0.234, 3: 0.171}
 
 @cache.memoize(maxsize=64)
 def _tables(seed: int, dims: int):
-    """Permutation (doubled, int32) and, per axis, the unit gradients already
-    gathered through the permutation (``g[perm]``, float32, doubled): the last hash
-    step and the gradient lookup are one gather."""
+    """Return the permutation table and the gradients per axis, gathered through it.
+
+    Permutation (doubled, int32) and, per axis, the unit gradients already gathered
+    through the permutation (``g[perm]``, float32, doubled): the last hash step and the
+    gradient lookup are one gather.
+    """
     if isinstance(seed, (bool, np.bool_)) or int(seed) != seed or seed < 0:
         raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
     rng = np.random.Generator(np.random.PCG64([int(seed), dims, 1985]))
@@ -65,7 +68,7 @@ def _tables(seed: int, dims: int):
 
 @cache.memoize(maxsize=64)
 def _lattice2(seed: int):
-    """2-D fast path: the gradient of every lattice point of one period, hashed once.
+    """Return the gradient of every lattice point of one period, hashed once (2-D).
 
     ``GX[i * 257 + j]`` is the x gradient at lattice point ``(i, j)`` (i, j in
     0..256, the 257th row/column repeating the first), exactly the value the general
@@ -81,8 +84,10 @@ _P2 = TABLE_SIZE + 1
 
 
 def _noise2_chunk(x, y, gx, gy):
-    """2-D noise of one chunk with the :func:`_lattice2` tables (in-place arithmetic;
-    identical results to :func:`_noise_chunk`)."""
+    """Return 2-D noise of one chunk with the :func:`_lattice2` tables.
+
+    In-place arithmetic; identical results to :func:`_noise_chunk`.
+    """
     fx0 = np.floor(x)
     fy0 = np.floor(y)
     fx = x - fx0
@@ -181,9 +186,34 @@ def noise(
 ) -> np.ndarray:
     """Perlin gradient noise at the points ``(x[, y[, z]])`` (broadcast together).
 
-    Returns float32 of the broadcast shape. Lattice period 256; deterministic for a
-    given ``seed``; different seeds give independent fields. Coordinates are taken
-    in float32 (fine for the scenes' ranges, |p| < 10^4).
+    Lattice period 256; deterministic for a given ``seed``; different seeds give
+    independent fields. Zero at every lattice point, roughly in [-1, 1], mean 0.
+
+    Parameters
+    ----------
+    x : array_like
+        First coordinate, in noise lattice units.
+    y, z : array_like, optional
+        Further coordinates (``z`` needs ``y``); all broadcast together. Coordinates
+        are taken in float32 (fine for the scenes' ranges, ``|p| < 10^4``) and must be
+        finite.
+    seed : int, optional
+        Integer >= 0 selecting the permutation and gradient tables (default 0).
+
+    Returns
+    -------
+    numpy.ndarray
+        float32, the broadcast shape of the coordinates.
+
+    Raises
+    ------
+    ValueError
+        For ``z`` without ``y``, a bad ``seed`` or non-finite coordinates.
+
+    Examples
+    --------
+    >>> float(noise(3.0, 5.0)), noise([[0.5, 1.5]], seed=2).shape
+    (0.0, (1, 2))
     """
     if y is None and z is not None:
         raise ValueError("noise takes x, (x, y) or (x, y, z)")

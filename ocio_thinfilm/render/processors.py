@@ -51,8 +51,11 @@ PACKAGE_CONFIG = Path(
 
 
 def _checkout_config() -> Path | None:
-    """``configs/thinfilm/config.ocio`` of the checkout this module runs from (the
-    repository's pyproject.toml beside the package), None when installed."""
+    """Return ``configs/thinfilm/config.ocio`` of the checkout this module runs from.
+
+    The checkout is recognised by the repository's pyproject.toml beside the package;
+    None when installed.
+    """
     root = Path(__file__).resolve().parents[2]
     try:
         if 'name = "ocio-thinfilm"' in (root / "pyproject.toml").read_text(encoding="utf-8"):
@@ -70,8 +73,35 @@ DEFAULT_CONFIG = _checkout_config() or PACKAGE_CONFIG
 
 
 def table_colorspace(spec: TableSpec) -> str:
-    """The config's input colour space (pixel value -> CIE-XYZ-D65) of a scene's
-    :class:`~.scenes.TableSpec`: the table the config ships for its kind."""
+    """Return the config's input colour space for a scene's table.
+
+    The thin-film colour space (pixel value -> CIE-XYZ-D65) of the table the config
+    ships for the spec's kind.
+
+    Parameters
+    ----------
+    spec : ocio_thinfilm.render.scenes.TableSpec
+        The table a scene declares.
+
+    Returns
+    -------
+    str
+        The colour space's name.
+
+    Raises
+    ------
+    ValueError
+        If the spec's range or entries are not those of the config's table (the Morpho
+        table: cos(theta) in [0, 1] with :data:`~ocio_thinfilm.lut.tables.MORPHO_SIZE`
+        entries; the thickness tables: t' in [0, 100] um with
+        :data:`~ocio_thinfilm.lut.tables.FILM_SIZE` entries).
+
+    Examples
+    --------
+    >>> from ocio_thinfilm.render.scenes import MORPHO_TABLE
+    >>> table_colorspace(MORPHO_TABLE)
+    'Thin Film Morpho Iridescence'
+    """
     lo, hi = spec.range
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0) or spec.entries != tables.MORPHO_SIZE:
@@ -88,9 +118,27 @@ def table_colorspace(spec: TableSpec) -> str:
 
 
 def load_config(config: StrPath | None = None) -> ocio_ops.Config:
-    """``PyOpenColorIO.Config`` of the file ``config`` (default :data:`DEFAULT_CONFIG`,
-    baked with :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is
-    the installed :data:`PACKAGE_CONFIG`)."""
+    """Load the OCIO config of the file ``config``.
+
+    The default config :data:`DEFAULT_CONFIG` is baked with
+    :func:`ocio_thinfilm.export.bake.bake` first when missing, unless it is the
+    installed :data:`PACKAGE_CONFIG`.
+
+    Parameters
+    ----------
+    config : str or os.PathLike, optional
+        The config file (default :data:`DEFAULT_CONFIG`).
+
+    Returns
+    -------
+    PyOpenColorIO.Config
+
+    Raises
+    ------
+    ParameterError
+        Naming ``config``: the file does not exist (the installed package's config
+        included), or OCIO cannot load it (the first line of its message).
+    """
     import PyOpenColorIO as ocio
 
     if config is None:
@@ -116,10 +164,32 @@ def load_config(config: StrPath | None = None) -> ocio_ops.Config:
 
 
 class ConfigProcessors:
-    """The OCIO CPU processors a render needs, created from one config on first use
-    (and listed in :attr:`created`): ``table(spec)`` for a scene's table (its
-    thin-film colour space -> CIE-XYZ-D65), ``view(display, view)`` for a view
-    (CIE-XYZ-D65 -> display code values)."""
+    """The OCIO CPU processors a render needs, created from one config on first use.
+
+    ``table(spec)`` for a scene's table (its thin-film colour space -> CIE-XYZ-D65),
+    ``view(display, view)`` for a view (CIE-XYZ-D65 -> display code values). A config
+    without a ``CIE-XYZ-D65`` colour space (an ACES config the thin-film spaces were
+    merged into with ``bake --into``) reaches CIE-XYZ-D65 through its ``scene_linear``
+    role and ``cie_xyz_d65_interchange`` role.
+
+    Parameters
+    ----------
+    config : PyOpenColorIO.Config, str or os.PathLike, optional
+        The config, or its file (:func:`load_config`; default :data:`DEFAULT_CONFIG`).
+
+    Attributes
+    ----------
+    config : PyOpenColorIO.Config
+        The config.
+    created : list of str
+        The processors created so far, in order: ``"colorspace:<name>"`` and
+        ``"view:<display>/<view>"``.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``config``, if the file cannot be loaded (:func:`load_config`).
+    """
 
     def __init__(self, config=None):
         self.config = (
@@ -134,10 +204,13 @@ class ConfigProcessors:
         self._bridge = None  # (scene-linear space, its transform to CIE-XYZ-D65)
 
     def _xyz_bridge(self):
-        """For a config without a ``CIE-XYZ-D65`` colour space (an ACES config the
-        thin-film spaces were merged into with ``bake --into``): its ``scene_linear``
-        colour space S and the transform S -> CIE-XYZ-D65, through the config's
-        ``cie_xyz_d65_interchange`` role (:func:`ocio_thinfilm.config.merge.interchange`)."""
+        """Return the config's scene-linear colour space and its transform to CIE-XYZ-D65.
+
+        For a config without a ``CIE-XYZ-D65`` colour space (an ACES config the thin-film
+        spaces were merged into with ``bake --into``): its ``scene_linear`` colour space S
+        and the transform S -> CIE-XYZ-D65, through the config's
+        ``cie_xyz_d65_interchange`` role (:func:`ocio_thinfilm.config.merge.interchange`).
+        """
         if self._bridge is None:
             from ocio_thinfilm.config import merge
             from ocio_thinfilm.lut import ocio_ops
@@ -157,7 +230,7 @@ class ConfigProcessors:
         return self._bridge
 
     def _xyz_transform(self, source):
-        """A processor-ready transform ``source`` colour space -> CIE-XYZ-D65."""
+        """Return a processor-ready transform ``source`` colour space -> CIE-XYZ-D65."""
         import PyOpenColorIO as ocio
 
         if self.config.getColorSpace(registry.REFERENCE) is not None:
@@ -177,12 +250,52 @@ class ConfigProcessors:
         return self._cpu[key]
 
     def table(self, spec: TableSpec) -> ocio_ops.CPUProcessor:
+        """Return the CPU processor of a scene's table: its colour space -> CIE-XYZ-D65.
+
+        Parameters
+        ----------
+        spec : ocio_thinfilm.render.scenes.TableSpec
+            The table a scene declares.
+
+        Returns
+        -------
+        PyOpenColorIO.CPUProcessor
+            Created on the first call for its colour space, then reused.
+
+        Raises
+        ------
+        ValueError
+            If the config ships no table for ``spec`` (:func:`table_colorspace`).
+        ParameterError
+            Naming ``config``, if the processor cannot be built (a missing colour space
+            or LUT file).
+        """
         space = table_colorspace(spec)
         return self._processor(
             f"colorspace:{space}", lambda: self.config.getProcessor(self._xyz_transform(space))
         )
 
     def view(self, display: str, view: str) -> ocio_ops.CPUProcessor:
+        """Return the CPU processor of a display's view: CIE-XYZ-D65 -> display code values.
+
+        Parameters
+        ----------
+        display : str
+            A display of the config.
+        view : str
+            A view of that display.
+
+        Returns
+        -------
+        PyOpenColorIO.CPUProcessor
+            Created on the first call for the pair, then reused.
+
+        Raises
+        ------
+        ParameterError
+            Naming ``config``, if the processor cannot be built (an unknown display or
+            view, a missing LUT file).
+        """
         import PyOpenColorIO as ocio
 
         def make():
@@ -200,8 +313,21 @@ class ConfigProcessors:
         return self._processor(f"view:{display}/{view}", make)
 
     def check_display_view(self, display: str, view: str) -> None:
-        """A :class:`~ocio_thinfilm.checks.ParameterError` naming ``display`` or ``view``
-        unless the config has ``display`` with ``view``."""
+        """Check that the config has ``display`` with ``view``.
+
+        Parameters
+        ----------
+        display : str
+            The display's name.
+        view : str
+            The view's name.
+
+        Raises
+        ------
+        ParameterError
+            Naming ``display`` or ``view`` (and listing the config's choices) if the
+            config does not have it.
+        """
         displays = list(self.config.getDisplays())
         if display not in displays:
             raise ParameterError("display", f" {display!r}: the config has {', '.join(displays)}")
@@ -221,8 +347,28 @@ def _apply(cpu, pixels) -> np.ndarray:
 
 
 def build_table(spec: TableSpec) -> tables.Table1D:
-    """The tables-module table for a scene's :class:`~.scenes.TableSpec` (computed
-    here, not read from a config: for comparisons with what the config holds)."""
+    """Return the tables-module table for a scene's :class:`~.scenes.TableSpec`.
+
+    Computed here, not read from a config: for comparisons with what the config holds.
+
+    Parameters
+    ----------
+    spec : ocio_thinfilm.render.scenes.TableSpec
+        The table a scene declares.
+
+    Returns
+    -------
+    ocio_thinfilm.lut.tables.Table1D
+        :func:`~ocio_thinfilm.lut.tables.morpho_table` or
+        :func:`~ocio_thinfilm.lut.tables.film_table` with the spec's entries (and, for
+        a film, its upper thickness).
+
+    Raises
+    ------
+    ValueError
+        If a Morpho spec's range is not [0, 1] or a thickness spec's does not start
+        at 0 (or the tables module refuses the entries or range).
+    """
     lo, hi = spec.range
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0):
@@ -234,15 +380,35 @@ def build_table(spec: TableSpec) -> tables.Table1D:
 
 
 def _as_rgb(values: np.ndarray) -> np.ndarray:
-    """(H, W) encoded values -> (H, W, 3) float32 with all three channels equal."""
+    """Return (H, W) encoded values as (H, W, 3) float32 with all three channels equal."""
     v = np.ascontiguousarray(values, dtype=np.float32)
     return np.repeat(v[..., None], 3, axis=-1)
 
 
 def make_lookup(processors: ConfigProcessors | None = None) -> Lookup:
-    """A scene ``lookup(spec, encoded)`` that applies the config's colour space of
-    each table (pixel encoding -> CIE-XYZ-D65) with OCIO's CPU processor, each built
-    once on first use."""
+    """Return a scene ``lookup(spec, encoded)`` that applies the config's table spaces.
+
+    The lookup applies the config's colour space of each table (pixel encoding ->
+    CIE-XYZ-D65) with OCIO's CPU processor, each built once on first use.
+
+    Parameters
+    ----------
+    processors : ConfigProcessors, optional
+        The processors to use (default: a new :class:`ConfigProcessors` of
+        :data:`DEFAULT_CONFIG`).
+
+    Returns
+    -------
+    callable
+        ``lookup(spec, encoded)``: (H, W) encoded values -> float32 (H, W, 3) CIE XYZ.
+        Its ``processors`` attribute holds ``processors``
+        (:func:`ocio_thinfilm.render.frames.render_scene` reuses them).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``config``, if the default config cannot be loaded.
+    """
     processors = processors if processors is not None else ConfigProcessors()
 
     def lookup(spec: TableSpec, encoded: np.ndarray) -> np.ndarray:
@@ -257,8 +423,33 @@ def make_lookup(processors: ConfigProcessors | None = None) -> Lookup:
 def display_image(
     picture: Picture, display: str, view: str, processors: ConfigProcessors | None = None
 ) -> np.ndarray:
-    """The display-encoded RGB of a scene's picture (float32, (H, W, 3)), each column
-    region through its view (the config's display/view processors)."""
+    """Return the display-encoded RGB of a scene's picture.
+
+    Each column region goes through its view (the config's display/view processors).
+
+    Parameters
+    ----------
+    picture : ocio_thinfilm.render.scenes.Picture
+        The scene-linear picture and its column regions.
+    display : str
+        A display of the config.
+    view : str
+        The view of the regions that name none.
+    processors : ConfigProcessors, optional
+        The processors to use (default: a new :class:`ConfigProcessors` of
+        :data:`DEFAULT_CONFIG`).
+
+    Returns
+    -------
+    numpy.ndarray
+        float32 (H, W, 3) code values clipped to [0, 1]; columns outside every region
+        are 0.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``config``, if a view's processor cannot be built.
+    """
     processors = processors if processors is not None else ConfigProcessors()
     h, w, _ = picture.xyz.shape
     out = np.zeros((h, w, 3), np.float32)

@@ -57,11 +57,21 @@ __all__ = [
 
 @dataclasses.dataclass(frozen=True)
 class TableSpec:
-    """A table a scene needs: ``kind`` ("phase-change", "no-phase-change" or
-    "morpho"), the encoding ``range`` the table covers (t' in micrometres from 0, or
-    cos(theta) in [0, 1] for "morpho") and its number of ``entries``. The scenes ask
-    for the tables the OCIO config ships (the tables module's defaults), so the
-    renders prove exactly those LUTs."""
+    """A table a scene needs.
+
+    The scenes ask for the tables the OCIO config ships (the tables module's
+    defaults), so the renders prove exactly those LUTs.
+
+    Parameters
+    ----------
+    kind : str
+        ``"phase-change"``, ``"no-phase-change"`` or ``"morpho"``.
+    range : tuple of float
+        The encoding range the table covers: t' in micrometres from 0, or cos(theta)
+        in [0, 1] for ``"morpho"``.
+    entries : int
+        Its number of entries.
+    """
 
     kind: str
     range: tuple[float, float]
@@ -69,6 +79,7 @@ class TableSpec:
 
     @property
     def encoding(self) -> str:
+        """What the table is indexed with: ``"cos(theta)"`` or the optical thickness."""
         return "cos(theta)" if self.kind == "morpho" else "optical thickness t' (um)"
 
 
@@ -89,12 +100,21 @@ D65_WHITE = np.array([0.95047, 1.0, 1.08883], np.float32)
 class Picture:
     """What a scene hands the renderer.
 
-    - ``xyz``: (H, W, 3) float32 scene-linear CIE XYZ (D65, Y = 1 white).
-    - ``aovs``: extra EXR channels, name -> (H, W) float32 (documented in ``aov_docs``).
-    - ``regions``: ``(x0, x1, view)`` column ranges and the view each is displayed
-      through; ``view=None`` means the view chosen on the command line.
-    - ``labels``: ``(x, y, text, size)`` captions drawn on the display image.
-    - ``attributes``: metadata for the EXR (exposure, parameters).
+    Parameters
+    ----------
+    xyz : numpy.ndarray
+        (H, W, 3) float32 scene-linear CIE XYZ (D65, Y = 1 white).
+    aovs : dict
+        Extra EXR channels, name -> (H, W) float32 (documented in ``aov_docs``).
+    aov_docs : dict
+        Channel name -> what it holds.
+    regions : list of tuple
+        ``(x0, x1, view)`` column ranges and the view each is displayed through;
+        ``view=None`` means the view chosen on the command line.
+    labels : list of tuple, optional
+        ``(x, y, text, size)`` captions drawn on the display image.
+    attributes : dict, optional
+        Metadata for the EXR (exposure, parameters).
     """
 
     xyz: np.ndarray
@@ -106,7 +126,21 @@ class Picture:
 
 
 class Scene:
-    """Base class: a name, the figure it reproduces, the tables it declares."""
+    """Base class of the scenes: a name, the figure it reproduces, the tables it declares.
+
+    Attributes
+    ----------
+    name : str
+        The scene's name (a key of :data:`SCENES`).
+    figure : str
+        The paper's figure it reproduces.
+    title : str
+        What it shows.
+    animation : str
+        What changes with the frame number.
+    tables : tuple of TableSpec
+        The tables its ``lookup`` is called with.
+    """
 
     name = ""
     figure = ""
@@ -117,11 +151,31 @@ class Scene:
     def render(
         self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
     ) -> Picture:  # pragma: no cover - abstract
+        """Render one frame of the scene in scene-linear CIE XYZ.
+
+        Parameters
+        ----------
+        width, height : int
+            Image size in pixels.
+        lookup : callable
+            ``lookup(spec, encoded)``: (H, W) encoded values of a table of :attr:`tables`
+            -> (H, W, 3) CIE XYZ (the renderer's, e.g.
+            :func:`~ocio_thinfilm.render.processors.make_lookup`).
+        seed : int, optional
+            Noise seed, an integer >= 0 (default 0).
+        frame : int, optional
+            Frame number, 1 the still (default 1); animated parameters depend on it only.
+
+        Returns
+        -------
+        Picture
+            The picture, its AOVs, column regions, captions and EXR attributes.
+        """
         raise NotImplementedError
 
 
 def _pixel_grid(width, height):
-    """Pixel centres as float32 (x in [0, W), y in [0, H)), each (H, W)."""
+    """Return the pixel centres as float32 (x in [0, W), y in [0, H)), each (H, W)."""
     y, x = np.meshgrid(
         np.arange(height, dtype=np.float32) + np.float32(0.5),
         np.arange(width, dtype=np.float32) + np.float32(0.5),
@@ -136,14 +190,17 @@ def _smoothstep(e0, e1, x):
 
 
 def _optical_thickness_um(t_um, n, theta_deg):
-    """The table index: t' = t n cos(theta_t) (paper Eq. 10 form, through the
-    refraction angle; :func:`.spectra.optical_thickness` works in nm) in micrometres."""
+    """Return the table index t' = t n cos(theta_t) in micrometres.
+
+    Paper Eq. 10 form, through the refraction angle; :func:`.spectra.optical_thickness`
+    works in nm.
+    """
     t_nm = np.asarray(t_um, np.float64) * 1000.0
     return (spectra.optical_thickness(t_nm, n, theta_deg) / 1000.0).astype(np.float32)
 
 
 def _grey(Y):
-    """Neutral (D65) XYZ of luminance ``Y`` (H, W) -> (H, W, 3)."""
+    """Return neutral (D65) XYZ of luminance ``Y`` (H, W) -> (H, W, 3)."""
     return np.asarray(Y, np.float32)[..., None] * D65_WHITE
 
 
@@ -151,9 +208,12 @@ def _grey(Y):
 # Figure 4: the spectrum and Newton's colours through three views.
 # --------------------------------------------------------------------------- #
 class SpectrumScene(Scene):
-    """Figure 4: the visible spectrum, Newton's colours of a soap film against
-    thickness and the Morpho colours against angle, each strip through four views side
-    by side (the clip and the compression keep luminance, the clamp and ACES do not)."""
+    """Figure 4: the visible spectrum and two rows of interference colours.
+
+    The visible spectrum, Newton's colours of a soap film against thickness and the
+    Morpho colours against angle, each strip through four views side by side (the clip
+    and the compression keep luminance, the clamp and ACES do not).
+    """
 
     name = "spectrum"
     figure = "Figure 4"
@@ -184,6 +244,7 @@ class SpectrumScene(Scene):
     def render(
         self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
     ) -> Picture:
+        """Render one frame: see :meth:`Scene.render`."""
         header = max(2, int(round(height * 0.11)))
         gap = max(1, width // 64)
         panel = (width - (len(self.VIEWS) + 1) * gap) // len(self.VIEWS)
@@ -261,10 +322,12 @@ class SpectrumScene(Scene):
 # Figure 5: an oil slick on wet asphalt.
 # --------------------------------------------------------------------------- #
 class OilScene(Scene):
-    """Figure 5: an oil slick (n = 1.5; air|oil inverts, oil|water does not: a phase
-    change) on wet asphalt, thickness t = T exp(-k1 r^2) made irregular by turbulence
-    (Eq. 12-13), seen by a camera looking down at the road: each pixel's view angle
-    gives its optical thickness (Eq. 10 form)."""
+    """Figure 5: an oil slick on wet asphalt, seen by a camera looking down at the road.
+
+    An oil slick (n = 1.5; air|oil inverts, oil|water does not: a phase change) on wet
+    asphalt, thickness t = T exp(-k1 r^2) made irregular by turbulence (Eq. 12-13):
+    each pixel's view angle gives its optical thickness (Eq. 10 form).
+    """
 
     name = "oil"
     figure = "Figure 5"
@@ -288,8 +351,22 @@ class OilScene(Scene):
     WATER_SHEEN = 0.012  # Fresnel reflection of the sky by the bare water film
 
     def camera_rays(self, width: int, height: int) -> tuple[np.ndarray, np.ndarray, np.float32]:
-        """Unit ray directions (H, W, 3) of a pinhole camera (z up, looking along +y
-        and down by PITCH) and the camera position."""
+        """Return the rays of a pinhole camera (z up, looking along +y and down by PITCH).
+
+        Parameters
+        ----------
+        width, height : int
+            Image size in pixels.
+
+        Returns
+        -------
+        directions : numpy.ndarray
+            float32 (H, W, 3) unit ray directions.
+        eye : numpy.ndarray
+            float32 (3,) camera position in metres (CAMERA_HEIGHT above the road).
+        pixel_angle : numpy.float32
+            Size of one pixel on the image plane at unit distance (radians, nearly).
+        """
         x, y = _pixel_grid(width, height)
         tan_half = np.float32(np.tan(np.radians(self.FOV) / 2))
         u = (x / width * 2 - 1) * tan_half * (width / height)
@@ -307,6 +384,7 @@ class OilScene(Scene):
     def render(
         self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
     ) -> Picture:
+        """Render one frame: see :meth:`Scene.render`."""
         d, eye, pixel_angle = self.camera_rays(width, height)
         dz = np.minimum(d[..., 2], np.float32(-1e-3))
         s = -eye[2] / dz  # distance to the road
@@ -365,10 +443,26 @@ class OilScene(Scene):
     def asphalt(
         gx: np.ndarray, gy: np.ndarray, footprint: np.ndarray | float, seed: int
     ) -> np.ndarray:
-        """Wet asphalt (XYZ). Two noise calls set the local bump scale (a blend between
-        coarse and fine aggregate) and the roughness (the bumps' amplitude); very fine
-        bumps go on top. Shaded by the bump slope under the overcast sky; the water
-        film darkens it."""
+        """Return wet asphalt as XYZ (H, W, 3).
+
+        Two noise calls set the local bump scale (a blend between coarse and fine
+        aggregate) and the roughness (the bumps' amplitude); very fine bumps go on top.
+        Shaded by the bump slope under the overcast sky; the water film darkens it.
+
+        Parameters
+        ----------
+        gx, gy : numpy.ndarray
+            (H, W) road coordinates in metres.
+        footprint : numpy.ndarray or float
+            Size of a pixel on the road in metres (band-limits the turbulence).
+        seed : int
+            Noise seed, an integer >= 0.
+
+        Returns
+        -------
+        numpy.ndarray
+            float32 (H, W, 3) CIE XYZ.
+        """
         scale = _smoothstep(-0.35, 0.35, noise.noise(gx * 0.8, gy * 0.8, seed=seed + 11))
         rough = np.clip(
             0.6 + 0.8 * noise.noise(gx * 1.5 + 5.3, gy * 1.5, seed=seed + 12), 0.15, 1.2
@@ -394,8 +488,10 @@ class OilScene(Scene):
 # Figure 6: a soap bubble.
 # --------------------------------------------------------------------------- #
 class SoapScene(Scene):
-    """Figure 6: a soap bubble (n = 1.33, phase change), thickness proportional to the
-    normalised height plus turbulence: black at the thin, drained top."""
+    """Figure 6: a soap bubble (n = 1.33, phase change), black at the thin, drained top.
+
+    Its thickness is proportional to the normalised height plus turbulence.
+    """
 
     name = "soap"
     figure = "Figure 6"
@@ -414,6 +510,7 @@ class SoapScene(Scene):
     def render(
         self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
     ) -> Picture:
+        """Render one frame: see :meth:`Scene.render`."""
         x, y = _pixel_grid(width, height)
         r = np.float32(self.RADIUS * min(width, height))
         nx = (x - width / 2) / r
@@ -488,8 +585,10 @@ class SoapScene(Scene):
 # Figure 7: the Morpho butterfly's iridescent blue.
 # --------------------------------------------------------------------------- #
 class MorphoScene(Scene):
-    """Figure 7: a wavy surface coloured by the Morpho multilayer (Eq. 9 + 14) through
-    the angle table, blue-violet face on and darker towards grazing."""
+    """Figure 7: a wavy surface coloured by the Morpho multilayer (Eq. 9 + 14).
+
+    Through the angle table: blue-violet face on and darker towards grazing.
+    """
 
     name = "morpho"
     figure = "Figure 7"
@@ -515,6 +614,7 @@ class MorphoScene(Scene):
     def render(
         self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
     ) -> Picture:
+        """Render one frame: see :meth:`Scene.render`."""
         x, y = _pixel_grid(width, height)
         side = np.float32(min(width, height))
         u, v = x / side, y / side
@@ -570,8 +670,27 @@ SCENES = {s.name: s for s in (SpectrumScene(), OilScene(), SoapScene(), MorphoSc
 
 
 def get_scene(name: str) -> Scene:
-    """The scene called ``name`` (a key of :data:`SCENES`), else ValueError naming the
-    choices."""
+    """Return the scene called ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`SCENES`.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    ValueError
+        For any other name; the message lists the choices.
+
+    Examples
+    --------
+    >>> get_scene("oil").figure
+    'Figure 5'
+    """
     try:
         return SCENES[name]
     except KeyError:
