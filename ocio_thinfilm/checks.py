@@ -118,8 +118,7 @@ def as_array(
         Lower bound of the values (of their real parts for complex values); ``None``
         (default) for none.
     maximum : float, optional
-        Upper bound, inclusive; ``None`` (default) for none. The message of a value
-        above it states ``minimum`` too, so give both.
+        Upper bound, inclusive; ``None`` (default) for none.
     strict : bool, optional
         Whether values must be greater than ``minimum`` (default ``False``: greater
         or equal).
@@ -161,21 +160,18 @@ def as_array(
         a = a.astype(np.float64, copy=False)
         check = a
     if check.size and not np.all(np.isfinite(check)):
-        raise ParameterError(name, f" must be finite{_range_text(minimum, maximum, strict, unit)}")
-    if minimum is not None and check.size:
-        bad = check <= minimum if strict else check < minimum
-        if np.any(bad):
+        bounds = _bounds(minimum, maximum, strict, unit)
+        raise ParameterError(name, " must be finite" + (f" and {bounds}" if bounds else ""))
+    if not check.size:
+        return a
+    below = (check <= minimum if strict else check < minimum) if minimum is not None else None
+    above = check > maximum if maximum is not None else None
+    for bad in (below, above):
+        if bad is not None and np.any(bad):
             raise ParameterError(
                 name,
-                f" must be {'>' if strict else '>='} {minimum:g}{unit}"
-                f"{'' if maximum is None else f' and <= {maximum:g}{unit}'}, "
-                f"got {check[bad].flat[0]:g}",
+                f" must be {_bounds(minimum, maximum, strict, unit)}, got {check[bad].flat[0]:g}",
             )
-    if maximum is not None and check.size and np.any(check > maximum):
-        raise ParameterError(
-            name,
-            f" must be in [{minimum:g}, {maximum:g}]{unit}, got {check[check > maximum].flat[0]:g}",
-        )
     return a
 
 
@@ -201,12 +197,17 @@ def short_repr(value: object) -> str:
     return text if len(text) <= 40 else text[:37] + "..."
 
 
-def _range_text(minimum: float | None, maximum: float | None, strict: bool, unit: str) -> str:
-    if minimum is None:
+def _bounds(minimum: float | None, maximum: float | None, strict: bool, unit: str) -> str:
+    """``">= 0 nm"``, ``"<= 90 degrees"``, ``"in [0, 90] degrees"`` or ``""`` (no bounds)."""
+    if minimum is None and maximum is None:
         return ""
     if maximum is None:
-        return f" and {'>' if strict else '>='} {minimum:g}{unit}"
-    return f" and in [{minimum:g}, {maximum:g}]{unit}"
+        return f"{'>' if strict else '>='} {minimum:g}{unit}"
+    if minimum is None:
+        return f"<= {maximum:g}{unit}"
+    if strict:
+        return f"> {minimum:g}{unit} and <= {maximum:g}{unit}"
+    return f"in [{minimum:g}, {maximum:g}]{unit}"
 
 
 def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = None) -> int:
@@ -232,10 +233,9 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
     Raises
     ------
     TypeError
-        If ``value`` is not a number.
+        If ``value`` is not a number (a string, a bool).
     ParameterError
-        If ``value`` is a bool, not finite, not an integer or outside
-        ``[minimum, maximum]``.
+        If ``value`` is not finite, not an integer or outside ``[minimum, maximum]``.
 
     Examples
     --------
@@ -246,11 +246,11 @@ def as_count(name: str, value: object, minimum: int = 1, maximum: int | None = N
     ...
     ocio_thinfilm.checks.ParameterError: layers must be an integer in [1, 10], got 3.5
     """
-    if isinstance(value, (bool, np.bool_)):
-        raise ParameterError(name, f" must be an integer >= {minimum}, got {value!r}")
-    if not isinstance(value, (int, float, np.number)):  # a string is not parsed
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        # a string is not parsed, a bool is not a count
+        allowed = f">= {minimum}" if maximum is None else f"in [{minimum}, {maximum}]"
         raise TypeError(
-            f"{name} must be an integer >= {minimum}, got {value!r} ({type(value).__name__})"
+            f"{name} must be an integer {allowed}, got {value!r} ({type(value).__name__})"
         )
     f = float(value)
     if not np.isfinite(f) or f != int(f) or f < minimum or (maximum is not None and f > maximum):

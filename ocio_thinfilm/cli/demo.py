@@ -7,6 +7,7 @@ import sys
 
 import numpy as np
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.io import check_output_file, is_stdout, write_image
 from ocio_thinfilm.physics import spectra
@@ -32,7 +33,7 @@ def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 
         ``optical_thickness_nm`` (float, t' = n t cos(theta_t)), ``XYZ`` (D65, white
         Y = 1), ``linear_rgb`` (the display's linear RGB, unclipped), ``clipped_rgb``
         (after the constant-lightness clip) and ``encoded`` (the clipped RGB, clamped to
-        [0, 1] and encoded with the sRGB curve whatever the display).
+        [0, 1] and encoded with the display's encoding).
     """
     t_opt = spectra.optical_thickness(thickness_nm, SOAP_INDEX, theta)
     XYZ = colorimetry.film_XYZ(t_opt)
@@ -43,14 +44,21 @@ def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 
         "XYZ": XYZ,
         "linear_rgb": rgb,
         "clipped_rgb": clipped,
-        "encoded": _encode(clipped),
+        "encoded": _encode(clipped, display),
     }
 
 
-def _encode(rgb):
+def _encode(rgb, display="sRGB"):
+    """Display-linear RGB clamped to [0, 1] -> code values in ``display``'s encoding (the
+    registry's: the sRGB piecewise curve of IEC 61966-2-1, or BT.1886's inverse EOTF
+    with a black level of 0), by colour-science."""
     import colour
 
-    return colour.cctf_encoding(np.clip(rgb, 0, 1), function="sRGB")
+    encoding = registry.as_display(display, hdr=False, parameter="display").encoding
+    linear = np.clip(rgb, 0, 1)
+    if encoding.offset is None:
+        return colour.models.eotf_inverse_BT1886(linear)
+    return colour.cctf_encoding(linear, function="sRGB")
 
 
 def soap_strip(
@@ -79,8 +87,8 @@ def soap_strip(
     rgb = colorimetry.XYZ_to_RGB(
         colorimetry.film_XYZ(spectra.optical_thickness(t, SOAP_INDEX)), display
     )
-    top = _encode(clip.clip_RGB(rgb, display))
-    bottom = _encode(clip.clamp_RGB(rgb))
+    top = _encode(clip.clip_RGB(rgb, display), display)
+    bottom = _encode(clip.clamp_RGB(rgb), display)
     rows = [top] * (height // 2) + [bottom] * (height - height // 2)
     return np.stack(rows).astype(np.float32)
 

@@ -321,7 +321,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         default=render.DEFAULT_VIEW,
         help=f"view of the PNG, one of the display's (the package's: "
         f"{', '.join(registry.VIEWS)}; default {render.DEFAULT_VIEW}); the "
-        "spectrum scene shows the first three side by side",
+        "spectrum scene shows the first four side by side",
     )
     p.add_argument(
         "--config",

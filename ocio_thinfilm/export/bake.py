@@ -277,7 +277,8 @@ def bake(
             raise ParameterError(
                 "luts", f" {luts}: must not be, contain or lie inside the output directory {out}"
             )
-    n_files = len(registry.THIN_FILM_LIST) + 2 * len(registry.DISPLAYS) + 1  # 2 clip LUTs each
+    # the thin-film tables, two clip and two compression LUTs per SDR display, config.ocio
+    n_files = len(registry.THIN_FILM_LIST) + 4 * len(registry.DISPLAYS) + 1
     bar = progress_bar(show_progress, total=n_files, desc=f"bake {claim.path}")
     try:
         with transaction() as tx:

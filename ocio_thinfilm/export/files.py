@@ -369,7 +369,7 @@ def write_lut(
     """
     import PyOpenColorIO as ocio
 
-    writer, ext, _ = FORMATS[fmt]
+    writer, ext, _ = FORMATS[as_choice("fmt", fmt, FORMATS)]
     path = Path(path)
     lo, hi = meta["range"]
     if fmt in NO_DOMAIN and (lo, hi) != (0.0, 1.0):
@@ -509,7 +509,7 @@ def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
     return tqdm(
         total=total,
         desc=desc,
-        unit="" if isinstance(total, int) else "",
+        unit="file",
         leave=False,
         file=sys.stderr,
         mininterval=0.2,

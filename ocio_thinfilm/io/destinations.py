@@ -221,14 +221,14 @@ def check_output_file(path: StrPath, parameter: str = "out") -> Path:
     ParameterError
         Naming ``parameter``, for what :func:`destination` refuses (an empty path, a
         directory in its place, a parent that is not a directory).
-    ValueError
-        From :func:`check_writable` (not naming ``parameter``) when the file's
-        directory cannot be created or written.
+        Also when the file's directory cannot be created or written.
     """
     try:
         mode, dest = destination(path)
+        if mode == "replace":
+            check_writable(dest.parent)
+    except ParameterError:
+        raise
     except ValueError as error:
         raise ParameterError(parameter, f" {error}") from None
-    if mode == "replace":
-        check_writable(dest.parent)
     return Path(path)

@@ -309,7 +309,7 @@ def transaction() -> Iterator[Transaction]:
 
 
 @contextlib.contextmanager
-def atomic_file(path: StrPath, suffix: str | None = None) -> Iterator[Path]:
+def atomic_file(path: StrPath) -> Iterator[Path]:
     """Write one file atomically: yield a temporary path next to ``path``.
 
     On success the temporary is checked, fsynced and renamed onto ``path``
@@ -320,8 +320,6 @@ def atomic_file(path: StrPath, suffix: str | None = None) -> Iterator[Path]:
     ----------
     path : str or os.PathLike
         The destination.
-    suffix : str, optional
-        Not used.
 
     Yields
     ------

@@ -15,7 +15,7 @@ range, entries); the renderer creates processors for those and nothing else.
 Scenes
 ------
 - ``spectrum`` (Fig. 4): the visible spectrum and a strip of Newton's (near-spectral)
-  interference colours, through three views side by side.
+  interference colours, through four views side by side.
 - ``oil`` (Fig. 5): an oil slick on wet asphalt, Eq. 12-13, seen by a camera looking
   down at the ground; per-pixel view angle; asphalt from two noise calls (bump scale
   and roughness) plus very fine bumps.
@@ -205,7 +205,7 @@ def _grey(Y):
 
 
 # --------------------------------------------------------------------------- #
-# Figure 4: the spectrum and Newton's colours through three views.
+# Figure 4: the spectrum and Newton's colours through four views.
 # --------------------------------------------------------------------------- #
 class SpectrumScene(Scene):
     """Figure 4: the visible spectrum and two rows of interference colours.
