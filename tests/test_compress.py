@@ -17,7 +17,7 @@ import pytest
 
 from evaluation.colours import gamut_map_sets, object_colours
 from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.lut import clip_lut, compress_lut
+from ocio_thinfilm.lut import compress_lut, grid
 
 ocio = pytest.importorskip("PyOpenColorIO")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -156,9 +156,9 @@ def test_lut_factorisation_is_the_analytic_map(display):
     rgb = np.concatenate(
         [_random_rgb(display, seed=2), colorimetry.XYZ_to_RGB(object_colours()[:3000], display)]
     )
-    a = compress_lut.soft_black_RGB(rgb, display)
-    a = clip_lut.clip_black_faces_RGB(a, display)
-    a = compress_lut.soft_white_RGB(a, display)
+    a = compress.soft_black_RGB(rgb, display)
+    a = clip.clip_black_faces_RGB(a, display)
+    a = compress.soft_white_RGB(a, display)
     a = clip.clip_RGB(a, display)
     np.testing.assert_allclose(a, compress.compress_RGB(rgb, display), atol=1e-9)
 
@@ -169,13 +169,13 @@ def test_white_squeeze_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch
     (another CPU's dot product): past white a grey node takes the formula's limit
     Y + A (1 - Y), not a ratio of rounding errors (one node of each S_w differed by up to
     192 codes between two machines)."""
-    nodes, tops = clip_lut._white_nodes(compress_lut.SOFT_WHITE_SIZE, display)
+    nodes, tops = grid.white_nodes(compress_lut.SOFT_WHITE_SIZE, display)
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
-    w0 = clip_lut._luminance(display)
+    w0 = clip.luminance_weights(display)
     codes = []
     for k in (0, -2, -1, 1, 2):
         w = w0 * (1.0 + k * np.finfo(float).eps)
-        monkeypatch.setattr(compress_lut, "_luminance", lambda _d, w=w: w)
+        monkeypatch.setattr(clip, "luminance_weights", lambda _d, w=w: w)
         params = (compress.THRESHOLD, compress.LIMIT, compress.POWER)
         codes.append(compress_lut._squeeze_codes(C, display, params, tops))
     grey = np.all(C == C[:, :1], axis=1) & (C[:, 0] > 1.0)
