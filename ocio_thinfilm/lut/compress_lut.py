@@ -80,7 +80,9 @@ class CompressLUT:
         The clip's passes (L, U), shared with the Constant-Lightness Clip view.
     black : numpy.ndarray
         (n, n, n, 3) over S_b's chart (u_a, u_b, Y) of ``chart``: the chart coordinates
-        of S_b(X) and Y (constant along Y), half floats rounded to the 16-bit grid.
+        of S_b(X) and Y (constant along Y) times
+        :func:`~ocio_thinfilm.lut.storage.grid_scale` (n), half floats rounded to the
+        16-bit grid.
     white : numpy.ndarray
         (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.grid.white_nodes`:
         S_w(c) / tops (the clip's white-pass input scale), half floats in [0, 1] rounded
@@ -112,7 +114,10 @@ class CompressLUT:
         name = f"{self.name} Black Faces"
         t, lim, _ = self.parameters
         return group(
-            [lut3d_transform(self.black, bitdepth="uint16")],
+            [
+                lut3d_transform(self.black, bitdepth="uint16"),
+                ocio_ops.matrix(np.eye(3) / storage.grid_scale(self.black.shape[0])),
+            ],
             name=name,
             id=transform_id("Gamut_Map", name),
             description=(
@@ -120,7 +125,9 @@ class CompressLUT:
                 f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
                 "distance to the faces through black, before the clip's "
                 f"black pass: a {self.black.shape[0]}^3 tetrahedral "
-                "Lut3D over the clip's chromaticity chart; keeps Y. See "
+                "Lut3D over its own chromaticity chart, which stores its output "
+                "scaled so that the identity is exact in half floats, and the "
+                "gain that undoes the scale; keeps Y. See "
                 "ocio_thinfilm.lut.compress_lut."
             ),
             input_descriptor="(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
@@ -205,6 +212,9 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     black = np.empty((size, size, size, 3))
     black[..., :2] = np.clip(uv, 0.0, 1.0).reshape(size, size, 1, 2)
     black[..., 2] = g
+    # stored times grid_scale: the nodes where S_b is the identity (every colour up to
+    # the threshold) then hold exact half floats, k / 2^m
+    black *= storage.grid_scale(size)
     nodes, tops = grid.white_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)

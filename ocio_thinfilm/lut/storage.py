@@ -11,6 +11,9 @@ of Y. Design and measurements: docs/gamut_map.md ("Faces that are exact on every
 
 - :data:`LUT_CODE_MAX` -- the largest 16-bit code;
 - :func:`q16` -- values on the 16-bit grid; :func:`half16` -- half floats, then that grid;
+- :func:`grid_scale` -- the output scale that makes a Lut3D's grid values k / (n - 1)
+  exact half floats (a LUT that holds the identity on part of its grid stores it
+  exactly);
 - :func:`face_frame` -- the stored coordinates z = sign (u - origin) of the black pass;
 - :func:`halves_inside` -- points of the triangle as the nearest half floats inside it.
 """
@@ -24,6 +27,7 @@ __all__ = [
     "LUT_CODE_MAX",
     "q16",
     "half16",
+    "grid_scale",
     "face_frame",
     "halves_inside",
 ]
@@ -58,6 +62,27 @@ def half16(values: npt.ArrayLike) -> np.ndarray:
     21840.0
     """
     return q16(np.asarray(values).astype(np.float16).astype(np.float64))
+
+
+def grid_scale(size: int) -> float:
+    """The scale ``s = (size - 1) / 2^m`` (``2^m`` the smallest power of 2 >= size - 1)
+    that makes every grid value ``k / (size - 1)`` of a Lut3D of edge ``size``, scaled,
+    the exact half float ``k / 2^m`` (for ``size - 1 <= 2048``).
+
+    A LUT that reproduces its input on part of its grid (the identity inside a gamut)
+    and stores ``s`` times its output, followed by a gain ``1 / s``, then holds that
+    identity exactly in half floats, and within half a 16-bit step in the file: half
+    floats cannot hold ``k / 48`` (2.4e-4 off near 1) but hold ``k / 64``.
+
+    Examples
+    --------
+    >>> grid_scale(49), grid_scale(65), grid_scale(33)
+    (0.75, 1.0, 1.0)
+    >>> round(float(half16(7 / 48 * grid_scale(49)) * 64), 4)  # 7 / 64 to a 16-bit step
+    7.0001
+    """
+    cells = size - 1
+    return cells / 2.0 ** int(np.ceil(np.log2(cells)))
 
 
 def face_frame(V: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
