@@ -58,14 +58,27 @@ from ocio_thinfilm.lut.tables import check_size
 __all__ = [
     "SOFT_SIZE",
     "SOFT_WHITE_SIZE",
+    "SOFT_WHITE_INSIDE",
+    "SOFT_WHITE_GRADED",
+    "SOFT_WHITE_RATIO",
     "CompressLUT",
     "compress_lut",
 ]
 
 #: Edge of S_b's Lut3D (over its own chart, :func:`ocio_thinfilm.lut.grid.soft_plan`).
 SOFT_SIZE = 49
-#: Edge of S_w's Lut3D (the clip's white-pass node layout).
+#: Edge of S_w's Lut3D.
 SOFT_WHITE_SIZE = 49
+#: S_w's node layout (:func:`ocio_thinfilm.lut.grid.white_nodes`): the share of each axis
+#: below 1, and the last cells below white graded geometrically towards it (number and
+#: ratio). S_w is the identity where the distance D is below the threshold, a region that
+#: narrows like 1 - Y towards white; cells proportional to the distance from white keep
+#: as many across it at every scale, so colours near white inside the threshold stay put.
+#: Chosen by measurement (docs/compress.md): colours half-way to the boundary move by
+#: dE2000 <= 0.07 and the clip's test sets stay within p99 0.5 / max 1.5.
+SOFT_WHITE_INSIDE = 0.55
+SOFT_WHITE_GRADED = 9
+SOFT_WHITE_RATIO = 0.57
 
 
 @dataclass(frozen=True, eq=False)
@@ -84,9 +97,10 @@ class CompressLUT:
         :func:`~ocio_thinfilm.lut.storage.grid_scale` (n), half floats rounded to the
         16-bit grid.
     white : numpy.ndarray
-        (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.grid.white_nodes`:
-        S_w(c) / tops (the clip's white-pass input scale), half floats in [0, 1] rounded
-        to the 16-bit grid.
+        (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.grid.white_nodes`
+        (:data:`SOFT_WHITE_INSIDE`, :data:`SOFT_WHITE_GRADED`, :data:`SOFT_WHITE_RATIO`,
+        on the shaper's samples): S_w(c) / tops (the clip's white-pass input scale) on
+        the 16-bit grid in [0, 1].
     white_shaper : numpy.ndarray
         (SHAPER_LENGTH, 3): the per-channel Lut1D over c_i / tops[i] in front of
         ``white``, piecewise linear in c between nodes.
@@ -189,12 +203,27 @@ class CompressLUT:
         )
 
 
+def _squeeze_nodes(white_edge: int, display: str) -> tuple[np.ndarray, np.ndarray]:
+    """S_w's nodes per axis and the clip's tops (:func:`ocio_thinfilm.lut.grid.white_nodes`
+    with :data:`SOFT_WHITE_INSIDE`, :data:`SOFT_WHITE_GRADED`, :data:`SOFT_WHITE_RATIO`,
+    on the shaper's samples)."""
+    return grid.white_nodes(
+        white_edge,
+        display,
+        inside=SOFT_WHITE_INSIDE,
+        graded=SOFT_WHITE_GRADED,
+        ratio=SOFT_WHITE_RATIO,
+        snap=True,
+    )
+
+
 def _squeeze_codes(
     C: np.ndarray, display: str, parameters: tuple[float, float, float], tops: np.ndarray
 ) -> np.ndarray:
-    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops, half floats on the
-    16-bit grid (:func:`ocio_thinfilm.lut.storage.half16`)."""
-    return storage.half16(np.clip(soft.soft_white_RGB(C, display, *parameters), 0.0, tops) / tops)
+    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops on the 16-bit grid
+    (:func:`ocio_thinfilm.lut.storage.q16`; not rounded to half floats first, which would
+    move the identity nodes near white by up to 3e-4)."""
+    return storage.q16(np.clip(soft.soft_white_RGB(C, display, *parameters), 0.0, tops) / tops)
 
 
 @cache.memoize(maxsize=16)
@@ -215,14 +244,15 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     # stored times grid_scale: the nodes where S_b is the identity (every colour up to
     # the threshold) then hold exact half floats, k / 2^m
     black *= storage.grid_scale(size)
-    nodes, tops = grid.white_nodes(white_edge, display)
+    nodes, tops = _squeeze_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
     # stored linear: with the shaper piecewise linear in c itself, the grid coordinates
     # are affine in c within each cell, so interpolating S_w, which keeps Y (a linear
     # function), keeps Y (stored sRGB-encoded, as the clip's white pass, the encoding's
-    # curvature costs |dY|: docs/compress.md). Half floats rounded to the 16-bit grid, as the
-    # black passes: half-float GPU textures see the CPU's values.
+    # curvature costs |dY|: docs/compress.md). The nodes sit on the shaper's samples
+    # (snap=True), so the shaper is exact and the identity nodes are reproduced to the
+    # 16-bit step.
     shaper = np.stack([grid.shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
     out = CompressLUT(
         display=display,

@@ -186,15 +186,56 @@ def encode(values: npt.ArrayLike, display: str) -> np.ndarray:
     return encoded.astype(np.float64).reshape(a.shape)
 
 
-def white_nodes(size: int, display: str) -> tuple[np.ndarray, np.ndarray]:
+def white_nodes(
+    size: int,
+    display: str,
+    inside: float = WHITE_INSIDE,
+    graded: int = 0,
+    ratio: float = 1.0,
+    snap: bool = False,
+) -> tuple[np.ndarray, np.ndarray]:
     """Node values of each axis of the white pass, (3, size) display-linear: below 1
-    at working-encoding code values 1 - (1 - k/n)^WHITE_POWER (shared), above 1
-    growing geometrically up to the channel's largest value 1 / w_i (w: the
+    at working-encoding code values 1 - g_k with g_k = (1 - k/n)^WHITE_POWER (shared),
+    above 1 growing geometrically up to the channel's largest value 1 / w_i (w: the
     display's luminance row; a colour with Y <= 1 and no negative channel has
-    c_i <= 1 / w_i). Returns (nodes, tops), tops[i] the last node of axis i."""
+    c_i <= 1 / w_i). Returns (nodes, tops), tops[i] the last node of axis i.
+
+    Parameters
+    ----------
+    size : int
+        Nodes per axis.
+    display : str
+        A display of the registry.
+    inside : float, optional
+        Share of the cells below 1 (default :data:`WHITE_INSIDE`).
+    graded : int, optional
+        The last ``graded`` gaps g_k below white shrink geometrically by ``ratio``
+        instead (cells whose size is proportional to their distance from white: a map
+        whose features narrow like 1 - Y towards white, as the compression's identity
+        region does, then has as many cells across them at every scale).
+    ratio : float, optional
+        The geometric ratio of the graded gaps.
+    snap : bool, optional
+        Put every node but 0, 1 and the top on a sample of the :data:`SHAPER_LENGTH`
+        Lut1D over [0, top] (:func:`shaper_values`, linear in the value): the shaper's
+        linear interpolation then is exactly the piecewise-linear map between the nodes.
+
+    Examples
+    --------
+    Four of the eight cells lie below 1, at sRGB code values 1 - (1 - k/4)^1.5:
+
+    >>> nodes, tops = white_nodes(9, "sRGB")
+    >>> encode(nodes[1, :5], "sRGB").round(3).tolist(), bool(nodes[1, -1] == tops[1])
+    ([0.0, 0.35, 0.646, 0.875, 1.0], True)
+    """
     cells = size - 1
-    inside = max(2, int(round(cells * WHITE_INSIDE)))
-    code = 1.0 - (1.0 - np.linspace(0.0, 1.0, inside + 1)) ** WHITE_POWER
+    inside_cells = max(2, int(round(cells * inside)))
+    gap = (1.0 - np.linspace(0.0, 1.0, inside_cells + 1)) ** WHITE_POWER
+    if graded > 0:
+        first = inside_cells - graded
+        gap[first:inside_cells] = gap[first] * ratio ** np.arange(graded)
+        gap[inside_cells] = 0.0
+    code = 1.0 - gap
     below = apply(
         ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
         np.repeat(code[:, None], 3, axis=1),
@@ -205,11 +246,21 @@ def white_nodes(size: int, display: str) -> tuple[np.ndarray, np.ndarray]:
     nodes = np.array(
         [
             np.concatenate(
-                [below, 1.0 + np.cumsum(grow(WHITE_FIRST_STEP, top - 1.0, cells - inside))]
+                [
+                    below,
+                    1.0 + np.cumsum(grow(WHITE_FIRST_STEP, top - 1.0, cells - inside_cells)),
+                ]
             )
             for top in tops
         ]
     )
+    if snap:
+        last = SHAPER_LENGTH - 1
+        samples = np.round(nodes / tops[:, None] * last) / last * tops[:, None]
+        fixed = (nodes == 0.0) | (nodes == 1.0) | (nodes == nodes[:, -1:])
+        nodes = np.where(fixed, nodes, samples)
+        if not (np.diff(nodes, axis=1) > 0.0).all():
+            raise ParameterError("size", f" {size}: nodes closer than the shaper's samples")
     return nodes, tops
 
 
