@@ -33,7 +33,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from ocio_thinfilm.colour import clip, colorimetry
 from evaluation.colours import object_colours, spectral_colours  # noqa: E402
-from ocio_thinfilm.lut import clip_lut, display_transforms, ocio_ops, tables  # noqa: E402
+from ocio_thinfilm.lut import clip_lut, display_transforms, grid, ocio_ops, tables  # noqa: E402
 
 
 def grey(x):
@@ -226,7 +226,7 @@ def bench_3d(displays, quick):
         for label, build, sizes in options(quick):
             for size in sizes:
                 clip_lut._clip_lut.cache_clear()
-                clip_lut._black_plan.cache_clear()
+                grid.black_plan.cache_clear()
                 t0 = time.perf_counter()
                 transform = build(display, size)
                 out = ocio_ops.apply(transform, objects[:1])  # processor built

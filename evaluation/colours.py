@@ -9,6 +9,11 @@ that builds a table, a LUT or the config imports this module.
 - :func:`spectral_colours`: monochromatic colours at a range of luminances.
 - :func:`spectral_mixtures`: mixtures of one to three spectral lines up to Y = 0.99
   (saturated emissive colours: lasers, neon, LEDs), a quarter of them at Y >= 0.95.
+- :func:`gamut_map_sets`: the gamut maps' test sets by name.
+- :func:`ap0_below_white`: many random colours inside ACES AP0 with 0 <= Y < 1.
+- :func:`half_way_colours`: colours of a display at most a given fraction of the way
+  from their grey to the gamut boundary along the paper's ray (Smits & Meyer 1990,
+  Section 3.2), found with colour-science's primaries (independent of the package).
 """
 
 from __future__ import annotations
@@ -17,7 +22,14 @@ import numpy as np
 
 from ocio_thinfilm.colour import colorimetry
 
-__all__ = ["object_colours", "spectral_colours", "spectral_mixtures"]
+__all__ = [
+    "object_colours",
+    "spectral_colours",
+    "spectral_mixtures",
+    "gamut_map_sets",
+    "ap0_below_white",
+    "half_way_colours",
+]
 
 
 def object_colours(seed: int = 0, n_random: int = 4000) -> np.ndarray:
@@ -104,3 +116,56 @@ def gamut_map_sets() -> dict:
         "ap0": ap0,
         "mixtures": spectral_mixtures(),
     }
+
+
+def ap0_below_white(n: int = 200000, seed: int = 123) -> np.ndarray:
+    """``n`` random colours inside ACES AP0 (uniform in AP0 RGB) with 0 <= Y < 1,
+    CIE-XYZ-D65: ten times :func:`gamut_map_sets`' ``ap0`` and another seed, so the
+    largest errors of a gamut map's LUT (in the corners beyond the display's primaries)
+    are found."""
+    rng = np.random.default_rng(seed)
+    ap0_to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1"))
+    out = []
+    while sum(len(a) for a in out) < n:
+        xyz = rng.uniform(0.0, 1.0, (2 * n, 3)) @ ap0_to_xyz.T
+        out.append(xyz[(xyz[:, 1] >= 0.0) & (xyz[:, 1] < 1.0)])
+    return np.concatenate(out)[:n]
+
+
+_COLOUR_SCIENCE_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
+
+
+def half_way_colours(
+    display: str, n: int = 40000, seed: int = 11, reach: float = 0.5
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``n`` colours of ``display`` at most ``reach`` of the way from their grey to the
+    gamut boundary along the ray of Smits & Meyer (1990), Section 3.2 (towards the grey
+    of the same luminance Y), with Y uniform in (0.0005, 0.999) and the direction and
+    the fraction of the way uniform at random.
+
+    Independent of the package: the luminance weights come from colour-science's
+    primaries and white point, the boundary from a bisection along the ray against the
+    unit cube.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (display-linear RGB (n, 3), Y (n,), the fraction of the way t (n,)); the grey
+        of each colour is (Y, Y, Y).
+    """
+    import colour
+
+    space = colour.RGB_COLOURSPACES[_COLOUR_SCIENCE_NAMES[display]]
+    w = colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
+    rng = np.random.default_rng(seed)
+    Y = rng.uniform(0.0005, 0.999, n)
+    direction = rng.normal(size=(n, 3))
+    direction -= (direction @ w)[:, None] / w.sum()  # keeps Y
+    lo, hi = np.zeros(n), np.full(n, 1e6)  # the largest s with Y + s direction inside
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        p = Y[:, None] + mid[:, None] * direction
+        inside = np.all((p >= 0.0) & (p <= 1.0), axis=1)
+        lo, hi = np.where(inside, mid, lo), np.where(inside, hi, mid)
+    t = rng.uniform(0.0, reach, n)
+    return Y[:, None] + (t * lo)[:, None] * direction, Y, t

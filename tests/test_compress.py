@@ -15,9 +15,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from evaluation.colours import gamut_map_sets, object_colours
+from evaluation.colours import gamut_map_sets, half_way_colours, object_colours
 from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.lut import clip_lut, compress_lut
+from ocio_thinfilm.lut import compress_lut
 
 ocio = pytest.importorskip("PyOpenColorIO")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -156,9 +156,9 @@ def test_lut_factorisation_is_the_analytic_map(display):
     rgb = np.concatenate(
         [_random_rgb(display, seed=2), colorimetry.XYZ_to_RGB(object_colours()[:3000], display)]
     )
-    a = compress_lut.soft_black_RGB(rgb, display)
-    a = clip_lut.clip_black_faces_RGB(a, display)
-    a = compress_lut.soft_white_RGB(a, display)
+    a = compress.soft_black_RGB(rgb, display)
+    a = clip.clip_black_faces_RGB(a, display)
+    a = compress.soft_white_RGB(a, display)
     a = clip.clip_RGB(a, display)
     np.testing.assert_allclose(a, compress.compress_RGB(rgb, display), atol=1e-9)
 
@@ -166,20 +166,23 @@ def test_lut_factorisation_is_the_analytic_map(display):
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_white_squeeze_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch):
     """S_w's stored codes are the same whatever the last bits of the luminance row
-    (another CPU's dot product): past white a grey node takes the formula's limit
-    Y + A (1 - Y), not a ratio of rounding errors (one node of each S_w differed by up to
-    192 codes between two machines)."""
-    nodes, tops = clip_lut._white_nodes(compress_lut.SOFT_WHITE_SIZE, display)
+    (another CPU's dot product), at the nodes past white closest to grey too, where a
+    ratio of rounding errors would decide (soft_white_RGB takes the formula's limit
+    Y + A (1 - Y) for a grey past white; two machines once differed there by up to 192
+    codes)."""
+    nodes, tops = compress_lut._squeeze_nodes(compress_lut.SOFT_WHITE_SIZE, display)
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
-    w0 = clip_lut._luminance(display)
+    w0 = clip.luminance_weights(display)
     codes = []
     for k in (0, -2, -1, 1, 2):
         w = w0 * (1.0 + k * np.finfo(float).eps)
-        monkeypatch.setattr(compress_lut, "_luminance", lambda _d, w=w: w)
+        monkeypatch.setattr(clip, "luminance_weights", lambda _d, w=w: w)
         params = (compress.THRESHOLD, compress.LIMIT, compress.POWER)
         codes.append(compress_lut._squeeze_codes(C, display, params, tops))
-    grey = np.all(C == C[:, :1], axis=1) & (C[:, 0] > 1.0)
-    assert grey.any()  # the nodes that were at stake
+    # the nodes at stake: past white and grey to a shaper sample (the nodes sit on each
+    # channel's own shaper samples, so none is exactly grey)
+    grey = (np.ptp(C, axis=1) < 1e-3) & (C.min(axis=1) > 1.0)
+    assert grey.any()
     for other in codes[1:]:
         np.testing.assert_array_equal(other, codes[0])
 
@@ -219,6 +222,57 @@ def test_view_against_the_analytic_compression(measured, display, name):
     """The clip issue's targets: dE2000 p99 <= 0.5, max <= 1.5, |dY| <= 1e-3."""
     m = measured[display, name]
     assert m["p99"] <= 0.5 and m["max"] <= 1.5 and m["dY"] <= 1e-3, m
+
+
+@pytest.fixture(scope="module")
+def half_way(cfg):
+    """{display: (input RGB, its grey Y, the view's output RGB)} for colours at most
+    half-way from their grey to the boundary along the ray (``half_way_colours``:
+    40,000 per display, found with colour-science's primaries), through the view."""
+    out = {}
+    for display in DISPLAYS:
+        rgb, Y, _ = half_way_colours(display)
+        got = _decode(_apply(cfg, display, colorimetry.RGB_to_XYZ(rgb, display)), display)
+        out[display] = rgb, Y, got
+    return out
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_half_way_colours_are_left_alone_by_the_analytic_map(half_way, display):
+    """Below the threshold (0.8 boundary distances) the compression returns its input."""
+    rgb, _, _ = half_way[display]
+    np.testing.assert_array_equal(compress.compress_RGB(rgb, display), rgb)
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_view_leaves_half_way_colours_alone(half_way, display):
+    """Colours at most half-way to the boundary move by at most dE2000 0.1 through the
+    view (the target of the clip's in-gamut colours)."""
+    rgb, _, got = half_way[display]
+    de = colorimetry.delta_E2000(
+        colorimetry.RGB_to_XYZ(rgb, display), colorimetry.RGB_to_XYZ(got, display)
+    )
+    print(f"{display}: half-way colours dE2000 max {de.max():.3f} p99 {np.percentile(de, 99):.3f}")
+    assert de.max() <= 0.1
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_view_puts_half_way_colours_no_further_out(half_way, display):
+    """The view never pushes a colour it should leave alone outwards along its ray: the
+    output's position along the ray (its projection on the input's direction from the
+    grey) is at most 2.5e-4 of linear light beyond the input (the LUTs' 16-bit steps),
+    and at most 2 % of the distance beyond it for colours at least 0.01 from their grey."""
+    rgb, Y, got = half_way[display]
+    v = rgb - Y[:, None]
+    dist = np.linalg.norm(v, axis=1)
+    beyond = ((got - Y[:, None]) * v).sum(axis=1) / dist - dist
+    far = dist >= 0.01
+    print(
+        f"{display}: beyond the input by at most {beyond.max():.1e} "
+        f"({(beyond[far] / dist[far]).max():.2%} of the distance at >= 0.01)"
+    )
+    assert beyond.max() <= 2.5e-4
+    assert (beyond[far] / dist[far]).max() <= 0.02
 
 
 LEVELS = [

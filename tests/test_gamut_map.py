@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
-from evaluation.colours import gamut_map_sets
+from evaluation.colours import ap0_below_white, gamut_map_sets
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -143,6 +143,54 @@ def test_view_against_the_analytic_clip(measured, display, name):
 )
 def test_view_target(measured, display, name):
     _check(measured[display, name], TARGET)
+
+
+@pytest.fixture(scope="module")
+def ap0_below(cfg):
+    """{display: dE2000 of the view against the analytic clip} on 200,000 random colours
+    inside ACES AP0 below white (``ap0_below_white``, ten times the ``ap0`` set)."""
+    XYZ = ap0_below_white()
+    out = {}
+    for display in DISPLAYS:
+        got = colorimetry.RGB_to_XYZ(_decode(_apply_view(cfg, display, XYZ), display), display)
+        out[display] = colorimetry.delta_E2000(clip.clip_XYZ(XYZ, display), got)
+    return out
+
+
+#: What the view reaches on ``ap0_below_white`` (max dE2000, per display), measured: the
+#: black pass's interpolant cuts the triangle's corners beyond the primaries (dark violet
+#: beyond sRGB's and Display P3's blue, imaginary greens beyond Rec.2020's green), where
+#: the clip has a kink along the ray from the white point through the primary. A larger
+#: black pass is no cure within the size budget (benchmarks/bench_ap0_corners.py: 81^3,
+#: 12.5 MB per display, still reaches 1.47 / 1.41 / 1.505).
+AP0_REACHED = {"sRGB": 1.62, "Display P3": 1.54, "Rec.2020": 1.79}
+
+
+@pytest.mark.parametrize("display", DISPLAYS)
+def test_ap0_below_white_within_what_the_design_reaches(ap0_below, display):
+    de = ap0_below[display]
+    print(f"{display}: AP0 below white max {de.max():.3f} p99 {np.percentile(de, 99):.3f}")
+    assert np.percentile(de, 99) <= TARGET[0]
+    assert de.max() <= AP0_REACHED[display]
+
+
+@pytest.mark.parametrize(
+    "display",
+    [
+        pytest.param(
+            d,
+            marks=pytest.mark.xfail(
+                strict=True,
+                reason=f"target not reached: max dE2000 {AP0_REACHED[d]} (corners beyond "
+                "the primaries; size trade-off in reports/bench_ap0_corners.md)",
+            ),
+        )
+        for d in DISPLAYS
+    ],
+)
+def test_ap0_below_white_target(ap0_below, display):
+    """Random AP0 colours below white: max dE2000 <= 1.5 (TARGET) on every display."""
+    assert ap0_below[display].max() <= TARGET[1]
 
 
 # --------------------------------------------------------------------------- #

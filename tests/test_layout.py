@@ -265,3 +265,21 @@ def test_the_public_api_is_annotated(tmp_path):
         "    return w\n"
     )
     assert _unannotated(bad) == ["3 g", "6 m", "8 n"]
+
+
+@pytest.mark.parametrize("package", ["colour", "lut"])
+def test_a_stage_package_names_every_module_it_holds(package):
+    """The ``__all__`` of a stage's ``__init__`` (and its docstring's list) names each of
+    its modules, no more."""
+    init = PACKAGE / package / "__init__.py"
+    tree = ast.parse(init.read_text())
+    names = next(
+        ast.literal_eval(node.value)
+        for node in tree.body
+        if isinstance(node, ast.Assign)
+        and any(isinstance(t, ast.Name) and t.id == "__all__" for t in node.targets)
+    )
+    modules = {p.stem for p in (PACKAGE / package).glob("*.py") if p.stem != "__init__"}
+    assert sorted(names) == sorted(modules)
+    doc = ast.get_docstring(tree) or ""
+    assert [m for m in sorted(modules) if f":mod:`.{m}`" not in doc] == []

@@ -9,7 +9,7 @@ import pytest
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from evaluation.colours import object_colours, spectral_colours
-from ocio_thinfilm.lut import clip_lut, ocio_ops, tables, view_transforms
+from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage, tables, view_transforms
 
 DISPLAYS = clip.DISPLAYS
 
@@ -55,7 +55,7 @@ def test_each_table_is_computed_once_and_the_store_shows_it():
             ("no-phase-change", 1000, tables.FILM_TMAX_UM, tables.FILM_T0_UM, step),
         ),
         "ocio_thinfilm.lut.tables._morpho_table": ((300, step),),
-        "ocio_thinfilm.lut.clip_lut._black_plan": (("Rec.2020", 11),),
+        "ocio_thinfilm.lut.grid.black_plan": (("Rec.2020", 11),),
         "ocio_thinfilm.lut.clip_lut._black_nodes": (("Rec.2020", 11),),
         "ocio_thinfilm.lut.clip_lut._clip_lut": (("Rec.2020", 11, 9),),
     }
@@ -253,7 +253,7 @@ def test_black_and_white_passes_compose_to_the_clip():
     rng = np.random.default_rng(5)
     rgb = rng.normal(0.4, 1.5, (20000, 3))
     for display in DISPLAYS:
-        both = clip_lut.clip_white_faces_RGB(clip_lut.clip_black_faces_RGB(rgb, display), display)
+        both = clip.clip_white_faces_RGB(clip.clip_black_faces_RGB(rgb, display), display)
         M = colorimetry.matrix_XYZ_to_RGB(display)
         paper = colorimetry.XYZ_to_RGB(clip.clip_XYZ(rgb @ np.linalg.inv(M).T, display), display)
         np.testing.assert_allclose(both, paper, atol=1e-9)
@@ -262,7 +262,7 @@ def test_black_and_white_passes_compose_to_the_clip():
 def _ulp_rows(display):
     """The display's luminance row and four copies a few ulps away: the sums of a dot
     product another CPU (another SIMD width, FMA or not) may compute."""
-    w = clip_lut._luminance(display)
+    w = clip.luminance_weights(display)
     return [w * (1.0 + k * np.finfo(float).eps) for k in (0, -2, -1, 1, 2)]
 
 
@@ -272,11 +272,11 @@ def test_white_pass_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch):
     luminance row: a grey node past white (every channel 1.004) goes to white, not to a
     0 / 0 that one CPU rounded to white and another to the grey itself (52428 against
     52520 in one node of each white pass, seen between two machines)."""
-    nodes, _ = clip_lut._white_nodes(clip_lut.WHITE_SIZE, display)
+    nodes, _ = grid.white_nodes(clip_lut.WHITE_SIZE, display)
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
     codes = []
     for w in _ulp_rows(display):
-        monkeypatch.setattr(clip_lut, "_luminance", lambda _d, w=w: w)
+        monkeypatch.setattr(clip, "luminance_weights", lambda _d, w=w: w)
         codes.append(clip_lut._white_codes(C, display))
     grey = np.all(C == C[:, :1], axis=1) & (C[:, 0] > 1.0)
     assert grey.any()  # the nodes that were at stake
@@ -290,7 +290,7 @@ def test_lut_files_hold_no_negative_zero():
     lut = clip_lut.clip_lut("sRGB")
     for array in (lut.black, lut.white, lut.white_shaper):
         assert not np.signbit(array).any()
-    assert not np.signbit(clip_lut._q16(np.array([-0.0, -1e-9, 0.0]))).any()
+    assert not np.signbit(storage.q16(np.array([-0.0, -1e-9, 0.0]))).any()
 
 
 # --------------------------------------------------------------------------- #

@@ -1,2 +1,10 @@
-"""Stage 2-3: spectra -> CIE XYZ -> display RGB (:mod:`.colorimetry`), and the
-constant-lightness parallelepiped clip of Section 3.2 (:mod:`.clip`)."""
+"""Stage 2-3: spectra -> CIE XYZ -> display RGB, and the gamut maps on the paper's ray.
+
+- :mod:`.colorimetry` -- reflectance spectra -> CIE XYZ -> linear RGB (Section 2.1);
+- :mod:`.clip` -- the constant-lightness parallelepiped clip of Smits & Meyer (1990),
+  Section 3.2, its two factors (the faces through black, through white) and baselines;
+- :mod:`.compress` -- the soft constant-lightness compression on the same ray, and its
+  two squeezes.
+"""
+
+__all__ = ["colorimetry", "clip", "compress"]

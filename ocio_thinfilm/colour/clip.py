@@ -26,6 +26,18 @@ Defined behaviour at every edge (both forms, float32 or float64 in, same dtype o
   fine because every division is by ``grey - value`` of a channel that is out of
   [0, 1] while the grey is inside (0, 1), so its magnitude exceeds min(g, 1 - g).
 
+The clip's two factors, along the same ray: the clip moves a colour towards its grey
+until it is inside all six faces, so it is exactly U o L (what the baked LUTs of
+:mod:`ocio_thinfilm.lut.clip_lut` rely on; a test checks U o L against :func:`clip_XYZ`):
+
+- :func:`clip_black_faces_RGB` -- L, the clip against the faces through black
+  (R, G, B >= 0) only;
+- :func:`clip_white_faces_RGB` -- U, the clip against the faces through white
+  (R, G, B <= 1) only;
+- :func:`clip_white_faces_continued_RGB` -- U for Y <= 1 and its analytic
+  continuation past white (the values the white pass's nodes brighter than white hold);
+- :func:`luminance_weights` -- the display's row ``w`` with ``Y = w . RGB``.
+
 Baselines for comparison: :func:`clamp_RGB` (per-channel clamp) and
 :func:`aces_gamut_compress_RGB` (OCIO's ACES 1.3 reference gamut compression).
 """
@@ -37,12 +49,18 @@ import numpy.typing as npt
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.checks import ParameterError
 
 __all__ = [
     "DISPLAYS",
     "LIMIT",
+    "NEUTRAL_TOLERANCE",
+    "luminance_weights",
     "clip_XYZ",
     "clip_RGB",
+    "clip_black_faces_RGB",
+    "clip_white_faces_RGB",
+    "clip_white_faces_continued_RGB",
     "in_gamut",
     "clamp_RGB",
     "aces_gamut_compress_RGB",
@@ -59,6 +77,10 @@ LIMIT = 1e100
 #: (cyan, magenta, yellow), power -- the ACES 1.3 reference gamut compression.
 ACES_GAMUT_COMP13_PARAMS = (1.147, 1.264, 1.312, 0.815, 0.803, 0.880, 1.2)
 
+#: Relative size of max(c) - Y below which a colour counts as neutral (a grey to
+#: rounding: the luminance row sums to 1 only to a few ulps).
+NEUTRAL_TOLERANCE = 1e-12
+
 
 def _space(display: registry.DisplayLike) -> str:
     """The colorimetry's RGB space of ``display``: a name as it is, an SDR display of the
@@ -72,8 +94,38 @@ def _display_matrix(display: registry.DisplayLike) -> np.ndarray:
     """XYZ -> RGB of ``display`` (:func:`_space`)."""
     display = _space(display)
     if display not in registry.RGB_COLORIMETRY:
-        raise ValueError(f"display must be one of {DISPLAYS}, got {display!r}")
+        raise ParameterError("display", f" must be one of {DISPLAYS}, got {display!r}")
     return colorimetry.matrix_XYZ_to_RGB(display)
+
+
+def luminance_weights(display: registry.DisplayLike) -> np.ndarray:
+    """The row ``w`` with ``Y = w . RGB`` for ``display``'s linear RGB (RGB = 1, its
+    white, has Y = 1): the second row of its RGB -> XYZ matrix.
+
+    Parameters
+    ----------
+    display : str or registry display
+        One of :data:`DISPLAYS` (or another RGB space of
+        :data:`ocio_thinfilm.registry.RGB_COLORIMETRY`).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, (3,).
+
+    Raises
+    ------
+    ValueError
+        (:class:`~ocio_thinfilm.checks.ParameterError`) for an unknown display.
+
+    Examples
+    --------
+    The Rec.709 weights of sRGB:
+
+    >>> luminance_weights("sRGB").round(4).tolist()
+    [0.2126, 0.7152, 0.0722]
+    """
+    return np.linalg.inv(_display_matrix(display))[1]
 
 
 #: Pixels per block: the working set stays in cache, and results do not depend on
@@ -163,8 +215,7 @@ def clip_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.n
     >>> bool(in_gamut(out)), bool(np.isclose(out @ w, np.dot([1.2, 0.5, -0.1], w)))
     (True, True)
     """
-    M = _display_matrix(display)
-    luminance = np.linalg.inv(M)[1]  # Y = luminance . RGB
+    luminance = luminance_weights(display)  # Y = luminance . RGB
     Y_white = luminance.sum()
 
     def kernel(rgb):
@@ -244,6 +295,149 @@ def in_gamut(RGB: npt.ArrayLike, tolerance: float = 0.0) -> np.ndarray | np.bool
     """
     a = np.asarray(RGB)
     return np.all((a >= -tolerance) & (a <= 1.0 + tolerance), axis=-1)
+
+
+def clip_black_faces_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike) -> np.ndarray:
+    """L: the clip against the faces R, G, B >= 0 only (float64, (N, 3) display RGB).
+
+    ``Y <= 0`` gives black; otherwise the colour moves towards the grey of its Y until
+    its smallest channel is 0 (unchanged when no channel is negative).
+
+    The ray of Smits & Meyer (1990), Section 3.2, against the three faces through
+    black: with ``Y = w . RGB`` (``w`` the display's luminance row) and
+    ``lo = min(R, G, B) < 0`` the result is ``Y + t (RGB - Y)`` with
+    ``t = Y / (Y - lo)``, so its smallest channel is 0 and its luminance is Y.
+    Channels may still exceed 1 (that is :func:`clip_white_faces_RGB`'s part).
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display`` (RGB = 1 its white), last axis 3.
+    display : str or registry display
+        One of :data:`DISPLAYS`.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape of ``RGB``. Non-finite inputs give non-finite rows (no
+        warning).
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    In-gamut colours are unchanged; (1.2, 0.5, -0.1) (Y = 0.6055 with the Rec.709
+    weights) moves with t = 0.6055 / 0.7055 to (1.116, 0.515, 0), keeping Y; a colour
+    with Y <= 0 is black:
+
+    >>> out = clip_black_faces_RGB([[0.5, 0.4, 0.3], [1.2, 0.5, -0.1],
+    ...                             [-0.1, -0.2, 0.3]], "sRGB")
+    >>> out.round(2).tolist()
+    [[0.5, 0.4, 0.3], [1.12, 0.51, 0.0], [0.0, 0.0, 0.0]]
+    >>> w = colorimetry.RGB_to_XYZ(np.eye(3), "sRGB")[:, 1]  # luminance weights
+    >>> bool(np.isclose(out[1] @ w, np.dot([1.2, 0.5, -0.1], w)))
+    True
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    with np.errstate(all="ignore"):  # non-finite inputs give non-finite rows, no warning
+        Y = rgb @ luminance_weights(display)
+        lo = rgb.min(axis=-1)
+        t = np.where(lo < 0.0, Y / (Y - lo), 1.0)
+        out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
+    out[Y <= 0.0] = 0.0
+    return out
+
+
+def clip_white_faces_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike) -> np.ndarray:
+    """U = C o L o C with C(c) = 1 - c: the clip against R, G, B <= 1 only.
+
+    C maps the display white to black and the faces R, G, B = 1 to the faces through
+    black, and Y(C(c)) = Y_W - Y(c): the ray of :func:`clip_black_faces_RGB` in the
+    complement is the paper's ray towards the same grey (Smits & Meyer 1990,
+    Section 3.2), so U keeps Y, brings the largest channel of an out-of-gamut colour
+    to 1 and gives white for Y >= Y_W. Applied after L, the composition is
+    :func:`clip_RGB`.
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display``, last axis 3.
+    display : str or registry display
+        One of :data:`DISPLAYS` (its white has Y = 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape of ``RGB``.
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    In-gamut colours are unchanged; (1.2, 0.5, 0.1) keeps Y = 0.62 with R = 1
+    (the complement (-0.2, 0.5, 0.9) has Y = 0.38, t = 0.38 / 0.58); a colour brighter
+    than white is white:
+
+    >>> clip_white_faces_RGB([[0.5, 0.4, 0.3], [1.2, 0.5, 0.1],
+    ...                       [1.1, 1.2, 0.9]], "sRGB").round(2).tolist()
+    [[0.5, 0.4, 0.3], [1.0, 0.54, 0.28], [1.0, 1.0, 1.0]]
+    """
+    return 1.0 - clip_black_faces_RGB(1.0 - np.asarray(RGB, dtype=np.float64), display)
+
+
+def clip_white_faces_continued_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike) -> np.ndarray:
+    """U of :func:`clip_white_faces_RGB` for Y <= 1, continued analytically above.
+
+    For c >= 0 with Y = w . c <= 1, U(c) = Y + t (c - Y) with t = (1 - Y) / (max c - Y)
+    where max c > 1 (else c): the paper's ray (Section 3.2) brought to the face
+    through white. The same formula for Y > 1 (t < 0) is its smooth continuation past
+    white, which the white pass stores at its nodes brighter than white: the cells that
+    straddle Y = 1 then interpolate a smooth function instead of a kink towards white
+    (the pre-clip keeps the pass's inputs at Y <= 1). At Y = 1 both give white.
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display`` with no negative channel (after L), last
+        axis 3.
+    display : str or registry display
+        One of :data:`DISPLAYS`.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, shape of ``RGB``: U(c) for Y <= 1, its continuation above; a neutral
+        colour past white gives white exactly.
+
+    References
+    ----------
+    Smits & Meyer (1990), Section 3.2.
+
+    Examples
+    --------
+    >>> rgb = np.array([[0.5, 0.4, 0.3], [1.2, 0.5, 0.1], [2.0, 1.0, 0.5]])
+    >>> bool(np.allclose(clip_white_faces_continued_RGB(rgb[:2], "sRGB"),
+    ...                  clip_white_faces_RGB(rgb[:2], "sRGB")))
+    True
+    >>> out = clip_white_faces_continued_RGB(rgb[2:], "sRGB")  # Y = 1.18: past white
+    >>> bool(out[0, 0] == 1.0 and np.all(out[0, 1:] > 1.0))
+    True
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    Y = rgb @ luminance_weights(display)
+    top = rgb.max(axis=-1)
+    # a neutral colour (max c - Y at rounding level) has every channel as its largest,
+    # and the largest always goes to 1: past white a grey goes to white, not to 0 / 0
+    # (whose rounding differs between CPUs)
+    neutral = top - Y <= NEUTRAL_TOLERANCE * np.maximum(np.abs(top), 1.0)
+    with np.errstate(all="ignore"):
+        t = np.where((top > 1.0) & ~neutral, (1.0 - Y) / (top - Y), 1.0)
+    out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
+    return np.where(((top > 1.0) & neutral)[..., None], 1.0, out)
 
 
 def clamp_RGB(RGB: npt.ArrayLike) -> np.ndarray:

@@ -28,6 +28,16 @@ out and for every colour with Y <= 0 (black) or Y >= 1 (white).
 :func:`compress_RGB` (display-linear RGB) and :func:`compress_XYZ` have the clip's
 defined behaviour at every edge (NaN pixels stay NaN, +-Inf and huge values give a
 finite in-gamut result, float32 or float64 in, same dtype out).
+
+The compression is the clip of a smooth squeeze along the same ray, and both factor
+into a part for the faces through black and one for the faces through white, so
+``compress = U o S_w o L o S_b`` exactly (L and U: the clip's factors,
+:func:`ocio_thinfilm.colour.clip.clip_black_faces_RGB` and
+:func:`~ocio_thinfilm.colour.clip.clip_white_faces_RGB`; the baked view,
+:mod:`ocio_thinfilm.lut.compress_lut`, is one LUT per factor):
+
+- :func:`soft_black_RGB` -- S_b, the squeeze by the distance to the faces through black;
+- :func:`soft_white_RGB` -- S_w, the rest of the squeeze, after L.
 """
 
 from __future__ import annotations
@@ -48,6 +58,8 @@ __all__ = [
     "boundary_distance",
     "compress_RGB",
     "compress_XYZ",
+    "soft_black_RGB",
+    "soft_white_RGB",
 ]
 
 #: Normalised boundary distance up to which colours are unchanged (the default).
@@ -155,8 +167,7 @@ def boundary_distance(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB"
     >>> boundary_distance([[0.5, 0.5, 0.5], [0.6, 0.3, 0.0]], "sRGB").round(3).tolist()
     [0.0, 1.0]
     """
-    M = clip._display_matrix(display)
-    w = np.linalg.inv(M)[1]
+    w = clip.luminance_weights(display)
     a = np.asarray(RGB, dtype=np.float64)
     if a.ndim == 0 or a.shape[-1] != 3:
         raise ValueError(f"RGB must have a last axis of length 3, got shape {a.shape}")
@@ -210,8 +221,7 @@ def compress_RGB(
     True
     """
     threshold, limit, power = _check(threshold, limit, power)
-    M = clip._display_matrix(display)
-    luminance = np.linalg.inv(M)[1]
+    luminance = clip.luminance_weights(display)
 
     def kernel(rgb):
         Y = luminance[0] * rgb[0] + luminance[1] * rgb[1] + luminance[2] * rgb[2]
@@ -255,3 +265,95 @@ def compress_XYZ(
     rgb = colorimetry.XYZ_to_RGB(limited, display)
     out = compress_RGB(rgb, display, threshold, limit, power) @ np.linalg.inv(M).T
     return out.astype(dtype)
+
+
+def _sigma(d, threshold, limit, power):
+    """f(d) / d for the unclipped curve (1 up to the threshold)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = compression_curve(d, threshold, limit, power, clipped=False) / d
+    return np.where(d > threshold, k, 1.0)
+
+
+def soft_black_RGB(
+    RGB: npt.ArrayLike,
+    display: registry.DisplayLike,
+    threshold: float = THRESHOLD,
+    limit: float = LIMIT,
+    power: float = POWER,
+) -> np.ndarray:
+    """S_b: ``Y + sigma(d_black) (c - Y)``, d_black = (Y - min c) / Y, for display-linear
+    (N, 3) RGB with Y > 0 (float64 out; rows with Y <= 0 unchanged).
+
+    ``sigma(d) = f(d) / d`` with ``f`` the unclipped :func:`compression_curve` (1 up to
+    the threshold): the colour moves along the ray of Smits & Meyer (1990), Section 3.2,
+    to the curve's distance from its grey, measured against the faces through black
+    alone. Homogeneous of degree 1 like the clip's L, and Y is kept.
+
+    Examples
+    --------
+    Far inside: unchanged; the point of sRGB's face B = 0 at (0.6, 0.3, 0) (d_black = 1)
+    moves to f(1) of the way from its grey:
+
+    >>> out = soft_black_RGB([[0.5, 0.4, 0.3], [0.6, 0.3, 0.0]], "sRGB")
+    >>> out[0].tolist()
+    [0.5, 0.4, 0.3]
+    >>> Y = 0.2126 * 0.6 + 0.7152 * 0.3  # Rec.709 weights: kept
+    >>> bool(np.isclose(out[1] @ [0.2126, 0.7152, 0.0722], Y, atol=1e-4))
+    True
+    >>> round(float((Y - out[1].min()) / Y), 3), round(float(compression_curve(1.0)), 3)
+    (0.931, 0.931)
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    Y = rgb @ clip.luminance_weights(display)
+    with np.errstate(all="ignore"):
+        d = np.where(Y > 0.0, (Y - rgb.min(axis=-1)) / Y, 0.0)
+    k = _sigma(d, threshold, limit, power)
+    return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]), rgb)
+
+
+def soft_white_RGB(
+    RGB: npt.ArrayLike,
+    display: registry.DisplayLike,
+    threshold: float = THRESHOLD,
+    limit: float = LIMIT,
+    power: float = POWER,
+) -> np.ndarray:
+    """S_w for display-linear (N, 3) RGB after L (no negative channel); float64 out.
+
+    For 0 < Y < 1: ``d_black = f^-1((Y - min c) / Y)`` (the limit on the faces through
+    black), ``d_white = max(c - Y) / (1 - Y) / sigma(d_black)``, and the result is
+    ``Y + sigma(D) / sigma(d_black) (c - Y)`` with D the larger. As Y -> 1 this tends to
+    ``Y + A (1 - Y) / max(c - Y) (c - Y)`` (A = the curve's asymptote), which is also
+    its continuation for Y >= 1 (the nodes brighter than white).
+
+    Together with the clip's factors, ``clip_white_faces_RGB(soft_white_RGB(
+    clip_black_faces_RGB(soft_black_RGB(c))))`` is :func:`compress_RGB` (Smits & Meyer
+    1990, Section 3.2's ray; checked to 1e-9 in ``tests/test_compress.py``).
+
+    Examples
+    --------
+    Far inside: unchanged.
+
+    >>> soft_white_RGB([[0.5, 0.4, 0.3]], "sRGB").tolist()
+    [[0.5, 0.4, 0.3]]
+    """
+    rgb = np.asarray(RGB, dtype=np.float64)
+    Y = rgb @ clip.luminance_weights(display)
+    top = (rgb - Y[..., None]).max(axis=-1)
+    asymptote = compression_curve(np.inf, threshold, limit, power, clipped=False)
+    with np.errstate(all="ignore"):
+        d_black = compression_curve_inverse(
+            np.clip((Y - rgb.min(axis=-1)) / Y, 0.0, 1.0), threshold, limit, power
+        )
+        s_black = _sigma(d_black, threshold, limit, power)
+        d_white = top / (1.0 - Y) / s_black
+        D = np.maximum(d_black, d_white)
+        k = _sigma(D, threshold, limit, power) / s_black
+        k = np.where(Y < 1.0, k, asymptote * (1.0 - Y) / top)
+        k = np.where((top > 0.0) & (Y > 0.0) & np.isfinite(k), k, 1.0)
+    out = Y[..., None] + k[..., None] * (rgb - Y[..., None])
+    # past white a neutral colour (max(c - Y) at rounding level) has every channel as its
+    # largest: Y + A (1 - Y) in each, the formula's limit, not a ratio of rounding errors
+    # (which differ between CPUs)
+    neutral = (Y >= 1.0) & (top <= clip.NEUTRAL_TOLERANCE * np.maximum(np.abs(Y), 1.0))
+    return np.where(neutral[..., None], (Y + asymptote * (1.0 - Y))[..., None], out)

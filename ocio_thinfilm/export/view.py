@@ -71,10 +71,9 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.checks import ParameterError, as_choice
+from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable
-from ocio_thinfilm.lut import clip_lut, ocio_ops
-from ocio_thinfilm.checks import as_pair
+from ocio_thinfilm.lut import ocio_ops, storage
 
 __all__ = [
     "VIEW_FORMATS",
@@ -418,7 +417,7 @@ def _baked_3d_transforms(cfg, source, shaper, display, view, size):
     if values.min() >= -1e-4 and values.max() <= 1.0 + 1e-4:
         # Display code values: 16-bit integers (half the text of floats; the step,
         # 1.5e-5, is far below the interpolation error).
-        values = np.round(np.clip(values, 0.0, 1.0) * clip_lut.LUT_CODE_MAX) / clip_lut.LUT_CODE_MAX
+        values = storage.q16(values)
         ops.append(ocio_ops.lut3d_transform(values, bitdepth="uint16"))
         ops.append(ocio_ops.matrix())  # the CLF writer keeps 16i only before another op
     else:

@@ -3,6 +3,23 @@
 - :mod:`.ocio_ops` -- the one implementation of each OCIO op helper (a leaf);
 - :mod:`.tables` -- the 1D thin-film tables (pixel value -> exact XYZ);
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
-- :mod:`.clip_lut` -- the clip baked into two 3D LUTs;
+- :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
+- :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its
+  nodes outside the gamut (Smits & Meyer 1990, Section 3.2's faces through black);
+- :mod:`.storage` -- 16-bit codes that half-float textures keep;
+- :mod:`.clip_lut` -- the clip (Section 3.2) baked into two 3D LUTs;
+- :mod:`.compress_lut` -- the soft compression: a LUT before each of the clip's;
 - :mod:`.view_transforms` -- every view: CIE-XYZ-D65 -> display code values.
 """
+
+__all__ = [
+    "ocio_ops",
+    "tables",
+    "display_transforms",
+    "grid",
+    "node_fit",
+    "storage",
+    "clip_lut",
+    "compress_lut",
+    "view_transforms",
+]

@@ -1,38 +1,43 @@
 """The soft constant-lightness compression (:mod:`ocio_thinfilm.colour.compress`) as OCIO
 transforms: two small LUTs in front of the clip's two passes, which it reuses as they are.
 
-With ``f`` the compression curve continued past the limit (``clipped=False``: smooth
-and strictly increasing up to its asymptote, above 1 beyond the limit) and
+With ``f`` the compression curve continued past the limit (``clipped=False``: smooth and
+strictly increasing up to its asymptote, above 1 beyond the limit) and
 ``sigma(d) = f(d) / d``, the compression is the clip of a smooth squeeze::
 
     compress = clip o S,   S(c) = Y + sigma(D) (c - Y),   D = max(d_black, d_white)
 
 because S moves every colour along the paper's ray to the distance f(D): inside the
-gamut below the limit (the clip leaves it there) and outside beyond it (the clip puts
-it on the boundary, which is what the compression does there). ``d_black`` and
-``d_white`` are the ray's fractions to the faces through black and through white
+gamut below the limit (the clip leaves it there) and outside beyond it (the clip puts it
+on the boundary, which is what the compression does there). ``d_black`` and ``d_white``
+are the ray's fractions to the faces through black and through white
 (:func:`ocio_thinfilm.colour.compress.boundary_distance` is their maximum). The clip is
 U o L (:mod:`.clip_lut`), and S factors the same way, so the chain is
 ``U o S_w o L o S_b``:
 
-- S_b (:func:`soft_black_RGB`) squeezes by ``sigma(d_black)`` alone. It is homogeneous
-  like L, so its Lut3D works over a chromaticity chart and keeps Y exactly: its own
-  (:func:`_soft_plan`), with the three rays where its gradient jumps on grid and split
-  lines. It is smooth (no flat part: that is L's job, next).
+- S_b (:func:`ocio_thinfilm.colour.compress.soft_black_RGB`) squeezes by
+  ``sigma(d_black)`` alone. It is homogeneous like L, so its Lut3D works over a
+  chromaticity chart and keeps Y exactly: its own
+  (:func:`ocio_thinfilm.lut.grid.soft_plan`), with the three rays where its gradient
+  jumps on grid and split lines. It is smooth (no flat part: that is L's job, next).
 - L, the clip's black pass, then clips what S_b left beyond the faces through black.
-- S_w (:func:`soft_white_RGB`) recovers ``d_black = f^-1(d_black')`` from the colour L
-  gives it (d_black' <= 1; on the faces: the limit, the continuous choice) and
-  ``d_white = d_white' / sigma(d_black)``, and scales by ``sigma(D) / sigma(d_black)``
-  towards the grey: the identity wherever the faces through black bind. Its Lut3D uses
-  the clip's white-pass nodes (per channel, up to 1 / its luminance weight) with a
-  shaper linear in the value between them, so interpolation keeps Y, and its nodes
-  brighter than white hold its continuation, so the cells that straddle Y = 1
-  interpolate a smooth function.
+- S_w (:func:`ocio_thinfilm.colour.compress.soft_white_RGB`) recovers
+  ``d_black = f^-1(d_black')`` from the colour L gives it (d_black' <= 1; on the faces: the limit,
+  the continuous choice) and ``d_white = d_white' / sigma(d_black)``, and scales by
+  ``sigma(D) / sigma(d_black)`` towards the grey: the identity wherever the faces
+  through black bind. Its Lut3D uses the clip's white-pass nodes (per channel, up to 1 /
+  its luminance weight) with a shaper linear in the value between them, so interpolation
+  keeps Y, and its nodes brighter than white hold its continuation, so the cells that
+  straddle Y = 1 interpolate a smooth function.
 - U, the clip's white pass, clips what is still beyond the faces through white.
 
 Every step keeps Y and moves along the same ray, so the chain does (tested against the
-analytic map in ``tests/test_compress.py``). Sizes, accuracy and load time:
-``benchmarks/bench_compress.py``, ``benchmarks/bench_load.py`` and docs/compress.md.
+analytic map in ``tests/test_compress.py``). This module holds :class:`CompressLUT` (the
+two LUTs and their OCIO transforms) and :func:`compress_lut`; the analytic S_b and S_w
+are in :mod:`ocio_thinfilm.colour.compress`, their node layouts in
+:mod:`ocio_thinfilm.lut.grid`, the 16-bit storage in :mod:`ocio_thinfilm.lut.storage`.
+Sizes, accuracy and load time: ``benchmarks/bench_compress.py``,
+``benchmarks/bench_load.py`` and docs/compress.md.
 """
 
 from __future__ import annotations
@@ -40,168 +45,40 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import numpy.typing as npt
 
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as soft
-from ocio_thinfilm.lut import clip_lut, ocio_ops
-from ocio_thinfilm.lut.clip_lut import (
-    NEUTRAL_TOLERANCE,
-    ClipLUT,
-    _chart_cover,
-    _chart_to_XYZ,
-    _cross,
-    _luminance,
-    _q16,
-    _shaper_values,
-    _white_nodes,
-    xyY_forward_transform,
-    xyY_inverse_transform,
-)
+from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage
+from ocio_thinfilm.lut.clip_lut import ClipLUT, xyY_forward_transform, xyY_inverse_transform
+from ocio_thinfilm.lut.node_fit import chart_to_XYZ
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, lut3d_transform, transform_id
 from ocio_thinfilm.lut.tables import check_size
 
 __all__ = [
     "SOFT_SIZE",
     "SOFT_WHITE_SIZE",
+    "SOFT_WHITE_INSIDE",
+    "SOFT_WHITE_GRADED",
+    "SOFT_WHITE_RATIO",
     "CompressLUT",
     "compress_lut",
-    "soft_black_RGB",
-    "soft_white_RGB",
 ]
 
-#: Edge of S_b's Lut3D (over its own chart, :func:`_soft_plan`).
+#: Edge of S_b's Lut3D (over its own chart, :func:`ocio_thinfilm.lut.grid.soft_plan`).
 SOFT_SIZE = 49
-#: Edge of S_w's Lut3D (the clip's white-pass node layout).
+#: Edge of S_w's Lut3D.
 SOFT_WHITE_SIZE = 49
-#: Values of mu tried per sign by :func:`_soft_plan`.
-_PLAN_STEPS = 160
-
-
-def _sigma(d, threshold, limit, power):
-    """f(d) / d for the unclipped curve (1 up to the threshold)."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        k = soft.compression_curve(d, threshold, limit, power, clipped=False) / d
-    return np.where(d > threshold, k, 1.0)
-
-
-def soft_black_RGB(
-    RGB: npt.ArrayLike,
-    display: str,
-    threshold: float = soft.THRESHOLD,
-    limit: float = soft.LIMIT,
-    power: float = soft.POWER,
-) -> np.ndarray:
-    """S_b: ``Y + sigma(d_black) (c - Y)``, d_black = (Y - min c) / Y, for display-linear
-    (N, 3) RGB with Y > 0 (float64 out; rows with Y <= 0 unchanged)."""
-    rgb = np.asarray(RGB, dtype=np.float64)
-    Y = rgb @ _luminance(display)
-    with np.errstate(all="ignore"):
-        d = np.where(Y > 0.0, (Y - rgb.min(axis=-1)) / Y, 0.0)
-    k = _sigma(d, threshold, limit, power)
-    return np.where((Y > 0.0)[..., None], Y[..., None] + k[..., None] * (rgb - Y[..., None]), rgb)
-
-
-def soft_white_RGB(
-    RGB: npt.ArrayLike,
-    display: str,
-    threshold: float = soft.THRESHOLD,
-    limit: float = soft.LIMIT,
-    power: float = soft.POWER,
-) -> np.ndarray:
-    """S_w for display-linear (N, 3) RGB after L (no negative channel); float64 out.
-
-    For 0 < Y < 1: ``d_black = f^-1((Y - min c) / Y)`` (the limit on the faces through
-    black), ``d_white = max(c - Y) / (1 - Y) / sigma(d_black)``, and the result is
-    ``Y + sigma(D) / sigma(d_black) (c - Y)`` with D the larger. As Y -> 1 this tends to
-    ``Y + A (1 - Y) / max(c - Y) (c - Y)`` (A = the curve's asymptote), which is also
-    its continuation for Y >= 1 (the nodes brighter than white)."""
-    rgb = np.asarray(RGB, dtype=np.float64)
-    Y = rgb @ _luminance(display)
-    top = (rgb - Y[..., None]).max(axis=-1)
-    asymptote = soft.compression_curve(np.inf, threshold, limit, power, clipped=False)
-    with np.errstate(all="ignore"):
-        d_black = soft.compression_curve_inverse(
-            np.clip((Y - rgb.min(axis=-1)) / Y, 0.0, 1.0), threshold, limit, power
-        )
-        s_black = _sigma(d_black, threshold, limit, power)
-        d_white = top / (1.0 - Y) / s_black
-        D = np.maximum(d_black, d_white)
-        k = _sigma(D, threshold, limit, power) / s_black
-        k = np.where(Y < 1.0, k, asymptote * (1.0 - Y) / top)
-        k = np.where((top > 0.0) & (Y > 0.0) & np.isfinite(k), k, 1.0)
-    out = Y[..., None] + k[..., None] * (rgb - Y[..., None])
-    # past white a neutral colour (max(c - Y) at rounding level) has every channel as its
-    # largest: Y + A (1 - Y) in each, the formula's limit, not a ratio of rounding errors
-    # (which differ between CPUs)
-    neutral = (Y >= 1.0) & (top <= NEUTRAL_TOLERANCE * np.maximum(np.abs(Y), 1.0))
-    return np.where(neutral[..., None], (Y + asymptote * (1.0 - Y))[..., None], out)
-
-
-def _plan_matrix(M, perm, lam_nodes, mu, a_nodes, cells):
-    """The chart matrix for channels ``perm`` = (p, q, r): u_a = alpha (c_p - c_q) / S +
-    a_0, u_b = Y / S with S = lam Y + mu (c_r - c_q), alpha = -mu / lam."""
-    p, q, r = perm
-    lam = cells / lam_nodes
-    Y = np.array([0.0, 1.0, 0.0])
-    S = lam * Y + mu * (M[r] - M[q])
-    v0 = -mu / lam * (M[p] - M[q]) + a_nodes / cells * S
-    return np.array([v0, Y, S - v0 - Y])
-
-
-def _chart_coordinates(P, XYZ):
-    c = XYZ @ P.T
-    with np.errstate(all="ignore"):
-        s = c.sum(axis=1)
-        return c[:, :2] / s[:, None], s
-
-
-@cache.persistent(
-    modules=(
-        "ocio_thinfilm.lut.compress_lut",
-        "ocio_thinfilm.lut.clip_lut",
-        "ocio_thinfilm.colour.colorimetry",
-    )
-)
-def _soft_plan(display, size):
-    """S_b's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives its Lut3D's
-    coordinates (u_a, u_b) and Y, with the three rays where S_b has a kink on grid and
-    split lines.
-
-    S_b scales by a function of d_black = (Y - min c) / Y, whose gradient jumps where
-    the two smallest channels swap: on the rays from the white point where c_p = c_q,
-    c_q = c_r and c_p = c_r. With u_a = alpha (c_p - c_q) / S + a_0 and u_b = Y / S,
-    S = lam Y + mu (c_r - c_q), the first is u_a = a_0, the second u_b = 1 / lam and the
-    third, for alpha = -mu / lam, the diagonal u_a - u_b = const (a split plane of
-    tetrahedral interpolation) -- all through the white point's node. Of the charts
-    that hold :func:`ocio_thinfilm.lut.clip_lut._chart_cover` in [0, 1]^2, the one
-    where the display's triangle is largest is taken. Memoised on disk (the search takes
-    about 2 s per display)."""
-    cells = size - 1
-    M = colorimetry.matrix_XYZ_to_RGB(display)
-    cover = _chart_cover()
-    primaries = np.linalg.inv(M).T
-    best = None
-    mus = np.geomspace(1e-2, 3.0, _PLAN_STEPS)
-    for perm in ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)):
-        for lam_nodes in range(2, cells - 1):
-            for mu in np.concatenate([mus, -mus]):
-                P = _plan_matrix(M, perm, lam_nodes, mu, 0.0, cells)
-                uv, s = _chart_coordinates(P, cover)
-                if np.any(s <= 1e-9) or uv[:, 1].min() < 0.0 or uv[:, 1].max() > 1.0:
-                    continue
-                lo, hi = uv[:, 0].min(), uv[:, 0].max()
-                a_nodes = np.ceil(-lo * cells - 1e-9)  # white on a node, the cover inside
-                if hi + a_nodes / cells > 1.0 or a_nodes > cells:
-                    continue
-                tri, _ = _chart_coordinates(P, primaries)
-                area = abs(_cross(tri[1] - tri[0], tri[2] - tri[0]))
-                if best is None or area > best[0]:
-                    best = (area, _plan_matrix(M, perm, lam_nodes, mu, a_nodes, cells))
-    if best is None:
-        raise ValueError(f"compression LUT size {size} is too small for its chart")
-    return best[1]
+#: S_w's node layout (:func:`ocio_thinfilm.lut.grid.white_nodes`): the share of each axis
+#: below 1, and the last cells below white graded geometrically towards it (number and
+#: ratio). S_w is the identity where the distance D is below the threshold, a region that
+#: narrows like 1 - Y towards white; cells proportional to the distance from white keep
+#: as many across it at every scale, so colours near white inside the threshold stay put.
+#: Chosen by measurement (docs/compress.md): colours half-way to the boundary move by
+#: dE2000 <= 0.07 and the clip's test sets stay within p99 0.5 / max 1.5.
+SOFT_WHITE_INSIDE = 0.55
+SOFT_WHITE_GRADED = 9
+SOFT_WHITE_RATIO = 0.57
 
 
 @dataclass(frozen=True, eq=False)
@@ -216,16 +93,20 @@ class CompressLUT:
         The clip's passes (L, U), shared with the Constant-Lightness Clip view.
     black : numpy.ndarray
         (n, n, n, 3) over S_b's chart (u_a, u_b, Y) of ``chart``: the chart coordinates
-        of S_b(X) and Y (constant along Y), half floats rounded to the 16-bit grid.
+        of S_b(X) and Y (constant along Y) times
+        :func:`~ocio_thinfilm.lut.storage.grid_scale` (n), half floats rounded to the
+        16-bit grid.
     white : numpy.ndarray
-        (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.clip_lut._white_nodes`:
-        S_w(c) / tops (the clip's white-pass input scale), half floats in [0, 1] rounded
-        to the 16-bit grid.
+        (m, m, m, 3) over the nodes of :func:`~ocio_thinfilm.lut.grid.white_nodes`
+        (:data:`SOFT_WHITE_INSIDE`, :data:`SOFT_WHITE_GRADED`, :data:`SOFT_WHITE_RATIO`,
+        on the shaper's samples): S_w(c) / tops (the clip's white-pass input scale) on
+        the 16-bit grid in [0, 1].
     white_shaper : numpy.ndarray
         (SHAPER_LENGTH, 3): the per-channel Lut1D over c_i / tops[i] in front of
         ``white``, piecewise linear in c between nodes.
     chart : numpy.ndarray
-        (3, 3): CIE XYZ -> S_b's chart before ``XYZ_TO_xyY`` (:func:`_soft_plan`).
+        (3, 3): CIE XYZ -> S_b's chart before ``XYZ_TO_xyY``
+        (:func:`ocio_thinfilm.lut.grid.soft_plan`).
     parameters : tuple
         (threshold, limit, power) of the curve.
     """
@@ -247,7 +128,10 @@ class CompressLUT:
         name = f"{self.name} Black Faces"
         t, lim, _ = self.parameters
         return group(
-            [lut3d_transform(self.black, bitdepth="uint16")],
+            [
+                lut3d_transform(self.black, bitdepth="uint16"),
+                ocio_ops.matrix(np.eye(3) / storage.grid_scale(self.black.shape[0])),
+            ],
             name=name,
             id=transform_id("Gamut_Map", name),
             description=(
@@ -255,7 +139,9 @@ class CompressLUT:
                 f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
                 "distance to the faces through black, before the clip's "
                 f"black pass: a {self.black.shape[0]}^3 tetrahedral "
-                "Lut3D over the clip's chromaticity chart; keeps Y. See "
+                "Lut3D over its own chromaticity chart, which stores its output "
+                "scaled so that the identity is exact in half floats, and the "
+                "gain that undoes the scale; keeps Y. See "
                 "ocio_thinfilm.lut.compress_lut."
             ),
             input_descriptor="(u_a, u_b, Y): XYZ_TO_xyY of a matrix of "
@@ -317,50 +203,63 @@ class CompressLUT:
         )
 
 
-def _half16(values):
-    """``values`` rounded to half floats, then to the 16-bit grid (see
-    :func:`ocio_thinfilm.lut.clip_lut._halves_inside`): what a half-float texture holds."""
-    return _q16(np.asarray(values).astype(np.float16).astype(np.float64))
+def _squeeze_nodes(white_edge: int, display: str) -> tuple[np.ndarray, np.ndarray]:
+    """S_w's nodes per axis and the clip's tops (:func:`ocio_thinfilm.lut.grid.white_nodes`
+    with :data:`SOFT_WHITE_INSIDE`, :data:`SOFT_WHITE_GRADED`, :data:`SOFT_WHITE_RATIO`,
+    on the shaper's samples)."""
+    return grid.white_nodes(
+        white_edge,
+        display,
+        inside=SOFT_WHITE_INSIDE,
+        graded=SOFT_WHITE_GRADED,
+        ratio=SOFT_WHITE_RATIO,
+        snap=True,
+    )
 
 
 def _squeeze_codes(
     C: np.ndarray, display: str, parameters: tuple[float, float, float], tops: np.ndarray
 ) -> np.ndarray:
-    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops, half floats on the
-    16-bit grid (:func:`_half16`)."""
-    return _half16(np.clip(soft_white_RGB(C, display, *parameters), 0.0, tops) / tops)
+    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops on the 16-bit grid
+    (:func:`ocio_thinfilm.lut.storage.q16`; not rounded to half floats first, which would
+    move the identity nodes near white by up to 3e-4)."""
+    return storage.q16(np.clip(soft.soft_white_RGB(C, display, *parameters), 0.0, tops) / tops)
 
 
 @cache.memoize(maxsize=16)
 def _compress_lut(display, size, white_edge, parameters, clip_size):
     lut = clip_lut.clip_lut(display, clip_size)
-    P = _soft_plan(display, size)
+    P = grid.soft_plan(display, size)
     M = colorimetry.matrix_XYZ_to_RGB(display)
     g = np.linspace(0.0, 1.0, size)
     ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     with np.errstate(all="ignore"):
-        squeezed = soft_black_RGB(_chart_to_XYZ(P, ua, ub) @ M.T, display, *parameters)
+        squeezed = soft.soft_black_RGB(chart_to_XYZ(P, ua, ub) @ M.T, display, *parameters)
         chart = squeezed @ np.linalg.inv(M).T @ P.T
         uv = chart[:, :2] / chart.sum(axis=1, keepdims=True)
     uv = np.where(np.isfinite(uv), uv, np.c_[ua, ub])
     black = np.empty((size, size, size, 3))
     black[..., :2] = np.clip(uv, 0.0, 1.0).reshape(size, size, 1, 2)
     black[..., 2] = g
-    nodes, tops = _white_nodes(white_edge, display)
+    # stored times grid_scale: the nodes where S_b is the identity (every colour up to
+    # the threshold) then hold exact half floats, k / 2^m
+    black *= storage.grid_scale(size)
+    nodes, tops = _squeeze_nodes(white_edge, display)
     n = nodes.shape[1]
     C = np.stack(np.meshgrid(*nodes, indexing="ij"), axis=-1).reshape(-1, 3)
     # stored linear: with the shaper piecewise linear in c itself, the grid coordinates
     # are affine in c within each cell, so interpolating S_w, which keeps Y (a linear
     # function), keeps Y (stored sRGB-encoded, as the clip's white pass, the encoding's
-    # curvature costs |dY|: docs/compress.md). Half floats rounded to the 16-bit grid, as the
-    # black passes: half-float GPU textures see the CPU's values.
-    shaper = np.stack([_shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
+    # curvature costs |dY|: docs/compress.md). The nodes sit on the shaper's samples
+    # (snap=True), so the shaper is exact and the identity nodes are reproduced to the
+    # 16-bit step.
+    shaper = np.stack([grid.shaper_values(nodes[i], 0.0, tops[i]) for i in range(3)], axis=1)
     out = CompressLUT(
         display=display,
         clip=lut,
-        black=_half16(black),
+        black=storage.half16(black),
         white=_squeeze_codes(C, display, parameters, tops).reshape(n, n, n, 3),
-        white_shaper=_q16(shaper),
+        white_shaper=storage.q16(shaper),
         chart=P,
         parameters=parameters,
     )
