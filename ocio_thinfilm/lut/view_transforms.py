@@ -220,7 +220,7 @@ def view_linear_transform(
     >>> view_linear_transform("sRGB", "Raw")
     Traceback (most recent call last):
     ...
-    ValueError: view must be one of (...), got 'Raw'
+    ocio_thinfilm.checks.ParameterError: view must be one of (...), got 'Raw'
     """
     entry = registry.as_display(display)
     if entry.hdr:
