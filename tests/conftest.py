@@ -1,7 +1,11 @@
-"""Shared fixtures and independent reference implementations for the core tests.
+"""Shared fixtures and independent reference implementations for the tests.
 
 Everything here is a *reference*: written from the textbook formulas (or taken from
-colour-science), never copied from the code under test.
+colour-science), never copied from the code under test. Shared fixtures: ``cfg`` (the
+committed config), ``colour`` (colour-science), ``load_benchmark``, ``marked``. What
+tests and benchmarks share as importable code (the test-colour sets, applying a view as
+a host does, decoding display code values) is the repository's ``evaluation`` package:
+:mod:`evaluation.colours`, :mod:`evaluation.views`.
 """
 
 from __future__ import annotations
@@ -48,6 +52,18 @@ def between(text: str, begin: str, end: str) -> str:
 def marked():
     """:func:`between` for the tests that compare a document's generated block."""
     return between
+
+
+@pytest.fixture(scope="session")
+def cfg():
+    """The committed config (``configs/thinfilm``) as an OCIO Config; skips where
+    PyOpenColorIO or the baked config is missing."""
+    ocio = pytest.importorskip("PyOpenColorIO")
+    from evaluation.views import COMMITTED_CONFIG
+
+    if not COMMITTED_CONFIG.exists():
+        pytest.skip(f"{COMMITTED_CONFIG} not built (ocio-thinfilm bake)")
+    return ocio.Config.CreateFromFile(str(COMMITTED_CONFIG))
 
 
 @pytest.fixture(scope="session")

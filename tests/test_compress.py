@@ -9,21 +9,18 @@ ACES 1.3 curve written out from S-2020-001's formula.
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from evaluation.colours import gamut_map_sets, half_way_colours, object_colours
+from evaluation.views import OPTIMIZATION_LEVELS, apply_view, decode_display
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import compress_lut
 
 ocio = pytest.importorskip("PyOpenColorIO")
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from test_gamut_map import _apply_view, _decode  # noqa: E402
 
-CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
 DISPLAYS = clip.DISPLAYS
 VIEW = "Constant-Lightness Compress"
 _COLOUR_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
@@ -190,13 +187,8 @@ def test_white_squeeze_nodes_do_not_depend_on_the_last_ulps(display, monkeypatch
 # --------------------------------------------------------------------------- #
 # The config's views
 # --------------------------------------------------------------------------- #
-@pytest.fixture(scope="module")
-def cfg():
-    return ocio.Config.CreateFromFile(str(CONFIG))
-
-
 def _apply(cfg, display, XYZ, view=VIEW, optimization=None):
-    return _apply_view(cfg, display, XYZ, optimization, view=view)
+    return apply_view(cfg, display, XYZ, optimization, view=view)
 
 
 @pytest.fixture(scope="module")
@@ -205,7 +197,7 @@ def measured(cfg):
     for display in DISPLAYS:
         w = _weights(display)
         for name, XYZ in gamut_map_sets().items():
-            rgb = _decode(_apply(cfg, display, XYZ), display)
+            rgb = decode_display(_apply(cfg, display, XYZ), display)
             truth = compress.compress_XYZ(XYZ, display)
             de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
             out[display, name] = dict(
@@ -232,7 +224,7 @@ def half_way(cfg):
     out = {}
     for display in DISPLAYS:
         rgb, Y, _ = half_way_colours(display)
-        got = _decode(_apply(cfg, display, colorimetry.RGB_to_XYZ(rgb, display)), display)
+        got = decode_display(_apply(cfg, display, colorimetry.RGB_to_XYZ(rgb, display)), display)
         out[display] = rgb, Y, got
     return out
 
@@ -275,17 +267,7 @@ def test_view_puts_half_way_colours_no_further_out(half_way, display):
     assert (beyond[far] / dist[far]).max() <= 0.02
 
 
-LEVELS = [
-    "OPTIMIZATION_NONE",
-    "OPTIMIZATION_DEFAULT",
-    "OPTIMIZATION_LOSSLESS",
-    "OPTIMIZATION_VERY_GOOD",
-    "OPTIMIZATION_GOOD",
-    "OPTIMIZATION_DRAFT",
-]
-
-
-@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("level", OPTIMIZATION_LEVELS)
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_view_finite_and_in_range_at_every_optimisation_level(cfg, display, level):
     big = np.float32(3.0e38)
@@ -301,7 +283,7 @@ def test_view_finite_and_in_range_at_every_optimisation_level(cfg, display, leve
             [5.0, 1.0, 0.0],
         ]
     )
-    out = _apply(cfg, display, px, optimization=getattr(ocio, level))
+    out = _apply(cfg, display, px, optimization=getattr(ocio, OPTIMIZATION_LEVELS[level]))
     # 1e-4: the tolerance of the clip's views (test_gamut_map), float32 ops after the LUTs
     assert np.isfinite(out).all() and out.min() >= -1e-4 and out.max() <= 1.0 + 1e-4
 
@@ -337,7 +319,7 @@ def ramp_distances(cfg):
         M = colorimetry.matrix_XYZ_to_RGB(display)
         analytic = compress.compress_XYZ(ramps.reshape(-1, 3), display) @ M.T
         views = [
-            _decode(_apply(cfg, display, ramps.reshape(-1, 3), view), display)
+            decode_display(_apply(cfg, display, ramps.reshape(-1, 3), view), display)
             for view in (VIEW, "Constant-Lightness Clip")
         ]
         out[display] = (

@@ -12,13 +12,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation.views import COMMITTED_CONFIG
+
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from evaluation.colours import object_colours
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 ROOT = Path(__file__).resolve().parents[1]
-CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 OCIO21_CHECK = Path("/usr/bin/ociocheck")  # Debian opencolorio-tools (OCIO 2.1)
 
 ROLES = (
@@ -60,13 +61,8 @@ def ocio():
     return PyOpenColorIO
 
 
-@pytest.fixture(scope="module")
-def cfg(ocio):
-    return ocio.Config.CreateFromFile(str(CONFIG))
-
-
 def test_profile_version_and_validation(cfg):
-    assert CONFIG.read_text().startswith("ocio_profile_version: 2.1\n")
+    assert COMMITTED_CONFIG.read_text().startswith("ocio_profile_version: 2.1\n")
     assert (cfg.getMajorVersion(), cfg.getMinorVersion()) == (2, 1)
     cfg.validate()
 
@@ -132,7 +128,7 @@ def test_every_processor_builds(cfg, ocio):
 
 def _run_check(tool):
     result = subprocess.run(
-        [str(tool), "--iconfig", str(CONFIG)], capture_output=True, text=True, timeout=120
+        [str(tool), "--iconfig", str(COMMITTED_CONFIG)], capture_output=True, text=True, timeout=120
     )
     text = result.stdout + result.stderr
     return result.returncode, text
@@ -163,7 +159,7 @@ def test_ociocheck_ocio21():
     reason="Debian opencolorio-tools (OCIO 2.1) not installed",
 )
 def test_ocio21_reads_every_config_lut():
-    for path in sorted((CONFIG.parent / "luts").glob("*.clf")):
+    for path in sorted((COMMITTED_CONFIG.parent / "luts").glob("*.clf")):
         result = subprocess.run(
             ["/usr/bin/ociochecklut", str(path), "0.3", "0.3", "0.3"],
             capture_output=True,
@@ -176,7 +172,7 @@ def test_ocio21_reads_every_config_lut():
 
 
 def test_clf_metadata(ocio):
-    for path in sorted((CONFIG.parent / "luts").glob("*.clf")):
+    for path in sorted((COMMITTED_CONFIG.parent / "luts").glob("*.clf")):
         text = path.read_text()
         assert 'id="urn:aswf:ocio:transformId:1.0:OCIO-ThinFilm:' in text, path.name
         for tag in ("Description", "InputDescriptor", "OutputDescriptor"):
@@ -281,7 +277,7 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
         "img.colorspace_settings.name = 'Thin Film Phase-Change Thickness'\n"
         "print('IMAGE', img.colorspace_settings.name)\n"
     )
-    env = {"OCIO": str(CONFIG), "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)}
+    env = {"OCIO": str(COMMITTED_CONFIG), "PATH": "/usr/bin:/bin", "HOME": str(tmp_path)}
     result = subprocess.run(
         [BLENDER, "-b", "--factory-startup", "--python", str(script)],
         capture_output=True,

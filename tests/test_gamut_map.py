@@ -21,44 +21,21 @@ import numpy as np
 import pytest
 
 from ocio_thinfilm.colour import clip, colorimetry
+from evaluation.views import (
+    EXTREME_XYZ,
+    OPTIMIZATION_LEVELS,
+    apply_view,
+    decode_display,
+)
 from evaluation.colours import ap0_below_white, gamut_map_sets
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
-CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
 DISPLAYS = clip.DISPLAYS
 VIEW = "Constant-Lightness Clip"
 
 
-@pytest.fixture(scope="module")
-def cfg():
-    return ocio.Config.CreateFromFile(str(CONFIG))
-
-
-def _decode(code, display):
-    """Display code values -> display-linear RGB (colour-science's EOTFs)."""
-    import colour
-
-    code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
-    if display == "Rec.2020":
-        return colour.models.eotf_BT1886(code)
-    return colour.cctf_decoding(code, function="sRGB")
-
-
-def _apply_view(cfg, display, XYZ, optimization=None, view=VIEW):
-    """The config's ``view`` of ``display`` on CIE-XYZ-D65 (float32 code values)."""
-    proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-    cpu = (
-        proc.getDefaultCPUProcessor()
-        if optimization is None
-        else proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, optimization)
-    )
-    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
-    cpu.applyRGB(px)
-    return px
-
-
-_sets = gamut_map_sets
+F32_MAX = float(np.finfo(np.float32).max)
 
 
 @pytest.fixture(scope="module")
@@ -67,9 +44,9 @@ def measured(cfg):
     out = {}
     for display in DISPLAYS:
         M = colorimetry.matrix_XYZ_to_RGB(display)
-        for name, XYZ in _sets().items():
-            code = _apply_view(cfg, display, XYZ)
-            rgb = _decode(code, display)
+        for name, XYZ in gamut_map_sets().items():
+            code = apply_view(cfg, display, XYZ)
+            rgb = decode_display(code, display)
             truth = clip.clip_XYZ(XYZ, display)
             de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
             inside = clip.in_gamut(XYZ @ M.T)
@@ -152,7 +129,9 @@ def ap0_below(cfg):
     XYZ = ap0_below_white()
     out = {}
     for display in DISPLAYS:
-        got = colorimetry.RGB_to_XYZ(_decode(_apply_view(cfg, display, XYZ), display), display)
+        got = colorimetry.RGB_to_XYZ(
+            decode_display(apply_view(cfg, display, XYZ), display), display
+        )
         out[display] = colorimetry.delta_E2000(clip.clip_XYZ(XYZ, display), got)
     return out
 
@@ -196,40 +175,10 @@ def test_ap0_below_white_target(ap0_below, display):
 # --------------------------------------------------------------------------- #
 # (d) extremes, every optimisation level
 # --------------------------------------------------------------------------- #
-F32_MAX = float(np.finfo(np.float32).max)
-EXTREMES = np.array(
-    [
-        [0, 0, 0],
-        [1e-40, 1e-40, 1e-40],
-        [0, 0, 1e-40],
-        [-1, -1, -1],
-        [-1, 0.5, 0.5],
-        [0.5, -3, 0.5],
-        [2, 2, 2],
-        [0.95, 1.5, 1.09],
-        [1e4, 1e4, 1e4],
-        [1e30, 0.5, 0.5],
-        [-1e30, 0.5, 0.5],
-        [0.5, 1e30, 0.5],
-        [0.5, 0.5, 1e30],
-        [F32_MAX] * 3,
-        [-F32_MAX] * 3,
-        [F32_MAX, -F32_MAX, F32_MAX],
-        [1e-30, 1.0, 1e30],
-    ],
-    dtype=np.float32,
-)
-LEVELS = {
-    "NONE": "OPTIMIZATION_NONE",
-    "DRAFT": "OPTIMIZATION_DRAFT",
-    "DEFAULT": "OPTIMIZATION_DEFAULT",
-}
-
-
-@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("level", OPTIMIZATION_LEVELS)
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_extremes_finite_and_in_gamut(cfg, display, level):
-    out = _apply_view(cfg, display, EXTREMES, getattr(ocio, LEVELS[level]))
+    out = apply_view(cfg, display, EXTREME_XYZ, getattr(ocio, OPTIMIZATION_LEVELS[level]))
     assert np.all(np.isfinite(out)) and out.min() >= -TOL and out.max() <= 1.0 + TOL
     np.testing.assert_allclose(out[0], 0.0, atol=1e-6)  # black
     # above white: white, to 3e-4 (0.08/255): the pre-clip brings them to Y = 1, and the
@@ -266,7 +215,7 @@ def _finite_probe():
     return np.ascontiguousarray(grid)
 
 
-@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("level", OPTIMIZATION_LEVELS)
 def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
     """Finite, in-range output from finite input for every (input space,
     display, view) of the config, at OCIO's NONE, DRAFT and DEFAULT optimisation."""
@@ -284,24 +233,15 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
                     continue
                 proc = cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)
                 cpu = proc.getOptimizedCPUProcessor(
-                    ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, LEVELS[level])
+                    ocio.BIT_DEPTH_F32,
+                    ocio.BIT_DEPTH_F32,
+                    getattr(ocio, OPTIMIZATION_LEVELS[level]),
                 )
                 px = probe.copy()
                 cpu.applyRGB(px)
                 if not (np.all(np.isfinite(px)) and px.min() >= -TOL and px.max() <= 1.0 + TOL):
                     bad.append((src, display, view, float(np.nanmin(px)), float(np.nanmax(px))))
     assert not bad, bad[:10]
-
-
-#: Every level of OCIO's optimiser (the display spaces' own tests: NONE composes nothing).
-ALL_LEVELS = (
-    "OPTIMIZATION_NONE",
-    "OPTIMIZATION_LOSSLESS",
-    "OPTIMIZATION_VERY_GOOD",
-    "OPTIMIZATION_GOOD",
-    "OPTIMIZATION_DRAFT",
-    "OPTIMIZATION_DEFAULT",
-)
 
 
 def _nonfinite_probe():
@@ -324,14 +264,14 @@ def _lowest_and_highest(x):
 
 def _cpu(proc, level, x):
     cpu = proc.getOptimizedCPUProcessor(
-        ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, level)
+        ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, getattr(ocio, OPTIMIZATION_LEVELS[level])
     )
     px = np.ascontiguousarray(x, dtype=np.float32).copy()
     cpu.applyRGB(px)
     return px
 
 
-@pytest.mark.parametrize("level", ALL_LEVELS)
+@pytest.mark.parametrize("level", OPTIMIZATION_LEVELS)
 def test_display_spaces_as_input_are_finite_at_every_level(cfg, level):
     """Every display colour space (SDR and HDR) as the input of every view of every
     display, converted to CIE-XYZ-D65 and to every other display colour space, at every

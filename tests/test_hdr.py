@@ -13,21 +13,20 @@ The sets are the clip issue's (tests/test_gamut_map.py), scaled by k.
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
+from evaluation.colours import gamut_map_sets
+from evaluation.views import EXTREME_XYZ, OPTIMIZATION_LEVELS, apply_view
 
 ocio = pytest.importorskip("PyOpenColorIO")
 colour = pytest.importorskip("colour")
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from test_gamut_map import EXTREMES, LEVELS, TOL, _apply_view, _sets  # noqa: E402
 
-CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
+#: Tolerance of a code value above 1 or below 0 (float32 rounding).
+TOL = 1e-4
 VIEW = "Constant-Lightness Clip"
 #: The views with an analytic map: the clip and the soft compression (the same ray and
 #: faces, scale-covariant alike), and their maps of XYZ into an SDR gamut.
@@ -43,13 +42,8 @@ K = PEAK / WHITE
 HDR = registry.HDR_DISPLAYS
 
 
-@pytest.fixture(scope="module")
-def cfg():
-    return ocio.Config.CreateFromFile(str(CONFIG))
-
-
 def _apply(cfg, display, view, XYZ, optimization=None):
-    return _apply_view(cfg, display, XYZ, optimization, view=view)
+    return apply_view(cfg, display, XYZ, optimization, view=view)
 
 
 def _nits(display, code):
@@ -94,7 +88,7 @@ def _measured(cfg):
     for view, display in [(v, d) for v in MAPPED for d in HDR]:
         gamut = registry.as_display(display).gamut.name
         M = colorimetry.matrix_XYZ_to_RGB(gamut)
-        for name, XYZ in _sets().items():
+        for name, XYZ in gamut_map_sets().items():
             XYZ = XYZ * K
             code = _apply(cfg, display, view, XYZ)
             got = _decoded_XYZ(display, code)
@@ -205,13 +199,13 @@ def test_luminance_is_203_Y(cfg, display, view):
     np.testing.assert_allclose(out, PEAK, rtol=1e-3)
 
 
-@pytest.mark.parametrize("level", LEVELS)
+@pytest.mark.parametrize("level", OPTIMIZATION_LEVELS)
 @pytest.mark.parametrize("display", HDR)
 @pytest.mark.parametrize("view", NOT_RAW)
 def test_hdr_extremes_finite_and_in_range(cfg, display, view, level):
     with np.errstate(over="ignore"):  # float32 max * k is +Inf: an input too
-        x = np.r_[EXTREMES, EXTREMES * np.float32(K)]
-    out = _apply(cfg, display, view, x, getattr(ocio, LEVELS[level]))
+        x = np.r_[EXTREME_XYZ, EXTREME_XYZ * np.float32(K)]
+    out = _apply(cfg, display, view, x, getattr(ocio, OPTIMIZATION_LEVELS[level]))
     assert np.all(np.isfinite(out)) and out.min() >= -TOL and out.max() <= 1.0 + TOL
     assert np.all(_nits(display, out) <= PEAK * (1 + 1e-3))
 

@@ -16,13 +16,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation.views import COMMITTED_CONFIG
+
 from ocio_thinfilm import registry
 from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import read_image, write_image
 
 ROOT = Path(__file__).resolve().parents[1]
-CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 OIIOTOOL = shutil.which("oiiotool")
 pytestmark = pytest.mark.skipif(OIIOTOOL is None, reason="oiiotool (OpenImageIO) not on PATH")
 
@@ -34,7 +35,7 @@ EXACT_MAX = 0.05  # matrix / clamp / ACES GC views: only table interpolation and
 
 def oiiotool(*args):
     result = subprocess.run(
-        [OIIOTOOL, "--colorconfig", str(CONFIG), *map(str, args)],
+        [OIIOTOOL, "--colorconfig", str(COMMITTED_CONFIG), *map(str, args)],
         capture_output=True,
         text=True,
         timeout=120,

@@ -737,8 +737,17 @@ def _builtin_to_reference(builtin: str) -> ocio_ops.Transform:
     """Return an encoded ACES space -> CIE-XYZ-D65.
 
     OCIO's built-in transform to ACES2065-1 (``ACEScct_to_ACES2065-1``: the ACEScct
-    curve of Academy S-2016-001 and AP1 -> AP0), then AP0 -> XYZ.
+    curve of Academy S-2016-001 and AP1 -> AP0), then AP0 -> XYZ. The code values are
+    limited first to those of linear +-:data:`ocio_ops.LIMIT` (found with the built-in's
+    own inverse), so the curve's exponential never overflows to Inf (and Inf - Inf to
+    NaN in the matrix) at any optimisation level.
     """
     import PyOpenColorIO as ocio
 
-    return ocio_ops.group([ocio.BuiltinTransform(builtin), _matrix_to_reference("ACES2065-1")])
+    curve = ocio.BuiltinTransform(builtin)
+    inverse = ocio.BuiltinTransform(builtin)
+    inverse.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    lo, hi = ocio_ops.apply(inverse, [[-ocio_ops.LIMIT] * 3, [ocio_ops.LIMIT] * 3])[:, 0]
+    return ocio_ops.group(
+        [ocio_ops.range_(float(lo), float(hi)), curve, _matrix_to_reference("ACES2065-1")]
+    )

@@ -1,0 +1,94 @@
+"""Applying the committed config's views the way a host does, for the tests and benchmarks.
+
+One definition of each: the committed config's path, OCIO's optimisation levels, a
+view applied to CIE-XYZ-D65 by OCIO's CPU processor (float32, as hosts run it), the
+extreme inputs every view must survive, and display code values decoded back to
+display-linear light with colour-science's transfer functions (independent of the
+package's own encodings).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import numpy.typing as npt
+
+from ocio_thinfilm import registry
+
+#: The repository's baked config (``ocio-thinfilm bake`` writes it).
+COMMITTED_CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
+
+#: OCIO's CPU optimisation levels the tests run every view at: our name -> the
+#: ``PyOpenColorIO`` attribute.
+OPTIMIZATION_LEVELS = {
+    "NONE": "OPTIMIZATION_NONE",
+    "DRAFT": "OPTIMIZATION_DRAFT",
+    "GOOD": "OPTIMIZATION_GOOD",
+    "VERY_GOOD": "OPTIMIZATION_VERY_GOOD",
+    "LOSSLESS": "OPTIMIZATION_LOSSLESS",
+    "DEFAULT": "OPTIMIZATION_DEFAULT",
+}
+
+_F32_MAX = float(np.finfo(np.float32).max)
+#: CIE-XYZ-D65 inputs at and beyond every edge: black, denormals, negatives, above
+#: white, 1e30 and float32's largest value in any channel.
+EXTREME_XYZ = np.array(
+    [
+        [0, 0, 0],
+        [1e-40, 1e-40, 1e-40],
+        [0, 0, 1e-40],
+        [-1, -1, -1],
+        [-1, 0.5, 0.5],
+        [0.5, -3, 0.5],
+        [2, 2, 2],
+        [0.95, 1.5, 1.09],
+        [1e4, 1e4, 1e4],
+        [1e30, 0.5, 0.5],
+        [-1e30, 0.5, 0.5],
+        [0.5, 1e30, 0.5],
+        [0.5, 0.5, 1e30],
+        [_F32_MAX] * 3,
+        [-_F32_MAX] * 3,
+        [_F32_MAX, -_F32_MAX, _F32_MAX],
+        [1e-30, 1.0, 1e30],
+    ],
+    dtype=np.float32,
+)
+
+
+def apply_view(
+    cfg,
+    display: str,
+    XYZ: npt.ArrayLike,
+    optimization=None,
+    view: str = "Constant-Lightness Clip",
+) -> np.ndarray:
+    """The config's ``view`` of ``display`` on CIE-XYZ-D65 (float32 code values, (N, 3)).
+
+    ``optimization``: a ``PyOpenColorIO.OptimizationFlags`` value, or ``None`` for the
+    default CPU processor (what a host gets).
+    """
+    import PyOpenColorIO as ocio
+
+    proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+    cpu = (
+        proc.getDefaultCPUProcessor()
+        if optimization is None
+        else proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, optimization)
+    )
+    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
+    cpu.applyRGB(px)
+    return px
+
+
+def decode_display(code: npt.ArrayLike, display: str) -> np.ndarray:
+    """SDR display code values (clamped to [0, 1]) -> display-linear RGB, by
+    colour-science: the sRGB piecewise EOTF (IEC 61966-2-1) or BT.1886's EOTF with a
+    black level of 0 (a pure 2.4 power), as the registry's encoding says."""
+    import colour
+
+    code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
+    if registry.as_display(display, hdr=False).encoding.offset is None:
+        return colour.models.eotf_BT1886(code)
+    return colour.cctf_decoding(code, function="sRGB")
