@@ -10,7 +10,7 @@ those files:
 - load ms: building a CPU processor of the chain from the files in a fresh OCIO
   config (best of 3, OCIO's caches cleared);
 - accuracy: the chain through OCIO's CPU processor against the analytic clip
-  (``colour.clip.clip_XYZ``) on the test sets of ``tests/test_gamut_map.py`` (object,
+  (``colour.clip.clip_XYZ``) on the test sets of ``tests/test_clip_view.py`` (object,
   monochromatic, random AP0, spectral-line mixtures), dE2000 p99 / max, the largest
   |dY|, and the largest dE2000 of in-gamut colours.
 
@@ -93,7 +93,7 @@ def accuracy(display, chain, sets):
 
 def measure(pairs, displays):
     sys.path.insert(0, str(ROOT / "tests"))
-    from test_gamut_map import _sets
+    from test_clip_view import _sets
 
     from ocio_thinfilm.lut import clip_lut as CL
 

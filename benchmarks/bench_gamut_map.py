@@ -154,7 +154,7 @@ def accuracy():
 
     sys.path.insert(0, str(ROOT / "tests"))
     import PyOpenColorIO as ocio
-    from test_gamut_map import _apply_view, _decode, _sets
+    from test_clip_view import _apply_view, _decode, _sets
 
     from ocio_thinfilm.colour import clip, colorimetry
 

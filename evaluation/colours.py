@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 
 __all__ = [
@@ -132,9 +133,6 @@ def ap0_below_white(n: int = 200000, seed: int = 123) -> np.ndarray:
     return np.concatenate(out)[:n]
 
 
-_COLOUR_SCIENCE_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
-
-
 def half_way_colours(
     display: str, n: int = 40000, seed: int = 11, reach: float = 0.5
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -155,7 +153,7 @@ def half_way_colours(
     """
     import colour
 
-    space = colour.RGB_COLOURSPACES[_COLOUR_SCIENCE_NAMES[display]]
+    space = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[display]]
     w = colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
     rng = np.random.default_rng(seed)
     Y = rng.uniform(0.0005, 0.999, n)

@@ -284,7 +284,7 @@ def test_view_finite_and_in_range_at_every_optimisation_level(cfg, display, leve
         ]
     )
     out = _apply(cfg, display, px, optimization=getattr(ocio, OPTIMIZATION_LEVELS[level]))
-    # 1e-4: the tolerance of the clip's views (test_gamut_map), float32 ops after the LUTs
+    # 1e-4: the tolerance of the clip's views (test_clip_view), float32 ops after the LUTs
     assert np.isfinite(out).all() and out.min() >= -1e-4 and out.max() <= 1.0 + 1e-4
 
 

@@ -8,7 +8,7 @@ the BT.2100 OOTF of the signal's parallelepiped; the truth is computed here with
 OOTF written out from BT.2100 (Table 5), not with the package's ops. The code values
 are decoded with colour-science's ST 2084 / HLG EOTFs.
 
-The sets are the clip issue's (tests/test_gamut_map.py), scaled by k.
+The sets are the clip issue's (tests/test_clip_view.py), scaled by k.
 """
 
 from __future__ import annotations

@@ -155,7 +155,7 @@ def test_xyz_chart_through_constant_lightness_clip(colour_chart, tmp_path, displ
     # Promise 1: in gamut (code values and display-linear RGB in [0, 1]).
     assert clip.in_gamut(got, 1e-4).all()
     # Promise 2: Y preserved (target |dY| <= 1e-3; both passes keep Y at their nodes;
-    # the per-set account: tests/test_gamut_map.py).
+    # the per-set account: tests/test_clip_view.py).
     Y_out = colorimetry.RGB_to_XYZ(linear, display)[:, 1]
     Y_in = np.minimum(xyz[:, 1], 1.0)
     assert np.abs(Y_out - Y_in).max() <= 1e-3

@@ -164,7 +164,7 @@ def test_per_display_rgb_variant_is_clipped():
 # --------------------------------------------------------------------------- #
 #: The targets for object colours (the view, every display): p99 <= 0.5, max <= 1.5
 #: dE2000 vs the analytic clip (measured: reports/bench_gamut_map.json;
-#: tests/test_gamut_map.py covers the other sets).
+#: tests/test_clip_view.py covers the other sets).
 OBJECT_P99 = 0.5
 OBJECT_MAX = 1.5
 
