@@ -49,9 +49,11 @@ def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 
 
 
 def _encode(rgb, display="sRGB"):
-    """Display-linear RGB clamped to [0, 1] -> code values in ``display``'s encoding (the
-    registry's: the sRGB piecewise curve of IEC 61966-2-1, or BT.1886's inverse EOTF
-    with a black level of 0), by colour-science."""
+    """Display-linear RGB clamped to [0, 1] -> code values in ``display``'s encoding.
+
+    The registry's encoding (the sRGB piecewise curve of IEC 61966-2-1, or BT.1886's inverse
+    EOTF with a black level of 0), by colour-science.
+    """
     import colour
 
     encoding = registry.as_display(display, hdr=False, parameter="display").encoding

@@ -48,8 +48,8 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.colour import colorimetry
 
 __all__ = [
     "DISPLAYS",
@@ -83,8 +83,10 @@ NEUTRAL_TOLERANCE = 1e-12
 
 
 def _space(display: registry.DisplayLike) -> str:
-    """The colorimetry's RGB space of ``display``: a name as it is, an SDR display of the
-    registry as its object (the clip's gamut)."""
+    """Return the colorimetry's RGB space of ``display`` (the clip's gamut).
+
+    A name as it is, an SDR display of the registry as its object.
+    """
     if isinstance(display, (registry.Display, registry.HDRDisplay)):
         return registry.as_display(display, hdr=False).name
     return display
@@ -99,8 +101,9 @@ def _display_matrix(display: registry.DisplayLike) -> np.ndarray:
 
 
 def luminance_weights(display: registry.DisplayLike) -> np.ndarray:
-    """The row ``w`` with ``Y = w . RGB`` for ``display``'s linear RGB (RGB = 1, its
-    white, has Y = 1): the second row of its RGB -> XYZ matrix.
+    """Return the row ``w`` with ``Y = w . RGB`` for ``display``'s linear RGB.
+
+    RGB = 1, its white, has Y = 1: ``w`` is the second row of its RGB -> XYZ matrix.
 
     Parameters
     ----------
@@ -134,8 +137,9 @@ _CHUNK = 1 << 14
 
 
 def _apply(values, name, kernel):
-    """Run ``kernel`` on planar float64 (3, N) blocks of ``values``; same shape and
-    dtype out.
+    """Run ``kernel`` on planar float64 (3, N) blocks of ``values``.
+
+    Same shape and dtype out.
 
     Per block: NaN rows are noted and zeroed, components limited to +-LIMIT (so
     +-Inf is finite), the kernel runs on the three contiguous channel rows, NaN rows
@@ -159,7 +163,9 @@ def _apply(values, name, kernel):
 
 
 def _fraction_to_boundary(values, grey):
-    """The fraction ``t`` of the way from the grey to the colour at which the ray
+    """Return where the ray from the grey to the colour first leaves the cube.
+
+    The fraction ``t`` of the way from the grey to the colour at which the ray
     first leaves the cube (1 when it never does), and whether it is outside at all.
 
     ``values``: the three (N,) signed positions against the plane pairs (RGB);
@@ -232,8 +238,9 @@ def clip_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.n
 
 
 def clip_XYZ(XYZ: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.ndarray:
-    """Constant-lightness clip of D65-relative XYZ into ``display``'s gamut (the
-    paper's XYZ form). Returns XYZ, same shape and dtype.
+    """Constant-lightness clip of D65-relative XYZ into ``display``'s gamut.
+
+    The paper's XYZ form. Returns XYZ, same shape and dtype.
 
     1. Outcodes: for each plane pair ``n_j . X = 0`` and ``n_j . X = 1`` (``n_j`` the
        rows of the XYZ -> RGB matrix) the colour is below, between or above.
@@ -261,7 +268,7 @@ def clip_XYZ(XYZ: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.n
 
 
 def in_gamut(RGB: npt.ArrayLike, tolerance: float = 0.0) -> np.ndarray | np.bool_:
-    """True where all channels lie in [-tolerance, 1 + tolerance].
+    """Return True where all channels lie in [-tolerance, 1 + tolerance].
 
     The paper's first step of the clip (Smits & Meyer 1990, Section 3.2) in the
     display's RGB: a colour is inside the parallelepiped when it lies between both
@@ -468,9 +475,10 @@ def clamp_RGB(RGB: npt.ArrayLike) -> np.ndarray:
 
 
 def aces_gamut_compress_RGB(RGB: npt.ArrayLike) -> np.ndarray:
-    """Baseline: OCIO's ACES 1.3 reference gamut compression (``ACES_GamutComp13``)
-    applied to display-linear RGB, then a clamp to [0, 1]. Runs through an OCIO CPU
-    processor; returns float32.
+    """Baseline: OCIO's ACES 1.3 reference gamut compression, then a clamp to [0, 1].
+
+    The compression (``ACES_GamutComp13``) is applied to display-linear RGB, then the clamp.
+    Runs through an OCIO CPU processor; returns float32.
 
     Per pixel, the achromatic value ``ach = max(R, G, B)`` is kept and each channel's
     distance ``d = (ach - c) / |ach|`` above its threshold ``thr`` is compressed by

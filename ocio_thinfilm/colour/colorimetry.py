@@ -28,7 +28,6 @@ them and colour-science's version: only the first process imports colour.
 
 from __future__ import annotations
 
-
 import numpy as np
 import numpy.typing as npt
 
@@ -100,8 +99,9 @@ def spectral_weights(
     observer: str = DEFAULT_OBSERVER,
     illuminant: str = DEFAULT_ILLUMINANT,
 ) -> np.ndarray:
-    """Integration weights ``W`` (shape (len(wavelengths), 3)) so that
-    ``XYZ = R @ W`` and the perfect reflector has Y = 1.
+    """Integration weights ``W`` so that ``XYZ = R @ W`` and the perfect reflector has Y = 1.
+
+    ``W`` has shape (len(wavelengths), 3).
 
     ``W[i] = cmf(l_i) S(l_i) (upper_i - lower_i) / sum(ybar S dl)`` with the bins
     of :func:`ocio_thinfilm.physics.sampling.bin_edges`: the trapezoid rule on the grid; for a
@@ -543,8 +543,9 @@ def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
 
 
 def cmfs_at(wavelengths: npt.ArrayLike, observer: str = DEFAULT_OBSERVER) -> np.ndarray:
-    """Colour matching functions (x-bar, y-bar, z-bar) at ``wavelengths`` (nm),
-    interpolated by colour-science; shape (len(wavelengths), 3).
+    """Colour matching functions (x-bar, y-bar, z-bar) at ``wavelengths`` (nm).
+
+    Interpolated by colour-science; shape (len(wavelengths), 3).
 
     Parameters
     ----------
@@ -583,8 +584,9 @@ def cmfs_at(wavelengths: npt.ArrayLike, observer: str = DEFAULT_OBSERVER) -> np.
 
 
 def spectral_locus_XYZ(Y: float = 1.0, wavelengths: npt.ArrayLike | None = None) -> np.ndarray:
-    """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs
-    (the spectrum of the paper's Figure 4). Default 380-700 nm every 1 nm.
+    """Monochromatic colours scaled to luminance ``Y``, from the CIE 1931 CMFs.
+
+    The spectrum of the paper's Figure 4. Default 380-700 nm every 1 nm.
 
     The worst case of Smits & Meyer (1990), Section 3.2: "every color in the spectrum
     is monochromatic and as far out of the gamut of the monitor as possible".

@@ -81,8 +81,10 @@ def _check(threshold, limit, power):
 
 
 def _scale(threshold, limit, power):
-    """The ACES curve's scale s such that the curve reaches 1 at ``limit``; its
-    asymptote is threshold + s (S-2020-001, Section 'compress')."""
+    """Return the ACES curve's scale s such that the curve reaches 1 at ``limit``.
+
+    Its asymptote is threshold + s (S-2020-001, Section 'compress').
+    """
     return (limit - threshold) / (((limit - threshold) / (1.0 - threshold)) ** power - 1.0) ** (
         1.0 / power
     )
@@ -96,7 +98,7 @@ def compression_curve(
     *,
     clipped: bool = True,
 ) -> np.ndarray:
-    """The distance ``d`` (>= 0) after compression.
+    """Return the distance ``d`` (>= 0) after compression.
 
     ``d`` up to ``threshold`` is unchanged; beyond it,
     ``threshold + x / (1 + (x / s) ** power) ** (1 / power)`` with ``x = d - threshold``
@@ -125,8 +127,9 @@ def compression_curve(
 def compression_curve_inverse(
     y: npt.ArrayLike, threshold: float = THRESHOLD, limit: float = LIMIT, power: float = POWER
 ) -> np.ndarray:
-    """The distance whose unclipped :func:`compression_curve` is ``y`` (``y`` below the
-    asymptote threshold + s; at or above it: +inf).
+    """Return the distance whose unclipped :func:`compression_curve` is ``y``.
+
+    For ``y`` below the asymptote threshold + s; at or above it: +inf.
 
     ``x = u / (1 - (u / s) ** power) ** (1 / power)`` with ``u = y - threshold``.
 
@@ -146,8 +149,11 @@ def compression_curve_inverse(
 
 
 def _distance(rgb, grey):
-    """Planar (3, N) display-linear RGB and its grey (N,) in (0, 1): the normalised
-    boundary distance along the ray (the largest of the fractions to the six faces)."""
+    """Return the normalised boundary distance along the ray of planar display-linear RGB.
+
+    Planar (3, N) display-linear RGB and its grey (N,) in (0, 1): the normalised
+    boundary distance along the ray (the largest of the fractions to the six faces).
+    """
     d = np.zeros_like(grey)
     for value in rgb:
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -158,8 +164,9 @@ def _distance(rgb, grey):
 
 
 def boundary_distance(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.ndarray:
-    """Normalised distance of display-linear ``RGB`` to ``display``'s gamut boundary
-    along the paper's ray (0 at the grey, 1 on the boundary); NaN where Y <= 0 or
+    """Normalised distance of display-linear ``RGB`` to ``display``'s gamut boundary.
+
+    Along the paper's ray (0 at the grey, 1 on the boundary); NaN where Y <= 0 or
     Y >= 1 (no ray: the colour is black or white). Returns (N...,) float64.
 
     Examples
@@ -250,7 +257,8 @@ def compress_XYZ(
     limit: float = LIMIT,
     power: float = POWER,
 ) -> np.ndarray:
-    """:func:`compress_RGB` for D65-relative CIE XYZ (Y = 1 the display's white):
+    """:func:`compress_RGB` for D65-relative CIE XYZ (Y = 1 the display's white).
+
     XYZ in, XYZ out, same shape and dtype.
 
     >>> xyz = [0.4034, 0.414, 0.3425]  # sRGB (0.5, 0.4, 0.3): far inside, unchanged
@@ -281,8 +289,9 @@ def soft_black_RGB(
     limit: float = LIMIT,
     power: float = POWER,
 ) -> np.ndarray:
-    """S_b: ``Y + sigma(d_black) (c - Y)``, d_black = (Y - min c) / Y, for display-linear
-    (N, 3) RGB with Y > 0 (float64 out; rows with Y <= 0 unchanged).
+    """S_b: ``Y + sigma(d_black) (c - Y)``, d_black = (Y - min c) / Y.
+
+    For display-linear (N, 3) RGB with Y > 0 (float64 out; rows with Y <= 0 unchanged).
 
     ``sigma(d) = f(d) / d`` with ``f`` the unclipped :func:`compression_curve` (1 up to
     the threshold): the colour moves along the ray of Smits & Meyer (1990), Section 3.2,

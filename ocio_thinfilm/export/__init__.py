@@ -1,5 +1,7 @@
-"""Stage 6: the files users load. Every file the package writes is written here (the
-stages before it hand over data and OCIO objects).
+"""Stage 6: the files users load.
+
+Every file the package writes is written here (the stages before it hand over data and OCIO
+objects).
 
 - :mod:`.files` -- standalone table and clip LUTs (``export film|morpho|clip``);
 - :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``);

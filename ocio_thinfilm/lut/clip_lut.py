@@ -99,7 +99,8 @@ WHITE_SCALE = 1.25
 
 
 def white_size(size: int) -> int:
-    """Edge of the white pass's Lut3D for a black pass of edge ``size``:
+    """Edge of the white pass's Lut3D for a black pass of edge ``size``.
+
     :data:`WHITE_SIZE` at :data:`CLIP_SIZE`, in proportion otherwise (at least 7).
 
     Examples
@@ -188,9 +189,12 @@ def xyY_inverse_transform() -> ocio_ops.Transform:
 
 
 def _white_codes(C: np.ndarray, display: str) -> np.ndarray:
-    """The white pass's stored values at the (N, 3) nodes ``C``: U continued above
-    white (:func:`~ocio_thinfilm.colour.clip.clip_white_faces_continued_RGB`), in the
-    working encoding, / WHITE_SCALE, on the 16-bit grid."""
+    """Return the white pass's stored values at the (N, 3) nodes ``C``.
+
+    U continued above white
+    (:func:`~ocio_thinfilm.colour.clip.clip_white_faces_continued_RGB`), in the working
+    encoding, / WHITE_SCALE, on the 16-bit grid.
+    """
     continued = clip.clip_white_faces_continued_RGB(C, display)
     code = grid.encode(np.clip(continued, 0.0, None), grid.WORKING_ENCODING)
     return storage.q16(code / WHITE_SCALE)
@@ -255,11 +259,14 @@ class ClipLUT:
 
     @property
     def name(self) -> str:
+        """Name of the clip's transforms: ``Constant-Lightness Clip <display>``."""
         return f"Constant-Lightness Clip {self.display}"
 
     def black_core(self) -> ocio_ops.Transform:
-        """CLF-writable black pass: the Lut3D; chart (u_a, u_b, Y) in, the chart
-        coordinates of L(X) and Y out."""
+        """CLF-writable black pass: the Lut3D.
+
+        Chart (u_a, u_b, Y) in, the chart coordinates of L(X) and Y out.
+        """
         name = f"{self.name} Black Faces"
         origin, sign = self.frame
         back = ocio_ops.matrix(np.diag([sign[0], sign[1], 1.0]), offset=(origin[0], origin[1], 0.0))
@@ -286,8 +293,10 @@ class ClipLUT:
         )
 
     def white_core(self) -> ocio_ops.Transform:
-        """CLF-writable white pass: per-channel shaper, Lut3D, its scale and a clamp;
-        display-linear c_i / tops[i] in (no negative channel), display code values out."""
+        """CLF-writable white pass: per-channel shaper, Lut3D, its scale and a clamp.
+
+        Display-linear c_i / tops[i] in (no negative channel), display code values out.
+        """
         name = f"{self.name} White Faces"
         n = self.white.shape[0]
         ops = [
@@ -320,10 +329,12 @@ class ClipLUT:
     def transforms(
         self, black: ocio_ops.Transform | None = None, white: ocio_ops.Transform | None = None
     ) -> list[ocio_ops.Transform]:
-        """The whole clip as a list of OCIO transforms, CIE-XYZ-D65 -> display RGB in
-        [0, 1], sRGB-encoded (:data:`ocio_thinfilm.lut.grid.WORKING_ENCODING`); ``black`` /
-        ``white`` replace
-        the CLF-writable cores (e.g. by FileTransforms in the config)."""
+        """Return the whole clip as a list of OCIO transforms.
+
+        CIE-XYZ-D65 -> display RGB in [0, 1], sRGB-encoded
+        (:data:`ocio_thinfilm.lut.grid.WORKING_ENCODING`); ``black`` / ``white`` replace the
+        CLF-writable cores (e.g. by FileTransforms in the config).
+        """
         M = colorimetry.matrix_XYZ_to_RGB(self.display)
         to_white = np.diag(1.0 / self.tops) @ M @ np.linalg.inv(self.chart)
         return [
@@ -348,12 +359,14 @@ class ClipLUT:
     )
 )
 def _black_nodes(display, size):
-    """The black pass's (u_a, u_b) node values as stored, (size * size + 2, 2): the
-    nodes' z = sign (u - origin) (L at the nodes, the outside ones fitted and rounded
+    """Return the black pass's (u_a, u_b) node values as stored, (size * size + 2, 2).
+
+    The nodes' z = sign (u - origin) (L at the nodes, the outside ones fitted and rounded
     to half floats inside the triangle), then the rows origin and sign of
     :func:`~ocio_thinfilm.lut.storage.face_frame`. Memoised on disk (the fit takes
     seconds per display; the key covers the source of the modules that make it and
-    colour-science's version)."""
+    colour-science's version).
+    """
     P, _ = grid.black_plan(display, size)
     g = np.linspace(0.0, 1.0, size)
     ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
@@ -412,8 +425,9 @@ def _clip_lut(display, size, white_edge):
 def clip_lut(
     display: registry.DisplayLike = "sRGB", size: int = CLIP_SIZE, white_edge: int | None = None
 ) -> ClipLUT:
-    """The baked clip LUTs for ``display`` (cached): both passes, from
-    :func:`ocio_thinfilm.colour.clip.clip_black_faces_RGB` and
+    """Return the baked clip LUTs for ``display`` (cached).
+
+    Both passes, from :func:`ocio_thinfilm.colour.clip.clip_black_faces_RGB` and
     :func:`~ocio_thinfilm.colour.clip.clip_white_faces_RGB`, whose composition
     is :func:`ocio_thinfilm.colour.clip.clip_RGB` exactly.
 
@@ -464,7 +478,7 @@ def clip_lut(
 
 
 def working_decoding_transform() -> ocio_ops.Transform:
-    """sRGB code values (the white pass's output) -> display-linear RGB.
+    """Return the transform from sRGB code values (the white pass's output) to display-linear RGB.
 
     The inverse of :func:`ocio_thinfilm.lut.display_transforms.display_encoding_transform`
     for :data:`ocio_thinfilm.lut.grid.WORKING_ENCODING`: the IEC 61966-2-1 sRGB EOTF, ``V / 12.92``
@@ -496,8 +510,9 @@ def working_decoding_transform() -> ocio_ops.Transform:
 def clip_transform(
     display: registry.DisplayLike = "sRGB", size: int = CLIP_SIZE
 ) -> ocio_ops.Transform:
-    """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness
-    clipped: :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
+    """OCIO transform CIE-XYZ-D65 -> display-linear RGB in [0, 1], constant-lightness clipped.
+
+    :meth:`ClipLUT.transforms` (range limit, chart, the black-faces pass, the
     white-faces pass, which ends in display code values), then the display's EOTF.
 
     Parameters

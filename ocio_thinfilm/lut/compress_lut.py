@@ -1,5 +1,7 @@
-"""The soft constant-lightness compression (:mod:`ocio_thinfilm.colour.compress`) as OCIO
-transforms: two small LUTs in front of the clip's two passes, which it reuses as they are.
+"""The soft constant-lightness compression as OCIO transforms.
+
+The compression of :mod:`ocio_thinfilm.colour.compress`: two small LUTs in front of the clip's
+two passes, which it reuses as they are.
 
 With ``f`` the compression curve continued past the limit (``clipped=False``: smooth and
 strictly increasing up to its asymptote, above 1 beyond the limit) and
@@ -83,8 +85,9 @@ SOFT_WHITE_RATIO = 0.57
 
 @dataclass(frozen=True, eq=False)
 class CompressLUT:
-    """The baked compression for one display (see :func:`compress_lut`): S_b and S_w,
-    and the display's :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` they run with.
+    """The baked compression for one display (see :func:`compress_lut`).
+
+    S_b and S_w, and the display's :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` they run with.
 
     Attributes
     ----------
@@ -121,6 +124,7 @@ class CompressLUT:
 
     @property
     def name(self) -> str:
+        """Name of the compression's transforms: ``Constant-Lightness Compress <display>``."""
         return f"Constant-Lightness Compress {self.display}"
 
     def black_core(self) -> ocio_ops.Transform:
@@ -180,9 +184,11 @@ class CompressLUT:
         clip_black: ocio_ops.Transform | None = None,
         clip_white: ocio_ops.Transform | None = None,
     ) -> list[ocio_ops.Transform]:
-        """CIE-XYZ-D65 -> display RGB in [0, 1], sRGB-encoded: the clip's chain with S_b
-        before its black pass and S_w before its white pass; the arguments replace the
-        CLF-writable cores (e.g. by FileTransforms in the config)."""
+        """CIE-XYZ-D65 -> display RGB in [0, 1], sRGB-encoded.
+
+        The clip's chain with S_b before its black pass and S_w before its white pass; the
+        arguments replace the CLF-writable cores (e.g. by FileTransforms in the config).
+        """
         ops = self.clip.transforms(clip_black, clip_white)
         # the clip's chain: limit, chart, xyY, pre-clip, L, xyY^-1, matrix, U
         to_clip_chart = self.clip.chart @ np.linalg.inv(self.chart)
@@ -204,9 +210,11 @@ class CompressLUT:
 
 
 def _squeeze_nodes(white_edge: int, display: str) -> tuple[np.ndarray, np.ndarray]:
-    """S_w's nodes per axis and the clip's tops (:func:`ocio_thinfilm.lut.grid.white_nodes`
-    with :data:`SOFT_WHITE_INSIDE`, :data:`SOFT_WHITE_GRADED`, :data:`SOFT_WHITE_RATIO`,
-    on the shaper's samples)."""
+    """S_w's nodes per axis and the clip's tops.
+
+    By :func:`ocio_thinfilm.lut.grid.white_nodes` with :data:`SOFT_WHITE_INSIDE`,
+    :data:`SOFT_WHITE_GRADED`, :data:`SOFT_WHITE_RATIO`, on the shaper's samples.
+    """
     return grid.white_nodes(
         white_edge,
         display,
@@ -220,9 +228,11 @@ def _squeeze_nodes(white_edge: int, display: str) -> tuple[np.ndarray, np.ndarra
 def _squeeze_codes(
     C: np.ndarray, display: str, parameters: tuple[float, float, float], tops: np.ndarray
 ) -> np.ndarray:
-    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops on the 16-bit grid
-    (:func:`ocio_thinfilm.lut.storage.q16`; not rounded to half floats first, which would
-    move the identity nodes near white by up to 3e-4)."""
+    """S_w's stored values at the (N, 3) nodes ``C``: S_w(c) / tops on the 16-bit grid.
+
+    By :func:`ocio_thinfilm.lut.storage.q16`; not rounded to half floats first, which would
+    move the identity nodes near white by up to 3e-4.
+    """
     return storage.q16(np.clip(soft.soft_white_RGB(C, display, *parameters), 0.0, tops) / tops)
 
 
@@ -277,7 +287,7 @@ def compress_lut(
     power: float = soft.POWER,
     clip_size: int = clip_lut.CLIP_SIZE,
 ) -> CompressLUT:
-    """The baked compression LUTs for ``display`` (cached).
+    """Return the baked compression LUTs for ``display`` (cached).
 
     Parameters
     ----------

@@ -134,47 +134,49 @@ PQ_CURVE = "CURVE - LINEAR_to_ST-2084"
 
 
 def hdr_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
-    """An HDR display's CIE-XYZ-D65 (the display reference: Y = 1 at
-        :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2) -> its code values.
+    """Return the transform from an HDR display's CIE-XYZ-D65 to its code values.
+
+    CIE-XYZ-D65 is the display reference: Y = 1 at
+    :data:`~ocio_thinfilm.registry.HDR_REFERENCE_WHITE` = 203 cd/m2.
 
     The matrix to the display's primaries scaled by 203 / 100 (OCIO's built-ins take
-        1.0 as 100 cd/m2), a clamp to [0, 10000 cd/m2], then OCIO's built-ins (OCIO >= 2.1):
-        the ST 2084 curve (:data:`PQ_CURVE`) for PQ, for HLG the registry entry's display
-        transform (the BT.2100 HLG inverse EOTF for a 1000 cd/m2 peak) after the matrix
-        back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry
-        entry's built-in display transform (the ACES configs' display colour spaces) of XYZ
-        scaled by 203 / 100.
+    1.0 as 100 cd/m2), a clamp to [0, 10000 cd/m2], then OCIO's built-ins (OCIO >= 2.1):
+    the ST 2084 curve (:data:`PQ_CURVE`) for PQ, for HLG the registry entry's display
+    transform (the BT.2100 HLG inverse EOTF for a 1000 cd/m2 peak) after the matrix
+    back to XYZ, then a clamp of the codes to [0, 1]. The same code values as the registry
+    entry's built-in display transform (the ACES configs' display colour spaces) of XYZ
+    scaled by 203 / 100.
 
-        Parameters
-        ----------
-        display : str or registry display
-            A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
+    Parameters
+    ----------
+    display : str or registry display
+        A display of :data:`ocio_thinfilm.registry.HDR_DISPLAYS`.
 
-        Returns
-        -------
-        PyOpenColorIO.GroupTransform
+    Returns
+    -------
+    PyOpenColorIO.GroupTransform
 
-        Raises
-        ------
-        ValueError
-            For a name that is not an HDR display of the registry.
+    Raises
+    ------
+    ValueError
+        For a name that is not an HDR display of the registry.
 
-        References
-        ----------
-        SMPTE ST 2084:2014; ITU-R BT.2100-2 (2018), Table 4 and 5; ITU-R BT.2408-7, HDR
-        reference white 203 cd/m2.
+    References
+    ----------
+    SMPTE ST 2084:2014; ITU-R BT.2100-2 (2018), Table 4 and 5; ITU-R BT.2408-7, HDR
+    reference white 203 cd/m2.
 
-        Examples
-        --------
-        The reference white Y = 1 is 203 cd/m2: PQ code 0.5807; the 1000 cd/m2 peak (Y =
-        1000 / 203) is PQ code 0.7518:
+    Examples
+    --------
+    The reference white Y = 1 is 203 cd/m2: PQ code 0.5807; the 1000 cd/m2 peak (Y =
+    1000 / 203) is PQ code 0.7518:
 
-        >>> import numpy as np
-        >>> from ocio_thinfilm.lut.ocio_ops import apply
-        >>> white = np.array([0.95047, 1.0, 1.08883])
-        >>> out = apply(hdr_encoding_transform("Rec.2100-PQ"), [white, white * 1000 / 203])
-        >>> out.astype(float).round(4).tolist()
-        [[0.5807, 0.5807, 0.5807], [0.7518, 0.7518, 0.7518]]
+    >>> import numpy as np
+    >>> from ocio_thinfilm.lut.ocio_ops import apply
+    >>> white = np.array([0.95047, 1.0, 1.08883])
+    >>> out = apply(hdr_encoding_transform("Rec.2100-PQ"), [white, white * 1000 / 203])
+    >>> out.astype(float).round(4).tolist()
+    [[0.5807, 0.5807, 0.5807], [0.7518, 0.7518, 0.7518]]
     """
     ocio = ocio_ops.module()
     entry = registry.as_display(display)
@@ -204,10 +206,11 @@ def hdr_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
 
 
 def code_limit(display: registry.DisplayLike) -> float:
-    """The code value of display-linear :data:`~ocio_thinfilm.lut.ocio_ops.LIMIT` (1e6
-    times the display white) through an SDR display's encoding: IEC 61966-2-1's
-    ``1.055 L ** (1 / 2.4) - 0.055`` for the sRGB-encoded displays, BT.1886's
-    ``L ** (1 / 2.4)`` for Rec.2020.
+    """Return the code value of display-linear LIMIT through an SDR display's encoding.
+
+    :data:`~ocio_thinfilm.lut.ocio_ops.LIMIT` is 1e6 times the display white. The encoding:
+    IEC 61966-2-1's ``1.055 L ** (1 / 2.4) - 0.055`` for the sRGB-encoded displays,
+    BT.1886's ``L ** (1 / 2.4)`` for Rec.2020.
 
     Parameters
     ----------
@@ -236,9 +239,10 @@ def code_limit(display: registry.DisplayLike) -> float:
 
 
 def display_colorspace_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
-    """CIE-XYZ-D65 (the display reference) -> code values of any display of
-    :data:`ocio_thinfilm.registry.ALL_DISPLAYS`: the display matrix and encoding of an
-    SDR display, :func:`hdr_encoding_transform` of an HDR one (the config's display
+    """CIE-XYZ-D65 (the display reference) -> code values of any display.
+
+    Any display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`: the display matrix and
+    encoding of an SDR display, :func:`hdr_encoding_transform` of an HDR one (the config's display
     colour spaces).
 
     An SDR display's code values end in a clamp to +-:func:`code_limit`, the codes of

@@ -29,9 +29,9 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import cache
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour.clip import luminance_weights
-from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.display_transforms import display_encoding_transform
 from ocio_thinfilm.lut.node_fit import cross
@@ -98,11 +98,13 @@ def grow(first: float, length: float, cells: int) -> np.ndarray:
 
 
 def chart_cover() -> np.ndarray:
-    """XYZ (any scale) whose chart the black pass's grid must contain: the spectral
-    locus, the corners of ACES AP0 cut at Y = 0 (AP0's blue primary has Y < 0) and
-    the Z axis. (The X axis cannot be added in this chart family: imaginary colours
+    """XYZ (any scale) whose chart the black pass's grid must contain.
+
+    The spectral locus, the corners of ACES AP0 cut at Y = 0 (AP0's blue primary has Y < 0)
+    and the Z axis. (The X axis cannot be added in this chart family: imaginary colours
     redder than AP0 are clamped to the chart's edge -- in gamut, Y kept, hue
-    approximate.)"""
+    approximate.)
+    """
     locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
     ap0 = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T  # rows: primaries
     cut = [ap0[a] + ap0[a, 1] / (ap0[a, 1] - ap0[2, 1]) * (ap0[2] - ap0[a]) for a in (0, 1)]
@@ -112,8 +114,10 @@ def chart_cover() -> np.ndarray:
 
 @cache.memoize(maxsize=16)
 def black_plan(display: str, size: int) -> tuple[np.ndarray, int]:
-    """The black pass's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives the
-    Lut3D's coordinates (u_a, u_b) directly, uniform in a chromaticity chart where
+    """Return the black pass's chart: a matrix P.
+
+    ``XYZ_TO_xyY(P XYZ)`` gives the Lut3D's coordinates (u_a, u_b) directly, uniform in a
+    chromaticity chart where
     the display's triangle is canonical -- edges c_i = 0 on u_a = const, c_j = 0 on
     u_b = const, c_k = 0 on a diagonal u_a - u_b = const, all through nodes -- and
     Y unchanged (third output).
@@ -168,9 +172,11 @@ def shaper_values(
     hi: float,
     along: Callable[[np.ndarray], np.ndarray] | None = None,
 ) -> np.ndarray:
-    """Lut1D entries over [lo, hi] (SHAPER_LENGTH samples): the grid coordinate
-    k / (size - 1) of the value, piecewise linear between the ``nodes`` (in the
-    variable ``along(value)`` when given: e.g. the display encoding)."""
+    """Lut1D entries over [lo, hi] (SHAPER_LENGTH samples).
+
+    The grid coordinate k / (size - 1) of the value, piecewise linear between the ``nodes``
+    (in the variable ``along(value)`` when given: e.g. the display encoding).
+    """
     x = np.linspace(lo, hi, SHAPER_LENGTH)
     grid = np.linspace(0.0, 1.0, len(nodes))
     if along is not None:
@@ -194,8 +200,9 @@ def white_nodes(
     ratio: float = 1.0,
     snap: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Node values of each axis of the white pass, (3, size) display-linear: below 1
-    at working-encoding code values 1 - g_k with g_k = (1 - k/n)^WHITE_POWER (shared),
+    """Node values of each axis of the white pass, (3, size) display-linear.
+
+    Below 1 at working-encoding code values 1 - g_k with g_k = (1 - k/n)^WHITE_POWER (shared),
     above 1 growing geometrically up to the channel's largest value 1 / w_i (w: the
     display's luminance row; a colour with Y <= 1 and no negative channel has
     c_i <= 1 / w_i). Returns (nodes, tops), tops[i] the last node of axis i.
@@ -272,8 +279,11 @@ def plan_matrix(
     a_nodes: float,
     cells: int,
 ) -> np.ndarray:
-    """The chart matrix for channels ``perm`` = (p, q, r): u_a = alpha (c_p - c_q) / S +
-    a_0, u_b = Y / S with S = lam Y + mu (c_r - c_q), alpha = -mu / lam."""
+    """Return the chart matrix for channels ``perm`` = (p, q, r).
+
+    u_a = alpha (c_p - c_q) / S + a_0, u_b = Y / S with S = lam Y + mu (c_r - c_q),
+    alpha = -mu / lam.
+    """
     p, q, r = perm
     lam = cells / lam_nodes
     Y = np.array([0.0, 1.0, 0.0])
@@ -283,8 +293,11 @@ def plan_matrix(
 
 
 def chart_coordinates(P: np.ndarray, XYZ: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The chart coordinates (u_a, u_b) of the (N, 3) ``XYZ`` under the chart matrix
-    ``P`` (``XYZ_TO_xyY`` of ``P XYZ``), and the normaliser S (N,)."""
+    """Return the chart coordinates (u_a, u_b) of the (N, 3) ``XYZ`` and the normaliser S.
+
+    The coordinates under the chart matrix ``P`` (``XYZ_TO_xyY`` of ``P XYZ``); the
+    normaliser S is (N,).
+    """
     c = XYZ @ P.T
     with np.errstate(all="ignore"):
         s = c.sum(axis=1)
@@ -299,9 +312,10 @@ def chart_coordinates(P: np.ndarray, XYZ: np.ndarray) -> tuple[np.ndarray, np.nd
     )
 )
 def soft_plan(display: str, size: int) -> np.ndarray:
-    """S_b's chart: a matrix P such that ``XYZ_TO_xyY(P XYZ)`` gives its Lut3D's
-    coordinates (u_a, u_b) and Y, with the three rays where S_b has a kink on grid and
-    split lines.
+    """Return S_b's chart: a matrix P.
+
+    ``XYZ_TO_xyY(P XYZ)`` gives its Lut3D's coordinates (u_a, u_b) and Y, with the three rays
+    where S_b has a kink on grid and split lines.
 
     S_b scales by a function of d_black = (Y - min c) / Y, whose gradient jumps where
     the two smallest channels swap: on the rays from the white point where c_p = c_q,
@@ -311,7 +325,8 @@ def soft_plan(display: str, size: int) -> np.ndarray:
     tetrahedral interpolation) -- all through the white point's node. Of the charts
     that hold :func:`chart_cover` in [0, 1]^2, the one
     where the display's triangle is largest is taken. Memoised on disk (the search takes
-    about 2 s per display)."""
+    about 2 s per display).
+    """
     cells = size - 1
     M = colorimetry.matrix_XYZ_to_RGB(display)
     cover = chart_cover()

@@ -52,8 +52,10 @@ FIT_ITERATIONS = 1500
 
 
 def chart_to_XYZ(P: np.ndarray, ua: np.ndarray, ub: np.ndarray) -> np.ndarray:
-    """XYZ at Y = 1 of the chart points (u_a, u_b) of ``P`` (u_b = Y / S -> 0: ever
-    larger chroma)."""
+    """XYZ at Y = 1 of the chart points (u_a, u_b) of ``P``.
+
+    u_b = Y / S -> 0: ever larger chroma.
+    """
     S = 1.0 / np.maximum(ub, 1e-9)
     return np.c_[ua * S, np.ones_like(S), S - ua * S - 1.0] @ np.linalg.inv(P).T
 
@@ -61,8 +63,10 @@ def chart_to_XYZ(P: np.ndarray, ua: np.ndarray, ub: np.ndarray) -> np.ndarray:
 def black_map(
     display: str, P: np.ndarray, ua: np.ndarray, ub: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """L in the chart: chart coordinates (N, 2) of L(X) for the chart points (u_a, u_b),
-    and whether each point is inside the gamut (L leaves it where it is)."""
+    """L in the chart: chart coordinates (N, 2) of L(X) for the chart points (u_a, u_b).
+
+    Also whether each point is inside the gamut (L leaves it where it is).
+    """
     M = colorimetry.matrix_XYZ_to_RGB(display)
     with np.errstate(all="ignore"):
         rgb = chart_to_XYZ(P, ua, ub) @ M.T
@@ -73,20 +77,22 @@ def black_map(
 
 
 def cross(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
-    """z component of the cross product of 2D vectors (last axis 2)."""
+    """Return the z component of the cross product of 2D vectors (last axis 2)."""
     a, b = np.asarray(a), np.asarray(b)
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
 
 
 def chart_triangle(display: str, P: np.ndarray) -> np.ndarray:
-    """The display's primaries in the chart of ``P``: the triangle's vertices (3, 2)."""
+    """Return the display's primaries in the chart of ``P``: the triangle's vertices (3, 2)."""
     primaries = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display)).T @ P.T
     return primaries[:, :2] / primaries.sum(axis=1, keepdims=True)
 
 
 def convex_hull(points: npt.ArrayLike) -> np.ndarray:
-    """Vertices of the convex hull of 2D ``points``, counter-clockwise (Andrew's
-    monotone chain)."""
+    """Vertices of the convex hull of 2D ``points``, counter-clockwise.
+
+    By Andrew's monotone chain.
+    """
     pts = sorted(map(tuple, np.asarray(points, dtype=np.float64)))
 
     def half(seq):
@@ -111,7 +117,7 @@ def inside_convex(points: np.ndarray, hull: np.ndarray) -> np.ndarray:
 
 
 def project_triangle(p: np.ndarray, V: np.ndarray) -> np.ndarray:
-    """The nearest points of the triangle V (3, 2) to the points ``p`` (N, 2)."""
+    """Return the nearest points of the triangle V (3, 2) to the points ``p`` (N, 2)."""
     lam = np.linalg.solve(np.array([V[1] - V[0], V[2] - V[0]]).T, (p - V[0]).T).T
     inside = (lam >= 0.0).all(axis=1) & (lam.sum(axis=1) <= 1.0)
     best, dist = None, None

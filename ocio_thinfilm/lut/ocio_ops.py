@@ -62,15 +62,16 @@ VENDOR = "OCIO-ThinFilm"
 
 
 def module() -> ModuleType:
-    """The ``PyOpenColorIO`` module (imported here, on first use)."""
+    """Return the ``PyOpenColorIO`` module (imported here, on first use)."""
     import PyOpenColorIO as ocio
 
     return ocio
 
 
 def transform_id(kind: str, name: str) -> str:
-    """Transform ID in the style of the ACES OCIO configs
-    (``urn:aswf:ocio:transformId:1.0:<Vendor>:<Type>:<Name>:1.0``).
+    """Transform ID in the style of the ACES OCIO configs.
+
+    ``urn:aswf:ocio:transformId:1.0:<Vendor>:<Type>:<Name>:1.0``.
 
     >>> transform_id("Gamut_Map", "Constant-Lightness Clip sRGB")
     'urn:aswf:ocio:transformId:1.0:OCIO-ThinFilm:Gamut_Map:Constant_Lightness_Clip_sRGB:1.0'
@@ -88,8 +89,10 @@ def group(
     input_descriptor: str | None = None,
     output_descriptor: str | None = None,
 ) -> Transform:
-    """A ``GroupTransform`` of ``transforms`` (``None`` entries skipped) with CLF-style
-    metadata."""
+    """Return a ``GroupTransform`` of ``transforms`` with CLF-style metadata.
+
+    ``None`` entries are skipped.
+    """
     ocio = module()
     g = ocio.GroupTransform()
     for t in transforms:
@@ -110,22 +113,26 @@ def group(
 
 
 def inverse(transforms: Iterable[Transform | None]) -> Transform:
-    """A GroupTransform of ``transforms`` (a list) applied in the inverse direction."""
+    """Return a GroupTransform of ``transforms`` (a list) applied in the inverse direction."""
     g = group(transforms)
     g.setDirection(module().TRANSFORM_DIR_INVERSE)
     return g
 
 
 def quantize(values: npt.ArrayLike, decimals: int = 7) -> np.ndarray:
-    """Round to ``decimals`` decimal places (and turn -0 into 0) before data go into a
-    file: float64 results can differ in the last bits between runs (BLAS reduction
-    order, memory alignment); rounded, the written files are byte-reproducible."""
+    """Round to ``decimals`` decimal places (and turn -0 into 0) before data go into a file.
+
+    Float64 results can differ in the last bits between runs (BLAS reduction order, memory
+    alignment); rounded, the written files are byte-reproducible.
+    """
     return np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0
 
 
 def matrix(m3: npt.ArrayLike | None = None, offset: npt.ArrayLike = (0.0, 0.0, 0.0)) -> Transform:
-    """A ``MatrixTransform``: ``m3`` (3x3, identity if None) and ``offset``, rounded to
-    12 decimals."""
+    """Return a ``MatrixTransform``: ``m3`` (3x3, identity if None) and ``offset``.
+
+    Both rounded to 12 decimals.
+    """
     ocio = module()
     m = np.eye(4)
     if m3 is not None:
@@ -137,7 +144,7 @@ def matrix(m3: npt.ArrayLike | None = None, offset: npt.ArrayLike = (0.0, 0.0, 0
 
 
 def range_(lo: float, hi: float) -> Transform:
-    """A ``RangeTransform`` clamping to [lo, hi] (no scaling)."""
+    """Return a ``RangeTransform`` clamping to [lo, hi] (no scaling)."""
     r = module().RangeTransform()
     r.setMinInValue(lo)
     r.setMaxInValue(hi)
@@ -153,17 +160,20 @@ LIMIT = 1e6
 
 
 def finite_limit_transform() -> Transform:
-    """Clamp every component to [-LIMIT, LIMIT]: +-Inf become finite (and NaN, which
-    OCIO's CPU Range sends to the lower bound)."""
+    """Clamp every component to [-LIMIT, LIMIT].
+
+    +-Inf become finite (and NaN, which OCIO's CPU Range sends to the lower bound).
+    """
     return range_(-LIMIT, LIMIT)
 
 
 def lut1d_transform(values: np.ndarray, *, bitdepth: str | None = None) -> Transform:
-    """An OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3).
+    """Return an OCIO Lut1DTransform (linear interpolation) holding ``values`` (N, 3).
 
     ``bitdepth="uint16"``: the values already lie on the 16-bit grid (in [0, 1]) and
     are written as 16-bit integers; otherwise they are quantised
-    (:func:`quantize`) and written as floats."""
+    (:func:`quantize`) and written as floats.
+    """
     ocio = module()
     t = ocio.Lut1DTransform()
     t.setLength(len(values))
@@ -176,10 +186,12 @@ def lut1d_transform(values: np.ndarray, *, bitdepth: str | None = None) -> Trans
 
 
 def lut3d_transform(values: np.ndarray, *, bitdepth: str | None = None) -> Transform:
-    """An OCIO Lut3DTransform (tetrahedral) holding ``values`` (N, N, N, 3), index
-    [r][g][b]. ``bitdepth``: ``"uint16"`` (values on the 16-bit grid in [0, 1]) or
+    """Return an OCIO Lut3DTransform (tetrahedral) holding ``values`` (N, N, N, 3).
+
+    Index [r][g][b]. ``bitdepth``: ``"uint16"`` (values on the 16-bit grid in [0, 1]) or
     ``"half"`` (values already rounded to half floats) are written as such in a CLF
-    file; otherwise values are quantised (:func:`quantize`) and written as floats."""
+    file; otherwise values are quantised (:func:`quantize`) and written as floats.
+    """
     ocio = module()
     t = ocio.Lut3DTransform()
     t.setGridSize(values.shape[0])

@@ -37,8 +37,10 @@ LUT_CODE_MAX = 65535
 
 
 def q16(values: npt.ArrayLike) -> np.ndarray:
-    """``values`` clipped to [0, 1] and rounded to the 16-bit grid (float64 out, never
-    a negative zero, whose sign -- and so a file's text -- would depend on the CPU).
+    """Clip ``values`` to [0, 1] and round them to the 16-bit grid.
+
+    Float64 out, never a negative zero, whose sign -- and so a file's text -- would depend
+    on the CPU.
 
     Examples
     --------
@@ -50,8 +52,9 @@ def q16(values: npt.ArrayLike) -> np.ndarray:
 
 
 def half16(values: npt.ArrayLike) -> np.ndarray:
-    """``values`` rounded to half floats, then to the 16-bit grid (:func:`q16`): what a
-    host that uploads the 16-bit file as a half-float texture holds as well.
+    """Round ``values`` to half floats, then to the 16-bit grid (:func:`q16`).
+
+    What a host that uploads the 16-bit file as a half-float texture holds as well.
 
     Examples
     --------
@@ -65,7 +68,9 @@ def half16(values: npt.ArrayLike) -> np.ndarray:
 
 
 def grid_scale(size: int) -> float:
-    """The scale ``s = (size - 1) / 2^m`` (``2^m`` the smallest power of 2 >= size - 1)
+    """Return the scale that makes a Lut3D's grid values exact half floats.
+
+    The scale ``s = (size - 1) / 2^m`` (``2^m`` the smallest power of 2 >= size - 1)
     that makes every grid value ``k / (size - 1)`` of a Lut3D of edge ``size``, scaled,
     the exact half float ``k / 2^m`` (for ``size - 1 <= 2048``).
 
@@ -86,8 +91,9 @@ def grid_scale(size: int) -> float:
 
 
 def face_frame(V: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The black pass's stored coordinates z = sign * (u - origin) per chart axis, for the
-    primaries' triangle ``V`` (3, 2) in the chart: 0 on the face lying on u_a = const
+    """Return the black pass's stored coordinates z = sign * (u - origin) per chart axis.
+
+    For the primaries' triangle ``V`` (3, 2) in the chart: 0 on the face lying on u_a = const
     (resp. u_b = const) and >= 0 on the triangle, so a point of those faces is stored as
     0 exactly, in 16-bit codes and half floats alike.
 
@@ -114,10 +120,12 @@ def face_frame(V: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def halves_inside(
     z: np.ndarray, Vz: np.ndarray, margin: float = 2.0 * 0.5 / LUT_CODE_MAX
 ) -> np.ndarray:
-    """Points ``z`` (N, 2) of the triangle ``Vz`` (3, 2), in the stored coordinates of
-    :func:`face_frame`, as the nearest pairs of half floats that stay in it: on the two
-    faces z = 0 exactly, and ``margin`` inside the third (its points are not half
-    floats; the 16-bit codes of the file sit within 7.6e-6 of the half floats).
+    """Round points ``z`` (N, 2) of the triangle ``Vz`` (3, 2) to half floats that stay in it.
+
+    ``z`` and ``Vz`` in the stored coordinates of :func:`face_frame`; the result: the nearest
+    pairs of half floats that stay in the triangle: on the two faces z = 0 exactly, and
+    ``margin`` inside the third (its points are not half floats; the 16-bit codes of the
+    file sit within 7.6e-6 of the half floats).
 
     So the CPU (16-bit values) and a host that uploads half floats (Blender's viewport)
     see the same points of the faces, and none outside the gamut, whose negative

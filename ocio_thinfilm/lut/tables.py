@@ -26,8 +26,8 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import cache, registry
-from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.checks import as_choice, as_count, as_positive
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, transform_id
 
@@ -79,6 +79,7 @@ class Table1D:
 
     @property
     def size(self) -> int:
+        """Number of nodes of the table (the rows of ``values``)."""
         return int(self.values.shape[0])
 
     # -- numpy path -------------------------------------------------------- #
@@ -93,8 +94,10 @@ class Table1D:
         return np.clip(u, 0.0, 1.0)
 
     def lookup(self, x: npt.ArrayLike) -> np.ndarray:
-        """XYZ for pixel values ``x`` (any shape), by the same linear interpolation
-        OCIO applies (returns shape ``x.shape + (3,)``, float64)."""
+        """XYZ for pixel values ``x`` (any shape), by the same linear interpolation OCIO applies.
+
+        Returns shape ``x.shape + (3,)``, float64.
+        """
         u = self.shaper(x) * (self.size - 1)
         i = np.minimum(np.floor(u).astype(np.int64), self.size - 2)
         f = (u - i)[..., None]
@@ -121,17 +124,29 @@ class Table1D:
         return ocio_ops.matrix(np.eye(3) / span, [-self.domain_min / span] * 3)
 
     def lut_transform(self) -> ocio_ops.Transform:
+        """Return the Lut1D of the table's nodes alone (no shaper).
+
+        Returns
+        -------
+        PyOpenColorIO.Lut1DTransform
+            :func:`~ocio_thinfilm.lut.ocio_ops.lut1d_transform` of ``values``.
+        """
         return lut1d_transform(self.values)
 
     def _black_node(self) -> bool:
-        """A thickness table whose t' = 0 entry is not black (no phase change: white)
+        """Return whether the table gets a black node in front of it.
+
+        A thickness table whose t' = 0 entry is not black (no phase change: white)
         gets a black node in front of it, so negative, -inf and NaN thicknesses give
-        black through OCIO as well (the LUT's clamp lands on that node)."""
+        black through OCIO as well (the LUT's clamp lands on that node).
+        """
         return self.encoding == "log" and bool(np.any(self.values[0] != 0.0))
 
     def transform(self) -> ocio_ops.Transform:
-        """OCIO transform from the pixel encoding to CIE-XYZ-D65 (a GroupTransform
-        with CLF metadata: shaper, then the Lut1D)."""
+        """OCIO transform from the pixel encoding to CIE-XYZ-D65.
+
+        A GroupTransform with CLF metadata: shaper, then the Lut1D.
+        """
         ops = [self.lut_transform()]
         if self._black_node():
             # Nodes i/(n-1) move to (i+1)/n, behind a black node at 0: t' >= 0 is
@@ -160,21 +175,26 @@ class Table1D:
 
     @property
     def input_descriptor(self) -> str:
+        """CLF input descriptor: what the pixel values are (cos(theta) or thickness)."""
         if self.kind == "morpho":
             return "cos(theta): facing ratio N.V, all channels equal"
         return "optical thickness t' = n t cos(theta_t) in micrometres, all channels equal"
 
     def rgb(self, display: str = "sRGB", clipped: bool = True) -> np.ndarray:
-        """Per-display variant: the nodes in display-linear RGB, constant-lightness
-        clipped (``clipped=True``) or raw."""
+        """Per-display variant: the nodes in display-linear RGB.
+
+        Constant-lightness clipped (``clipped=True``) or raw.
+        """
         rgb = colorimetry.XYZ_to_RGB(self.values, display)
         return clip.clip_RGB(rgb, display) if clipped else rgb
 
 
 def check_size(size: int, minimum: int = 2, maximum: int = 1 << 20, what: str = "size") -> int:
-    """``size`` as an int if it is an integer in [minimum, maximum] (a TypeError naming
-    ``what`` for what is not a number: ``"65"`` is not parsed; a
-    :class:`~ocio_thinfilm.checks.ParameterError` otherwise)."""
+    """Return ``size`` as an int if it is an integer in [minimum, maximum].
+
+    A TypeError naming ``what`` for what is not a number (``"65"`` is not parsed); a
+    :class:`~ocio_thinfilm.checks.ParameterError` otherwise.
+    """
     return as_count(what, size, minimum, maximum)
 
 
@@ -289,9 +309,10 @@ def _morpho_table(size, step):
 
 
 def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Table1D:
-    """Angle table of the Morpho multilayer (Eq. 9 + 14): pixel value = cos(theta) of
-    the viewing angle (N.V) -> exact XYZ. Values outside [0, 1] are clamped
-    (grazing / normal incidence).
+    """Angle table of the Morpho multilayer (Eq. 9 + 14).
+
+    Pixel value = cos(theta) of the viewing angle (N.V) -> exact XYZ. Values outside [0, 1]
+    are clamped (grazing / normal incidence).
 
     Parameters
     ----------
@@ -322,9 +343,11 @@ def morpho_table(size: int = MORPHO_SIZE, *, step: float = SPECTRAL_STEP) -> Tab
 def thin_film_table(
     space: registry.ThinFilmSpace, *, film_size: int = FILM_SIZE, morpho_size: int = MORPHO_SIZE
 ) -> Table1D:
-    """The table behind a thin-film input space of the registry
-    (:class:`ocio_thinfilm.registry.ThinFilmSpace`): :func:`film_table` or
-    :func:`morpho_table` as its ``table`` field says, with its arguments."""
+    """Return the table behind a thin-film input space of the registry.
+
+    The space is a :class:`ocio_thinfilm.registry.ThinFilmSpace`: :func:`film_table` or
+    :func:`morpho_table` as its ``table`` field says, with its arguments.
+    """
     if space.table == "film":
         # the registry checks that a film space's args are (kind,): mypy cannot see it
         return film_table(*space.args, size=film_size)  # type: ignore[misc]

@@ -24,13 +24,13 @@ import numpy as np
 from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import ocio_ops
-from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.clip_lut import (
     CLIP_SIZE,
     clip_lut,
     clip_transform,
     working_decoding_transform,
 )
+from ocio_thinfilm.lut.compress_lut import compress_lut
 from ocio_thinfilm.lut.display_transforms import (
     aces_gamut_compression_transform,
     display_encoding_transform,
@@ -57,8 +57,9 @@ HLG_CHART_XZ = 2.0**-12
 
 
 def _hlg_luma_chart(a: float) -> np.ndarray:
-    """The matrix N taking CIE XYZ to the vector v that ``REC2100_SURROUND`` scales,
-    with HLG_LUMA . v = a Y exactly and v_0 = p X, v_2 = p Z (p = :data:`HLG_CHART_XZ`).
+    """Return the matrix N taking CIE XYZ to the vector v that ``REC2100_SURROUND`` scales.
+
+    With HLG_LUMA . v = a Y exactly and v_0 = p X, v_2 = p Z (p = :data:`HLG_CHART_XZ`).
 
     The OOTF multiplies all three channels by the same function of HLG_LUMA . v, so
     any N with that luminance row gives the same scaled XYZ as the BT.2020 RGB of the
@@ -68,7 +69,8 @@ def _hlg_luma_chart(a: float) -> np.ndarray:
     round-off of that sum and of the matrix back (1e-3 there) would become its
     scene-light Y, which the clip keeps: a dim colour whose size depends on the
     processor's rounding (CPU or GPU). With X and Z scaled down by p before they enter
-    the sum, that round-off shrinks by p (to 1e-6 of X)."""
+    the sum, that round-off shrinks by p (to 1e-6 of X).
+    """
     p = HLG_CHART_XZ
     w0, w1, w2 = (float(w) for w in HLG_LUMA)
     return np.array(
@@ -81,8 +83,9 @@ def _hlg_luma_chart(a: float) -> np.ndarray:
 
 
 def _hlg_scene_ops(entry: registry.HDRDisplay, inverse: bool = False) -> list:
-    """HLG display light -> scene light (or back), as OCIO's built-in
-    ``DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit`` does it: the BT.2100 inverse OOTF
+    """HLG display light -> scene light (or back), as OCIO's built-in HLG display does it.
+
+    The built-in is ``DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit``: the BT.2100 inverse OOTF
     (``FIXED_FUNCTION_REC2100_SURROUND``, each pixel scaled by Y ** (1 / gamma - 1) of
     its luminance Y in units where the peak is E_MAX ** gamma), then / E_MAX: the HLG
     signal's parallelepiped [0, 1] is the SDR gamut's.
@@ -92,7 +95,8 @@ def _hlg_scene_ops(entry: registry.HDRDisplay, inverse: bool = False) -> list:
     finite before the OOTF, which would give NaN or Inf for them) and applies the
     OOTF to XYZ through :func:`_hlg_luma_chart` (luminance exact, no cancellation
     between large channels). ``inverse``: the OOTF way back, from display-linear RGB
-    of the chain (in [0, 1]) to display-linear RGB (1 = 203 cd/m2)."""
+    of the chain (in [0, 1]) to display-linear RGB (1 = 203 cd/m2).
+    """
     ocio = ocio_ops.module()
     a = HLG_E_MAX**HLG_GAMMA * registry.HDR_REFERENCE_WHITE / entry.peak
     if not inverse:
@@ -111,9 +115,11 @@ def _hlg_scene_ops(entry: registry.HDRDisplay, inverse: bool = False) -> list:
 
 
 def hdr_scaled(display: registry.DisplayLike, transforms: list) -> list:
-    """An SDR view's chain (CIE-XYZ-D65 -> display-linear RGB in [0, 1] of the HDR
-    display's gamut, a list of OCIO transforms) as the HDR display's, ending in
-    display-linear RGB in units of the reference white (203 cd/m2).
+    """Return an SDR view's chain as the HDR display's.
+
+    The SDR view's chain (CIE-XYZ-D65 -> display-linear RGB in [0, 1] of the HDR display's
+    gamut, a list of OCIO transforms) as the HDR display's, ending in display-linear RGB in
+    units of the reference white (203 cd/m2).
 
     PQ: XYZ scaled by 1 / k, the chain, RGB scaled by k, k = peak / 203 (output in
     [0, k]): exact for the scale-covariant views (module docstring). HLG: the display's

@@ -31,8 +31,11 @@ __all__ = ["airy_reflectance", "transfer_matrix_reflectance"]
 def _cos_refracted(
     n_incident: npt.ArrayLike, n_layer: npt.ArrayLike, sin_incident: np.ndarray
 ) -> np.ndarray:
-    """cos(theta) inside a layer from Snell's law, on the branch colour-science's TMM
-    and Byrnes' tmm use (forward-decaying for evanescent and absorbing layers)."""
+    """cos(theta) inside a layer from Snell's law.
+
+    On the branch colour-science's TMM and Byrnes' tmm use (forward-decaying for evanescent
+    and absorbing layers).
+    """
     n_layer = np.asarray(n_layer, dtype=np.complex128)
     sin_t = np.asarray(n_incident, dtype=np.complex128) * sin_incident / n_layer
     cos_t = np.sqrt(1.0 - sin_t * sin_t)

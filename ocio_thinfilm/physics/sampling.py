@@ -59,12 +59,12 @@ MAX_LAYERS = 100_000
 
 
 def as_angle(theta: npt.ArrayLike) -> np.ndarray:
-    """An angle of incidence in degrees, in [0, 90]."""
+    """Return ``theta`` as an array: an angle of incidence in degrees, in [0, 90]."""
     return as_array("theta", theta, minimum=0.0, maximum=90.0, unit=" degrees")
 
 
 def as_index(name: str, n: npt.ArrayLike) -> np.ndarray:
-    """A real refractive index: finite and > 0."""
+    """Return ``n`` as an array: a real refractive index, finite and > 0."""
     return as_array(name, n, minimum=0.0, strict=True)
 
 
