@@ -46,8 +46,8 @@ CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
 def datasets(n):
-    from ocio_thinfilm.colour import colorimetry
     from evaluation.colours import object_colours, spectral_colours
+    from ocio_thinfilm.colour import colorimetry
     from ocio_thinfilm.render import frames as render
 
     side = int(np.sqrt(n))

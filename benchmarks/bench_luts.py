@@ -31,8 +31,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from ocio_thinfilm.colour import clip, colorimetry
 from evaluation.colours import object_colours, spectral_colours  # noqa: E402
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, display_transforms, grid, ocio_ops, tables  # noqa: E402
 
 

@@ -21,14 +21,14 @@ physics rows, XYZ cases, OCIO rows.
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
+from evaluation.formatting import fmt
 from ocio_thinfilm import cache
 from ocio_thinfilm.colour import clip, colorimetry
-from evaluation.formatting import fmt
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 

@@ -138,9 +138,9 @@ def test_bad_arguments_exit_2_with_one_line_error(tmp_path, args, needle):
 def test_physics_errors_name_the_parameter_and_the_cli_its_option(tmp_path, value, capsys):
     """The numeric core names its Python parameter (a ParameterError, a ValueError);
     ``demo`` names the option for the same mistake, with the same detail."""
-    from ocio_thinfilm.cli import main as cli
-    from ocio_thinfilm.cli import demo
     from ocio_thinfilm.checks import ParameterError
+    from ocio_thinfilm.cli import demo
+    from ocio_thinfilm.cli import main as cli
 
     with pytest.raises(ParameterError) as raised:
         demo.soap_film_colour(float(value))

@@ -20,14 +20,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ocio_thinfilm.colour import clip, colorimetry
+from evaluation.colours import ap0_below_white, gamut_map_sets
 from evaluation.views import (
     EXTREME_XYZ,
     OPTIMIZATION_LEVELS,
     apply_view,
     decode_display,
 )
-from evaluation.colours import ap0_below_white, gamut_map_sets
+from ocio_thinfilm.colour import clip, colorimetry
 
 ocio = pytest.importorskip("PyOpenColorIO")
 

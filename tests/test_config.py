@@ -12,11 +12,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation.colours import object_colours
 from evaluation.views import COMMITTED_CONFIG
-
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from evaluation.colours import object_colours
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -13,14 +13,13 @@ The sets are the clip issue's (tests/test_clip_view.py), scaled by k.
 
 from __future__ import annotations
 
-
 import numpy as np
 import pytest
 
-from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry, compress
 from evaluation.colours import gamut_map_sets
 from evaluation.views import EXTREME_XYZ, OPTIMIZATION_LEVELS, apply_view
+from ocio_thinfilm import registry
+from ocio_thinfilm.colour import clip, colorimetry, compress
 
 ocio = pytest.importorskip("PyOpenColorIO")
 colour = pytest.importorskip("colour")

@@ -23,9 +23,9 @@ from pathlib import Path
 import pytest
 
 from ocio_thinfilm import io
+from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.io import durable
 from ocio_thinfilm.io import temporaries as io_temporaries
-from ocio_thinfilm.cli import main as cli
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG_DIR = ROOT / "configs" / "thinfilm"

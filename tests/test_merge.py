@@ -15,13 +15,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export import bake
 from ocio_thinfilm.export import merged as export_merged
-from evaluation.colours import object_colours, spectral_colours
 
 ocio = pytest.importorskip("PyOpenColorIO")
 

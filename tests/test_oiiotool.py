@@ -16,10 +16,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from evaluation.views import COMMITTED_CONFIG
-
-from ocio_thinfilm import registry
 from evaluation.colours import object_colours, spectral_colours
+from evaluation.views import COMMITTED_CONFIG
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import read_image, write_image
 

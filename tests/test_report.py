@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation import report
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry
-from evaluation import report
 
 SECTIONS = [
     "## Machine",

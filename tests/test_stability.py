@@ -22,8 +22,8 @@ import warnings
 import numpy as np
 import pytest
 
-from ocio_thinfilm.colour import clip, colorimetry
 from evaluation import stability
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics import exact, sampling, spectra
 

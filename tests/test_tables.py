@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
-from evaluation.colours import object_colours, spectral_colours
 from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage, tables, view_transforms
 
 DISPLAYS = clip.DISPLAYS

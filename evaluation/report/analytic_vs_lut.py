@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm.colour import clip, colorimetry
 from evaluation.report.context import Section
 from evaluation.report.datasets import test_thicknesses
 from evaluation.report.measure import (
@@ -17,6 +16,7 @@ from evaluation.report.measure import (
     table,
 )
 from evaluation.report.plots import pareto_plot
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, ocio_ops, tables
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm.colour import clip, colorimetry, compress
+from evaluation.report import ramps
 from evaluation.report.context import Section
 from evaluation.report.measure import (
     best_time,
@@ -14,8 +14,8 @@ from evaluation.report.measure import (
     stats,
     table,
 )
-from evaluation.report import ramps
 from evaluation.report.peers import oklch_gamut_map_RGB
+from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import ocio_ops, view_transforms
 
 #: The views compared through OCIO: id -> (label in the speed table, view name).

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm.colour import colorimetry
 from evaluation.report.context import Section
 from evaluation.report.measure import (
     best_time,
@@ -16,6 +15,7 @@ from evaluation.report.measure import (
     table,
 )
 from evaluation.report.peers import belcour_barla_film_XYZ
+from ocio_thinfilm.colour import colorimetry
 
 
 def section(ctx) -> Section:

@@ -6,7 +6,6 @@ import time
 
 import numpy as np
 
-from ocio_thinfilm.colour import clip, colorimetry
 from evaluation.report.context import Section
 from evaluation.report.datasets import (
     INTERFERENCE,
@@ -21,6 +20,7 @@ from evaluation.report.measure import (
     table,
 )
 from evaluation.report.plots import pareto_plot
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
 

@@ -19,8 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ocio_thinfilm.colour import colorimetry
 from evaluation.formatting import fmt
+from ocio_thinfilm.colour import colorimetry
 
 __all__ = [
     "fmt",

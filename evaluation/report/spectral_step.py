@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm.colour import colorimetry
 from evaluation.report.context import Section
 from evaluation.report.measure import (
     best_time,
@@ -15,6 +14,7 @@ from evaluation.report.measure import (
     table,
 )
 from evaluation.report.plots import pareto_plot
+from ocio_thinfilm.colour import colorimetry
 
 
 def section(ctx) -> Section:

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import warnings
 
-from ocio_thinfilm.colour import clip, colorimetry
 from evaluation import stability
 from evaluation.report.context import Section
 from evaluation.report.measure import table
+from ocio_thinfilm.colour import clip, colorimetry
 
 
 def stability_rows() -> list[dict]:

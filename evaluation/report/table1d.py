@@ -6,7 +6,6 @@ import time
 
 import numpy as np
 
-from ocio_thinfilm.colour import colorimetry
 from evaluation.report.context import Section
 from evaluation.report.datasets import test_thicknesses
 from evaluation.report.measure import (
@@ -18,6 +17,7 @@ from evaluation.report.measure import (
     table,
 )
 from evaluation.report.plots import pareto_plot
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.lut import ocio_ops, tables
 
 

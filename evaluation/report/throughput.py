@@ -8,10 +8,10 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from ocio_thinfilm import registry
 from evaluation.report.context import Section
 from evaluation.report.datasets import INTERFERENCE, lut_test_sets
 from evaluation.report.measure import best_time, ocio_cpu, table
+from ocio_thinfilm import registry
 from ocio_thinfilm.lut import view_transforms
 
 #: The view the headline quotes.

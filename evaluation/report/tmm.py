@@ -6,9 +6,9 @@ import warnings
 
 import numpy as np
 
-from ocio_thinfilm.colour import colorimetry
 from evaluation.report.context import Section
 from evaluation.report.measure import best_time, fmt, stats, table
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.physics import exact, sampling, spectra
 
 

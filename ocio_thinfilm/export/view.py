@@ -70,8 +70,8 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable
 from ocio_thinfilm.lut import ocio_ops, storage
 
@@ -115,7 +115,8 @@ _PLAIN_INPUTS = tuple(e.name for e in registry.ENCODED_LIST if e.plain)
 def _linear_sibling(source: str) -> str | None:
     """The config space holding ``source``'s linear RGB (the shaper works there): the
     reference XYZ or a scene-linear space itself, an encoded space's linear one; None
-    for the others (thin-film and display spaces)."""
+    for the others (thin-film and display spaces).
+    """
     if source == registry.REFERENCE:
         return source
     space = registry.linear_space_of(source)
@@ -151,7 +152,8 @@ def shaper_domain(
     nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
     2.2; ``size`` is kept for that reason in the signature.) For an HDR ``display`` the
     upper end is at least 1.5 times its peak (1000 / 203 in units of the reference
-    white), so highlights up to the peak are not clamped by the shaper."""
+    white), so highlights up to the peak are not clamped by the shaper.
+    """
     wl = np.arange(360.0, 781.0, 1.0)
     W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
     w = W @ colorimetry.matrix_XYZ_to_RGB(_colorimetry(linear_space)).T
@@ -182,7 +184,8 @@ def view_config(
 ) -> tuple[ocio_ops.Config, str | None]:
     """The config in memory (LUTs inline, no files), plus the shaper colour space for
     ``source`` (for a ``size`` grid and ``display``) when it needs one. Returns (config,
-    shaper space name or None)."""
+    shaper space name or None).
+    """
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm import config as config_module
@@ -286,7 +289,8 @@ def _stem(source, display, view):
 
 def set_name(source: str, display: str, view: str) -> str:
     """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``,
-    ``ACEScct_to_Rec2020_ChannelClamp``."""
+    ``ACEScct_to_Rec2020_ChannelClamp``.
+    """
 
     def clean(text):
         return "".join(c for c in text if c.isalnum())
@@ -319,7 +323,8 @@ def _cube_title(source, display, view, size, shaper):
     """The first line of a .cube, saying which form the file is (OCIO's writer has no
     title). The plain form gets the format's ``TITLE`` keyword; the Resolve form a
     comment, because OCIO's Resolve .cube parser refuses ``TITLE`` ("Unsupported tag",
-    OCIO 2.6) and that parser is the only one of OCIO's that reads the shaper."""
+    OCIO 2.6) and that parser is the only one of OCIO's that reads the shaper.
+    """
     if shaper:
         return (
             f"# {source} to {display} {view}, {size}^3: Resolve form, a 1D shaper + "
@@ -373,7 +378,8 @@ def _without_trailing_zeros(text):
     """``text`` with each table value in its shortest fixed form: ``0.500000`` becomes
     ``0.5``, ``1.000000`` becomes ``1``. The numbers are the same, every .cube reader
     parses either form, and a 65^3 display .cube shrinks by about 40 % (clipped colours
-    are mostly 0 and 1)."""
+    are mostly 0 and 1).
+    """
     return _TABLE_LINE.sub(lambda m: _TRAILING_ZEROS.sub(r"\1", m.group(0)), text)
 
 
@@ -401,7 +407,8 @@ def _write_group(path, fmt, transforms, meta, description):
 
 def _baked_3d_transforms(cfg, source, shaper, display, view, size):
     """[input -> shaper ops (exact), Lut3D over the shaper (tetrahedral)]: the
-    content of the .cube as OCIO transforms, for CLF."""
+    content of the .cube as OCIO transforms, for CLF.
+    """
     import PyOpenColorIO as ocio
 
     u = np.linspace(0.0, 1.0, size)
@@ -427,7 +434,8 @@ def _baked_3d_transforms(cfg, source, shaper, display, view, size):
 
 def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, description):
     """Thin-film inputs: a 1D LUT over ``value_range``, by the export module's writer
-    (which states the domain in every format)."""
+    (which states the domain in every format).
+    """
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm.export import files as export
@@ -466,7 +474,8 @@ def export_view(
 
     ``shaper`` (``.cube`` only): None -- the plain 3D form for the plain inputs (ACEScct),
     the Resolve form (1D shaper + 3D) for the others; True -- the Resolve form;
-    False -- the plain form (only for the plain inputs (ACEScct))."""
+    False -- the plain form (only for the plain inputs (ACEScct)).
+    """
     import PyOpenColorIO as ocio
 
     display = registry.display_name(display)
