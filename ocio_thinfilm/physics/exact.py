@@ -30,6 +30,7 @@ __all__ = [
     "transfer_matrix_reflectance",
     "stack_reflectance",
     "adequate_step",
+    "interface_amplitudes",
 ]
 
 
@@ -463,17 +464,84 @@ def stack_reflectance(
 
 
 def adequate_step(
-    optical_path_nm: float, lo: float = 380.0, maximum: float = 5.0, minimum: float = 0.05
+    optical_path_nm: float,
+    lo: float = 380.0,
+    *,
+    sharpness: float = 0.0,
+    maximum: float = 5.0,
+    minimum: float = 0.02,
 ) -> float:
-    """A wavelength step (nm) that samples ``cos(2 pi P / lambda)`` for optical paths
-    up to ``optical_path_nm`` (round trip, ``P = 2 sum n d cos(theta)``) at least 16
-    times per period down to ``lo`` nm (the phase turns ``2 pi P dl / lambda^2`` per
-    step), within ``[minimum, maximum]``.
+    """A wavelength step (nm) that resolves the interference of optical paths up to
+    ``optical_path_nm`` (round trip, ``P = 2 sum n d cos(theta)``) down to ``lo`` nm.
 
+    The phase ``2 pi P / lambda`` turns ``2 pi P dl / lambda^2`` per step. A film whose
+    two reflections have amplitudes ``|r_a r_b| = sharpness`` has an Airy spectrum whose
+    k-th harmonic falls like ``sharpness**k``; the step samples the harmonics down to
+    1e-4 (``K`` of them) 16 times per period: ``dl = lo^2 / (16 P max(1, K / 2))``,
+    within ``[minimum, maximum]``.
+
+    Parameters
+    ----------
+    optical_path_nm : float
+        The longest round-trip optical path, nm.
+    lo : float, optional
+        The shortest wavelength, nm.
+    sharpness : float, optional
+        ``|r_a r_b|`` in [0, 1): 0 for a two-beam (cosine) spectrum.
+    maximum, minimum : float, optional
+        Bounds of the step, nm.
+
+    Returns
+    -------
+    float
+        The step in nm.
+
+    Examples
+    --------
     >>> adequate_step(1000.0)
     5.0
     >>> round(adequate_step(6000.0), 3)
     1.504
+    >>> round(adequate_step(6000.0, sharpness=0.9), 3)
+    0.034
     """
     path = max(float(optical_path_nm), 1e-9)
-    return float(min(maximum, max(minimum, lo * lo / (16.0 * path))))
+    s = min(max(float(sharpness), 0.0), 0.9999)
+    harmonics = np.log(1e-4) / np.log(s) if s > 0 else 1.0
+    return float(min(maximum, max(minimum, lo * lo / (16.0 * path * max(1.0, harmonics / 2)))))
+
+
+def interface_amplitudes(
+    n_media: npt.ArrayLike, theta: float = 0.0
+) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Fresnel amplitudes ``(r_s, r_p)`` of every interface of a stack, at the angle
+    ``theta`` (degrees) in the first medium (complex Snell's law, the branch of
+    :func:`transfer_matrix_reflectance`).
+
+    Parameters
+    ----------
+    n_media : array_like
+        Complex indices, shape ``(media, ...)``: the incident medium first.
+    theta : float, optional
+        Angle of incidence, degrees in [0, 90].
+
+    Returns
+    -------
+    list of tuple of numpy.ndarray
+        One ``(r_s, r_p)`` per interface, from the incidence side.
+
+    Examples
+    --------
+    Air to glass at normal incidence: ``(1 - 1.5) / (1 + 1.5) = -0.2`` for s (p has
+    the opposite sign convention there):
+
+    >>> [complex(r).real for r in interface_amplitudes([1.0, 1.5])[0]]
+    [-0.2, 0.2]
+    """
+    n = np.asarray(n_media).astype(np.complex128)
+    sin0 = np.sin(np.deg2rad(as_angle(theta))) + 0j
+    media = [n[i] for i in range(n.shape[0])]
+    cosines = [_cos_refracted(media[0], m, sin0) for m in media]
+    return [
+        _fresnel(media[i], cosines[i], media[i + 1], cosines[i + 1]) for i in range(len(media) - 1)
+    ]
