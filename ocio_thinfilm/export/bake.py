@@ -8,7 +8,8 @@ directories it owns
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import os
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +30,7 @@ __all__ = [
     "export_set",
     "EXPORT_SET_VIEWS",
     "bake",
+    "load_films",
 ]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
@@ -55,17 +57,21 @@ def write_config(
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
     progress: Callable[[str], object] | None = None,
+    films: Sequence[Any] = (),
 ) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
     ``progress``: optional callable ``progress(step_name)`` called once per file.
+    ``films``: users' films (:func:`load_films`), a colour space each.
     Returns the config path. The files carry no timestamps: equal inputs give equal
     bytes.
     """
     import PyOpenColorIO as ocio
 
     directory = Path(directory)
-    data = config.config_data(clip_size=clip_size, film_size=film_size, morpho_size=morpho_size)
+    data = config.config_data(
+        clip_size=clip_size, film_size=film_size, morpho_size=morpho_size, films=films
+    )
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
     raw = ocio.Config.CreateRaw()
     for filename, transform in sorted(data.luts.items()):
@@ -147,6 +153,7 @@ def bake(
     clip_size: int = clip_lut.CLIP_SIZE,
     show_progress: bool = False,
     luts: StrPath | None = None,
+    films: StrPath | Sequence[Any] | None = None,
 ) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) to ``out`` and, with
     ``luts``, the standalone LUT set (:func:`export_set`) to that directory.
@@ -157,8 +164,18 @@ def bake(
     committed file by file with ``config.ocio`` last, so a failure (a full disk,
     Ctrl-C) leaves both directories as they were, and a kill leaves each a complete,
     loadable set of files.
+
+    ``films``: a film file (TOML, :func:`ocio_thinfilm.physics.films.read_films`) or
+    films read from one: each adds an input colour space and its named transform. Bad
+    films are refused (a ParameterError naming ``films``) before anything is written.
     """
     clip_size = check_clip_size(clip_size)
+    film_list = load_films(films)
+    if film_list:  # the tables are computed (and a bad film refused) before any claim
+        from ocio_thinfilm.lut import film_tables
+
+        for film in film_list:
+            film_tables.film_table(film)
     claim = claim_directory(out, parameter="out", last=("config.ocio",))
     luts_claim = None
     if luts is not None:
@@ -169,6 +186,7 @@ def bake(
                 "luts", f" {luts}: must not be, contain or lie inside the output directory {out}"
             )
     n_files = len(registry.THIN_FILM_LIST) + 2 * len(registry.DISPLAYS) + 1  # 2 clip LUTs each
+    n_files += len(film_list)
     bar = progress_bar(show_progress, total=n_files, desc=f"bake {claim.path}")
     try:
         with transaction() as tx:
@@ -178,6 +196,7 @@ def bake(
                     stage,
                     clip_size=int(clip_size),
                     progress=(lambda name: bar.update(1)) if bar else None,
+                    films=film_list,
                 )
             except OSError as error:
                 raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None
@@ -190,3 +209,30 @@ def bake(
         if bar:
             bar.close()
     return claim.path / "config.ocio"
+
+
+def load_films(films: StrPath | Sequence[Any] | None) -> list:
+    """Films for a bake: read from a film file (a path), or a sequence of
+    :class:`~ocio_thinfilm.physics.films.Film` as they are; ``None``: none.
+
+    Parameters
+    ----------
+    films : str, pathlib.Path, sequence of Film or None
+        The film file or the films.
+
+    Returns
+    -------
+    list
+        The films, in the file's order.
+    """
+    from ocio_thinfilm.physics import films as films_module
+
+    if films is None:
+        return []
+    if isinstance(films, (str, os.PathLike)):
+        return list(films_module.read_films(os.fspath(films)).values())
+    out = list(films)
+    for film in out:
+        if not isinstance(film, films_module.Film):
+            raise TypeError(f"films must be a film file or Film objects, got {film!r}")
+    return out
