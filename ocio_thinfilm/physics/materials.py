@@ -587,9 +587,8 @@ LIBRARY: dict[str, _Entry] = {
     "mineral oil": _Entry(
         None,
         1.47,
-        note="light mineral (paraffin) oil, constant n = 1.47 (n_D 1.46-1.48 for USP "
-        "light/heavy mineral oil; the value the paper's oil-slick figure suggests); no "
-        "dispersion data vendored",
+        note="light mineral (paraffin) oil, constant n = 1.47 (typical n_D 1.46-1.48 of "
+        "mineral oils; the oil of this project's examples); no dispersion data vendored",
         aliases=("oil",),
     ),
     "fused silica": _Entry(
