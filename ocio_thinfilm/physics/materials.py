@@ -620,6 +620,12 @@ LIBRARY: dict[str, _Entry] = {
         note="butterfly-wing chitin, Cauchy n = 1.517 + 8.80e3 nm^2 / lambda^2 "
         "(Leertouwer, Wilts & Stavenga 2011, Opt. Express 19, 24061)",
     ),
+    "Fe2O3": _Entry(
+        "fe2o3.yml",
+        note="haematite, alpha-Fe2O3, ordinary ray (Querry 1985, CRDC-CR-85034): the "
+        "oxide of temper colours",
+        aliases=("haematite", "hematite", "iron oxide"),
+    ),
     "Ti": _Entry(
         "ti.yml",
         note="titanium (Johnson & Christy 1974, Phys. Rev. B 9, 5056)",
