@@ -164,3 +164,27 @@ def test_bad_film_files_exit_2_with_one_line_and_write_nothing(tmp_path, capsys,
     err = capsys.readouterr().err
     assert err.startswith("ocio-thinfilm export: error: --films ") and message in err
     assert not (tmp_path / "x").exists()
+
+
+def test_render_oil_and_soap_with_a_users_film(tmp_path, film_file, baked, capsys):
+    """The oil scene through a config without the film (its table as bake --films
+    writes it) and the soap scene through the config baked with it; the EXR says which
+    film and what its thickness AOV is; other scenes refuse --films in one line."""
+    import OpenImageIO as oiio
+
+    out = tmp_path / "renders"
+    common = ["--films", str(film_file), "--size", "64x48", "--out", str(out), "--quiet"]
+    assert cli.main(["render", "oil", "--film", "OilOnWater"] + common) == 0
+    exr = oiio.ImageBuf(str(out / "oil.exr"))
+    spec = exr.spec()
+    assert "Thin Film OilOnWater" in spec.getattribute("ocio_thinfilm:tables")
+    assert "physical thickness" in spec.getattribute("ocio_thinfilm:aov:thickness")
+    pixels = exr.get_pixels(oiio.FLOAT)
+    assert np.all(np.isfinite(pixels)) and pixels[..., :3].min() >= 0
+    config = ["--config", str(baked)]
+    assert cli.main(["render", "soap", "--film", "Soap"] + common + config) == 0
+    assert (out / "soap.png").is_file()
+    capsys.readouterr()
+    assert cli.main(["render", "morpho", "--film", "Soap"] + common) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--films applies to the oil and soap scenes" in err

@@ -518,3 +518,19 @@ def test_builtin_materials_cover_every_name_the_library_promises():
         "Cr",
     ):
         assert materials.find_builtin(name) == name
+
+
+def test_the_documented_example_film_file_reads():
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "docs" / "films.toml"
+    films = films_module.read_films(path)
+    assert list(films) == [
+        "OilOnWater",
+        "SoapFilm",
+        "Temper",
+        "AnodisedTitanium",
+        "ARCoating",
+        "CoatedGold",
+    ]
+    assert films["OilOnWater"].name == "Thin Film Oil on Water"

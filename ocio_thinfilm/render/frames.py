@@ -135,12 +135,16 @@ def render_scene(
     view: str = DEFAULT_VIEW,
     lookup: scene_module.Lookup | None = None,
     config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
+    film: scene_module.TableSpec | None = None,
 ) -> tuple[scene_module.Picture, np.ndarray]:
     """Render one frame through a config's processors: returns (picture,
     display-encoded RGB float32). ``config``: a :class:`ConfigProcessors`, a
     ``PyOpenColorIO.Config`` or a path (default: :data:`DEFAULT_CONFIG`); a ``lookup``
-    from :func:`make_lookup` brings its own."""
+    from :func:`make_lookup` brings its own. ``film``: a user's film for the oil or
+    soap scene (:meth:`ocio_thinfilm.render.scenes.Scene.with_film`)."""
     scene = scene_module.get_scene(name)
+    if film is not None:
+        scene = scene.with_film(film)
     width, height = size
     carried = getattr(lookup, "processors", None)  # a make_lookup lookup's processors
     if isinstance(config, ConfigProcessors):
@@ -194,12 +198,14 @@ def save_frame(
     display: str,
     view: str,
     tx: Transaction | None = None,
+    film: scene_module.TableSpec | None = None,
 ) -> list[Path]:
     """Write a rendered frame as ``NAME[.####].exr`` and ``.png``; returns the paths.
 
     The pair is one transaction (:mod:`.io`): both files are written aside and checked,
     then renamed together, so a failed EXR never leaves a new PNG beside an old EXR.
-    With ``tx`` they join the caller's transaction instead (committed by the caller)."""
+    With ``tx`` they join the caller's transaction instead (committed by the caller).
+    ``film``: the user's film the frame was rendered with (its EXR metadata)."""
     if tx is None:
         with transaction() as own:
             return save_frame(
@@ -212,8 +218,11 @@ def save_frame(
                 display=display,
                 view=view,
                 tx=own,
+                film=film,
             )
     scene = scene_module.get_scene(name)
+    if film is not None:
+        scene = scene.with_film(film)
     stem = name if frame is None else f"{name}.{frame:04d}"
     for path in frame_paths(name, out_dir, frame):
         check_output_file(path, parameter="out_dir")
@@ -268,8 +277,10 @@ def write_frame(
     lookup: scene_module.Lookup | None = None,
     config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
     tx: Transaction | None = None,
+    film: scene_module.TableSpec | None = None,
 ) -> list[Path]:
-    """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths."""
+    """Render and write ``NAME[.####].exr`` and ``.png``; returns the paths (``film``:
+    a user's film, see :func:`render_scene`)."""
     picture, rgb = render_scene(
         name,
         size,
@@ -279,7 +290,17 @@ def write_frame(
         view=view,
         lookup=lookup,
         config=config,
+        film=film,
     )
     return save_frame(
-        name, picture, rgb, out_dir, seed=seed, frame=frame, display=display, view=view, tx=tx
+        name,
+        picture,
+        rgb,
+        out_dir,
+        seed=seed,
+        frame=frame,
+        display=display,
+        view=view,
+        tx=tx,
+        film=film,
     )

@@ -73,6 +73,8 @@ def table_colorspace(spec: TableSpec) -> str:
     """The config's input colour space (pixel value -> CIE-XYZ-D65) of a scene's
     :class:`~.scenes.TableSpec`: the table the config ships for its kind."""
     lo, hi = spec.range
+    if spec.kind == "user":
+        return spec.space
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0) or spec.entries != tables.MORPHO_SIZE:
             raise ValueError(
@@ -121,12 +123,16 @@ class ConfigProcessors:
     thin-film colour space -> CIE-XYZ-D65), ``view(display, view)`` for a view
     (CIE-XYZ-D65 -> display code values)."""
 
-    def __init__(self, config=None):
+    def __init__(self, config=None, films=None):
         self.config = (
             config
             if config is not None and not isinstance(config, (str, Path))
             else load_config(config)
         )
+        #: Users' films a render may use: colour space name -> its transform to
+        #: CIE-XYZ-D65 (the table ``bake --films`` writes), used when the config has no
+        #: colour space of that name.
+        self.films = dict(films or {})
         self._cpu = {}
         #: The processors created so far, in order: ``"colorspace:<name>"`` and
         #: ``"view:<display>/<view>"`` (a scene builds only what it shows).
@@ -178,6 +184,10 @@ class ConfigProcessors:
 
     def table(self, spec: TableSpec) -> ocio_ops.CPUProcessor:
         space = table_colorspace(spec)
+        if self.config.getColorSpace(space) is None and space in self.films:
+            return self._processor(
+                f"film:{space}", lambda: self.config.getProcessor(self.films[space])
+            )
         return self._processor(
             f"colorspace:{space}", lambda: self.config.getProcessor(self._xyz_transform(space))
         )
@@ -224,6 +234,8 @@ def build_table(spec: TableSpec) -> tables.Table1D:
     """The tables-module table for a scene's :class:`~.scenes.TableSpec` (computed
     here, not read from a config: for comparisons with what the config holds)."""
     lo, hi = spec.range
+    if spec.kind == "user":
+        raise ValueError(f"a user's film ({spec.space!r}): its table is the film file's")
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0):
             raise ValueError(f"the Morpho table covers cos(theta) in [0, 1], got {spec.range}")
