@@ -534,3 +534,14 @@ def test_the_documented_example_film_file_reads():
         "CoatedGold",
     ]
     assert films["OilOnWater"].name == "Thin Film Oil on Water"
+
+
+def test_normalise_scales_the_table_to_a_brightest_Y_of_1():
+    text = '[films.A]\nstack = ["air", "soap film", "air"]\n[films.B]\n'
+    text += 'stack = ["air", "soap film", "air"]\nnormalise = true'
+    films = films_module.parse_films(text, "n.toml")
+    a, b = (film_tables.film_table(films[k]) for k in "AB")
+    assert b.values[:, 1].max() == pytest.approx(1.0, abs=1e-15)
+    np.testing.assert_allclose(b.values * a.values[:, 1].max(), a.values, rtol=1e-12)
+    with pytest.raises(ParameterError, match="film 'A': normalise: must be true or false"):
+        films_module.parse_films('[films.A]\nstack = ["air", "water", "air"]\nnormalise = 1')

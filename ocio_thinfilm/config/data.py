@@ -571,6 +571,8 @@ def film_parts(
             if film.model == "exact"
             else "the paper's normalised Eq. 7/8 reflectance (peak 1)"
         )
+        if film.normalise:
+            output += ", scaled so that its brightest entry has Y = 1"
         spaces.append(
             dict(
                 name=film.name,

@@ -82,6 +82,12 @@ def _film_table(film: Film, size: int) -> Table1D:
     lo, hi = film.range_um
     nodes = np.linspace(lo, hi, size)
     values = film_XYZ(film, nodes)
+    scale = ""
+    if film.normalise:
+        brightest = float(values[:, 1].max())
+        if brightest > 0:
+            values /= brightest
+            scale = f" Normalised: scaled by 1/{brightest:.6g} (brightest entry Y = 1)."
     values.setflags(write=False)
     nodes.setflags(write=False)
     model = (
@@ -104,6 +110,7 @@ def _film_table(film: Film, size: int) -> Table1D:
             f"Thin film {film.key}: {film.describe()}; {model}; CIE XYZ (D65, CIE 1931 "
             f"2 deg, perfect reflector Y = 1) against the {film.varying.name} layer's "
             f"physical thickness {lo:g}-{hi:g} um (clamped outside); {size}-entry Lut1D."
+            f"{scale}"
         ),
     )
 

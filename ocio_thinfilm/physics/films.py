@@ -21,6 +21,7 @@ films::
     angle_deg = 30                    # view angle in the incident medium (default 0)
     model = "exact"                   # or "paper"
     name = "Oil Slick"                # colour space name (default "Thin Film <key>")
+    normalise = false                 # true: the table scaled to a brightest Y of 1
 
 Materials not defined in the file come from the built-in library
 (:mod:`ocio_thinfilm.physics.materials`; a material the file defines wins over a
@@ -92,7 +93,16 @@ INCIDENT_MAX_K = 1e-4
 PAPER_WAVELENGTH = 550.0
 
 _MATERIAL_KEYS = ("n", "k", "file")
-_FILM_KEYS = ("stack", "vary", "thickness_nm", "range_um", "angle_deg", "model", "name")
+_FILM_KEYS = (
+    "stack",
+    "vary",
+    "thickness_nm",
+    "range_um",
+    "angle_deg",
+    "model",
+    "name",
+    "normalise",
+)
 
 
 @dataclass(frozen=True, eq=False)
@@ -105,7 +115,9 @@ class Film:
     ``thickness_nm``: every layer's thickness (the varying one's entry is 0);
     ``range_um``: the pixel value's range (physical thickness of the varying layer, um);
     ``angle_deg``: the viewing angle in the incident medium; ``model``: ``"exact"`` or
-    ``"paper"``; ``source``: the film file.
+    ``"paper"``; ``source``: the film file; ``normalise``: its table scaled so that
+    its brightest entry has Y = 1 (for compositors that expect a colour, not a
+    reflectance).
     """
 
     key: str
@@ -117,6 +129,7 @@ class Film:
     angle_deg: float = 0.0
     model: str = "exact"
     source: str = ""
+    normalise: bool = False
 
     @property
     def layers(self) -> tuple[Material, ...]:
@@ -336,6 +349,9 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
         raise where.error("model", f"must be one of {', '.join(MODELS)}, got {model!r}")
     if model == "paper" and len(layers) != 1:
         raise where.error("model", "'paper' (Eq. 7/8) describes one layer; use 'exact' for stacks")
+    normalise = table.get("normalise", False)
+    if not isinstance(normalise, bool):
+        raise where.error("normalise", f"must be true or false, got {normalise!r}")
     name = table.get("name", NAME_FORMAT.format(key=key))
     if not isinstance(name, str) or not name.strip() or name != name.strip():
         raise where.error("name", f"must be a non-empty name without outer spaces, got {name!r}")
@@ -349,6 +365,7 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
         angle_deg=angle,
         model=model,
         source=path,
+        normalise=normalise,
     )
 
 
