@@ -188,3 +188,14 @@ def test_render_oil_and_soap_with_a_users_film(tmp_path, film_file, baked, capsy
     assert cli.main(["render", "morpho", "--film", "Soap"] + common) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--films applies to the oil and soap scenes" in err
+
+
+def test_into_a_studio_config_a_film_name_must_not_repeat_its_names_or_aliases(tmp_path, capsys):
+    path = tmp_path / "films.toml"
+    path.write_text('[films.A]\nstack = ["air", "water", "air"]\nname = "Utility - Raw"\n')
+    out = tmp_path / "studio"
+    argv = ["bake", "--into", "ocio://studio-config-latest", "--out", str(out)]
+    assert cli.main(argv + ["--films", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--films" in err and "'Utility - Raw' is already" in err
+    assert not out.exists()

@@ -444,8 +444,8 @@ def test_exact_films_are_paler_than_the_paper_model(films):
             "film 'A': colour: unknown key; allowed: stack, vary",
         ),
         (
-            '[films.A]\nstack = ["air", "water", "air"]\nname = "Raw"',
-            "film 'A': name: 'Raw' is already an existing colour space",
+            '[films.A]\nstack = ["air", "water", "air"]\nname = "acescg"',
+            "film 'A': name: 'acescg' is already an existing colour space ('ACEScg')",
         ),
         (
             '[films.A]\nstack = ["air", "water", "air"]\nname = "X"\n'
@@ -545,3 +545,11 @@ def test_normalise_scales_the_table_to_a_brightest_Y_of_1():
     np.testing.assert_allclose(b.values * a.values[:, 1].max(), a.values, rtol=1e-12)
     with pytest.raises(ParameterError, match="film 'A': normalise: must be true or false"):
         films_module.parse_films('[films.A]\nstack = ["air", "water", "air"]\nnormalise = 1')
+
+
+def test_a_name_the_config_adds_beside_the_registry_is_refused_at_bake_time():
+    from ocio_thinfilm.config import data
+
+    film = films_module.parse_films('[films.A]\nstack = ["air", "water", "air"]\nname = "Raw"')
+    with pytest.raises(ParameterError, match="film 'A': name: 'Raw' is already an existing"):
+        data.film_parts(list(film.values()), taken=["Raw"])

@@ -372,6 +372,16 @@ def merge_config(
     views_for = [d for d in registry.ALL_DISPLAY_LIST if d.name in targets]
     gamut_entries = [d for d in registry.DISPLAY_LIST if d in {t.gamut for t in views_for}]
     gamuts = [d.name for d in gamut_entries]
+    if films:  # the base config's names and aliases too (inactive spaces included)
+        from ocio_thinfilm.physics.films import check_names
+
+        ocio = ocio_ops.module()
+        spaces = base.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)
+        check_names(
+            films,
+            [n for cs in spaces for n in [cs.getName(), *cs.getAliases()]]
+            + list(base.getNamedTransformNames()),
+        )
     data = config.config_data(clip_size=clip_size, films=films)
     film_names = [f.name for f in films]
     by_display = config.clip_luts(clip_size)

@@ -118,6 +118,12 @@ def export_film(
     if fmt is not None:
         fmt = as_choice("fmt", fmt, FILM_FORMATS)
     stem = film_lut_stem(chosen)
+    if suffix and suffix not in FILM_FORMATS and not out_path.is_dir():
+        raise ParameterError(
+            "out",
+            f" {out_path}: must be a directory or a file ending in "
+            f"{', '.join('.' + f for f in FILM_FORMATS)}",
+        )
     if fmt is not None and suffix:
         targets = {fmt: out_path}
     else:

@@ -449,8 +449,10 @@ def read_films(path: str | Path, *, taken: Iterable[str] = ()) -> dict:
 
 
 def _registry_names() -> list[str]:
+    """The registry's colour space names (the config adds a few more of its own, which
+    :func:`ocio_thinfilm.config.data.film_parts` checks with the whole config)."""
     return (
-        [registry.REFERENCE, "Raw", "sRGB - Texture"]
+        [registry.REFERENCE]
         + list(registry.SCENE_LINEAR_SPACES)
         + list(registry.ENCODED_SPACES)
         + list(registry.THIN_FILM_SPACES)
