@@ -128,7 +128,7 @@ def test_refractiveindex_yaml_tabulated_and_formulas(tmp_path):
 
 
 def test_refractiveindex_yaml_errors_name_file_and_line():
-    bad = "DATA:\n  - type: formula 3\n    wavelength_range: 0.3 2.5\n    coefficients: 1 2\n"
+    bad = "DATA:\n  - type: formula 10\n    wavelength_range: 0.3 2.5\n    coefficients: 1 2\n"
     with pytest.raises(ParameterError, match=r"b.yml:2: formula must be one of"):
         materials.read_refractiveindex_yaml("b.yml", text=bad)
     bad = "DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 -0.1\n        0.9 1.6 0\n"
@@ -147,3 +147,46 @@ def test_the_vendored_files_say_where_they_come_from():
             text = resources.files("ocio_thinfilm").joinpath("data", "materials", entry.file)
             head = text.read_text()
             assert "refractiveindex.info/?shelf=" in head and "REFERENCES:" in head, name
+
+
+@pytest.mark.parametrize(
+    "number, coefficients, by_hand",
+    [
+        # Devore 1951, rutile (ordinary): n^2 = 5.913 + 0.2441 / (lambda^2 - 0.0803)
+        (4, "5.913 0.2441 0 0.0803 1 0 0 0 1", lambda l: np.sqrt(5.913 + 0.2441 / (l**2 - 0.0803))),
+        (3, "2.0 0.01 -2 0.001 -4", lambda l: np.sqrt(2.0 + 0.01 / l**2 + 0.001 / l**4)),
+        (
+            7,
+            "1.5 0.004 0.0001 -0.002 0.0001 0",
+            lambda l: (
+                1.5
+                + 0.004 / (l**2 - 0.028)
+                + 0.0001 / (l**2 - 0.028) ** 2
+                - 0.002 * l**2
+                + 0.0001 * l**4
+            ),
+        ),
+        (
+            8,
+            "0.28 0.01 0.02 -0.001",
+            lambda l: np.sqrt(
+                (1 + 2 * (0.28 + 0.01 * l**2 / (l**2 - 0.02) - 0.001 * l**2))
+                / (1 - (0.28 + 0.01 * l**2 / (l**2 - 0.02) - 0.001 * l**2))
+            ),
+        ),
+        (
+            9,
+            "2.2 0.02 0.03 0.01 0.2 0.01",
+            lambda l: np.sqrt(
+                2.2 + 0.02 / (l**2 - 0.03) + 0.01 * (l - 0.2) / ((l - 0.2) ** 2 + 0.01)
+            ),
+        ),
+    ],
+)
+def test_the_other_refractiveindex_formulas(number, coefficients, by_hand):
+    text = (
+        f"DATA:\n  - type: formula {number}\n    wavelength_range: 0.3 1.0\n"
+        f"    coefficients: {coefficients}\n"
+    )
+    got = materials.read_refractiveindex_yaml("f.yml", text=text).index(VISIBLE).real
+    np.testing.assert_allclose(got, by_hand(VISIBLE / 1000.0), rtol=1e-12)

@@ -8,8 +8,8 @@ as a function of wavelength, made from
   left out: 0), one row per wavelength, ``#`` comments allowed;
 - a refractiveindex.info YAML file (:func:`read_refractiveindex_yaml`): a ``DATA``
   list of ``tabulated nk``, ``tabulated n`` and ``tabulated k`` blocks (wavelengths in
-  um) and dispersion formulas 1 and 2 (Sellmeier), 5 (polynomial / Cauchy) and 6
-  (gases), each with its ``wavelength_range``;
+  um) and the database's dispersion formulas 1-9 (:class:`Formula`: Sellmeier,
+  polynomial, Cauchy, gases, Herzberger, ...), each with its ``wavelength_range``;
 - the built-in library (:func:`builtin`, :data:`LIBRARY`): common film and substrate
   materials with cited dispersion data (vendored, trimmed refractiveindex.info files in
   ``ocio_thinfilm/data/materials``, public domain).
@@ -63,8 +63,8 @@ __all__ = [
 
 #: The wavelength range (nm) a material's data must cover to colour a film.
 VISIBLE_NM = (380.0, 780.0)
-#: refractiveindex.info dispersion formulas this module evaluates.
-FORMULAS = (1, 2, 5, 6)
+#: refractiveindex.info dispersion formulas this module evaluates (all nine).
+FORMULAS = (1, 2, 3, 4, 5, 6, 7, 8, 9)
 
 
 @dataclass(frozen=True, eq=False)
@@ -93,8 +93,18 @@ class Formula:
 
     - 1 (Sellmeier): ``n^2 - 1 = C1 + sum_i C(2i) lambda^2 / (lambda^2 - C(2i+1)^2)``;
     - 2 (Sellmeier-2): ``n^2 - 1 = C1 + sum_i C(2i) lambda^2 / (lambda^2 - C(2i+1))``;
-    - 5 (polynomial, Cauchy): ``n = C1 + sum_i C(2i) lambda^C(2i+1)``;
-    - 6 (gases): ``n - 1 = C1 + sum_i C(2i) / (C(2i+1) - lambda^-2)``.
+    - 3 (polynomial): ``n^2 = C1 + sum_i C(2i) lambda^C(2i+1)``;
+    - 4 (RefractiveIndex.INFO): ``n^2 = C1 + C2 lambda^C3 / (lambda^2 - C4^C5)
+      + C6 lambda^C7 / (lambda^2 - C8^C9) + sum_{i>=5} C(2i) lambda^C(2i+1)``;
+    - 5 (Cauchy): ``n = C1 + sum_i C(2i) lambda^C(2i+1)``;
+    - 6 (gases): ``n - 1 = C1 + sum_i C(2i) / (C(2i+1) - lambda^-2)``;
+    - 7 (Herzberger): ``n = C1 + C2 / (lambda^2 - 0.028) + C3 / (lambda^2 - 0.028)^2
+      + C4 lambda^2 + C5 lambda^4 + C6 lambda^6``;
+    - 8 (Retro): ``(n^2 - 1) / (n^2 + 2) = C1 + C2 lambda^2 / (lambda^2 - C3) + C4 lambda^2``;
+    - 9 (Exotic): ``n^2 = C1 + C2 / (lambda^2 - C3) + C4 (lambda - C5) /
+      ((lambda - C5)^2 + C6)``.
+
+    (Polyanskiy, refractiveindex.info, "Dispersion formulas".)
     """
 
     number: int
@@ -116,13 +126,34 @@ class Formula:
             for b, r in pairs:
                 total = total + b * lam2 / (lam2 - (r * r if self.number == 1 else r))
             return np.sqrt(1.0 + total)
-        if self.number == 5:
+        if self.number in (3, 5):
             for b, e in pairs:
                 total = total + b * lam**e
-            return total
-        for b, r in pairs:  # formula 6
-            total = total + b / (r - lam**-2.0)
-        return 1.0 + total
+            return np.sqrt(total) if self.number == 3 else total
+        if self.number == 6:
+            for b, r in pairs:
+                total = total + b / (r - lam**-2.0)
+            return 1.0 + total
+        k = list(c) + [0.0] * (17 - len(c)) if len(c) < 17 else list(c)
+        lam2 = lam * lam
+        if self.number == 4:
+            total = (
+                k[0]
+                + k[1] * lam ** k[2] / (lam2 - k[3] ** k[4])
+                + k[5] * lam ** k[6] / (lam2 - k[7] ** k[8])
+            )
+            for b, e in zip(k[9::2], k[10::2], strict=False):
+                total = total + b * lam**e
+            return np.sqrt(total)
+        if self.number == 7:
+            q = 1.0 / (lam2 - 0.028)
+            return k[0] + k[1] * q + k[2] * q * q + k[3] * lam2 + k[4] * lam2**2 + k[5] * lam2**3
+        if self.number == 8:
+            lorentz = k[0] + k[1] * lam2 / (lam2 - k[2]) + k[3] * lam2
+            return np.sqrt((1.0 + 2.0 * lorentz) / (1.0 - lorentz))
+        # formula 9
+        x = lam - k[4]
+        return np.sqrt(k[0] + k[1] / (lam2 - k[2]) + k[3] * x / (x * x + k[5]))
 
 
 Dispersion = float | Tabulated | Formula
@@ -412,7 +443,7 @@ def read_refractiveindex_yaml(
     """A material from a refractiveindex.info database file (YAML).
 
     Reads the ``DATA`` entries ``tabulated nk``, ``tabulated n``, ``tabulated k``
-    (rows of wavelength in um and values) and ``formula 1/2/5/6`` (with
+    (rows of wavelength in um and values) and ``formula 1`` to ``formula 9`` (with
     ``wavelength_range`` in um and ``coefficients``); the first ``REFERENCES`` line
     becomes the material's source. A file without k data is transparent (k = 0).
 
