@@ -534,7 +534,18 @@ FILM_LUT_PREFIX = "ThinFilm_User_"
 
 def film_lut_stem(film: Any) -> str:
     """The config's LUT file stem of a user's film: :data:`FILM_LUT_PREFIX` and its key
-    with every character but letters, digits and ``_`` as ``_``."""
+    with every character but letters, digits and ``_`` as ``_``.
+
+    Parameters
+    ----------
+    film : Film
+        A :class:`ocio_thinfilm.physics.films.Film`.
+
+    Returns
+    -------
+    str
+        E.g. ``ThinFilm_User_OilOnWater``.
+    """
     import re
 
     return FILM_LUT_PREFIX + re.sub(r"[^A-Za-z0-9_]", "_", film.key)
@@ -549,9 +560,26 @@ def film_parts(
     ``film.name`` (pixel value = physical thickness of its varying layer in um, all
     channels equal -> CIE-XYZ-D65 through its table,
     :func:`ocio_thinfilm.lut.film_tables.film_table`), the named transform
-    ``TABLE_NAMED_TRANSFORM`` of it and its CLF file. ``taken``: the config's colour
-    space names, which the films' names must not repeat
-    (:func:`ocio_thinfilm.physics.films.check_names`).
+    ``TABLE_NAMED_TRANSFORM`` of it and its CLF file.
+
+    Parameters
+    ----------
+    films : sequence of Film
+        The films.
+    inline : bool, optional
+        Put the tables into the transforms instead of FileTransforms to their files.
+    taken : sequence of str, optional
+        The config's colour space names, which the films' names must not repeat
+        (:func:`ocio_thinfilm.physics.films.check_names`).
+
+    Returns
+    -------
+    colorspaces : list of dict
+        For :func:`ocio_thinfilm.config.factories.colorspace_factory`.
+    named_transforms : list of dict
+        For :func:`ocio_thinfilm.config.factories.named_transform_factory`.
+    luts : dict
+        CLF file name -> GroupTransform.
     """
     from ocio_thinfilm.physics.films import check_names
 

@@ -41,6 +41,17 @@ def pick_film(films: StrPath | Any, film: str | None) -> Any:
     films :func:`ocio_thinfilm.export.bake.load_films` accepts); with one film in the
     file ``film`` may be left out.
 
+    Parameters
+    ----------
+    films : str, pathlib.Path or sequence of Film
+        The film file or its films.
+    film : str or None
+        The film's key or colour space name.
+
+    Returns
+    -------
+    Film
+
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
@@ -58,9 +69,25 @@ def pick_film(films: StrPath | Any, film: str | None) -> Any:
 
 
 def film_contents(film: Any, size: int | None = None) -> tuple[np.ndarray, Any, dict[str, Any]]:
-    """(values, Lut1D transform, metadata) of a film's table for
-    :func:`ocio_thinfilm.export.files.write_lut`: ``size`` entries (default
-    :func:`ocio_thinfilm.lut.film_tables.default_size`) uniform over its range."""
+    """A film's table for :func:`ocio_thinfilm.export.files.write_lut`.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    size : int, optional
+        Entries, uniform over its range (default
+        :func:`ocio_thinfilm.lut.film_tables.default_size`).
+
+    Returns
+    -------
+    values : numpy.ndarray
+        (size, 3) CIE XYZ.
+    lut : PyOpenColorIO.Lut1DTransform
+        The values as an OCIO Lut1D.
+    meta : dict
+        Name, input and output descriptions, range, size and CLF id.
+    """
     table = film_tables.film_table(film, size)
     lo, hi = film.range_um
     stem = film_lut_stem(film)

@@ -37,6 +37,16 @@ def default_size(film: Film) -> int:
     the varying layer (a thickness step of ``380 nm / (2 n)`` at 380 nm), a power of two
     in [:data:`MIN_SIZE`, :data:`MAX_SIZE`].
 
+    Parameters
+    ----------
+    film : Film
+        The film.
+
+    Returns
+    -------
+    int
+        The table size.
+
     >>> from ocio_thinfilm.physics.films import parse_films
     >>> default_size(parse_films('[films.S]\\nstack = ["air", "water", "air"]')["S"])
     1024

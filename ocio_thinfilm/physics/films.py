@@ -464,6 +464,13 @@ def check_names(films: Iterable[Film], taken: Iterable[str] = ()) -> None:
     """Refuse films whose colour space names repeat (OCIO compares names without case)
     or clash with a colour space of the config (``taken``, and the registry's).
 
+    Parameters
+    ----------
+    films : iterable of Film
+        The films.
+    taken : iterable of str, optional
+        Names (and aliases) in use besides the registry's.
+
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
@@ -542,7 +549,29 @@ def film_wavelengths(film: Film, max_thickness_nm: float | None = None) -> np.nd
 
 def paper_parameters(film: Film) -> tuple[float, float, bool]:
     """The paper model's film index n, cos(theta_t) and whether Eq. 7 (phase change)
-    applies, at :data:`PAPER_WAVELENGTH` (see the module docstring)."""
+    applies, at :data:`PAPER_WAVELENGTH` (see the module docstring).
+
+    Parameters
+    ----------
+    film : Film
+        A one-layer film.
+
+    Returns
+    -------
+    n : float
+        The film's real index at 550 nm.
+    cos_t : float
+        cos(theta_t) in the film (Snell's law from the incident medium).
+    phase_change : bool
+        Eq. 7 (True) or Eq. 8.
+
+    Examples
+    --------
+    >>> soap = parse_films('[films.S]\\nstack = ["vacuum", "soap film", "vacuum"]')["S"]
+    >>> n, cos_t, phase_change = paper_parameters(soap)
+    >>> round(n, 3), cos_t, phase_change
+    (1.335, 1.0, True)
+    """
     wl = np.array([PAPER_WAVELENGTH])
     n0, n1, n2 = (m.index(wl)[0] for m in film.stack)
     sin_t = n0.real * np.sin(np.deg2rad(film.angle_deg)) / n1.real

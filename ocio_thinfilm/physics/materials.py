@@ -195,7 +195,17 @@ class Material:
         return True
 
     def covers(self, lo: float = VISIBLE_NM[0], hi: float = VISIBLE_NM[1]) -> bool:
-        """Whether the data cover ``[lo, hi]`` nm."""
+        """Whether the data cover ``[lo, hi]`` nm.
+
+        Parameters
+        ----------
+        lo, hi : float, optional
+            The range in nm (default :data:`VISIBLE_NM`, 380-780 nm).
+
+        Returns
+        -------
+        bool
+        """
         a, b = self.coverage
         return a <= lo and b >= hi
 
@@ -703,13 +713,35 @@ _LOOKUP = {_key(alias): name for name, e in LIBRARY.items() for alias in (name,)
 
 
 def builtin_names() -> tuple[str, ...]:
-    """The built-in materials' names (:data:`LIBRARY`)."""
+    """The built-in materials' names (:data:`LIBRARY`).
+
+    Returns
+    -------
+    tuple of str
+        In the library's order.
+    """
     return tuple(LIBRARY)
 
 
 def find_builtin(name: str) -> str | None:
-    """The built-in material ``name`` refers to (case, spaces, ``-`` and ``_`` do not
-    matter; aliases such as ``gold`` for ``Au``), ``None`` if none."""
+    """The built-in material ``name`` refers to.
+
+    Parameters
+    ----------
+    name : str
+        A name or alias (``gold`` for ``Au``); case, spaces, ``-`` and ``_`` do not
+        matter.
+
+    Returns
+    -------
+    str or None
+        The library's name, ``None`` if there is none.
+
+    Examples
+    --------
+    >>> find_builtin("Soap_Film"), find_builtin("gold"), find_builtin("mithril")
+    ('soap film', 'Au', None)
+    """
     return _LOOKUP.get(_key(name)) if isinstance(name, str) else None
 
 
