@@ -28,8 +28,9 @@ __all__ = ["MIN_SIZE", "MAX_SIZE", "NODES_PER_FRINGE", "default_size", "film_XYZ
 MIN_SIZE = 1024
 MAX_SIZE = 1 << 16
 NODES_PER_FRINGE = 64
-#: Thicknesses per block of spectra (memory: block x wavelengths complex values).
-_BLOCK = 1024
+#: Spectral samples per block of spectra (thicknesses x wavelengths complex values:
+#: 32 MB a temporary).
+_BLOCK_SAMPLES = 1 << 21
 
 
 def default_size(film: Film) -> int:
@@ -81,9 +82,10 @@ def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
     wl = films_module.film_wavelengths(film, top)
     w = colorimetry.spectral_weights(wl)
     out = np.empty((flat.size, 3))
-    for start in range(0, flat.size, _BLOCK):
-        block = flat[start : start + _BLOCK]
-        out[start : start + _BLOCK] = films_module.film_reflectance(film, block, wl) @ w
+    rows = max(1, _BLOCK_SAMPLES // wl.size)
+    for start in range(0, flat.size, rows):
+        block = flat[start : start + rows]
+        out[start : start + rows] = films_module.film_reflectance(film, block, wl) @ w
     return out.reshape(t_nm.shape + (3,))
 
 
