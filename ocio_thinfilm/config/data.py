@@ -15,7 +15,9 @@ display white and every view maps it to code value 1.0 (no tone mapping).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -27,6 +29,7 @@ from ocio_thinfilm.lut import (
     clip_lut,
     compress_lut,
     display_transforms,
+    film_tables,
     ocio_ops,
     tables,
     view_transforms,
@@ -50,6 +53,9 @@ __all__ = [
     "COMPRESS_NAMED_TRANSFORM",
     "compress_named_transform",
     "named_transforms",
+    "FILM_LUT_PREFIX",
+    "film_lut_stem",
+    "film_parts",
 ]
 
 CONFIG_NAME = "ocio-thinfilm"
@@ -370,6 +376,7 @@ def config_data(
     clip_size: int = clip_lut.CLIP_SIZE,
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
+    films: Sequence[Any] = (),
 ) -> ConfigData:
     """Return the config as data.
 
@@ -388,6 +395,10 @@ def config_data(
     morpho_size : int, optional
         Entries of the Morpho angle table (default
         :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
+    films : sequence of Film, optional
+        Users' films (:class:`ocio_thinfilm.physics.films.Film`): one input colour
+        space and named transform each (:func:`film_parts`); none (the default) leaves
+        the config as it is without them.
 
     Returns
     -------
@@ -489,6 +500,11 @@ def config_data(
                 to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline),
             )
         )
+    film_spaces, film_named, film_luts = film_parts(
+        films, inline=inline, taken=[c["name"] for c in cs]
+    )
+    cs += film_spaces
+    luts.update(film_luts)
     for entry in registry.ALL_DISPLAY_LIST:
         cs.append(
             dict(
@@ -568,7 +584,8 @@ def config_data(
         luts=luts,
         named_transforms=named_transforms(
             by_display, inline=inline, luts=luts, compress_by_display=soft_by_display
-        ),
+        )
+        + film_named,
     )
 
 
@@ -751,3 +768,108 @@ def _builtin_to_reference(builtin: str) -> ocio_ops.Transform:
     return ocio_ops.group(
         [ocio_ops.range_(float(lo), float(hi)), curve, _matrix_to_reference("ACES2065-1")]
     )
+
+
+#: LUT file stem of a user's film: this prefix and its key (file-name safe).
+FILM_LUT_PREFIX = "ThinFilm_User_"
+
+
+def film_lut_stem(film: Any) -> str:
+    """The config's LUT file stem of a user's film: :data:`FILM_LUT_PREFIX` and its key
+    with every character but letters, digits and ``_`` as ``_``.
+
+    Parameters
+    ----------
+    film : Film
+        A :class:`ocio_thinfilm.physics.films.Film`.
+
+    Returns
+    -------
+    str
+        E.g. ``ThinFilm_User_OilOnWater``.
+    """
+    import re
+
+    return FILM_LUT_PREFIX + re.sub(r"[^A-Za-z0-9_]", "_", film.key)
+
+
+def film_parts(
+    films: Sequence[Any], *, inline: bool = False, taken: Sequence[str] = ()
+) -> tuple[list[dict], list[dict], dict[str, ocio_ops.Transform]]:
+    """Users' films as config data: (colour spaces, named transforms, LUT files).
+
+    Each :class:`~ocio_thinfilm.physics.films.Film` gives an input colour space named
+    ``film.name`` (pixel value = physical thickness of its varying layer in um, all
+    channels equal -> CIE-XYZ-D65 through its table,
+    :func:`ocio_thinfilm.lut.film_tables.film_table`), the named transform
+    ``TABLE_NAMED_TRANSFORM`` of it and its CLF file.
+
+    Parameters
+    ----------
+    films : sequence of Film
+        The films.
+    inline : bool, optional
+        Put the tables into the transforms instead of FileTransforms to their files.
+    taken : sequence of str, optional
+        The config's colour space names, which the films' names must not repeat
+        (:func:`ocio_thinfilm.physics.films.check_names`).
+
+    Returns
+    -------
+    colorspaces : list of dict
+        For :func:`ocio_thinfilm.config.factories.colorspace_factory`.
+    named_transforms : list of dict
+        For :func:`ocio_thinfilm.config.factories.named_transform_factory`.
+    luts : dict
+        CLF file name -> GroupTransform.
+    """
+    from ocio_thinfilm.physics.films import check_names
+
+    films = list(films)
+    check_names(films, taken)
+    stems = [film_lut_stem(f) for f in films]
+    if len(set(s.casefold() for s in stems)) != len(stems):
+        raise ValueError(f"films: keys give clashing LUT file names: {stems}")
+    spaces, named, luts = [], [], {}
+    for film, stem in zip(films, stems, strict=True):
+        table = film_tables.film_table(film)
+        filename = named_lut(stem)
+        luts[filename] = table.transform()
+        lo, hi = film.range_um
+        output = (
+            "the film's physical reflectance (a perfect reflector is Y = 1)"
+            if film.model == "exact"
+            else "the paper's normalised Eq. 7/8 reflectance (peak 1)"
+        )
+        if film.normalise:
+            output += ", scaled so that its brightest entry has Y = 1"
+        spaces.append(
+            dict(
+                name=film.name,
+                family="Thin Film",
+                encoding="scene-linear",
+                categories=["file-io"],
+                description=(
+                    f"{table.description} Pixel value (all three channels equal) = "
+                    f"physical thickness of the {film.varying.name} layer in "
+                    f"micrometres, clamped to [{lo:g}, {hi:g}]. Output: {output}, CIE "
+                    f"XYZ D65. From {Path(film.source).name}."
+                ),
+                to_reference=_lut_reference(filename, luts, inline),
+            )
+        )
+        named.append(
+            dict(
+                name=TABLE_NAMED_TRANSFORM.format(space=film.name),
+                family="Thin Film",
+                categories=["thin-film"],
+                encoding="scene-linear",
+                description=(
+                    f"The {film.name} table on its own: physical thickness of the "
+                    f"{film.varying.name} layer in um in (all channels equal), CIE XYZ "
+                    "(D65, perfect reflector Y = 1) out."
+                ),
+                transform=_lut_reference(filename, luts, inline),
+            )
+        )
+    return spaces, named, luts

@@ -45,6 +45,7 @@ Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`.
 from __future__ import annotations
 
 import copy
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -439,7 +440,10 @@ def match_displays(cfg: ocio_ops.Config) -> dict[str, tuple[str, str]]:
 
 
 def merge_config(
-    base: ocio_ops.Config, *, clip_size: int = clip_lut.CLIP_SIZE
+    base: ocio_ops.Config,
+    *,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    films: Sequence[Any] = (),
 ) -> tuple[ocio_ops.Config, dict[str, ocio_ops.Transform], dict[str, tuple[str, str]]]:
     """Return ``base`` plus the additions (module docstring) as a new config.
 
@@ -456,6 +460,9 @@ def merge_config(
     clip_size : int, optional
         Edge length of the clip LUTs, an integer in [9, 129] (default
         :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    films : sequence of Film, optional
+        Users' films (:class:`ocio_thinfilm.physics.films.Film`): an input colour space
+        and a named transform each, as the built-in thin-film spaces.
 
     Returns
     -------
@@ -498,7 +505,18 @@ def merge_config(
     views_for = [d for d in registry.ALL_DISPLAY_LIST if d.name in targets]
     gamut_entries = [d for d in registry.DISPLAY_LIST if d in {t.gamut for t in views_for}]
     gamuts = [d.name for d in gamut_entries]
-    data = config.config_data(clip_size=clip_size)
+    if films:  # the base config's names and aliases too (inactive spaces included)
+        from ocio_thinfilm.physics.films import check_names
+
+        ocio = ocio_ops.module()
+        spaces = base.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)
+        check_names(
+            films,
+            [n for cs in spaces for n in [cs.getName(), *cs.getAliases()]]
+            + list(base.getNamedTransformNames()),
+        )
+    data = config.config_data(clip_size=clip_size, films=films)
+    film_names = [f.name for f in films]
     by_display = config.clip_luts(clip_size)
     soft_by_display = config.compress_luts(clip_size)
     cfg = copy.deepcopy(base)
@@ -511,7 +529,11 @@ def merge_config(
         )
 
     # input spaces: table -> CIE-XYZ-D65 -> the config's scene reference
-    spaces = [s for s in data.colorspaces if s["name"] in registry.THIN_FILM_SPACES]
+    spaces = [
+        s
+        for s in data.colorspaces
+        if s["name"] in registry.THIN_FILM_SPACES or s["name"] in film_names
+    ]
     for spec in spaces:
         if _taken(spec["name"]):
             raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
@@ -564,9 +586,17 @@ def merge_config(
     if active:
         cfg.setActiveViews(", ".join(active + [v for v in added_views if v not in active]))
     # named transforms: the clip per gamut and the tables
-    for spec in config.named_transforms(
-        {g: by_display[g] for g in gamuts},
-        compress_by_display={g: soft_by_display[g] for g in gamuts},
+    film_named = [
+        nt
+        for nt in data.named_transforms
+        if nt["name"] in {config.TABLE_NAMED_TRANSFORM.format(space=n) for n in film_names}
+    ]
+    for spec in (
+        config.named_transforms(
+            {g: by_display[g] for g in gamuts},
+            compress_by_display={g: soft_by_display[g] for g in gamuts},
+        )
+        + film_named
     ):
         if _taken(spec["name"]):
             raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
@@ -581,6 +611,7 @@ def merge_config(
         "named transforms."
     )
     names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
+    names += [config.named_lut(config.film_lut_stem(f)) for f in films]
     names += [
         config.named_lut(stem(w))
         for g in gamut_entries

@@ -8,7 +8,8 @@ directories it owns
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import os
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +30,7 @@ __all__ = [
     "export_set",
     "EXPORT_SET_VIEWS",
     "bake",
+    "load_films",
 ]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
@@ -82,6 +84,7 @@ def write_config(
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
     progress: Callable[[str], object] | None = None,
+    films: Sequence[Any] = (),
 ) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
@@ -106,6 +109,8 @@ def write_config(
     progress : callable, optional
         ``progress(step_name)``, called once per file written (the LUT file's name,
         then ``"config.ocio"``).
+    films : sequence of Film, optional
+        Users' films (:func:`load_films`): an input colour space each.
 
     Returns
     -------
@@ -124,7 +129,9 @@ def write_config(
     import PyOpenColorIO as ocio
 
     directory = Path(directory)
-    data = config.config_data(clip_size=clip_size, film_size=film_size, morpho_size=morpho_size)
+    data = config.config_data(
+        clip_size=clip_size, film_size=film_size, morpho_size=morpho_size, films=films
+    )
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
     raw = ocio.Config.CreateRaw()
     for filename, transform in sorted(data.luts.items()):
@@ -225,6 +232,7 @@ def bake(
     clip_size: int = clip_lut.CLIP_SIZE,
     show_progress: bool = False,
     luts: StrPath | None = None,
+    films: StrPath | Sequence[Any] | None = None,
 ) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) and, optionally, the LUT set.
 
@@ -247,6 +255,11 @@ def bake(
     luts : str or os.PathLike, optional
         Also write the standalone LUT set (:func:`export_set`) to this directory,
         which must not be, contain or lie inside ``out``; ``None`` (default) for none.
+    films : str, os.PathLike or sequence of Film, optional
+        A film file (TOML, :func:`ocio_thinfilm.physics.films.read_films`) or films
+        read from one: each adds an input colour space and its named transform. Bad
+        films are refused (a ParameterError naming ``films``) before anything is
+        written.
 
     Returns
     -------
@@ -268,6 +281,12 @@ def bake(
         replaced.
     """
     clip_size = check_clip_size(clip_size)
+    film_list = load_films(films)
+    if film_list:  # the tables are computed (and a bad film refused) before any claim
+        from ocio_thinfilm.lut import film_tables
+
+        for film in film_list:
+            film_tables.film_table(film)
     claim = claim_directory(out, parameter="out", last=("config.ocio",))
     luts_claim = None
     if luts is not None:
@@ -279,6 +298,7 @@ def bake(
             )
     # the thin-film tables, two clip and two compression LUTs per SDR display, config.ocio
     n_files = len(registry.THIN_FILM_LIST) + 4 * len(registry.DISPLAYS) + 1
+    n_files += len(film_list)
     bar = progress_bar(show_progress, total=n_files, desc=f"bake {claim.path}")
     try:
         with transaction() as tx:
@@ -288,6 +308,7 @@ def bake(
                     stage,
                     clip_size=int(clip_size),
                     progress=(lambda name: bar.update(1)) if bar else None,
+                    films=film_list,
                 )
             except OSError as error:
                 raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None
@@ -300,3 +321,30 @@ def bake(
         if bar:
             bar.close()
     return claim.path / "config.ocio"
+
+
+def load_films(films: StrPath | Sequence[Any] | None) -> list:
+    """Films for a bake: read from a film file (a path), or a sequence of
+    :class:`~ocio_thinfilm.physics.films.Film` as they are; ``None``: none.
+
+    Parameters
+    ----------
+    films : str, pathlib.Path, sequence of Film or None
+        The film file or the films.
+
+    Returns
+    -------
+    list
+        The films, in the file's order.
+    """
+    from ocio_thinfilm.physics import films as films_module
+
+    if films is None:
+        return []
+    if isinstance(films, (str, os.PathLike)):
+        return list(films_module.read_films(os.fspath(films)).values())
+    out = list(films)
+    for film in out:
+        if not isinstance(film, films_module.Film):
+            raise TypeError(f"films must be a film file or Film objects, got {film!r}")
+    return out

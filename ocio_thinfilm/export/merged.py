@@ -14,12 +14,14 @@ from __future__ import annotations
 
 import shutil
 import tempfile
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 from ocio_thinfilm import config
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.config import merge
-from ocio_thinfilm.export.bake import write_config
+from ocio_thinfilm.export.bake import load_films, write_config
 from ocio_thinfilm.io import StrPath, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
@@ -40,7 +42,11 @@ def _copy_base_files(base, source, directory):
 
 
 def write_merged(
-    source: StrPath, directory: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE
+    source: StrPath,
+    directory: StrPath,
+    *,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    films: Sequence[Any] = (),
 ) -> tuple[Path, dict[str, tuple[str, str]]]:
     """Write the merged config (``config.ocio``, ``luts/``) into the existing ``directory``.
 
@@ -60,6 +66,9 @@ def write_merged(
     clip_size : int, optional
         Edge length of the clip LUTs, an integer in [9, 129] (default
         :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    films : sequence of Film, optional
+        Users' films (:func:`ocio_thinfilm.export.bake.load_films`), added as input
+        colour spaces.
 
     Returns
     -------
@@ -83,7 +92,7 @@ def write_merged(
     """
     ocio = ocio_ops.module()
     base = merge.load_base(source)
-    cfg, luts, matches = merge.merge_config(base, clip_size=clip_size)
+    cfg, luts, matches = merge.merge_config(base, clip_size=clip_size, films=films)
     directory = Path(directory)
     _copy_base_files(base, source, directory)
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
@@ -146,7 +155,13 @@ def write_archive(config_path: StrPath, out: StrPath) -> Path:
     return Path(out)
 
 
-def bake_into(source: StrPath, out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
+def bake_into(
+    source: StrPath,
+    out: StrPath,
+    *,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    films: StrPath | Sequence[Any] | None = None,
+) -> Path:
     """Merge into the base config and write the result: ``bake --into SOURCE --out OUT``.
 
     Parameters
@@ -160,6 +175,9 @@ def bake_into(source: StrPath, out: StrPath, *, clip_size: int = clip_lut.CLIP_S
     clip_size : int, optional
         Edge length of the clip LUTs, an integer in [9, 129] (default
         :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    films : str, os.PathLike or sequence of Film, optional
+        A film file or films (:func:`ocio_thinfilm.export.bake.load_films`), added as
+        input colour spaces.
 
     Returns
     -------
@@ -179,20 +197,26 @@ def bake_into(source: StrPath, out: StrPath, *, clip_size: int = clip_lut.CLIP_S
     OSError
         If a file cannot be written.
     """
+    film_list = load_films(films)
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
     if out.suffix.lower() == ".ocioz":
         with tempfile.TemporaryDirectory() as tmp:
-            path, _ = write_merged(source, tmp, clip_size=clip_size)
+            path, _ = write_merged(source, tmp, clip_size=clip_size, films=film_list)
             return write_archive(path, out)
     if out.exists() and not out.is_dir():
         raise ParameterError("out", f" {out}: not a directory")
     with atomic_directory(out) as tmp:
-        write_merged(source, tmp, clip_size=clip_size)
+        write_merged(source, tmp, clip_size=clip_size, films=film_list)
     return out / "config.ocio"
 
 
-def bake_archive(out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
+def bake_archive(
+    out: StrPath,
+    *,
+    clip_size: int = clip_lut.CLIP_SIZE,
+    films: StrPath | Sequence[Any] | None = None,
+) -> Path:
     """Write the project's config as an archive: ``bake --out thinfilm.ocioz``.
 
     Parameters
@@ -202,6 +226,8 @@ def bake_archive(out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
     clip_size : int, optional
         Edge length of the clip LUTs, an integer in [9, 129] (default
         :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    films : str, os.PathLike or sequence of Film, optional
+        A film file or films, as for :func:`ocio_thinfilm.export.bake.bake`.
 
     Returns
     -------
@@ -215,8 +241,9 @@ def bake_archive(out: StrPath, *, clip_size: int = clip_lut.CLIP_SIZE) -> Path:
     OSError
         If the archive cannot be written.
     """
+    film_list = load_films(films)
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
     with tempfile.TemporaryDirectory() as tmp:
-        path = write_config(tmp, clip_size=clip_size)
+        path = write_config(tmp, clip_size=clip_size, films=film_list)
         return write_archive(path, out)

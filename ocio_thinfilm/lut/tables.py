@@ -76,6 +76,8 @@ class Table1D:
     description: str = ""
     name: str = ""
     nodes: np.ndarray | None = field(default=None, repr=False)
+    #: What the pixel value is, if not the built-in tables' (a user's film).
+    pixel: str = ""
 
     @property
     def size(self) -> int:
@@ -176,6 +178,8 @@ class Table1D:
     @property
     def input_descriptor(self) -> str:
         """CLF input descriptor: what the pixel values are (cos(theta) or thickness)."""
+        if self.pixel:
+            return self.pixel
         if self.kind == "morpho":
             return "cos(theta): facing ratio N.V, all channels equal"
         return "optical thickness t' = n t cos(theta_t) in micrometres, all channels equal"

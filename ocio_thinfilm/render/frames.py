@@ -179,6 +179,7 @@ def render_scene(
     view: str = DEFAULT_VIEW,
     lookup: scene_module.Lookup | None = None,
     config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
+    film: scene_module.TableSpec | None = None,
 ) -> tuple[scene_module.Picture, np.ndarray]:
     """Render one frame of a scene through a config's processors.
 
@@ -204,6 +205,9 @@ def render_scene(
     config : ConfigProcessors, PyOpenColorIO.Config, str or os.PathLike, optional
         The config: its processors, the config itself or its file (default:
         :data:`ocio_thinfilm.render.processors.DEFAULT_CONFIG`).
+    film : TableSpec, optional
+        A user's film for the oil or soap scene
+        (:meth:`ocio_thinfilm.render.scenes.Scene.with_film`).
 
     Returns
     -------
@@ -221,6 +225,8 @@ def render_scene(
         view the frame needs.
     """
     scene = scene_module.get_scene(name)
+    if film is not None:
+        scene = scene.with_film(film)
     width, height = size
     carried = getattr(lookup, "processors", None)  # a make_lookup lookup's processors
     if isinstance(config, ConfigProcessors):
@@ -294,6 +300,7 @@ def save_frame(
     display: str,
     view: str,
     tx: Transaction | None = None,
+    film: scene_module.TableSpec | None = None,
 ) -> list[Path]:
     """Write a rendered frame as ``NAME[.####].exr`` and ``.png``.
 
@@ -323,6 +330,8 @@ def save_frame(
     tx : Transaction, optional
         Join the caller's transaction (committed by the caller) instead of committing
         the pair on return.
+    film : TableSpec, optional
+        The user's film the frame was rendered with (recorded in the EXR's metadata).
 
     Returns
     -------
@@ -351,8 +360,11 @@ def save_frame(
                 display=display,
                 view=view,
                 tx=own,
+                film=film,
             )
     scene = scene_module.get_scene(name)
+    if film is not None:
+        scene = scene.with_film(film)
     stem = name if frame is None else f"{name}.{frame:04d}"
     for path in frame_paths(name, out_dir, frame):
         check_output_file(path, parameter="out_dir")
@@ -407,6 +419,7 @@ def write_frame(
     lookup: scene_module.Lookup | None = None,
     config: ConfigProcessors | ocio_ops.Config | StrPath | None = None,
     tx: Transaction | None = None,
+    film: scene_module.TableSpec | None = None,
 ) -> list[Path]:
     """Render one frame of a scene and write ``NAME[.####].exr`` and ``.png``.
 
@@ -434,6 +447,8 @@ def write_frame(
         As for :func:`render_scene`.
     tx : Transaction, optional
         As for :func:`save_frame`.
+    film : TableSpec, optional
+        A user's film, as for :func:`render_scene`.
 
     Returns
     -------
@@ -459,7 +474,17 @@ def write_frame(
         view=view,
         lookup=lookup,
         config=config,
+        film=film,
     )
     return save_frame(
-        name, picture, rgb, out_dir, seed=seed, frame=frame, display=display, view=view, tx=tx
+        name,
+        picture,
+        rgb,
+        out_dir,
+        seed=seed,
+        frame=frame,
+        display=display,
+        view=view,
+        tx=tx,
+        film=film,
     )

@@ -103,6 +103,8 @@ def table_colorspace(spec: TableSpec) -> str:
     'Thin Film Morpho Iridescence'
     """
     lo, hi = spec.range
+    if spec.kind == "user":
+        return spec.space
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0) or spec.entries != tables.MORPHO_SIZE:
             raise ValueError(
@@ -191,12 +193,16 @@ class ConfigProcessors:
         Naming ``config``, if the file cannot be loaded (:func:`load_config`).
     """
 
-    def __init__(self, config=None):
+    def __init__(self, config=None, films=None):
         self.config = (
             config
             if config is not None and not isinstance(config, (str, Path))
             else load_config(config)
         )
+        #: Users' films a render may use: colour space name -> its transform to
+        #: CIE-XYZ-D65 (the table ``bake --films`` writes), used when the config has no
+        #: colour space of that name.
+        self.films = dict(films or {})
         self._cpu = {}
         #: The processors created so far, in order: ``"colorspace:<name>"`` and
         #: ``"view:<display>/<view>"`` (a scene builds only what it shows).
@@ -271,6 +277,10 @@ class ConfigProcessors:
             or LUT file).
         """
         space = table_colorspace(spec)
+        if self.config.getColorSpace(space) is None and space in self.films:
+            return self._processor(
+                f"film:{space}", lambda: self.config.getProcessor(self.films[space])
+            )
         return self._processor(
             f"colorspace:{space}", lambda: self.config.getProcessor(self._xyz_transform(space))
         )
@@ -370,6 +380,8 @@ def build_table(spec: TableSpec) -> tables.Table1D:
         at 0 (or the tables module refuses the entries or range).
     """
     lo, hi = spec.range
+    if spec.kind == "user":
+        raise ValueError(f"a user's film ({spec.space!r}): its table is the film file's")
     if spec.kind == "morpho":
         if (lo, hi) != (0.0, 1.0):
             raise ValueError(f"the Morpho table covers cos(theta) in [0, 1], got {spec.range}")

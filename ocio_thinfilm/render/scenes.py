@@ -76,10 +76,16 @@ class TableSpec:
     kind: str
     range: tuple[float, float]
     entries: int
+    #: A user's film (``kind == "user"``): its colour space in the config (pixel value
+    #: = physical thickness of its varying layer, um; an exact film's physical
+    #: reflectance), from ``bake --films``.
+    space: str = ""
 
     @property
     def encoding(self) -> str:
-        """What the table is indexed with: ``"cos(theta)"`` or the optical thickness."""
+        """What the table is indexed with: ``"cos(theta)"``, the optical thickness or a user's film's physical thickness."""
+        if self.kind == "user":
+            return f"physical thickness (um) of the film of {self.space!r}"
         return "cos(theta)" if self.kind == "morpho" else "optical thickness t' (um)"
 
 
@@ -128,6 +134,11 @@ class Picture:
 class Scene:
     """Base class of the scenes: a name, the figure it reproduces, the tables it declares.
 
+    The oil and soap scenes also take a user's film (:meth:`with_film`): its table
+    (physical thickness of the film's varying layer at the film's own angle -> its
+    physical reflectance) replaces the paper's two-beam film and the scene's own Fresnel
+    sheen, so the picture shows the film as reflected.
+
     Attributes
     ----------
     name : str
@@ -147,6 +158,21 @@ class Scene:
     title = ""
     animation = ""
     tables: tuple[TableSpec, ...] = ()
+    #: A user's film (a :class:`TableSpec` of kind ``"user"``), None: the paper's.
+    film: TableSpec | None = None
+    #: Whether :meth:`with_film` applies.
+    takes_films = False
+
+    def with_film(self, film: TableSpec) -> Scene:
+        """A copy of this scene rendering the user's ``film`` (kind ``"user"``)."""
+        if not self.takes_films:
+            raise ValueError(f"the {self.name} scene has no film to replace (oil and soap do)")
+        import copy
+
+        scene = copy.copy(self)
+        scene.film = film
+        scene.tables = (film,)
+        return scene
 
     def render(
         self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
@@ -337,6 +363,7 @@ class OilScene(Scene):
         "1/(1 + 0.04 (frame - 1)), keeping its volume"
     )
     tables = (FILM_TABLE,)
+    takes_films = True
 
     N_OIL = 1.5  # oil on water: air|oil inverts, oil|water does not -> phase change
     T_CENTRE = 0.75  # physical thickness at the centre of the slick, um
@@ -410,23 +437,33 @@ class OilScene(Scene):
         t_phys = np.minimum(t_phys, np.float32(t_centre)).astype(np.float32)
         # Optical thickness through the refraction angle (paper Eq. 10 form).
         t_opt = _optical_thickness_um(t_phys, self.N_OIL, theta)
-        film = lookup(FILM_TABLE, t_opt)
-
         asphalt = self.asphalt(gx, gy, footprint, seed)
         # Overcast sky seen in the mirror direction: CIE overcast gradation (1 + 2 cos z)/3,
         # the reflected ray's zenith angle equals the view angle.
         sky = (1.0 + 2.0 * cos_view) / 3.0
-        xyz = (
-            asphalt
-            + _grey(self.WATER_SHEEN * sky)
-            + np.float32(self.FILM_GAIN) * sky[..., None] * film
-        ).astype(np.float32)
+        if self.film is not None:
+            # a user's film: its physical reflectance (the water's own Fresnel sheen
+            # included) at its own angle, against the physical thickness
+            film = lookup(self.film, t_phys)
+            xyz = (asphalt + sky[..., None] * film).astype(np.float32)
+            thickness = (t_phys, "physical thickness of the film's varying layer in um")
+        else:
+            film = lookup(FILM_TABLE, t_opt)
+            xyz = (
+                asphalt
+                + _grey(self.WATER_SHEEN * sky)
+                + np.float32(self.FILM_GAIN) * sky[..., None] * film
+            ).astype(np.float32)
+            thickness = (
+                t_opt,
+                "optical thickness t' = n t cos(theta_t) of the oil in micrometres "
+                "(the table index)",
+            )
         return Picture(
             xyz=xyz,
-            aovs={"thickness": t_opt, "angle": theta},
+            aovs={"thickness": thickness[0], "angle": theta},
             aov_docs={
-                "thickness": "optical thickness t' = n t cos(theta_t) of the oil in "
-                "micrometres (the table index)",
+                "thickness": thickness[1],
                 "angle": "view angle from the road's normal in degrees",
             },
             regions=[(0, width, None)],
@@ -498,6 +535,7 @@ class SoapScene(Scene):
     title = "A soap bubble: thickness proportional to height plus turbulence, black at the top"
     animation = "the film drains: the black film at the top grows and the bands sink"
     tables = (FILM_TABLE,)
+    takes_films = True
 
     N_SOAP = 1.33
     T_BOTTOM = 1.0  # physical thickness at the bottom of the bubble, um
@@ -541,7 +579,10 @@ class SoapScene(Scene):
         t_opt = _optical_thickness_um(
             np.where(inside, t_phys, 0.0), self.N_SOAP, np.where(inside, theta, 0.0)
         )
-        film = lookup(FILM_TABLE, t_opt)
+        if self.film is not None:  # a user's film: physical reflectance, own angle
+            film = lookup(self.film, np.where(inside, t_phys, 0.0).astype(np.float32))
+        else:
+            film = lookup(FILM_TABLE, t_opt)
 
         # Studio environment seen in the mirror direction: a soft bright window at the
         # upper left over a dim room, brighter above than below.
@@ -557,18 +598,24 @@ class SoapScene(Scene):
         # a faint Schlick rim (F0 = 0.02) of the environment keeps the silhouette of
         # the black film visible.
         rim = 0.02 + 0.98 * (1.0 - cos_view) ** 5
-        xyz = backdrop + (
-            (edge * env)[..., None] * (np.float32(self.FILM_GAIN) * film + _grey(0.12 * rim))
-        )
+        if self.film is not None:
+            xyz = backdrop + (edge * env)[..., None] * film
+            aov = (t_phys, "physical thickness of the film's varying layer in um")
+        else:
+            xyz = backdrop + (
+                (edge * env)[..., None] * (np.float32(self.FILM_GAIN) * film + _grey(0.12 * rim))
+            )
+            aov = (t_opt, "optical thickness t' of the soap film in micrometres (the table index")
         return Picture(
             xyz=xyz.astype(np.float32),
             aovs={
-                "thickness": np.where(inside, t_opt, 0.0).astype(np.float32),
+                "thickness": np.where(inside, aov[0], 0.0).astype(np.float32),
                 "angle": np.where(inside, theta, 0.0).astype(np.float32),
             },
             aov_docs={
-                "thickness": "optical thickness t' of the soap film in micrometres "
-                "(the table index; 0 off the bubble)",
+                "thickness": f"{aov[1]}; 0 off the bubble)"
+                if self.film is None
+                else f"{aov[1]} (0 off the bubble)",
                 "angle": "view angle from the bubble's normal in degrees (0 off it)",
             },
             regions=[(0, width, None)],

@@ -1,0 +1,157 @@
+"""Tables of the films a user describes (:mod:`ocio_thinfilm.physics.films`).
+
+:func:`film_table` turns a :class:`~ocio_thinfilm.physics.films.Film` into a
+:class:`~ocio_thinfilm.lut.tables.Table1D`: pixel value = physical thickness of the
+film's varying layer in micrometres (all channels equal), nodes uniform over the film's
+``range_um`` (the LUT's clamp holds the end colours outside it), values CIE XYZ (D65,
+CIE 1931 2 degree observer, perfect reflector Y = 1) of the film's reflectance
+(:func:`ocio_thinfilm.physics.films.film_reflectance`) through the colorimetry's
+trapezoid weights (:func:`ocio_thinfilm.colour.colorimetry.spectral_weights`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ocio_thinfilm import cache
+from ocio_thinfilm.checks import as_count
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.lut.tables import Table1D
+from ocio_thinfilm.physics import films as films_module
+from ocio_thinfilm.physics.films import Film
+
+__all__ = ["MIN_SIZE", "MAX_SIZE", "NODES_PER_FRINGE", "default_size", "film_XYZ", "film_table"]
+
+#: Bounds of the default table size, and nodes per shortest interference fringe.
+MIN_SIZE = 1024
+MAX_SIZE = 1 << 16
+NODES_PER_FRINGE = 64
+#: Spectral samples per block of spectra (thicknesses x wavelengths complex values:
+#: 32 MB a temporary).
+_BLOCK_SAMPLES = 1 << 21
+
+
+def default_size(film: Film) -> int:
+    """Entries of a film's table: :data:`NODES_PER_FRINGE` nodes per shortest fringe of
+    the varying layer (a thickness step of ``380 nm / (2 n)`` at 380 nm), a power of two
+    in [:data:`MIN_SIZE`, :data:`MAX_SIZE`].
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+
+    Returns
+    -------
+    int
+        The table size.
+
+    >>> from ocio_thinfilm.physics.films import parse_films
+    >>> default_size(parse_films('[films.S]\\nstack = ["air", "water", "air"]')["S"])
+    1024
+    """
+    lo, hi = film.range_um
+    n = float(np.abs(film.varying.index(np.array([380.0]))).max())
+    fringes = (hi - lo) * 1000.0 / (380.0 / (2.0 * n))
+    size = 1 << max(0, math.ceil(math.log2(max(fringes * NODES_PER_FRINGE, 2.0))))
+    return int(min(MAX_SIZE, max(MIN_SIZE, size)))
+
+
+def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
+    """CIE XYZ (D65, perfect reflector Y = 1) of ``film`` at physical thicknesses of its
+    varying layer (um): its reflectance spectra on :func:`films.film_wavelengths
+    <ocio_thinfilm.physics.films.film_wavelengths>` through the trapezoid weights.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    thickness_um : numpy.ndarray
+        Thicknesses in um, >= 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``thickness_um.shape + (3,)``.
+    """
+    t_nm = np.asarray(thickness_um, dtype=np.float64) * 1000.0
+    flat = t_nm.reshape(-1)
+    top = max(float(flat.max()) if flat.size else 0.0, film.range_um[1] * 1000.0)
+    wl = films_module.film_wavelengths(film, top)
+    w = colorimetry.spectral_weights(wl)
+    out = np.empty((flat.size, 3))
+    rows = max(1, _BLOCK_SAMPLES // wl.size)
+    for start in range(0, flat.size, rows):
+        block = flat[start : start + rows]
+        out[start : start + rows] = films_module.film_reflectance(film, block, wl) @ w
+    return out.reshape(t_nm.shape + (3,))
+
+
+@cache.memoize(maxsize=32)
+def _film_table(film: Film, size: int) -> Table1D:
+    lo, hi = film.range_um
+    nodes = np.linspace(lo, hi, size)
+    values = film_XYZ(film, nodes)
+    scale = ""
+    if film.normalise:
+        brightest = float(values[:, 1].max())
+        if brightest > 0:
+            values /= brightest
+            scale = f" Normalised: scaled by 1/{brightest:.6g} (brightest entry Y = 1)."
+    values.setflags(write=False)
+    nodes.setflags(write=False)
+    model = (
+        "exact unpolarised reflectance (transfer matrices, Fresnel amplitudes, dispersive "
+        "complex indices)"
+        if film.model == "exact"
+        else "Smits & Meyer 1990 Eq. 7/8 with t' = n t cos(theta_t), band-limited"
+    )
+    return Table1D(
+        kind="film",
+        values=values,
+        encoding="linear",
+        domain_min=lo,
+        domain_max=hi,
+        nodes=nodes,
+        name=film.name,
+        pixel=f"physical thickness of the {film.varying.name} layer in micrometres, "
+        "all channels equal",
+        description=(
+            f"Thin film {film.key}: {film.describe()}; {model}; CIE XYZ (D65, CIE 1931 "
+            f"2 deg, perfect reflector Y = 1) against the {film.varying.name} layer's "
+            f"physical thickness {lo:g}-{hi:g} um (clamped outside); {size}-entry Lut1D."
+            f"{scale}"
+        ),
+    )
+
+
+def film_table(film: Film, size: int | None = None) -> Table1D:
+    """The 1D table of a user's film: physical thickness (um) -> CIE XYZ.
+
+    Parameters
+    ----------
+    film : Film
+        The film (:func:`ocio_thinfilm.physics.films.read_films`).
+    size : int, optional
+        Entries, uniform over ``film.range_um``, in [2, 2**20] (default
+        :func:`default_size`).
+
+    Returns
+    -------
+    Table1D
+        Linear encoding over the film's range; cached per film object and size.
+
+    Examples
+    --------
+    A free soap film thinner than any wavelength reflects nothing:
+
+    >>> from ocio_thinfilm.physics.films import parse_films
+    >>> soap = parse_films('[films.S]\\nstack = ["air", "soap film", "air"]')["S"]
+    >>> table = film_table(soap)
+    >>> table.lookup(0.0).round(6).tolist()
+    [0.0, 0.0, 0.0]
+    """
+    size = default_size(film) if size is None else as_count("size", size, 2, 1 << 20)
+    return _film_table(film, size)
