@@ -72,6 +72,7 @@ import numpy as np
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.io import ParameterError, StrPath, atomic_file, check_writable
+from ocio_thinfilm.export import view_fit
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 from ocio_thinfilm.physics.sampling import as_pair
 
@@ -134,6 +135,9 @@ THIN_FILM_INPUTS = {
     "Thin Film Morpho Iridescence": ("cos(theta), the facing ratio N.V", (0.0, 1.0), 1024),
 }
 SHAPER_SPACE = "ocio-thinfilm export shaper"
+#: Formats whose 3D table holds fitted node values (:mod:`ocio_thinfilm.export.view_fit`,
+#: lattice regression) rather than samples of the view.
+FITTED_FORMATS = ("cube", "csp")
 #: Linear spaces whose shaper starts at 0: AP1 is the ACES working gamut (ACEScg,
 #: ACEScct), and a mirrored square root spends a fifth of the grid on the few object
 #: colours outside it (down to -0.09) -- measured ACEScct -> sRGB 65^3: max ΔE2000
@@ -368,11 +372,29 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
         baker.setShaperSize(SHAPER_SIZE)
     baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
     text = baker.bake()
+    if fmt in FITTED_FORMATS and target is None:
+        nodes = view_fit.fitted_nodes(source, display, view, size, bool(shaper))
+        text = _with_table(text, nodes)
     if fmt == "cube":
         text = _without_trailing_zeros(text)
     return text if text.endswith("\n") else text + "\n"
 
 
+def _with_table(text, nodes):
+    """The baked ``text`` (.cube or .csp) with its 3D table, the last size^3 lines of
+    three numbers (red fastest in both formats), replaced by ``nodes`` (indexed
+    [r, g, b]), printed as OCIO's writers print them (6 decimals)."""
+    size = nodes.shape[0]
+    lines = text.split("\n")
+    rows = [i for i, line in enumerate(lines) if _TABLE_ROW.match(line)][-(size**3) :]
+    flat = np.asarray(nodes, dtype=np.float64).transpose(2, 1, 0, 3).reshape(-1, 3) + 0.0
+    for i, (r, g, b) in zip(rows, flat, strict=True):
+        lines[i] = f"{r:.6f} {g:.6f} {b:.6f}".replace("-0.000000", "0.000000")
+    return "\n".join(lines)
+
+
+#: A row of a 3D table: three numbers.
+_TABLE_ROW = re.compile(r"^\s*[-+0-9.eE]+ [-+0-9.eE]+ [-+0-9.eE]+\s*$")
 #: A line of a LUT's table: numbers only (OCIO's .cube writer prints them as %.6f).
 _TABLE_LINE = re.compile(r"^[-+0-9. ]+$", re.MULTILINE)
 _TRAILING_ZEROS = re.compile(r"(?:(\.\d*?[1-9])|\.)0*(?=[ \n]|$)")
