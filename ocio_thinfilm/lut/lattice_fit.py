@@ -156,15 +156,18 @@ class _Banded:
     """A symmetric matrix over the nodes with 27 bands (offsets in {-1, 0, 1}^3):
     ``bands[b, i]`` is the entry (i, i + shift[b])."""
 
-    def __init__(self, size: int):
+    def __init__(self, size: int, channels: int = 1):
         self.size = size
         self.n = size**3
-        self.bands = np.zeros((27, self.n))
+        self.bands = np.zeros((27, self.n, channels))
         self.shift = _OFFSETS @ np.array([size * size, size, 1])
         self.pad = size * size + size + 1
 
     def add(self, row: np.ndarray, band: int, values: np.ndarray) -> None:
-        self.bands[band] += np.bincount(row, weights=values, minlength=self.n)
+        """Add ``values`` (shape (len(row),) or (len(row), channels)) at (row, band)."""
+        values = np.broadcast_to(values.reshape(len(row), -1), (len(row), self.bands.shape[2]))
+        for ch in range(self.bands.shape[2]):
+            self.bands[band, :, ch] += np.bincount(row, weights=values[:, ch], minlength=self.n)
 
     def mirror(self) -> None:
         """Fill the bands below the centre from those above (the matrix is symmetric:
@@ -176,12 +179,12 @@ class _Banded:
     def matvec(self, x: np.ndarray) -> np.ndarray:
         padded = np.zeros((self.n + 2 * self.pad, x.shape[1]))
         padded[self.pad : self.pad + self.n] = x
-        y = self.bands[_CENTRE, :, None] * x
+        y = self.bands[_CENTRE] * x
         term = np.empty_like(x)
         for band, shift in enumerate(self.shift):
             if band != _CENTRE:
                 start = self.pad + shift
-                np.multiply(self.bands[band, :, None], padded[start : start + self.n], out=term)
+                np.multiply(self.bands[band], padded[start : start + self.n], out=term)
                 y += term
         return y
 
@@ -217,7 +220,9 @@ def fit_lattice(
     prior_weight: float = 1e-3,
     smoothness: float = 1e-2,
     iterations: int = 400,
-    tolerance: float = 1e-7,
+    tolerance: float = 1e-4,
+    clamp: tuple[float, float] | None = None,
+    passes: int = 3,
 ) -> np.ndarray:
     """Node values whose interpolation best fits ``values`` at ``coords`` (lattice
     regression, Garcia & Gupta 2009).
@@ -253,6 +258,13 @@ def fit_lattice(
     tolerance : float
         Stop when the preconditioned residual norm falls below this fraction of the
         right-hand side's.
+    clamp : (float, float), optional
+        The range hosts clamp the output to (display code values: (0, 1)). A sample's
+        channel whose target and interpolated value both lie at or beyond the same end
+        costs nothing: the fit is solved ``passes`` times, each time dropping those
+        (an active-set iteration on the one-sided squares).
+    passes : int
+        Solves with ``clamp``.
 
     Returns
     -------
@@ -297,39 +309,74 @@ def fit_lattice(
     share = w / len(methods)
     index, _ = cell_weights(c, size, "trilinear")
     a = [cell_weights(c, size, m)[1] for m in methods]
-    # the fit solves for the correction d = x - prior: residuals of the prior
-    gathered = [x0[index[:, k]] for k in range(8)]
-    r = []
+    d = np.zeros_like(x0)
+    active = None
+    for _ in range(passes if clamp is not None else 1):
+        matrix, rhs = _normal_equations(index, a, share, active, x0, y, size)
+        matrix.bands[_CENTRE] += prior_weight
+        if smoothness > 0:
+            _add_neighbour_smoothing(matrix, smoothness)
+        d = _conjugate_gradient(matrix, rhs, d, iterations, tolerance)
+        if clamp is not None:
+            active = _unclamped(index, a, x0 + d, y, clamp)
+    return (x0 + d).reshape(P.shape)
+
+
+def _interpolated(index: np.ndarray, a: np.ndarray, x: np.ndarray) -> np.ndarray:
+    out = np.zeros((len(index), x.shape[1]))
+    for k in range(8):
+        out += a[:, k, None] * x[index[:, k]]
+    return out
+
+
+def _unclamped(index, a, x, y, clamp):
+    """Per method, 1 where a sample's channel counts, 0 where both the target and the
+    interpolated value lie at or beyond the same end of ``clamp`` (the host's clamp
+    makes them equal)."""
+    lo, hi = clamp
+    masks = []
     for am in a:
-        rm = y.copy()
-        for k in range(8):
-            rm -= am[:, k, None] * gathered[k]
-        r.append(rm)
-    del gathered
+        f = _interpolated(index, am, x)
+        gone = ((y <= lo + 1e-6) & (f <= lo)) | ((y >= hi - 1e-6) & (f >= hi))
+        masks.append((~gone).astype(np.float64))
+    return masks
+
+
+def _normal_equations(index, a, share, active, x0, y, size):
+    """The banded normal matrix (without regularisers) and right-hand side of the
+    correction d = x - prior; ``active``: per method, per-sample-and-channel weights
+    (or None: all 1, one matrix for every channel)."""
+    n_nodes = size**3
+    channels = y.shape[1]
+    act = active if active is not None else [np.ones((1, 1))] * len(a)
+    # residuals of the prior, per method
+    r = [(y - _interpolated(index, am, x0)) * m for am, m in zip(a, act, strict=True)]
     rhs = np.zeros_like(x0)
     for k in range(8):
         contribution = sum(am[:, k, None] * rm for am, rm in zip(a, r, strict=True))
-        contribution *= share[:, None]
-        for ch in range(y.shape[1]):
+        contribution = contribution * share[:, None]
+        for ch in range(channels):
             rhs[:, ch] += np.bincount(index[:, k], weights=contribution[:, ch], minlength=n_nodes)
     # normal matrix: the pairs (k, j) with j's band at or above the centre, then mirrored
-    matrix = _Banded(size)
+    matrix = _Banded(size, 1 if active is None else channels)
     for k in range(8):
         for j in range(8):
             band = int(_band(_CORNERS[j] - _CORNERS[k]))
             if band < _CENTRE or (band == _CENTRE and j != k):
                 continue
-            coefficient = sum(am[:, k] * am[:, j] for am in a) * share
+            coefficient = sum(
+                (am[:, k] * am[:, j] * share)[:, None] * m for am, m in zip(a, act, strict=True)
+            )
             matrix.add(index[:, k], band, coefficient)
     matrix.mirror()
-    matrix.bands[_CENTRE] += prior_weight
-    if smoothness > 0:
-        _add_neighbour_smoothing(matrix, smoothness)
+    return matrix, rhs
 
-    # Jacobi-preconditioned conjugate gradient, one system per channel
-    inv_diag = 1.0 / matrix.bands[_CENTRE, :, None]
-    d = np.zeros_like(x0)
-    res = rhs.copy()
+
+def _conjugate_gradient(matrix, rhs, d, iterations, tolerance):
+    """Jacobi-preconditioned conjugate gradient from ``d``, one system per channel."""
+    inv_diag = 1.0 / matrix.bands[_CENTRE]
+    d = d.copy()
+    res = rhs - matrix.matvec(d)
     z = inv_diag * res
     p = z.copy()
     rz = _dot(res, z)
@@ -338,11 +385,12 @@ def fit_lattice(
         if np.all(np.sqrt(rz) <= stop):
             break
         q = matrix.matvec(p)
-        alpha = rz / np.where(_dot(p, q) > 0, _dot(p, q), 1.0)
+        pq = _dot(p, q)
+        alpha = rz / np.where(pq > 0, pq, 1.0)
         d += alpha * p
         res -= alpha * q
         z = inv_diag * res
         rz_new = _dot(res, z)
         p = z + (rz_new / np.where(rz > 0, rz, 1.0)) * p
         rz = rz_new
-    return (x0 + d).reshape(P.shape)
+    return d
