@@ -160,9 +160,9 @@ def main(argv=None):
         print(json.dumps(rows[-1]))
         for weight in args.weights:
             t0 = time.perf_counter()
-            # the computation itself, not its memo (on disk or in memory)
-            fit = view_fit._fitted.function.__wrapped__
-            nodes = fit("ACEScct", display, VIEW, 65, False, weight)
+            # the computation itself, not its memo (on disk), with a fresh config
+            cfg, _ = export_view.view_config("ACEScct", 65, display)
+            nodes = view_fit.fit_view_table(cfg, "ACEScct", display, VIEW, 65, weight)
             fit_s = time.perf_counter() - t0
             path = Path(tmp) / f"w{weight:g}.cube"
             path.write_text(export_view._with_table(text, nodes))

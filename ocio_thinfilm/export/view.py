@@ -387,11 +387,30 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
     baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
     text = baker.bake()
     if target is None and _fitted_table(source, fmt, shaper, display):
-        nodes = view_fit.fitted_nodes(source, display, view, size, bool(shaper))
+        nodes = _fitted_nodes(source, display, view, size, bool(shaper))
         text = _with_table(text, nodes)
     if fmt == "cube":
         text = _without_trailing_zeros(text)
     return text if text.endswith("\n") else text + "\n"
+
+
+@colorimetry.persistent(
+    modules=(
+        "ocio_thinfilm.export.view",
+        "ocio_thinfilm.export.view_fit",
+        "ocio_thinfilm.lut.lattice_fit",
+        "ocio_thinfilm.colour.clip",
+        "ocio_thinfilm.colour.compress",
+        "ocio_thinfilm.lut.clip_lut",
+    )
+)
+def _fitted_nodes(source, display, view, size, shaper):
+    """:func:`ocio_thinfilm.export.view_fit.fit_view_table` for ``source`` (over its
+    code values, or with ``shaper`` over the shaper of :func:`view_config`), memoised
+    on disk (a fit takes seconds)."""
+    cfg, shaper_space = view_config(source, size, display)
+    start = shaper_space if shaper and shaper_space else source
+    return view_fit.fit_view_table(cfg, start, display, view, size)
 
 
 def _fitted_table(source, fmt, shaper, display):

@@ -22,11 +22,12 @@ colour-science's ``LUT3D.apply``). Fitted nodes may lie outside [0, 1] (hosts cl
 the display code values); the file's input side (its grid, its shaper) is unchanged.
 
 The samples come from a fixed seed and the fit sums in a fixed order, so a bake is
-byte-identical across runs; the nodes are memoised on disk
-(:func:`ocio_thinfilm.colour.colorimetry.persistent`).
+byte-identical across runs (:mod:`ocio_thinfilm.export.view` memoises the tables on
+disk).
 
-- :func:`fitted_nodes` -- the fitted table of a view for a grid over a source or shaper
-  space, shape (size, size, size, 3), indexed [r, g, b].
+- :func:`fit_view_table` -- the fitted table of a view for a grid over a colour space
+  of a config, shape (size, size, size, 3), indexed [r, g, b];
+- :func:`training_colours` -- the colours the fit is trained on.
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import lattice_fit, ocio_ops
 
-__all__ = ["INSIDE_WEIGHT", "SPREAD_WEIGHT", "SAMPLES", "fitted_nodes", "training_colours"]
+__all__ = ["INSIDE_WEIGHT", "SPREAD_WEIGHT", "SAMPLES", "fit_view_table", "training_colours"]
 
 #: Weight of the training colours inside the display's gamut (the others weigh 1):
 #: the point chosen on the weight curve of ``benchmarks/bench_view_fit.py``.
@@ -128,20 +129,19 @@ def _inside(display, XYZ):
     return clip.in_gamut(colorimetry.XYZ_to_RGB(XYZ, entry.name))
 
 
-@colorimetry.persistent(
-    modules=(
-        "ocio_thinfilm.export.view",
-        "ocio_thinfilm.lut.lattice_fit",
-        "ocio_thinfilm.colour.clip",
-        "ocio_thinfilm.colour.compress",
-        "ocio_thinfilm.lut.clip_lut",
-    )
-)
-def _fitted(source, display, view, size, shaper, inside_weight):
-    from ocio_thinfilm.export import view as export_view
-
-    cfg, shaper_space = export_view.view_config(source, size, display)
-    start = shaper_space if shaper else source
+def fit_view_table(
+    cfg: ocio_ops.Config,
+    start: str,
+    display: str,
+    view: str,
+    size: int,
+    inside_weight: float = INSIDE_WEIGHT,
+) -> np.ndarray:
+    """The fitted 3D table of ``display`` / ``view`` over a ``size``^3 grid of the
+    colour space ``start`` of ``cfg`` (a source space whose code values are the grid,
+    or the shaper space of :func:`ocio_thinfilm.export.view.view_config`), shape
+    (size, size, size, 3), indexed [r, g, b]: display code values, possibly outside
+    [0, 1]. The config must have ``CIE-XYZ-D65``."""
     g = np.linspace(0.0, 1.0, size)
     grid = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)
     prior = _view_codes(cfg, start, display, view, grid, _apply(cfg, start, "CIE-XYZ-D65", grid))
@@ -160,19 +160,3 @@ def _fitted(source, display, view, size, shaper, inside_weight):
         smoothness=SMOOTHNESS,
         tolerance=TOLERANCE,
     )
-
-
-def fitted_nodes(
-    source: str,
-    display: str,
-    view: str,
-    size: int,
-    shaper: bool,
-    inside_weight: float = INSIDE_WEIGHT,
-) -> np.ndarray:
-    """The fitted 3D table of ``source`` -> ``display`` / ``view`` over a ``size``^3
-    grid (over the source's code values, or with ``shaper`` over the shaper of
-    :func:`ocio_thinfilm.export.view.view_config`), shape (size, size, size, 3),
-    indexed [r, g, b]: display code values, possibly outside [0, 1]. A copy (memoised
-    on disk)."""
-    return np.array(_fitted(source, display, view, int(size), bool(shaper), float(inside_weight)))
