@@ -185,7 +185,9 @@ def write_markdown(path, display, rows, hosts):
         "colours inside the gamut weighted `weight` times, applied by each host at its "
         "default interpolation. ΔE2000 p99 / max against the analytic clip; object "
         "colours inside AP1 (the tests' set), AP0 colours and spectral-line mixtures "
-        "inside AP1, split inside / outside the display's gamut.",
+        "inside AP1, split inside / outside the display's gamut. `fit s`: the config in "
+        "memory, the training colours and the fit (no disk memo), on the machine that ran "
+        "the benchmark. The shipped weight is `view_fit.INSIDE_WEIGHT`.",
         "",
     ]
     for name in ("object", "ap0", "mixtures"):
