@@ -409,8 +409,11 @@ def _fitted_nodes(source, display, view, size, shaper):
     code values, or with ``shaper`` over the shaper of :func:`view_config`), memoised
     on disk (a fit takes seconds)."""
     cfg, shaper_space = view_config(source, size, display)
-    start = shaper_space if shaper and shaper_space else source
-    return view_fit.fit_view_table(cfg, start, display, view, size)
+    if shaper and shaper_space:
+        return view_fit.fit_view_table(
+            cfg, shaper_space, display, view, size, object_weight=view_fit.SHAPER_OBJECT_WEIGHT
+        )
+    return view_fit.fit_view_table(cfg, source, display, view, size)
 
 
 def _fitted_table(source, fmt, shaper, display):

@@ -9,7 +9,7 @@ weighted :data:`INSIDE_WEIGHT` times the others:
 - colours inside the display's gamut, uniform in display code values;
 - object colours: random reflectances of 1 to 3 rectangular bands on a base (a family
   that reaches the optimal colours, the object-colour solid's boundary), many of them
-  bright;
+  bright, weight :data:`OBJECT_WEIGHT` (:data:`SHAPER_OBJECT_WEIGHT` over a shaper);
 - mixtures of up to three spectral lines at random luminance (saturated emissive
   colours), weight :data:`SPREAD_WEIGHT`.
 
@@ -38,11 +38,24 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import lattice_fit, ocio_ops
 
-__all__ = ["INSIDE_WEIGHT", "SPREAD_WEIGHT", "SAMPLES", "fit_view_table", "training_colours"]
+__all__ = [
+    "INSIDE_WEIGHT",
+    "OBJECT_WEIGHT",
+    "SHAPER_OBJECT_WEIGHT",
+    "SPREAD_WEIGHT",
+    "SAMPLES",
+    "fit_view_table",
+    "training_colours",
+]
 
 #: Weight of the training colours inside the display's gamut (the others weigh 1):
 #: the point chosen on the weight curve of ``benchmarks/bench_view_fit.py``.
 INSIDE_WEIGHT = 10.0
+#: Weight of the object colours outside the gamut: over a grid uniform in the input's
+#: code values (the plain ACEScct .cube) 1; over a shaper 3 (measured for linear
+#: Rec.709 -> sRGB: object colours max ΔE2000 4.04-4.07 at 1, 3.76-3.79 at 3).
+OBJECT_WEIGHT = 1.0
+SHAPER_OBJECT_WEIGHT = 3.0
 #: Weight of the spectral-line mixtures (far outside most gamuts).
 SPREAD_WEIGHT = 0.3
 #: Training colours per family: inside the gamut, object colours, line mixtures.
@@ -140,12 +153,15 @@ def fit_view_table(
     view: str,
     size: int,
     inside_weight: float = INSIDE_WEIGHT,
+    object_weight: float = OBJECT_WEIGHT,
 ) -> np.ndarray:
     """The fitted 3D table of ``display`` / ``view`` over a ``size``^3 grid of the
     colour space ``start`` of ``cfg`` (a source space whose code values are the grid,
     or the shaper space of :func:`ocio_thinfilm.export.view.view_config`), shape
     (size, size, size, 3), indexed [r, g, b]: display code values, possibly outside
-    [0, 1]. The config must have ``CIE-XYZ-D65``."""
+    [0, 1]. The config must have ``CIE-XYZ-D65``. ``inside_weight``,
+    ``object_weight``: the weights of the training colours inside the gamut and of the
+    object colours outside it."""
     g = np.linspace(0.0, 1.0, size)
     grid = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)
     prior = _view_codes(cfg, start, display, view, grid, _apply(cfg, start, "CIE-XYZ-D65", grid))
@@ -153,7 +169,9 @@ def fit_view_table(
     coords = np.clip(_apply(cfg, "CIE-XYZ-D65", start, XYZ), 0.0, 1.0)
     values = _view_codes(cfg, start, display, view, coords, XYZ)
     weights = np.where(
-        _inside(display, XYZ), inside_weight, np.where(family == 2, SPREAD_WEIGHT, 1.0)
+        _inside(display, XYZ),
+        inside_weight,
+        np.where(family == 2, SPREAD_WEIGHT, object_weight),
     )
     prior = _snapped(prior.reshape(size, size, size, 3))
     nodes = lattice_fit.fit_lattice(
