@@ -14,7 +14,9 @@ absent), OpenColorIO's ``FileTransform`` and colour-science's ``LUT3D.apply``
 spectral-line mixtures), split into colours inside the display's gamut and outside it.
 
 Writes ``<out>/bench_view_fit.json``, ``.md`` and ``.png`` (the curve: p99 and max
-against the weight, inside and outside, per host). Prints its own measurements.
+against the weight, inside and outside, per host), and (for sRGB) the object-colour
+table in docs/gamut_map.md between its markers (:func:`docs_markdown` of the JSON).
+Prints its own measurements.
 """
 
 from __future__ import annotations
@@ -39,6 +41,8 @@ from ocio_thinfilm.export import view_fit  # noqa: E402
 
 VIEW = "Constant-Lightness Clip"
 FFMPEG = shutil.which("ffmpeg")
+DOC = Path(__file__).resolve().parents[1] / "docs" / "gamut_map.md"
+BEGIN, END = "<!-- bench_view_fit:begin -->", "<!-- bench_view_fit:end -->"
 
 
 def acescct(XYZ):
@@ -174,6 +178,47 @@ def main(argv=None):
     write_markdown(out / "bench_view_fit.md", display, rows, list(hosts))
     plot(out / "bench_view_fit.png", display, rows, list(hosts))
     print(f"wrote {out}/bench_view_fit.{{json,md,png}}")
+    if display == "sRGB" and out == DOC.parents[1] / "reports":
+        update_doc(dict(display=display, rows=rows))
+
+
+def _hosts(rows):
+    return [h for h in ("ffmpeg", "ocio", "colour") if f"object/{h}/inside" in rows[0]]
+
+
+def table(rows, hosts, name="object"):
+    """The markdown table of one colour set: a row per weight, p99 / max per host,
+    inside and outside the gamut."""
+    head = ["weight", "fit s"] + [f"{h} {p}" for h in hosts for p in ("inside", "outside")]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for row in rows:
+        weight = row["weight"]
+        label = str(weight)
+        if weight == view_fit.INSIDE_WEIGHT:
+            label += " (shipped)"
+        cells = [label, f"{row['fit_s']:.1f}"]
+        for h in hosts:
+            for p in ("inside", "outside"):
+                v = row.get(f"{name}/{h}/{p}")
+                cells.append("-" if v is None else f"{v[0]:.2f} / {v[1]:.2f}")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def docs_markdown(result):
+    """docs/gamut_map.md's block: the object-colour table of ``result`` (the JSON)."""
+    return table(result["rows"], _hosts(result["rows"]))
+
+
+def update_doc(result, path=DOC):
+    import re
+
+    text = path.read_text()
+    if BEGIN not in text:
+        raise SystemExit(f"{path} has no {BEGIN} marker")
+    block = f"{BEGIN}\n{docs_markdown(result)}\n{END}"
+    text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
+    path.write_text(text)
 
 
 def write_markdown(path, display, rows, hosts):
@@ -191,16 +236,7 @@ def write_markdown(path, display, rows, hosts):
         "",
     ]
     for name in ("object", "ap0", "mixtures"):
-        head = ["weight", "fit s"] + [f"{h} {p}" for h in hosts for p in ("inside", "outside")]
-        lines += [f"## {name}", "", "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-        for row in rows:
-            cells = [str(row["weight"]), f"{row['fit_s']:.1f}"]
-            for h in hosts:
-                for p in ("inside", "outside"):
-                    v = row.get(f"{name}/{h}/{p}")
-                    cells.append("-" if v is None else f"{v[0]:.2f} / {v[1]:.2f}")
-            lines.append("| " + " | ".join(cells) + " |")
-        lines.append("")
+        lines += [f"## {name}", "", table(rows, hosts, name), ""]
     path.write_text("\n".join(lines))
 
 
@@ -214,7 +250,10 @@ def plot(path, display, rows, hosts):
     w = [r["weight"] for r in fitted]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharex=True)
     for ax, stat, label in ((axes[0], 0, "p99"), (axes[1], 1, "max")):
-        for h, colour in zip(hosts, ("C0", "C1", "C2"), strict=False):
+        # OCIO and colour-science coincide: drawn wider and below
+        styles = {"ffmpeg": ("C0", "o", 1.5), "ocio": ("C1", "s", 4.0), "colour": ("C2", "^", 1.2)}
+        for h in hosts:
+            colour, marker, lw = styles[h]
             for part, style in (("inside", "-"), ("outside", "--")):
                 key = f"object/{h}/{part}"
                 ax.plot(
@@ -222,7 +261,8 @@ def plot(path, display, rows, hosts):
                     [r[key][stat] for r in fitted],
                     style,
                     color=colour,
-                    marker="o",
+                    marker=marker,
+                    lw=lw,
                     label=f"{h} {part}",
                 )
                 ax.axhline(rows[0][key][stat], color=colour, ls=style, lw=0.6, alpha=0.5)

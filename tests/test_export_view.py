@@ -838,3 +838,19 @@ def test_acescct_hdr_csp_in_ffmpeg(hdr_luts, inside_AP1):
     mean, p99, worst = _stats(_hdr_dE(ffmpeg_apply(path, cct), XYZ, "Rec.2100-PQ"))
     print(f"ACEScct->Rec.2100-PQ .csp (ffmpeg): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
     assert p99 <= 1.0 and worst <= 3.0
+
+
+def test_documented_fit_table_comes_from_the_benchmark(load_benchmark, marked):
+    """docs/gamut_map.md's table of the fitted plain .cube over the inside-gamut weight
+    is what benchmarks/bench_view_fit.py renders from reports/bench_view_fit.json, and
+    its shipped row is the weight the package uses."""
+    import json
+
+    from ocio_thinfilm.export import view_fit
+
+    root = Path(__file__).resolve().parents[1]
+    bench = load_benchmark("bench_view_fit")
+    result = json.loads((root / "reports" / "bench_view_fit.json").read_text())
+    doc = (root / "docs" / "gamut_map.md").read_text()
+    assert marked(doc, bench.BEGIN, bench.END) == bench.docs_markdown(result)
+    assert view_fit.INSIDE_WEIGHT in [row["weight"] for row in result["rows"]]
