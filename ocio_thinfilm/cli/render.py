@@ -211,8 +211,10 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _user_film(args, names):
-    """(the TableSpec of ``--films``/``--film``, {colour space: transform}) or (None,
-    {}): the film's table, as ``bake --films`` writes it, for the oil or soap scene.
+    """Return the table of the user's film of ``--films``/``--film`` for the oil or soap scene.
+
+    The result is (the TableSpec of ``--films``/``--film``, {colour space: transform}), the
+    film's table as ``bake --films`` writes it, or (None, {}) without ``--films``.
     """
     films_file, key = getattr(args, "films", None), getattr(args, "film", None)
     if films_file is None:

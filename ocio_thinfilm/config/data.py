@@ -775,8 +775,10 @@ FILM_LUT_PREFIX = "ThinFilm_User_"
 
 
 def film_lut_stem(film: Any) -> str:
-    """The config's LUT file stem of a user's film: :data:`FILM_LUT_PREFIX` and its key
-    with every character but letters, digits and ``_`` as ``_``.
+    """Return the config's LUT file stem of a user's film.
+
+    The stem is :data:`FILM_LUT_PREFIX` and the film's key with every character but
+    letters, digits and ``_`` as ``_``.
 
     Parameters
     ----------

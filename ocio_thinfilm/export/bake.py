@@ -324,8 +324,10 @@ def bake(
 
 
 def load_films(films: StrPath | Sequence[Any] | None) -> list:
-    """Films for a bake: read from a film file (a path), or a sequence of
-    :class:`~ocio_thinfilm.physics.films.Film` as they are; ``None``: none.
+    """Return the films for a bake.
+
+    They are read from a film file (a path), or taken as they are from a sequence of
+    :class:`~ocio_thinfilm.physics.films.Film`; ``None`` gives none.
 
     Parameters
     ----------
@@ -336,6 +338,14 @@ def load_films(films: StrPath | Sequence[Any] | None) -> list:
     -------
     list
         The films, in the file's order.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``films``) a film file that cannot be read or is not a valid film file
+        (:func:`ocio_thinfilm.physics.films.read_films`).
+    TypeError
+        If the sequence holds something other than films.
     """
     from ocio_thinfilm.physics import films as films_module
 

@@ -37,9 +37,10 @@ _DATETIME = "2000:01:01 00:00:00"
 
 
 def pick_film(films: StrPath | Any, film: str | None) -> Any:
-    """The film ``film`` (its key or colour space name) of a film file (or of the
-    films :func:`ocio_thinfilm.export.bake.load_films` accepts); with one film in the
-    file ``film`` may be left out.
+    """Return the film ``film`` (its key or colour space name) of a film file.
+
+    ``films`` may also be any films :func:`ocio_thinfilm.export.bake.load_films`
+    accepts; with one film in the file ``film`` may be left out.
 
     Parameters
     ----------
@@ -51,6 +52,7 @@ def pick_film(films: StrPath | Any, film: str | None) -> Any:
     Returns
     -------
     Film
+        The film chosen.
 
     Raises
     ------
@@ -69,7 +71,7 @@ def pick_film(films: StrPath | Any, film: str | None) -> Any:
 
 
 def film_contents(film: Any, size: int | None = None) -> tuple[np.ndarray, Any, dict[str, Any]]:
-    """A film's table for :func:`ocio_thinfilm.export.files.write_lut`.
+    """Return a film's table for :func:`ocio_thinfilm.export.files.write_lut`.
 
     Parameters
     ----------
@@ -134,6 +136,15 @@ def export_film(
     list of pathlib.Path
         The files written, each atomically (checked, then renamed into place) after
         every argument and the film were checked.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``films``, ``film``, ``size``, ``fmt`` or ``out``) an unreadable film file, an
+        unknown film, a size that is not an integer in [2, 65536], an unknown format or
+        an ``out`` that is neither a directory nor a file of one of :data:`FILM_FORMATS`.
+    TypeError
+        If ``films`` holds something other than films, or ``size`` is not a number.
     """
     chosen = pick_film(films, film)
     if size is not None:

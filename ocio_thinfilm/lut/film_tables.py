@@ -34,9 +34,11 @@ _BLOCK_SAMPLES = 1 << 21
 
 
 def default_size(film: Film) -> int:
-    """Entries of a film's table: :data:`NODES_PER_FRINGE` nodes per shortest fringe of
-    the varying layer (a thickness step of ``380 nm / (2 n)`` at 380 nm), a power of two
-    in [:data:`MIN_SIZE`, :data:`MAX_SIZE`].
+    r"""Return the number of entries of a film's table.
+
+    That is :data:`NODES_PER_FRINGE` nodes per shortest fringe of the varying layer (a
+    thickness step of ``380 nm / (2 n)`` at 380 nm), a power of two in
+    [:data:`MIN_SIZE`, :data:`MAX_SIZE`].
 
     Parameters
     ----------
@@ -48,8 +50,10 @@ def default_size(film: Film) -> int:
     int
         The table size.
 
+    Examples
+    --------
     >>> from ocio_thinfilm.physics.films import parse_films
-    >>> default_size(parse_films('[films.S]\\nstack = ["air", "water", "air"]')["S"])
+    >>> default_size(parse_films('[films.S]\nstack = ["air", "water", "air"]')["S"])
     1024
     """
     lo, hi = film.range_um
@@ -60,8 +64,10 @@ def default_size(film: Film) -> int:
 
 
 def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
-    """CIE XYZ (D65, perfect reflector Y = 1) of ``film`` at physical thicknesses of its
-    varying layer (um): its reflectance spectra on :func:`films.film_wavelengths
+    """Return CIE XYZ of ``film`` at physical thicknesses of its varying layer (um).
+
+    The colours are CIE XYZ (D65, perfect reflector Y = 1) of the film's reflectance
+    spectra on :func:`films.film_wavelengths
     <ocio_thinfilm.physics.films.film_wavelengths>` through the trapezoid weights.
 
     Parameters
@@ -128,7 +134,7 @@ def _film_table(film: Film, size: int) -> Table1D:
 
 
 def film_table(film: Film, size: int | None = None) -> Table1D:
-    """The 1D table of a user's film: physical thickness (um) -> CIE XYZ.
+    r"""Return the 1D table of a user's film: physical thickness (um) -> CIE XYZ.
 
     Parameters
     ----------
@@ -143,12 +149,19 @@ def film_table(film: Film, size: int | None = None) -> Table1D:
     Table1D
         Linear encoding over the film's range; cached per film object and size.
 
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``size``) a size that is not a finite integer in [2, 2**20].
+    TypeError
+        If ``size`` is not a number.
+
     Examples
     --------
     A free soap film thinner than any wavelength reflects nothing:
 
     >>> from ocio_thinfilm.physics.films import parse_films
-    >>> soap = parse_films('[films.S]\\nstack = ["air", "soap film", "air"]')["S"]
+    >>> soap = parse_films('[films.S]\nstack = ["air", "soap film", "air"]')["S"]
     >>> table = film_table(soap)
     >>> table.lookup(0.0).round(6).tolist()
     [0.0, 0.0, 0.0]

@@ -363,8 +363,9 @@ def transfer_matrix_reflectance(
 def _rouard(
     media: list[np.ndarray], cosines: list[np.ndarray], z: list[np.ndarray], shape: tuple
 ) -> np.ndarray:
-    """Unpolarised reflectance of the stack ``media`` (incident, layers, substrate)
-    with the layers' round-trip phasors ``z``: Rouard's recursion from the substrate
+    """Return the unpolarised reflectance of the stack ``media`` (incident, layers, substrate).
+
+    The layers' round-trip phasors are ``z``; Rouard's recursion runs from the substrate
     up, per polarisation (see :func:`transfer_matrix_reflectance`).
     """
     out = np.zeros(shape)
@@ -475,8 +476,10 @@ def adequate_step(
     maximum: float = 5.0,
     minimum: float = 0.02,
 ) -> float:
-    """A wavelength step (nm) that resolves the interference of optical paths up to
-    ``optical_path_nm`` (round trip, ``P = 2 sum n d cos(theta)``) down to ``lo`` nm.
+    """Return a wavelength step (nm) that resolves the interference of optical paths.
+
+    The step resolves optical paths up to ``optical_path_nm`` (round trip,
+    ``P = 2 sum n d cos(theta)``) down to ``lo`` nm.
 
     The phase ``2 pi P / lambda`` turns ``2 pi P dl / lambda^2`` per step. A film whose
     two reflections have amplitudes ``|r_a r_b| = sharpness`` has an Airy spectrum whose
@@ -518,9 +521,10 @@ def adequate_step(
 def interface_amplitudes(
     n_media: npt.ArrayLike, theta: float = 0.0
 ) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Fresnel amplitudes ``(r_s, r_p)`` of every interface of a stack, at the angle
-    ``theta`` (degrees) in the first medium (complex Snell's law, the branch of
-    :func:`transfer_matrix_reflectance`).
+    """Return the Fresnel amplitudes ``(r_s, r_p)`` of every interface of a stack.
+
+    They are at the angle ``theta`` (degrees) in the first medium (complex Snell's law,
+    the branch of :func:`transfer_matrix_reflectance`).
 
     Parameters
     ----------

@@ -144,8 +144,15 @@ class Film:
         return self.stack[self.vary + 1]
 
     def describe(self) -> str:
-        """One line: the stack, the varying layer, the range, the angle and the model.
+        """Describe the film in one line.
 
+        Returns
+        -------
+        str
+            The stack, the varying layer, the range, the angle and the model.
+
+        Examples
+        --------
         >>> water = materials.builtin("water")
         >>> Film("W", "Thin Film W", (materials.builtin("air"), water, materials.builtin("air")),
         ...      0, (0.0,), (0.0, 1.5)).describe()
@@ -262,7 +269,10 @@ def _material(key: str, table: Any, folder: Path, path: str) -> Material:
 
 
 def _layer(where: _Where, key: str, value: Any, layers: list[str]) -> int:
-    """A layer named by its material (once in the stack) or its position (1 = first)."""
+    """Return the index of a layer named by its material (once in the stack) or its position.
+
+    Positions count from 1 (1 = first); the index returned counts from 0.
+    """
     if isinstance(value, bool):
         raise where.error(key, f"must be a layer of the stack {layers}, got {value!r}")
     if isinstance(value, int):
@@ -391,7 +401,7 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
 
 
 def parse_films(text: str, path: str | Path = "<films>", *, taken: Iterable[str] = ()) -> dict:
-    """Films from the text of a film file (see the module docstring).
+    r"""Films from the text of a film file (see the module docstring).
 
     Parameters
     ----------
@@ -416,10 +426,10 @@ def parse_films(text: str, path: str | Path = "<films>", *, taken: Iterable[str]
 
     Examples
     --------
-    >>> films = parse_films('[films.Soap]\\nstack = ["air", "soap film", "air"]')
+    >>> films = parse_films('[films.Soap]\nstack = ["air", "soap film", "air"]')
     >>> films["Soap"].name, films["Soap"].range_um
     ('Thin Film Soap', (0.0, 1.5))
-    >>> parse_films('[films.Soap]\\nstack = ["air", "soap", "air"]\\nangle_deg = 95')
+    >>> parse_films('[films.Soap]\nstack = ["air", "soap", "air"]\nangle_deg = 95')
     Traceback (most recent call last):
     ...
     ocio_thinfilm.checks.ParameterError: films <films>: film 'Soap': angle_deg: must be ...
@@ -458,6 +468,12 @@ def read_films(path: str | Path, *, taken: Iterable[str] = ()) -> dict:
     -------
     dict
         Film key -> :class:`Film`.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``films``) naming the file if it cannot be read or is not UTF-8 text, and the
+        errors of :func:`parse_films`.
     """
     p = Path(path)
     try:
@@ -470,8 +486,10 @@ def read_films(path: str | Path, *, taken: Iterable[str] = ()) -> dict:
 
 
 def _registry_names() -> list[str]:
-    """The registry's colour space names (the config adds a few more of its own, which
-    :func:`ocio_thinfilm.config.data.film_parts` checks with the whole config).
+    """Return the registry's colour space names.
+
+    The config adds a few more of its own, which
+    :func:`ocio_thinfilm.config.data.film_parts` checks with the whole config.
     """
     return (
         [registry.REFERENCE]
@@ -483,8 +501,10 @@ def _registry_names() -> list[str]:
 
 
 def check_names(films: Iterable[Film], taken: Iterable[str] = ()) -> None:
-    """Refuse films whose colour space names repeat (OCIO compares names without case)
-    or clash with a colour space of the config (``taken``, and the registry's).
+    """Refuse films whose colour space names repeat or clash with the config's.
+
+    OCIO compares names without case; a film's name must differ from every other film's
+    and from every colour space of the config (``taken``, and the registry's).
 
     Parameters
     ----------
@@ -515,7 +535,7 @@ def check_names(films: Iterable[Film], taken: Iterable[str] = ()) -> None:
 # Spectra
 # --------------------------------------------------------------------------- #
 def _optical_path_nm(film: Film, max_thickness_nm: float) -> float:
-    """The stack's longest round-trip optical path (nm), for the wavelength step."""
+    """Return the stack's longest round-trip optical path (nm), for the wavelength step."""
     wl = np.array([VISIBLE_NM[0]])
     sin0 = film.stack[0].index(wl).real * np.sin(np.deg2rad(film.angle_deg))
     total = 0.0
@@ -528,8 +548,10 @@ def _optical_path_nm(film: Film, max_thickness_nm: float) -> float:
 
 
 def _sharpness(film: Film) -> float:
-    """``max |r_a r_b|`` of the varying layer's two interfaces over the visible and both
-    polarisations: how sharp its Airy fringes get (:func:`exact.adequate_step`).
+    """Return ``max |r_a r_b|`` of the varying layer's two interfaces.
+
+    The maximum is over the visible and both polarisations: how sharp the layer's Airy
+    fringes get (:func:`exact.adequate_step`).
     """
     wl = np.linspace(*VISIBLE_NM, 41)
     n = np.stack([m.index(wl) for m in film.stack])
@@ -539,7 +561,7 @@ def _sharpness(film: Film) -> float:
 
 
 def film_wavelengths(film: Film, max_thickness_nm: float | None = None) -> np.ndarray:
-    """The wavelength grid (nm) a film's spectra are evaluated on.
+    """Return the wavelength grid (nm) a film's spectra are evaluated on.
 
     The paper model: 360-780 nm in 5 nm steps, band-limited like the built-in tables
     (380-780 nm when a material's data start above 360 nm). The exact model: 380-780
@@ -571,8 +593,10 @@ def film_wavelengths(film: Film, max_thickness_nm: float | None = None) -> np.nd
 
 
 def paper_parameters(film: Film) -> tuple[float, float, bool]:
-    """The paper model's film index n, cos(theta_t) and whether Eq. 7 (phase change)
-    applies, at :data:`PAPER_WAVELENGTH` (see the module docstring).
+    r"""Return the paper model's film index n, cos(theta_t) and whether Eq. 7 applies.
+
+    All three are at :data:`PAPER_WAVELENGTH` (see the module docstring); Eq. 7 is the
+    one with the phase change.
 
     Parameters
     ----------
@@ -590,7 +614,7 @@ def paper_parameters(film: Film) -> tuple[float, float, bool]:
 
     Examples
     --------
-    >>> soap = parse_films('[films.S]\\nstack = ["vacuum", "soap film", "vacuum"]')["S"]
+    >>> soap = parse_films('[films.S]\nstack = ["vacuum", "soap film", "vacuum"]')["S"]
     >>> n, cos_t, phase_change = paper_parameters(soap)
     >>> round(n, 3), cos_t, phase_change
     (1.335, 1.0, True)
@@ -609,7 +633,7 @@ def paper_parameters(film: Film) -> tuple[float, float, bool]:
 def film_reflectance(
     film: Film, thickness_nm: npt.ArrayLike, wavelengths: npt.ArrayLike | None = None
 ) -> np.ndarray:
-    """A film's reflectance spectra against the physical thickness of its varying layer.
+    r"""Return a film's reflectance spectra against the physical thickness of its varying layer.
 
     Parameters
     ----------
@@ -633,7 +657,7 @@ def film_reflectance(
     A free soap film at a quarter wave reflects 4 r^2 / (1 + r^2)^2 = 7.8 % (r = -0.1427) at
     n = 1.333 (Born & Wolf 1.6 (59)) in the exact model and 1 in the paper's:
 
-    >>> text = '[films.S]\\nstack = ["air", "Soap", "air"]\\n[materials.Soap]\\nn = 1.333'
+    >>> text = '[films.S]\nstack = ["air", "Soap", "air"]\n[materials.Soap]\nn = 1.333'
     >>> soap = parse_films(text)["S"]
     >>> float(film_reflectance(soap, 550 / (4 * 1.333), [550.0])[0]).__round__(3)
     0.078

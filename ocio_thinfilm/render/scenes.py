@@ -83,7 +83,10 @@ class TableSpec:
 
     @property
     def encoding(self) -> str:
-        """What the table is indexed with: ``"cos(theta)"``, the optical thickness or a user's film's physical thickness."""
+        """What the table is indexed with.
+
+        ``"cos(theta)"``, the optical thickness or a user's film's physical thickness.
+        """
         if self.kind == "user":
             return f"physical thickness (um) of the film of {self.space!r}"
         return "cos(theta)" if self.kind == "morpho" else "optical thickness t' (um)"
@@ -164,7 +167,24 @@ class Scene:
     takes_films = False
 
     def with_film(self, film: TableSpec) -> Scene:
-        """A copy of this scene rendering the user's ``film`` (kind ``"user"``)."""
+        """Return a copy of this scene rendering the user's ``film``.
+
+        Parameters
+        ----------
+        film : TableSpec
+            The film's table, of kind ``"user"``.
+
+        Returns
+        -------
+        Scene
+            A shallow copy whose :attr:`film` is ``film`` and whose :attr:`tables` are
+            ``(film,)``.
+
+        Raises
+        ------
+        ValueError
+            If the scene has no film to replace (only oil and soap do).
+        """
         if not self.takes_films:
             raise ValueError(f"the {self.name} scene has no film to replace (oil and soap do)")
         import copy
