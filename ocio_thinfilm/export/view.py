@@ -133,9 +133,10 @@ _PLAIN_INPUTS = tuple(e.name for e in registry.ENCODED_LIST if e.plain)
 
 
 def _linear_sibling(source: str) -> str | None:
-    """The config space holding ``source``'s linear RGB (the shaper works there): the
-    reference XYZ or a scene-linear space itself, an encoded space's linear one; None
-    for the others (thin-film and display spaces).
+    """Return the config space holding ``source``'s linear RGB (the shaper works there).
+
+    The reference XYZ or a scene-linear space itself, an encoded space's linear one;
+    None for the others (thin-film and display spaces).
     """
     if source == registry.REFERENCE:
         return source
@@ -159,8 +160,10 @@ def _colorimetry(linear_space: str) -> str:
 def shaper_domain(
     linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """(lo, hi) of the shaper over ``linear_space`` (the reference XYZ or a scene-linear
-    space of the registry), the same for the three channels so that every grid node on the diagonal
+    """Return (lo, hi) of the shaper over ``linear_space``.
+
+    ``linear_space`` is the reference XYZ or a scene-linear space of the registry. The
+    range is the same for the three channels so that every grid node on the diagonal
     is a neutral (greys stay grey under tetrahedral interpolation): it covers the
     channel extremes of all object colours under D65 (optimal colours: reflectance
     1 where a channel's spectral weight is positive, 0 elsewhere, and the reverse),
@@ -202,9 +205,10 @@ def _shaper_to_linear(lo, hi):
 def view_config(
     source: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
 ) -> tuple[ocio_ops.Config, str | None]:
-    """The config in memory (LUTs inline, no files), plus the shaper colour space for
-    ``source`` (for a ``size`` grid and ``display``) when it needs one. Returns (config,
-    shaper space name or None).
+    """Return the config in memory (LUTs inline, no files) and the shaper space's name.
+
+    The shaper colour space for ``source`` (for a ``size`` grid and ``display``) is
+    added when it needs one. Returns (config, shaper space name or None).
     """
     import PyOpenColorIO as ocio
 
@@ -308,8 +312,9 @@ def _stem(source, display, view):
 
 
 def set_name(source: str, display: str, view: str) -> str:
-    """File stem in the shipped set, e.g. ``ACEScct_to_sRGB_ConstantLightnessClip``,
-    ``ACEScct_to_Rec2020_ChannelClamp``.
+    """Return the file stem in the shipped set.
+
+    E.g. ``ACEScct_to_sRGB_ConstantLightnessClip``, ``ACEScct_to_Rec2020_ChannelClamp``.
     """
 
     def clean(text):
@@ -340,8 +345,9 @@ def _description(source, display, view, size, shaper, baked):
 
 
 def _cube_title(source, display, view, size, shaper):
-    """The first line of a .cube, saying which form the file is (OCIO's writer has no
-    title). The plain form gets the format's ``TITLE`` keyword; the Resolve form a
+    """Return the first line of a .cube, saying which form the file is.
+
+    OCIO's writer has no title. The plain form gets the format's ``TITLE`` keyword; the Resolve form a
     comment, because OCIO's Resolve .cube parser refuses ``TITLE`` ("Unsupported tag",
     OCIO 2.6) and that parser is the only one of OCIO's that reads the shaper.
     """
@@ -406,9 +412,10 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
     )
 )
 def _fitted_nodes(source, display, view, size, shaper):
-    """:func:`ocio_thinfilm.export.view_fit.fit_view_table` for ``source`` (over its
-    code values, or with ``shaper`` over the shaper of :func:`view_config`), memoised
-    on disk (a fit takes seconds).
+    """Return the fitted 3D table of a display LUT, memoised on disk (a fit takes seconds).
+
+    :func:`ocio_thinfilm.export.view_fit.fit_view_table` for ``source`` (over its code
+    values, or with ``shaper`` over the shaper of :func:`view_config`).
     """
     cfg, shaper_space = view_config(source, size, display)
     if shaper and shaper_space:
@@ -419,10 +426,11 @@ def _fitted_nodes(source, display, view, size, shaper):
 
 
 def _fitted_table(source, fmt, shaper, display):
-    """Whether the 3D table is fitted (:data:`FITTED_FORMATS`, SDR displays): the plain
-    form always; with a shaper only for inputs whose shaper reaches below 0 (not a
-    space whose ``shaper_from_zero`` is set): the AP1 inputs' shaper tables, sampled, are within
-    ΔE2000 max 2.1-2.4 on object colours and fitted ones 4.2-6.0 (least squares does not
+    """Return whether the 3D table is fitted (:data:`FITTED_FORMATS`, SDR displays).
+
+    The plain form always; with a shaper only for inputs whose shaper reaches below 0
+    (not a space whose ``shaper_from_zero`` is set): the AP1 inputs' shaper tables,
+    sampled, are within ΔE2000 max 2.1-2.4 on object colours and fitted ones 4.2-6.0 (least squares does not
     hold the largest error down).
     """
     if fmt not in FITTED_FORMATS or display not in registry.DISPLAYS:
@@ -432,9 +440,10 @@ def _fitted_table(source, fmt, shaper, display):
 
 
 def _with_table(text, nodes):
-    """The baked ``text`` (.cube or .csp) with its 3D table, the last size^3 lines of
-    three numbers (red fastest in both formats), replaced by ``nodes`` (indexed
-    [r, g, b]), printed as OCIO's writers print them (6 decimals).
+    """Return the baked ``text`` (.cube or .csp) with its 3D table replaced by ``nodes``.
+
+    The table is the last size^3 lines of three numbers (red fastest in both formats);
+    ``nodes`` (indexed [r, g, b]) are printed as OCIO's writers print them (6 decimals).
     """
     size = nodes.shape[0]
     lines = text.split("\n")
@@ -453,8 +462,9 @@ _TRAILING_ZEROS = re.compile(r"(?:(\.\d*?[1-9])|\.)0*(?=[ \n]|$)")
 
 
 def _without_trailing_zeros(text):
-    """``text`` with each table value in its shortest fixed form: ``0.500000`` becomes
-    ``0.5``, ``1.000000`` becomes ``1``. The numbers are the same, every .cube reader
+    """Return ``text`` with each table value in its shortest fixed form.
+
+    ``0.500000`` becomes ``0.5``, ``1.000000`` becomes ``1``. The numbers are the same, every .cube reader
     parses either form, and a 65^3 display .cube shrinks by about 40 % (clipped colours
     are mostly 0 and 1).
     """
@@ -484,8 +494,9 @@ def _write_group(path, fmt, transforms, meta, description):
 
 
 def _baked_3d_transforms(cfg, source, shaper, display, view, size):
-    """[input -> shaper ops (exact), Lut3D over the shaper (tetrahedral)]: the
-    content of the .cube as OCIO transforms, for CLF.
+    """Return the content of the .cube as OCIO transforms, for CLF.
+
+    [input -> shaper ops (exact), Lut3D over the shaper (tetrahedral)].
     """
     import PyOpenColorIO as ocio
 
