@@ -347,8 +347,8 @@ def _description(source, display, view, size, shaper, baked):
 def _cube_title(source, display, view, size, shaper):
     """Return the first line of a .cube, saying which form the file is.
 
-    OCIO's writer has no title. The plain form gets the format's ``TITLE`` keyword; the Resolve form a
-    comment, because OCIO's Resolve .cube parser refuses ``TITLE`` ("Unsupported tag",
+    OCIO's writer has no title. The plain form gets the format's ``TITLE`` keyword; the Resolve
+    form a comment, because OCIO's Resolve .cube parser refuses ``TITLE`` ("Unsupported tag",
     OCIO 2.6) and that parser is the only one of OCIO's that reads the shaper.
     """
     if shaper:
@@ -429,8 +429,8 @@ def _fitted_table(source, fmt, shaper, display):
     """Return whether the 3D table is fitted (:data:`FITTED_FORMATS`, SDR displays).
 
     The plain form always; with a shaper only for inputs whose shaper reaches below 0
-    (not a space whose ``shaper_from_zero`` is set): the AP1 inputs' shaper tables,
-    sampled, are within ΔE2000 max 2.1-2.4 on object colours and fitted ones 4.2-6.0 (least squares does not
+    (not a space whose ``shaper_from_zero`` is set): the AP1 inputs' shaper tables, sampled, are
+    within ΔE2000 max 2.1-2.4 on object colours and fitted ones 4.2-6.0 (least squares does not
     hold the largest error down).
     """
     if fmt not in FITTED_FORMATS or display not in registry.DISPLAYS:
@@ -464,9 +464,9 @@ _TRAILING_ZEROS = re.compile(r"(?:(\.\d*?[1-9])|\.)0*(?=[ \n]|$)")
 def _without_trailing_zeros(text):
     """Return ``text`` with each table value in its shortest fixed form.
 
-    ``0.500000`` becomes ``0.5``, ``1.000000`` becomes ``1``. The numbers are the same, every .cube reader
-    parses either form, and a 65^3 display .cube shrinks by about 40 % (clipped colours
-    are mostly 0 and 1).
+    ``0.500000`` becomes ``0.5``, ``1.000000`` becomes ``1``. The numbers are the same, every
+    .cube reader parses either form, and a 65^3 display .cube shrinks by about 40 % (clipped
+    colours are mostly 0 and 1).
     """
     return _TABLE_LINE.sub(lambda m: _TRAILING_ZEROS.sub(r"\1", m.group(0)), text)
 
@@ -522,8 +522,10 @@ def _baked_3d_transforms(cfg, source, shaper, display, view, size):
 
 
 def _write_1d(path, fmt, cfg, source, display, view, size, value_range, meta, description):
-    """Thin-film inputs: a 1D LUT over ``value_range``, by the export module's writer
-    (which states the domain in every format).
+    """Write the 1D LUT of a thin-film input over ``value_range``.
+
+    Thin-film inputs get a 1D LUT, written by the export module's writer (which states the
+    domain in every format).
     """
     import PyOpenColorIO as ocio
 
@@ -558,8 +560,10 @@ def export_view(
     value_range: Sequence[float] | None = None,
     shaper: bool | None = None,
 ) -> list[Path]:
-    """Write the display LUT ``source`` -> ``display`` / ``view``; returns the paths
-    written (two for ``.spi3d`` with a shaper: the 3D LUT and its ``.shaper.spi1d``).
+    """Write the display LUT ``source`` -> ``display`` / ``view``.
+
+    Returns the paths written (two for ``.spi3d`` with a shaper: the 3D LUT and its
+    ``.shaper.spi1d``).
 
     ``shaper`` (``.cube`` only): None -- the plain 3D form for the plain inputs (ACEScct),
     the Resolve form (1D shaper + 3D) for the others; True -- the Resolve form;

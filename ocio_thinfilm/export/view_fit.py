@@ -82,9 +82,10 @@ _ANALYTIC = {
 def training_colours(
     display: registry.DisplayLike, samples: tuple[int, int, int] = SAMPLES, seed: int = SEED
 ) -> tuple[np.ndarray, np.ndarray]:
-    """The training colours, CIE-XYZ-D65, and each one's family (0 inside the gamut of
-    ``display``, 1 object colours, 2 spectral-line mixtures). None of them is one of
-    the evaluation sets (a separate generator and seed).
+    """Return the training colours, CIE-XYZ-D65, and each one's family.
+
+    The families: 0 inside the gamut of ``display``, 1 object colours, 2 spectral-line
+    mixtures. None of them is one of the evaluation sets (a separate generator and seed).
     """
     entry = registry.as_display(display)
     gamut = entry.gamut.name if isinstance(entry, registry.HDRDisplay) else entry.name
@@ -115,8 +116,10 @@ def training_colours(
 
 
 def _apply(cfg, src, dst, values):
-    """``values`` from colour space ``src`` to ``dst`` (a colour space, or a (display,
-    view) pair) by the config's CPU processor, float32.
+    """Convert ``values`` from colour space ``src`` to ``dst``.
+
+    ``dst`` is a colour space, or a (display, view) pair; the conversion is by the config's CPU
+    processor, float32.
     """
     import PyOpenColorIO as ocio
 
@@ -130,8 +133,10 @@ def _apply(cfg, src, dst, values):
 
 
 def _view_codes(cfg, start, display, view, coords, XYZ):
-    """Display code values of ``view`` for colours ``XYZ`` (analytic where possible),
-    or of OCIO's view applied to ``coords`` in the ``start`` space.
+    """Return the display code values of ``view`` for colours ``XYZ``.
+
+    Analytic where possible, or else those of OCIO's view applied to ``coords`` in the
+    ``start`` space.
     """
     from ocio_thinfilm.lut.display_transforms import display_encoding_transform
 
@@ -158,13 +163,13 @@ def fit_view_table(
     inside_weight: float = INSIDE_WEIGHT,
     object_weight: float = OBJECT_WEIGHT,
 ) -> np.ndarray:
-    """The fitted 3D table of ``display`` / ``view`` over a ``size``^3 grid of the
-    colour space ``start`` of ``cfg`` (a source space whose code values are the grid,
-    or the shaper space of :func:`ocio_thinfilm.export.view.view_config`), shape
-    (size, size, size, 3), indexed [r, g, b]: display code values, possibly outside
-    [0, 1]. The config must have ``CIE-XYZ-D65``. ``inside_weight``,
-    ``object_weight``: the weights of the training colours inside the gamut and of the
-    object colours outside it.
+    """Fit the 3D table of ``display`` / ``view`` over a ``size``^3 grid.
+
+    The grid is of the colour space ``start`` of ``cfg`` (a source space whose code values are
+    the grid, or the shaper space of :func:`ocio_thinfilm.export.view.view_config`). The table
+    has shape (size, size, size, 3), indexed [r, g, b]: display code values, possibly outside
+    [0, 1]. The config must have ``CIE-XYZ-D65``. ``inside_weight``, ``object_weight``: the
+    weights of the training colours inside the gamut and of the object colours outside it.
     """
     g = np.linspace(0.0, 1.0, size)
     grid = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)

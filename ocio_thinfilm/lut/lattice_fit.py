@@ -120,9 +120,10 @@ def cell_weights(
 def interpolate(
     nodes: npt.ArrayLike, coords: npt.ArrayLike, method: str = "tetrahedral"
 ) -> np.ndarray:
-    """The lattice ``nodes`` (shape (size, size, size, c), indexed [r, g, b]) applied
-    to ``coords`` (shape (n, 3), lattice coordinates in [0, 1]) by ``method``; returns
-    shape (n, c).
+    """Apply the lattice ``nodes`` to ``coords`` by ``method``.
+
+    ``nodes`` has shape (size, size, size, c), indexed [r, g, b]; ``coords`` shape (n, 3),
+    lattice coordinates in [0, 1]. Returns shape (n, c).
 
     Examples
     --------
@@ -153,7 +154,8 @@ _CENTRE = 13
 
 
 class _Banded:
-    """A symmetric matrix over the nodes with 27 bands (offsets in {-1, 0, 1}^3):
+    """A symmetric matrix over the nodes with 27 bands (offsets in {-1, 0, 1}^3).
+
     ``bands[b, i]`` is the entry (i, i + shift[b]).
     """
 
@@ -171,8 +173,9 @@ class _Banded:
             self.bands[band, :, ch] += np.bincount(row, weights=values[:, ch], minlength=self.n)
 
     def mirror(self) -> None:
-        """Fill the bands below the centre from those above (the matrix is symmetric:
-        entry (i, i - s) is entry (i - s, i)).
+        """Fill the bands below the centre from those above.
+
+        The matrix is symmetric: entry (i, i - s) is entry (i - s, i).
         """
         for band in range(_CENTRE):
             shift = int(self.shift[26 - band])  # > 0
@@ -226,8 +229,9 @@ def fit_lattice(
     clamp: tuple[float, float] | None = None,
     passes: int = 3,
 ) -> np.ndarray:
-    """Node values whose interpolation best fits ``values`` at ``coords`` (lattice
-    regression, Garcia & Gupta 2009).
+    """Fit node values whose interpolation best fits ``values`` at ``coords``.
+
+    Lattice regression (Garcia & Gupta 2009).
 
     Minimises, over the nodes x (the lattice's values, per output channel),
 
@@ -332,9 +336,10 @@ def _interpolated(index: np.ndarray, a: np.ndarray, x: np.ndarray) -> np.ndarray
 
 
 def _unclamped(index, a, x, y, clamp):
-    """Per method, 1 where a sample's channel counts, 0 where both the target and the
-    interpolated value lie at or beyond the same end of ``clamp`` (the host's clamp
-    makes them equal).
+    """Return per method the mask of the samples' channels that count.
+
+    1 where a sample's channel counts, 0 where both the target and the interpolated value lie
+    at or beyond the same end of ``clamp`` (the host's clamp makes them equal).
     """
     lo, hi = clamp
     masks = []
@@ -346,8 +351,9 @@ def _unclamped(index, a, x, y, clamp):
 
 
 def _normal_equations(index, a, share, active, x0, y, size):
-    """The banded normal matrix (without regularisers) and right-hand side of the
-    correction d = x - prior; ``active``: per method, per-sample-and-channel weights
+    """Return the banded normal matrix and right-hand side of the correction d = x - prior.
+
+    The matrix is without regularisers. ``active``: per method, per-sample-and-channel weights
     (or None: all 1, one matrix for every channel).
     """
     n_nodes = size**3
