@@ -503,7 +503,9 @@ class EncodedSpace:
     name : str
         The config's colour space name.
     linear : str
-        The name of the :class:`SceneSpace` it encodes.
+        The name of the :class:`SceneSpace` it encodes; OCIO must have a built-in
+        ``<linear>_to_ACES2065-1`` (the config goes from the encoded space to the
+        linear one through ACES2065-1 with the two built-ins).
     builtin : str
         OCIO's built-in transform from it to ACES2065-1.
     description : str

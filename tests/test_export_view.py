@@ -558,12 +558,12 @@ BAD_VIEW = [  # (argv, what the one-line error says)
     (["export", "view", "--display", "sRGB", "--view", CLC], "--from is needed"),
     (
         ["export", "view", "--from", "Nope", "--display", "sRGB", "--view", CLC],
-        "unknown colour space 'Nope'",
+        "--from must be one of (",
     ),
     (["export", "view", "--from", "ACEScct", "--view", CLC], "--display is needed"),
     (
         ["export", "view", "--from", "ACEScct", "--display", "sRGB", "--view", "Nope"],
-        "unknown view 'Nope'",
+        "--view must be one of (",
     ),
     (
         [

@@ -446,7 +446,7 @@ def config_data(
                 encoding="log",
                 categories=["file-io", "working-space"],
                 description=encoded.description,
-                to_reference=_builtin_to_reference(encoded.builtin),
+                to_reference=_builtin_to_reference(encoded),
             )
         )
     cs.append(
@@ -750,23 +750,35 @@ def named_transforms(
     return out
 
 
-def _builtin_to_reference(builtin: str) -> ocio_ops.Transform:
-    """Return an encoded ACES space -> CIE-XYZ-D65.
+def _builtin_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
+    """Return an encoded ACES space -> CIE-XYZ-D65, through its linear space.
 
     OCIO's built-in transform to ACES2065-1 (``ACEScct_to_ACES2065-1``: the ACEScct
-    curve of Academy S-2016-001 and AP1 -> AP0), then AP0 -> XYZ. The code values are
-    limited first to those of linear +-:data:`ocio_ops.LIMIT` (found with the built-in's
-    own inverse), so the curve's exponential never overflows to Inf (and Inf - Inf to
-    NaN in the matrix) at any optimisation level.
+    curve of Academy S-2016-001 and AP1 -> AP0), back to AP1 with the inverse of the
+    built-in ``ACEScg_to_ACES2065-1`` (the two matrices cancel when OCIO optimises), then
+    the linear space's own transform to the reference: so the path from the encoded
+    space to its linear space is per channel, as OCIO's Baker requires of a shaper. The
+    code values are limited first to those of linear +-:data:`ocio_ops.LIMIT` (found
+    with the built-in's own inverse), so the curve's exponential never overflows to Inf
+    (and Inf - Inf to NaN in a matrix) at any optimisation level.
     """
     import PyOpenColorIO as ocio
 
-    curve = ocio.BuiltinTransform(builtin)
-    inverse = ocio.BuiltinTransform(builtin)
+    curve = ocio.BuiltinTransform(encoded.builtin)
+    inverse = ocio.BuiltinTransform(encoded.builtin)
     inverse.setDirection(ocio.TRANSFORM_DIR_INVERSE)
     lo, hi = ocio_ops.apply(inverse, [[-ocio_ops.LIMIT] * 3, [ocio_ops.LIMIT] * 3])[:, 0]
+    to_linear = ocio.BuiltinTransform(f"{encoded.linear}_to_ACES2065-1")
+    to_linear.setDirection(ocio.TRANSFORM_DIR_INVERSE)
+    linear = registry.linear_space_of(encoded.name)
+    assert linear is not None  # the registry checks an encoded space's linear space
     return ocio_ops.group(
-        [ocio_ops.range_(float(lo), float(hi)), curve, _matrix_to_reference("ACES2065-1")]
+        [
+            ocio_ops.range_(float(lo), float(hi)),
+            curve,
+            to_linear,
+            _matrix_to_reference(linear.colorimetry),
+        ]
     )
 
 

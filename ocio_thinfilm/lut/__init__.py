@@ -2,6 +2,7 @@
 
 - :mod:`.ocio_ops` -- the one implementation of each OCIO op helper (a leaf);
 - :mod:`.tables` -- the 1D thin-film tables (pixel value -> exact XYZ);
+- :mod:`.film_tables` -- the tables of users' films (physical thickness -> XYZ);
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
 - :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
 - :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its
@@ -9,12 +10,15 @@
 - :mod:`.storage` -- 16-bit codes that half-float textures keep;
 - :mod:`.clip_lut` -- the clip (Section 3.2) baked into two 3D LUTs;
 - :mod:`.compress_lut` -- the soft compression: a LUT before each of the clip's;
-- :mod:`.view_transforms` -- every view: CIE-XYZ-D65 -> display code values.
+- :mod:`.view_transforms` -- every view: CIE-XYZ-D65 -> display code values;
+- :mod:`.lattice_fit` -- lattice regression (Garcia & Gupta 2009): node values whose
+  interpolation best fits a map at given colours (the portable display LUTs).
 """
 
 __all__ = [
     "ocio_ops",
     "tables",
+    "film_tables",
     "display_transforms",
     "grid",
     "node_fit",
@@ -22,4 +26,5 @@ __all__ = [
     "clip_lut",
     "compress_lut",
     "view_transforms",
+    "lattice_fit",
 ]
