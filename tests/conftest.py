@@ -54,9 +54,10 @@ def marked():
     return between
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def cfg():
-    """The committed config (``configs/thinfilm``) as an OCIO Config; skips where
+    """The committed config (``configs/thinfilm``) as an OCIO Config, one per test module
+    (its processor cache, LUTs included, goes with the module); skips where
     PyOpenColorIO or the baked config is missing."""
     ocio = pytest.importorskip("PyOpenColorIO")
     from evaluation.views import COMMITTED_CONFIG

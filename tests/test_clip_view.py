@@ -241,6 +241,7 @@ def test_every_processor_of_the_config_is_finite_and_in_range(cfg, level):
                 cpu.applyRGB(px)
                 if not (np.all(np.isfinite(px)) and px.min() >= -TOL and px.max() <= 1.0 + TOL):
                     bad.append((src, display, view, float(np.nanmin(px)), float(np.nanmax(px))))
+        cfg.clearProcessorCache()  # hundreds of processors with their LUTs: gigabytes
     assert not bad, bad[:10]
 
 
@@ -327,6 +328,7 @@ def test_display_spaces_as_input_are_finite_at_every_level(cfg, level):
                 bad.append((*what, "NaN / -Inf not black", out[nan].tolist()))
             if np.abs(out[pos] - peak).max() > 1e-3:
                 bad.append((*what, "+Inf not the peak white", out[pos].tolist(), peak.tolist()))
+        cfg.clearProcessorCache()  # hundreds of processors with their LUTs: gigabytes
     assert not bad, bad[:10]
 
 
