@@ -30,7 +30,6 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tests"))
 
 TEN_FILMS = """
 [materials.Oil]
@@ -99,8 +98,9 @@ def main() -> None:
     )
 
     import colour
-    from test_films import COLOUR_VALID, WL, _delta_E, colour_R, tmm_RTA  # noqa: F401
 
+    from evaluation.films import WL, colour_R, tmm_RTA
+    from evaluation.films import delta_E as _delta_E
     from ocio_thinfilm.lut import film_tables
     from ocio_thinfilm.physics import films as films_module
 
@@ -137,53 +137,24 @@ def main() -> None:
 
 
 def error_against_time() -> None:
-    """Section 3 of the module docstring."""
-    import colour
-    from test_films import _delta_E, colour_R
-
-    from ocio_thinfilm.lut import film_tables
-    from ocio_thinfilm.physics import exact
+    """Section 3 of the module docstring (:func:`evaluation.films.error_against_time`)."""
+    from evaluation.films import error_against_time as measure
     from ocio_thinfilm.physics import films as films_module
 
-    wl = np.arange(380.0, 781.0, 5.0)
-    d = np.linspace(0.0, 1500.0, 4096)
-
-    def best(f, repeat=3):
-        times = []
-        for _ in range(repeat):
-            start = time.perf_counter()
-            out = f()
-            times.append(time.perf_counter() - start)
-        return min(times), out
-
-    t_airy, r_airy = best(lambda: exact.airy_reflectance(d, wl, 1.47, 30.0, n_substrate=1.33))
-    n = np.array([1.0, 1.47, 1.33])
-    t_tm, r_tm = best(lambda: exact.stack_reflectance(n, [0.0], 0, d, wl, 30.0))
-    print(
-        f"one film, 4096 thicknesses x {wl.size} wavelengths: Airy {t_airy * 1e3:.0f} ms, "
-        f"transfer matrices {t_tm * 1e3:.0f} ms, max |dR| {np.abs(r_airy - r_tm).max():.1e}"
-    )
-    shape = colour.SpectralShape(380, 780, 1)
-    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
-    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
-    w1 = cmfs.values * d65.values[:, None]
-    w1 /= w1[:, 1].sum()
-    white = np.array([0.3127, 0.329])
     text = TEN_FILMS + "[films.OilConst]\nstack = ['vacuum', 'Oil', 'W']\nangle_deg = 30\n"
     text += "[materials.W]\nn = 1.33\n"
     films = films_module.parse_films(text, "films.toml")
-    print(f"{'film':<14} " + " ".join(f"{n:>7}" for n in (32, 64, 128, 256, 512, 1024, 2048)))
-    for key in ("OilConst", "Temper", "SilicaOnGold"):
-        film = films[key]
-        t = np.random.default_rng(0).uniform(*film.range_um, 500)
-        ref = colour_R(film, t * 1000.0) @ w1
-        row = []
-        for size in (32, 64, 128, 256, 512, 1024, 2048):
-            start = time.perf_counter()
-            table = film_tables.film_table(film, size)
-            seconds = time.perf_counter() - start
-            row.append(f"{_delta_E(table.lookup(t), ref, white).max():.3f}/{seconds:.2f}s")
-        print(f"{key:<14} " + " ".join(f"{v:>7}" for v in row))
+    result = measure({key: films[key] for key in ("OilConst", "Temper", "SilicaOnGold")})
+    print(
+        f"one film, {result['thicknesses']} thicknesses x {result['wavelengths']} "
+        f"wavelengths: Airy {result['airy_seconds'] * 1e3:.0f} ms, transfer matrices "
+        f"{result['transfer_matrix_seconds'] * 1e3:.0f} ms, max |dR| {result['max_abs_dR']:.1e}"
+    )
+    sizes = [row["size"] for row in next(iter(result["tables"].values()))]
+    print(f"{'film':<14} " + " ".join(f"{n:>11}" for n in sizes))
+    for key, rows in result["tables"].items():
+        cells = [f"{r['dE_max']:.3f}/{r['seconds']:.2f}s" for r in rows]
+        print(f"{key:<14} " + " ".join(f"{v:>11}" for v in cells))
 
 
 if __name__ == "__main__":

@@ -13,6 +13,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from evaluation import films as evaluation_films
+from evaluation.films import colour_R, tmm_RTA
+from evaluation.films import delta_E as _delta_E
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import film_tables, tables
 from ocio_thinfilm.physics import films as films_module
@@ -106,8 +109,6 @@ stack = ["air", "fused silica", "Au"]
 range_um = [0, 1.0]
 """
 
-WL = np.arange(380.0, 781.0, 1.0)
-
 
 @pytest.fixture(scope="module")
 def films():
@@ -118,60 +119,7 @@ def films():
 def reference_weights():
     """XYZ weights on WL from colour-science's 1 nm CMFs and D65, Y = 1 for the
     perfect reflector, and D65's chromaticity for Lab."""
-    import colour
-
-    shape = colour.SpectralShape(380, 780, 1)
-    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
-    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
-    w = cmfs.values * d65.values[:, None]
-    return w / w[:, 1].sum(), colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
-
-
-def _delta_E(XYZ_a, XYZ_b, white):
-    import colour
-
-    return colour.delta_E(
-        colour.XYZ_to_Lab(XYZ_a, white), colour.XYZ_to_Lab(XYZ_b, white), method="CIE 2000"
-    )
-
-
-def _n_stack(film, wl):
-    return np.stack([m.index(wl) for m in film.stack])
-
-
-def colour_R(film, thickness_nm, wl=WL):
-    """colour-science's TMM, unpolarised, shape (T, W)."""
-    import colour
-
-    n = _n_stack(film, wl)
-    if len(film.layers) == 1:
-        R, _ = colour.phenomena.thin_film_tmm(n, thickness_nm, wl, film.angle_deg)
-        return R.mean(axis=-1)[:, 0, :].T
-    out = []
-    for d in thickness_nm:
-        t = list(film.thickness_nm)
-        t[film.vary] = d
-        R, _ = colour.phenomena.multilayer_tmm(n, t, wl, film.angle_deg)
-        out.append(R.mean(axis=-1)[:, 0, 0])
-    return np.array(out)
-
-
-def tmm_RTA(film, d, wl, absorbed=False):
-    """PyPI tmm (Byrnes): unpolarised R, T and (``absorbed``) the absorption in the
-    layers, else 0."""
-    out = []
-    th = np.deg2rad(film.angle_deg)
-    for lam in wl:
-        n = list(_n_stack(film, np.array([lam]))[:, 0])
-        t = [np.inf] + list(film.thickness_nm) + [np.inf]
-        t[film.vary + 1] = d
-        total = np.zeros(3)
-        for pol in "sp":
-            data = tmm.coh_tmm(pol, n, t, th, lam)
-            inside = float(np.sum(tmm.absorp_in_each_layer(data)[1:-1])) if absorbed else 0.0
-            total += [data["R"], data["T"], inside]
-        out.append(total / 2)
-    return np.array(out)
+    return evaluation_films.reference_weights()
 
 
 def _thicknesses(film, count, seed=0):

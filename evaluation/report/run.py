@@ -10,6 +10,7 @@ from pathlib import Path
 
 from evaluation.report import (
     analytic_vs_lut,
+    films,
     gamut,
     gaussian,
     lut3d,
@@ -58,6 +59,7 @@ SECTIONS = [
     ("2a gamut mapping", gamut.section),
     ("2b Gaussian fits", gaussian.section),
     ("2c TMM", tmm.section),
+    ("2d films", films.section),
     ("3 stability", stability_table.section),
     ("4 throughput", throughput.section),
 ]
