@@ -92,9 +92,7 @@ def accuracy(display, chain, sets):
 
 
 def measure(pairs, displays):
-    sys.path.insert(0, str(ROOT / "tests"))
-    from test_clip_view import _sets
-
+    from evaluation.colours import gamut_map_sets as _sets
     from ocio_thinfilm.lut import clip_lut as CL
 
     sets = _sets()
@@ -162,15 +160,23 @@ def plain_cube_curve(sizes):
     """{edge: (MB, p99, max)}: the plain ACEScct -> sRGB .cube of ``luts/`` baked at
     each edge, applied by OCIO, against the analytic clip on object colours inside AP1
     (as tests/test_export_view.py measures it)."""
-    sys.path.insert(0, str(ROOT / "tests"))
     import colour
-    from test_export_view import _colour_rgb, _dE, _ocio_apply, _stats
+
+    from evaluation.views import apply_lut_files, colour_science_rgb, decode_display
+    from ocio_thinfilm.colour import clip, colorimetry
+
+    def delta_E(code, XYZ, display):
+        got = colorimetry.RGB_to_XYZ(decode_display(code, display), display)
+        expected = colorimetry.RGB_to_XYZ(
+            clip.clip_RGB(colorimetry.XYZ_to_RGB(XYZ, display), display), display
+        )
+        return colorimetry.delta_E2000(got, expected)
 
     from evaluation.colours import object_colours
     from ocio_thinfilm.export.view import export_view
 
     XYZ = object_colours()
-    acescg = _colour_rgb(XYZ, "ACEScg")
+    acescg = colour_science_rgb(XYZ, "ACEScg")
     keep = (acescg >= 0).all(axis=1)
     XYZ, cct = XYZ[keep], colour.models.log_encoding_ACEScct(acescg[keep])
     out = {}
@@ -178,7 +184,8 @@ def plain_cube_curve(sizes):
         for n in sizes:
             path = Path(tmp) / f"plain{n}.cube"
             export_view("ACEScct", "sRGB", "Constant-Lightness Clip", path, size=n)
-            _, p99, worst = _stats(_dE(_ocio_apply([path], cct), XYZ, "sRGB"))
+            dE = delta_E(apply_lut_files([path], cct), XYZ, "sRGB")
+            p99, worst = np.percentile(dE, 99), dE.max()
             out[n] = (path.stat().st_size / 1e6, float(p99), float(worst))
             print(
                 f"plain .cube {n}^3: {out[n][0]:.1f} MB, p99 {p99:.2f} / max {worst:.2f}",

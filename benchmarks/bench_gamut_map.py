@@ -150,12 +150,11 @@ def measure(size=1024, repeats=7):
 
 def accuracy():
     """{display: {set: statistics}} of the baked config's Constant-Lightness Clip views."""
-    import sys
-
-    sys.path.insert(0, str(ROOT / "tests"))
     import PyOpenColorIO as ocio
-    from test_clip_view import _apply_view, _decode, _sets
 
+    from evaluation.colours import gamut_map_sets as _sets
+    from evaluation.views import apply_view as _apply_view
+    from evaluation.views import decode_display as _decode
     from ocio_thinfilm.colour import clip, colorimetry
 
     cfg = ocio.Config.CreateFromFile(str(CONFIG))

@@ -92,3 +92,29 @@ def decode_display(code: npt.ArrayLike, display: str) -> np.ndarray:
     if registry.as_display(display, hdr=False).encoding.offset is None:
         return colour.models.eotf_BT1886(code)
     return colour.cctf_decoding(code, function="sRGB")
+
+
+def colour_science_rgb(XYZ: npt.ArrayLike, name: str) -> np.ndarray:
+    """XYZ (D65) -> linear RGB of colour-science's colourspace ``name``, Bradford
+    adapted (independent of the package's matrices)."""
+    import colour
+
+    d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+    return colour.XYZ_to_RGB(
+        XYZ, colour.RGB_COLOURSPACES[name], d65, chromatic_adaptation_transform="Bradford"
+    )
+
+
+def apply_lut_files(paths, values: npt.ArrayLike) -> np.ndarray:
+    """LUT files applied in order by OCIO's FileTransform (tetrahedral), as a host
+    applies them: float32 in, float64 out, (N, 3)."""
+    import PyOpenColorIO as ocio
+
+    group = ocio.GroupTransform()
+    for path in paths:
+        t = ocio.FileTransform(str(path))
+        t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
+        group.appendTransform(t)
+    px = np.ascontiguousarray(np.asarray(values, dtype=np.float32).reshape(-1, 3)).copy()
+    ocio.Config.CreateRaw().getProcessor(group).getDefaultCPUProcessor().applyRGB(px)
+    return px.astype(np.float64)

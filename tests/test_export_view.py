@@ -31,7 +31,7 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours
-from evaluation.views import decode_display
+from evaluation.views import apply_lut_files, colour_science_rgb, decode_display
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.export import view as export_view
@@ -44,16 +44,6 @@ FFMPEG = shutil.which("ffmpeg")
 # --------------------------------------------------------------------------- #
 # Independent helpers
 # --------------------------------------------------------------------------- #
-def _colour_rgb(XYZ, name):
-    """XYZ (D65) -> linear RGB of a colour-science colourspace, Bradford adapted."""
-    import colour
-
-    d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
-    return colour.XYZ_to_RGB(
-        XYZ, colour.RGB_COLOURSPACES[name], d65, chromatic_adaptation_transform="Bradford"
-    )
-
-
 def _expected_XYZ(XYZ, display, view=CLC):
     rgb = colorimetry.XYZ_to_RGB(XYZ, display)
     if view == CLC:
@@ -74,19 +64,6 @@ def _dE(code, XYZ, display, view=CLC):
 
 def _stats(dE):
     return dE.mean(), np.percentile(dE, 99), dE.max()
-
-
-def _ocio_apply(paths, values):
-    import PyOpenColorIO as ocio
-
-    group = ocio.GroupTransform()
-    for path in paths:
-        t = ocio.FileTransform(str(path))
-        t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-        group.appendTransform(t)
-    px = np.ascontiguousarray(np.asarray(values, dtype=np.float32).reshape(-1, 3)).copy()
-    ocio.Config.CreateRaw().getProcessor(group).getDefaultCPUProcessor().applyRGB(px)
-    return px.astype(np.float64)
 
 
 def _colour_apply(paths, values):
@@ -150,7 +127,7 @@ def inside_AP1(object_XYZ):
     """(XYZ, ACEScct values) of the object colours whose ACEScg values are >= 0."""
     import colour
 
-    acescg = _colour_rgb(object_XYZ, "ACEScg")
+    acescg = colour_science_rgb(object_XYZ, "ACEScg")
     keep = (acescg >= 0).all(axis=1)
     return object_XYZ[keep], colour.models.log_encoding_ACEScct(acescg[keep])
 
@@ -241,7 +218,7 @@ def test_acescct_view_luts_in_independent_consumers(
     if fmt == "spi3d":  # the companion shaper goes first
         assert [p.suffix for p in paths] == [".spi3d", ".spi1d"]
         paths = paths[::-1]
-    code = (_colour_apply if consumer == "colour" else _ocio_apply)(paths, cct)
+    code = (_colour_apply if consumer == "colour" else apply_lut_files)(paths, cct)
     mean, p99, worst = _stats(_dE(code, XYZ, display))
     print(f"ACEScct->{display} .{fmt} ({consumer}): mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
     assert p99 <= TARGET_P99 and worst <= TARGET_MAX
@@ -277,7 +254,7 @@ def test_compress_display_luts(tmp_path, inside_AP1, display):
     assert "Constant-Lightness Compress" in plain.read_text().splitlines()[0]
     results = {
         "resolve cube (colour)": _colour_apply([resolve], cct),
-        "csp (ocio)": _ocio_apply([csp], cct),
+        "csp (ocio)": apply_lut_files([csp], cct),
     }
     if FFMPEG is not None:
         results["csp (ffmpeg)"] = ffmpeg_apply(csp, cct)
@@ -286,7 +263,7 @@ def test_compress_display_luts(tmp_path, inside_AP1, display):
         print(f"ACEScct->{display} compress {what}: p99 {p99:.3f} max {worst:.3f}")
         assert p99 <= TARGET_P99 and worst <= TARGET_MAX, what
     np.testing.assert_allclose(
-        _colour_tetrahedral(plain, cct), _ocio_apply([plain], cct), atol=1e-5
+        _colour_tetrahedral(plain, cct), apply_lut_files([plain], cct), atol=1e-5
     )
 
 
@@ -331,7 +308,7 @@ def test_plain_cube_is_one_3d_table_every_reader_applies_alike(acescct_luts, ins
     _, cct = inside_AP1
     rng = np.random.default_rng(3)
     values = np.concatenate([cct, rng.uniform(0.0, 1.0, (20000, 3))])
-    by_ocio = _ocio_apply([path], values)
+    by_ocio = apply_lut_files([path], values)
     by_colour = _colour_tetrahedral(path, values)
     gap = {"colour": float(np.abs(by_colour - by_ocio).max())}
     if FFMPEG is not None:
@@ -353,7 +330,7 @@ PLAIN_LIMITS = {"sRGB": (4.0, 13.0), "Display P3": (3.0, 11.5), "Rec.2020": (0.6
 def _plain_stats(acescct_luts, inside_AP1, display):
     XYZ, cct = inside_AP1
     (path,) = acescct_luts[display, "cube"]
-    dE = _dE(_ocio_apply([path], cct), XYZ, display)
+    dE = _dE(apply_lut_files([path], cct), XYZ, display)
     inside = clip.in_gamut(colorimetry.XYZ_to_RGB(XYZ, display))
     return _stats(dE) + (np.percentile(dE[inside], 99), dE[inside].max())
 
@@ -481,7 +458,7 @@ LINEAR709_CASES = [("cube", "ocio"), ("cube", "colour"), ("csp", "ffmpeg"), ("cs
 def test_linear709_display_luts(linear709_luts, object_XYZ, fmt, host):
     if host == "ffmpeg" and FFMPEG is None:
         pytest.skip("ffmpeg not installed (Debian package ffmpeg)")
-    code = DEFAULT_HOSTS[host](linear709_luts[fmt], _colour_rgb(object_XYZ, "ITU-R BT.709"))
+    code = DEFAULT_HOSTS[host](linear709_luts[fmt], colour_science_rgb(object_XYZ, "ITU-R BT.709"))
     dE = _dE(code, object_XYZ, "sRGB")
     inside = clip.in_gamut(colorimetry.XYZ_to_RGB(object_XYZ, "sRGB"))
     p99, worst = np.percentile(dE, 99), dE.max()
@@ -508,7 +485,7 @@ def test_linear709_display_luts(linear709_luts, object_XYZ, fmt, host):
 def test_linear_inputs_cube(tmp_path, object_XYZ, source, name, limits):
     (path,) = export_view.export_view(source, "sRGB", CLC, tmp_path / "v.cube", size=65)
     XYZ = object_XYZ
-    values = XYZ if name is None else _colour_rgb(XYZ, name)
+    values = XYZ if name is None else colour_science_rgb(XYZ, name)
     if source == "ACEScg":
         keep = (values >= 0).all(axis=1)
         XYZ, values = XYZ[keep], values[keep]
@@ -526,7 +503,7 @@ def test_thin_film_input_is_a_1d_lut_over_thickness(tmp_path):
     assert "LUT_1D_INPUT_RANGE 0.000000 1.500000" in path.read_text()
     t = np.linspace(0.0, 1.5, 1501)
     XYZ = colorimetry.film_XYZ(t * 1000.0, "phase-change")
-    for apply in (_colour_apply, _ocio_apply):
+    for apply in (_colour_apply, apply_lut_files):
         code = apply([path], np.repeat(t[:, None], 3, axis=1))
         mean, p99, worst = _stats(_dE(code, XYZ, "sRGB"))
         print(f"thin film ->sRGB 1D .cube: mean {mean:.3f} p99 {p99:.3f} max {worst:.3f}")
@@ -539,7 +516,7 @@ def test_channel_clamp_clf_is_the_exact_chain(tmp_path, object_XYZ):
     )
     text = path.read_text()
     assert "<LUT3D" not in text and "<InputDescriptor>" in text
-    code = _ocio_apply([path], _colour_rgb(object_XYZ, "ITU-R BT.709"))
+    code = apply_lut_files([path], colour_science_rgb(object_XYZ, "ITU-R BT.709"))
     assert _dE(code, object_XYZ, "Display P3", "Channel Clamp").max() < 0.01
 
 
@@ -547,7 +524,7 @@ def test_ctf_holds_the_exact_constant_lightness_chain(tmp_path, inside_AP1):
     XYZ, cct = inside_AP1
     (path,) = export_view.export_view("ACEScct", "sRGB", CLC, tmp_path / "v.ctf")
     assert "FixedFunction" in path.read_text()
-    dE = _dE(_ocio_apply([path], cct), XYZ, "sRGB")
+    dE = _dE(apply_lut_files([path], cct), XYZ, "sRGB")
     assert np.percentile(dE, 99) <= 0.6 and dE.max() <= 2.0  # the config's own clip LUTs
 
 
@@ -791,7 +768,7 @@ def test_acescct_hdr_view_luts(hdr_luts, inside_AP1, display, fmt, consumer):
     XYZ, cct = inside_AP1
     XYZ = np.vstack([XYZ, XYZ * HDR_K])
     cct = np.vstack(
-        [cct, colour.models.log_encoding_ACEScct(_colour_rgb(XYZ[len(cct) :], "ACEScg"))]
+        [cct, colour.models.log_encoding_ACEScct(colour_science_rgb(XYZ[len(cct) :], "ACEScg"))]
     )
     (path,) = hdr_luts[display, fmt]
     if fmt == "cube":
@@ -802,7 +779,7 @@ def test_acescct_hdr_view_luts(hdr_luts, inside_AP1, display, fmt, consumer):
         else (
             (lambda p, v: _colour_apply([p], v))
             if consumer == "colour"
-            else (lambda p, v: _ocio_apply([p], v))
+            else (lambda p, v: apply_lut_files([p], v))
         )
     )
     dE = _hdr_dE(apply(path, cct), XYZ, display)

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_films import COLOUR_VALID, FILMS_TOML, WL, _delta_E, colour_R, tmm_RTA
 
+from evaluation.films import COLOUR_VALID, FILMS_TOML, WL, colour_R, tmm_RTA
+from evaluation.films import delta_E as _delta_E
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.physics import films as films_module
 

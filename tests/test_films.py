@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from evaluation import films as evaluation_films
-from evaluation.films import colour_R, tmm_RTA
+from evaluation.films import COLOUR_VALID, FILMS_TOML, colour_R, tmm_RTA
 from evaluation.films import delta_E as _delta_E
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import film_tables, tables
@@ -22,92 +22,6 @@ from ocio_thinfilm.physics import films as films_module
 from ocio_thinfilm.physics import materials
 
 tmm = pytest.importorskip("tmm")
-
-FILMS_TOML = """
-[materials.Oil]
-n = 1.47
-[materials.Absorber]   # a constant complex index
-n = 2.0
-k = 0.3
-[materials.Oxide]      # an iron-oxide-like absorbing film (haematite: n ~ 3, k ~ 0.2)
-n = 2.9
-k = 0.2
-
-[films.Soap]
-stack = ["air", "soap film", "air"]
-range_um = [0, 1.5]
-
-[films.OilOnWater]
-stack = ["air", "Oil", "water"]
-range_um = [0, 1.5]
-angle_deg = 30
-
-[films.ARCoat]
-stack = ["air", "MgF2", "BK7"]
-range_um = [0, 0.5]
-
-[films.Titania60]
-stack = ["air", "TiO2", "BK7"]
-range_um = [0, 1.0]
-angle_deg = 60
-
-[films.Temper]
-stack = ["air", "Oxide", "Fe"]
-range_um = [0, 0.3]
-angle_deg = 10
-
-[films.AnodisedTi]
-stack = ["air", "TiO2", "Ti"]
-range_um = [0, 0.4]
-angle_deg = 45
-
-[films.Stack]
-stack = ["air", "SiO2", "TiO2", "Al"]
-vary = "TiO2"
-thickness_nm = { SiO2 = 100.0 }
-range_um = [0, 0.6]
-angle_deg = 20
-
-[films.Grazing]
-stack = ["air", "water", "air"]
-range_um = [0, 1.0]
-angle_deg = 89
-
-[films.AbsorberOnGlass]
-stack = ["air", "Absorber", "BK7"]
-range_um = [0, 0.5]
-
-[films.TIR]
-stack = ["BK7", "MgF2", "air"]
-range_um = [0, 0.6]
-angle_deg = 70
-
-[materials.Water133]
-n = 1.33
-[materials.Glass152]
-n = 1.52
-[materials.Coat138]
-n = 1.38
-
-[films.ConstOil30]
-stack = ["vacuum", "Oil", "Water133"]
-range_um = [0, 1.5]
-angle_deg = 30
-
-[films.ConstGrazing]
-stack = ["vacuum", "Water133", "vacuum"]
-range_um = [0, 1.0]
-angle_deg = 89
-
-[films.ConstTIR]
-stack = ["Glass152", "Coat138", "vacuum"]
-range_um = [0, 0.6]
-angle_deg = 70
-
-[films.SilicaOnGold]
-stack = ["air", "fused silica", "Au"]
-range_um = [0, 1.0]
-"""
 
 
 @pytest.fixture(scope="module")
@@ -128,22 +42,6 @@ def _thicknesses(film, count, seed=0):
     return np.concatenate([np.linspace(lo, hi, count), rng.uniform(lo, hi, count // 4)])
 
 
-# --------------------------------------------------------------------------- #
-# Physics against independent implementations
-# --------------------------------------------------------------------------- #
-#: Films colour-science 0.4.7 computes right: normal incidence, or constant real
-#: indices. At oblique incidence it takes the refraction angles from the first
-#: wavelength's indices (dispersive media drift away from tmm and the textbook beyond
-#: it) and its s and p reflectances on absorbing media differ from the Fresnel
-#: equations (see the test below): those films are checked against tmm alone.
-COLOUR_VALID = [
-    "Soap",
-    "ARCoat",
-    "AbsorberOnGlass",
-    "SilicaOnGold",
-    "ConstOil30",
-    "ConstGrazing",
-]
 #: (colour-science 0.4.7 returns NaN under total internal reflection: ConstTIR)
 TMM_ONLY = [
     "ConstTIR",
