@@ -61,7 +61,11 @@ def _one_rounding_step_apart(x: bytes, y: bytes) -> bool:
         integer, 1.0, np.maximum(written, 1.5e-7 + (2.0**-10 if half else 1e-7) * np.abs(b))
     )
     close = np.abs(a - b) <= step
-    if b".cube" in x[:200] or b"LUT_3D_SIZE" in x:
+    if b"LUT_3D_SIZE" in x and b"LUT_1D_SIZE" not in x:
+        # a plain .cube's table is fitted (export.view_fit): corrections below 1e-4 keep
+        # the view's sampled value, so a float difference in the training colours (OCIO's
+        # CPU dispatch) can flip that choice for a node: up to 1e-4 of a code value
+        close |= np.abs(a - b) <= 1.0e-4 + 5.001e-6
         # display code values: near black, BT.1886's pure power (code = L^(1/2.4)) turns
         # 1e-7 of linear-light noise into 1e-3 of code value; compare those in light
         close |= np.abs(np.clip(a, 0, None) ** 2.4 - np.clip(b, 0, None) ** 2.4) <= 4e-7

@@ -59,5 +59,9 @@ def section(ctx) -> Section:
         "",
         table(["film"] + [f"{s} entries" for s in sizes], rows),
     ]
-    headline = {"films_dE_max_largest_table": max(worst_default.values())}
+    headline = {
+        "size": max(sizes),
+        "dE_max": max(worst_default.values()),
+        "transfer_matrix_over_airy": result["transfer_matrix_seconds"] / result["airy_seconds"],
+    }
     return Section("\n".join(text), {"films": result}, {"films": headline})

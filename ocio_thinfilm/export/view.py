@@ -409,6 +409,10 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
         "ocio_thinfilm.lut.grid",
         "ocio_thinfilm.lut.node_fit",
         "ocio_thinfilm.lut.storage",
+        "ocio_thinfilm.lut.display_transforms",
+        "ocio_thinfilm.lut.view_transforms",
+        "ocio_thinfilm.config.data",
+        "ocio_thinfilm.registry",
     )
 )
 def _fitted_nodes(source, display, view, size, shaper):
@@ -449,7 +453,8 @@ def _with_table(text, nodes):
     lines = text.split("\n")
     rows = [i for i, line in enumerate(lines) if _TABLE_ROW.match(line)][-(size**3) :]
     flat = np.asarray(nodes, dtype=np.float64).transpose(2, 1, 0, 3).reshape(-1, 3) + 0.0
-    for i, (r, g, b) in zip(rows, flat, strict=True):
+    # Python floats (not numpy scalars) format several times faster
+    for i, (r, g, b) in zip(rows, flat.tolist(), strict=True):
         lines[i] = f"{r:.6f} {g:.6f} {b:.6f}".replace("-0.000000", "0.000000")
     return "\n".join(lines)
 
@@ -457,8 +462,7 @@ def _with_table(text, nodes):
 #: A row of a 3D table: three numbers.
 _TABLE_ROW = re.compile(r"^\s*[-+0-9.eE]+ [-+0-9.eE]+ [-+0-9.eE]+\s*$")
 #: A line of a LUT's table: numbers only (OCIO's .cube writer prints them as %.6f).
-_TABLE_LINE = re.compile(r"^[-+0-9. ]+$", re.MULTILINE)
-_TRAILING_ZEROS = re.compile(r"(?:(\.\d*?[1-9])|\.)0*(?=[ \n]|$)")
+_TABLE_LINE = re.compile(r"[-+0-9. ]+")
 
 
 def _without_trailing_zeros(text):
@@ -468,7 +472,18 @@ def _without_trailing_zeros(text):
     .cube reader parses either form, and a 65^3 display .cube shrinks by about 40 % (clipped
     colours are mostly 0 and 1).
     """
-    return _TABLE_LINE.sub(lambda m: _TRAILING_ZEROS.sub(r"\1", m.group(0)), text)
+    short: dict[str, str] = {}  # the tables repeat their values (0 and 1 most of all)
+
+    def shortest(token: str) -> str:
+        if token not in short:
+            short[token] = token.rstrip("0").rstrip(".") if "." in token else token
+        return short[token]
+
+    lines = text.split("\n")
+    for i, line in enumerate(lines):
+        if line and _TABLE_LINE.fullmatch(line):
+            lines[i] = " ".join(shortest(t) for t in line.split(" "))
+    return "\n".join(lines)
 
 
 def _write_text(path, text):
