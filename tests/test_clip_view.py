@@ -6,7 +6,7 @@ Sets: (a) object and interference colours (``evaluation.colours.object_colours``
 reflectances, ColorCheckers, Munsell, thin films, Morpho), (b) monochromatic stimuli
 380-700 nm at Y in {0.02, 0.1, 0.3, 0.6}, (c) random XYZ inside ACES AP0 with
 0 <= Y <= 1, (e) spectral-line mixtures up to Y = 0.99
-(``evaluation.colours.spectral_mixtures``), (d) extremes. The issue's targets for
+(``evaluation.colours.spectral_mixtures``), (d) extremes. The accuracy targets for
 (a)-(c) and (e): dE2000 p99 <= 0.5 and max <= 1.5, |dY| <= 1e-3, output in gamut,
 in-gamut colours unchanged (dE2000 <= 0.1).
 Where a target is not reached the test asserts what is reached and a strict xfail
@@ -64,7 +64,7 @@ def measured(cfg):
 #: fast pow at 1.0 gives 1.0000165 through BT.1886; every view, the baselines too).
 TOL = 1e-4
 
-#: The issue's targets for every set: dE2000 p99, max, |dY|, in-gamut colours' max.
+#: The accuracy targets for every set: dE2000 p99, max, |dY|, in-gamut colours' max.
 TARGET = (0.5, 1.5, 1e-3, 0.1)
 #: What the design reaches, per set (same order), measured on these sets: all three
 #: displays are within these numbers.

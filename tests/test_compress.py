@@ -211,7 +211,7 @@ def measured(cfg):
 @pytest.mark.parametrize("display", DISPLAYS)
 @pytest.mark.parametrize("name", ["object", "monochromatic", "ap0", "mixtures"])
 def test_view_against_the_analytic_compression(measured, display, name):
-    """The clip issue's targets: dE2000 p99 <= 0.5, max <= 1.5, |dY| <= 1e-3."""
+    """The clip's accuracy targets: dE2000 p99 <= 0.5, max <= 1.5, |dY| <= 1e-3."""
     m = measured[display, name]
     assert m["p99"] <= 0.5 and m["max"] <= 1.5 and m["dY"] <= 1e-3, m
 

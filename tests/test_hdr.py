@@ -8,7 +8,7 @@ the BT.2100 OOTF of the signal's parallelepiped; the truth is computed here with
 OOTF written out from BT.2100 (Table 5), not with the package's ops. The code values
 are decoded with colour-science's ST 2084 / HLG EOTFs.
 
-The sets are the clip issue's (tests/test_clip_view.py), scaled by k.
+The sets are the clip's test sets (evaluation.colours.gamut_map_sets), scaled by k.
 """
 
 from __future__ import annotations
@@ -116,9 +116,9 @@ def _measured(cfg):
 #: (1.5e-5 of an sRGB code) dominate: in-gamut object colours at 1 cd/m2 reach 1.1e-3
 #: relative; below the floor the error is absolute, under 2e-3 cd/m2.
 FLOOR = 2.0
-#: The issue's targets: dE2000 p99, max, relative luminance error, in-gamut dE2000.
+#: The accuracy targets: dE2000 p99, max, relative luminance error, in-gamut dE2000.
 TARGET = (0.5, 1.5, 1e-3, 0.1)
-#: Out-of-gamut colours: the SDR clip LUTs' |dY| (<= 1e-3 absolute, the clip issue's
+#: Out-of-gamut colours: the SDR clip LUTs' |dY| (<= 1e-3 absolute, the clip's
 #: target), scaled, is a relative error up to 3.2e-3 on spectral-line mixtures
 #: (|dY| 3.3e-4 at Y ~ 0.1); the relative target is met by in-gamut colours only.
 REACHED_OUTSIDE = 4e-3
