@@ -139,12 +139,8 @@ def main() -> None:
 def error_against_time() -> None:
     """Section 3 of the module docstring (:func:`evaluation.films.error_against_time`)."""
     from evaluation.films import error_against_time as measure
-    from ocio_thinfilm.physics import films as films_module
 
-    text = TEN_FILMS + "[films.OilConst]\nstack = ['vacuum', 'Oil', 'W']\nangle_deg = 30\n"
-    text += "[materials.W]\nn = 1.33\n"
-    films = films_module.parse_films(text, "films.toml")
-    result = measure({key: films[key] for key in ("OilConst", "Temper", "SilicaOnGold")})
+    result = measure()
     print(
         f"one film, {result['thicknesses']} thicknesses x {result['wavelengths']} "
         f"wavelengths: Airy {result['airy_seconds'] * 1e3:.0f} ms, transfer matrices "

@@ -6,36 +6,11 @@ from evaluation.films import error_against_time
 from evaluation.report.context import Section
 from evaluation.report.measure import fmt, table
 
-#: The films measured: oil on water at 30 degrees (constant indices), an oxide on iron
-#: (temper colours: an absorbing substrate) and silica on gold at normal incidence
-#: (colour-science 0.4.7's TMM is off at oblique incidence on dispersive or absorbing
-#: media, docs/films.md).
-FILMS_TOML = """
-[materials.W]
-n = 1.33
-
-[films.OilOnWater]
-stack = ["air", "mineral oil", "W"]
-range_um = [0, 1.5]
-angle_deg = 30
-
-[films.Temper]
-stack = ["air", "Fe2O3", "Fe"]
-range_um = [0, 0.5]
-
-[films.SilicaOnGold]
-stack = ["air", "fused silica", "Au"]
-range_um = [0, 1.0]
-"""
-
 
 def section(ctx) -> Section:
     """The Airy sum against the transfer-matrix recursion, and table size against ΔE2000."""
-    from ocio_thinfilm.physics import films as films_module
-
-    films = films_module.parse_films(FILMS_TOML, "report.toml")
     sizes = (32, 128, 512) if ctx.quick else (32, 64, 128, 256, 512, 1024, 2048)
-    result = error_against_time(films, sizes=sizes, samples=200 if ctx.quick else 500)
+    result = error_against_time(sizes=sizes, samples=200 if ctx.quick else 500)
     rows = [
         [key] + [f"{fmt(r['dE_max'])} / {fmt(r['seconds'] * 1e3)} ms" for r in rows]
         for key, rows in result["tables"].items()
