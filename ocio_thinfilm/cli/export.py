@@ -54,7 +54,49 @@ def _run_bake(args) -> int:
     return 0
 
 
+def _run_shader(args) -> int:
+    """``export shader``: the view's map as GLSL or DCTL."""
+    from ocio_thinfilm.colour import compress
+    from ocio_thinfilm.export import shader, view
+
+    for option, given in (
+        ("--kind", args.kind != "phase-change"),
+        ("--index", args.index is not None),
+        ("--range", args.range is not None),
+        ("--size", args.size is not None),
+        ("--format", args.format is not None),
+        ("--resolve-shaper", args.resolve_shaper),
+        ("--films", args.films is not None),
+        ("--film", args.film is not None),
+    ):
+        if given:
+            raise UsageError(f"{option} does not apply to 'export shader' (code, not a LUT)")
+    if args.lang is None:
+        raise UsageError(f"--lang is needed for 'export shader': {' or '.join(shader.LANGUAGES)}")
+    source = registry.REFERENCE if args.source is None else args.source
+    out = args.out
+    if out is None and args.display is not None and args.view is not None:
+        out = f"{view.set_name(source, args.display, args.view)}.{args.lang}"
+    threshold = compress.THRESHOLD if args.compress_threshold is None else args.compress_threshold
+    limit = compress.LIMIT if args.compress_limit is None else args.compress_limit
+    path = shader.export_shader(
+        out if out is not None else "ocio_thinfilm_view",
+        args.lang,
+        args.display,
+        args.view,
+        source,
+        threshold=threshold,
+        limit=limit,
+    )
+    print(f"wrote {path}")
+    return 0
+
+
 def _run_export(args) -> int:
+    if args.table == "shader":
+        return _run_shader(args)
+    if args.lang is not None:
+        raise UsageError(f"--lang applies to 'export shader', not {args.table!r}")
     if args.table == "view":
         from ocio_thinfilm.export.view import export_view
 
@@ -167,9 +209,11 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         "table",
         metavar="TABLE",
         help="film (thickness table), morpho (angle table), clip (the "
-        "constant-lightness clip) or view (a display/view of the config "
+        "constant-lightness clip), view (a display/view of the config "
         "from --from SPACE: display code values; cube, csp, clf, ctf, "
-        "spi3d, or spi1d for thin-film inputs)",
+        "spi3d, or spi1d for thin-film inputs) or shader (the same view as "
+        "code, --lang glsl or dctl: the Constant-Lightness Clip and Compress "
+        "views computed per pixel, no LUT)",
     )
     e.add_argument(
         "--kind",
@@ -246,5 +290,29 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         "(thickness along x) into --out DIR, or one of them to --out FILE",
     )
     e.add_argument("--film", default=None, metavar="KEY", help="film: the film of --films")
+    e.add_argument(
+        "--lang",
+        default=None,
+        choices=None,
+        metavar="LANG",
+        help="shader: glsl (a function vec3 ocio_thinfilm_view(vec3), GLSL 3.30 / ES "
+        "3.00) or dctl (a DaVinci Resolve transform DCTL)",
+    )
+    e.add_argument(
+        "--compress-threshold",
+        type=float,
+        default=None,
+        metavar="T",
+        help="Constant-Lightness Compress: boundary distance up to which colours stay, "
+        "0 < T < 1 (default 0.8; for shader the knob's default)",
+    )
+    e.add_argument(
+        "--compress-limit",
+        type=float,
+        default=None,
+        metavar="L",
+        help="Constant-Lightness Compress: boundary distance mapped onto the boundary, "
+        "L > 1 (default 1.3; for shader the knob's default)",
+    )
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)

@@ -5,6 +5,8 @@ objects).
 
 - :mod:`.files` -- standalone table and clip LUTs (``export film|morpho|clip``);
 - :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``);
+- :mod:`.shader` -- the clip and compression views as GLSL and DCTL code, no LUT
+  (``export shader``);
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.

@@ -1,0 +1,38 @@
+// Runs a transform DCTL (included as DCTL_FILE) over float32 RGB triples: stdin -> stdout.
+// Usage: runner N [threshold limit]   (knobs only for DCTLs that declare the sliders)
+// With the single argument "sliders" it prints the sliders' declarations.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "dctl_host.h"
+#include DCTL_FILE
+
+int main(int argc, char **argv)
+{
+#ifdef DCTL_KNOBS
+    if (argc == 2 && std::strcmp(argv[1], "sliders") == 0) {
+        const dctl_slider *s[2] = {&ocio_thinfilm_threshold_ui, &ocio_thinfilm_limit_ui};
+        for (const dctl_slider *u : s)
+            std::printf("%s %.9g %.9g %.9g %.9g\n", u->label, u->def, u->lo, u->hi, u->step);
+        return 0;
+    }
+    if (argc == 4) {
+        ocio_thinfilm_threshold = std::strtof(argv[2], nullptr);
+        ocio_thinfilm_limit = std::strtof(argv[3], nullptr);
+    }
+#endif
+    if (argc < 2) return 2;
+    long n = std::strtol(argv[1], nullptr, 10);
+    std::vector<float> px(3 * n);
+    if (std::fread(px.data(), sizeof(float), px.size(), stdin) != px.size()) return 3;
+    for (long i = 0; i < n; ++i) {
+        float3 o = transform(1, 1, 0, 0, px[3 * i], px[3 * i + 1], px[3 * i + 2]);
+        px[3 * i] = o.x;
+        px[3 * i + 1] = o.y;
+        px[3 * i + 2] = o.z;
+    }
+    if (std::fwrite(px.data(), sizeof(float), px.size(), stdout) != px.size()) return 4;
+    return std::fflush(stdout) == 0 ? 0 : 5;
+}

@@ -1,0 +1,577 @@
+"""The views' map as code: GLSL and DaVinci Resolve DCTL, exact and with live knobs.
+
+Where a host runs code per pixel, the ``Constant-Lightness Clip`` and
+``Constant-Lightness Compress`` views need no LUT: the map is a few lines of arithmetic
+(Smits & Meyer 1990, Section 3.2). :func:`shader_source` writes the whole view, from an
+input colour space to display code values, as one function:
+
+1. the input's decoding and matrix to CIE-XYZ-D65, each stage limited to +-1e6 the way
+   the config's colour spaces and views limit it (NaN and -Inf become the lowest value,
+   +Inf the highest, as OCIO's Range does);
+2. an HDR display's scale into its SDR gamut: XYZ / k for PQ (k = peak / 203); for HLG
+   the BT.2100 inverse OOTF to scene light (ITU-R BT.2100-2, Table 5);
+3. XYZ -> the display's linear RGB and the map: the grey of the same luminance Y (the
+   display white scaled to Y, on R = G = B), the normalised distance ``d`` to the
+   display's parallelepiped along the ray from it (the largest of the fractions to the
+   six faces), and the scale ``k`` of the distance: ``1`` up to the threshold, the ACES
+   1.3 power curve (S-2020-001, power 1.2) to the limit, ``1 / d`` (the clip) beyond;
+   colours with ``Y <= 0`` are black, ``Y >= 1`` white (:mod:`ocio_thinfilm.colour.clip`
+   and :mod:`ocio_thinfilm.colour.compress` are the same map in NumPy);
+4. the display's encoding: the sRGB piecewise curve (IEC 61966-2-1), BT.1886's
+   ``L ** (1 / 2.4)``, SMPTE ST 2084 with Y = 1 at 203 cd/m2, or the BT.2100 HLG OETF
+   of the scene light.
+
+The clip is the compression with threshold = limit = 1. Colours whose ray ends on the
+boundary get the channels that meet a face set exactly to it (0 or 1), so display
+encodings with an infinite slope at 0 (BT.1886, ST 2084) do not turn float32 round-off
+into visible code values.
+
+- **GLSL** (:data:`LANGUAGES` ``"glsl"``): ``vec3 ocio_thinfilm_view(vec3 rgb)``, GLSL 3.30
+  and GLSL ES 3.00, no ``#version`` line (a host includes it: three.js, game engines,
+  Flame and Baselight Matchbox). The compression declares ``uniform float
+  ocio_thinfilm_threshold;`` and ``uniform float ocio_thinfilm_limit;``; uniforms a host
+  leaves unset (0) or sets outside ``0 < threshold < 1 < limit <= 100`` give the knobs the
+  file was exported with.
+- **DCTL** (``"dctl"``): the transform DCTL entry point ``__DEVICE__ float3
+  transform(int p_Width, int p_Height, int p_X, int p_Y, float p_R, float p_G, float
+  p_B)``; the compression has two ``DEFINE_UI_PARAMS`` sliders, ``Threshold`` and
+  ``Limit``. Only DCTL's documented built-ins (``_powf``, ``_fmaxf``, ``_sqrtf``,
+  ``_logf``, ``_exp2f``, ``_saturatef``, ``make_float3``).
+
+Every constant (matrices, luminance weights, scales) comes from the same registry and
+colorimetry the config is built from.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ocio_thinfilm import __version__, registry
+from ocio_thinfilm.checks import ParameterError, as_choice, as_real
+from ocio_thinfilm.colour import clip, colorimetry, compress
+from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
+from ocio_thinfilm.lut import ocio_ops
+
+__all__ = [
+    "LANGUAGES",
+    "SHADER_VIEWS",
+    "SHADER_SOURCES",
+    "KNOB_LIMIT_MAX",
+    "THRESHOLD_SLIDER",
+    "LIMIT_SLIDER",
+    "check_knobs",
+    "shader_source",
+    "export_shader",
+]
+
+#: The languages :func:`shader_source` writes.
+LANGUAGES = ("glsl", "dctl")
+#: The views it writes (the others are LUT-free already or pass data through).
+SHADER_VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress")
+#: The input colour spaces it decodes analytically: the reference, the scene-linear
+#: spaces and the encoded ones (the thin-film inputs are spectral tables: use
+#: ``export view``).
+SHADER_SOURCES = (registry.REFERENCE,) + registry.SCENE_LINEAR_SPACES + registry.ENCODED_SPACES
+#: The largest limit the shaders accept from a host (a larger uniform gives the defaults).
+KNOB_LIMIT_MAX = 100.0
+#: DCTL slider ranges (min, max, step); widened to hold the exported default.
+THRESHOLD_SLIDER = (0.05, 0.99, 0.01)
+LIMIT_SLIDER = (1.01, 3.0, 0.01)
+
+#: ACEScct (Academy S-2016-001): the linear segment's slope and offset, the log part's
+#: scale and offset, and the code value where they meet.
+_ACESCCT_A = 10.5402377416545
+_ACESCCT_B = 0.0729055341958355
+_ACESCCT_SCALE = 17.52
+_ACESCCT_OFFSET = 9.72
+_ACESCCT_BREAK = 0.155251141552511
+#: SMPTE ST 2084 constants.
+_PQ_M1 = 2610.0 / 16384.0
+_PQ_M2 = 2523.0 / 4096.0 * 128.0
+_PQ_C1 = 3424.0 / 4096.0
+_PQ_C2 = 2413.0 / 4096.0 * 32.0
+_PQ_C3 = 2392.0 / 4096.0 * 32.0
+#: ITU-R BT.2100 HLG OETF constants and the OOTF's system gamma for a 1000 cd/m2 peak.
+_HLG_A = 0.17883277
+_HLG_B = 1.0 - 4.0 * _HLG_A
+_HLG_C = 0.5 - _HLG_A * math.log(4.0 * _HLG_A)
+_HLG_GAMMA = 1.2
+
+
+@dataclass(frozen=True)
+class _Language:
+    """The tokens in which GLSL and DCTL differ (the code is otherwise shared)."""
+
+    vec3: str
+    make3: str
+    qualifier: str
+    suffix: str
+    pow: str
+    max: str
+    sqrt: str
+    log: str
+    exp2: str
+    saturate: str
+
+    def lit(self, x: float) -> str:
+        """Return a float literal that rounds to the float32 nearest ``x`` (finite)."""
+        mantissa, _, exponent = f"{float(np.float32(x)):.9g}".partition("e")
+        if "." not in mantissa:
+            mantissa += ".0"
+        return mantissa + (f"e{exponent}" if exponent else "") + self.suffix
+
+
+_GLSL = _Language(
+    vec3="vec3",
+    make3="vec3",
+    qualifier="",
+    suffix="",
+    pow="pow",
+    max="max",
+    sqrt="sqrt",
+    log="log",
+    exp2="exp2",
+    saturate="ocio_thinfilm_saturate",
+)
+_DCTL = _Language(
+    vec3="float3",
+    make3="make_float3",
+    qualifier="__DEVICE__ ",
+    suffix="f",
+    pow="_powf",
+    max="_fmaxf",
+    sqrt="_sqrtf",
+    log="_logf",
+    exp2="_exp2f",
+    saturate="_saturatef",
+)
+_LANGUAGE = {"glsl": _GLSL, "dctl": _DCTL}
+
+
+def check_knobs(threshold: float, limit: float) -> tuple[float, float]:
+    """Return the compression's knobs as floats, or refuse them.
+
+    Parameters
+    ----------
+    threshold : float
+        The normalised boundary distance up to which colours stay: ``0 < threshold < 1``.
+    limit : float
+        The distance mapped onto the boundary: ``1 < limit <= KNOB_LIMIT_MAX``.
+
+    Returns
+    -------
+    tuple of float
+
+    Raises
+    ------
+    ValueError
+        (:class:`~ocio_thinfilm.checks.ParameterError`) naming ``threshold`` or ``limit``.
+
+    Examples
+    --------
+    >>> check_knobs(0.6, 1.5)
+    (0.6, 1.5)
+    >>> check_knobs(0.8, 0.9)
+    Traceback (most recent call last):
+    ...
+    ocio_thinfilm.checks.ParameterError: limit must be a number in (1, 100], got 0.9
+    """
+    t = as_real("threshold", threshold)
+    lim = as_real("limit", limit)
+    if not (math.isfinite(t) and 0.0 < t < 1.0):
+        raise ParameterError("threshold", f" must be a number in (0, 1), got {threshold!r}")
+    if not (math.isfinite(lim) and 1.0 < lim <= KNOB_LIMIT_MAX):
+        raise ParameterError(
+            "limit", f" must be a number in (1, {KNOB_LIMIT_MAX:g}], got {limit!r}"
+        )
+    return t, lim
+
+
+# --------------------------------------------------------------------------- #
+# The parts of the code, each a function of the language
+# --------------------------------------------------------------------------- #
+def _helpers(L: _Language) -> str:
+    lim = L.lit(ocio_ops.LIMIT)
+    text = f"""
+// Components limited to [lo, hi]; NaN and -Inf give lo, +Inf gives hi (OCIO's Range).
+{L.qualifier}float ocio_thinfilm_range(float x, float lo, float hi)
+{{
+    return x > lo ? (x < hi ? x : hi) : lo;
+}}
+
+{L.qualifier}float ocio_thinfilm_finite(float x)
+{{
+    return ocio_thinfilm_range(x, -{lim}, {lim});
+}}
+"""
+    if L is _GLSL:
+        text += """
+float ocio_thinfilm_saturate(float x)
+{
+    return clamp(x, 0.0, 1.0);
+}
+"""
+    return text
+
+
+def _matrix_rows(L: _Language, M: np.ndarray, names: tuple[str, str, str]) -> list[str]:
+    a, b, c = names
+    return [
+        f"{L.lit(M[i, 0])} * {a} + {L.lit(M[i, 1])} * {b} + {L.lit(M[i, 2])} * {c}"
+        for i in range(3)
+    ]
+
+
+def _input(L: _Language, source: str) -> str:
+    """Input colour space -> CIE-XYZ-D65, limited as the config's colour space and view."""
+    lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_input(float r, float g, float b)", "{"]
+    if source == registry.REFERENCE:
+        lines.append(
+            f"    return {L.make3}(ocio_thinfilm_finite(r), ocio_thinfilm_finite(g), "
+            "ocio_thinfilm_finite(b));"
+        )
+        return "\n".join(lines + ["}", ""])
+    space = registry.linear_space_of(source)
+    if space is None:  # pragma: no cover - SHADER_SOURCES holds only these
+        raise ParameterError("source", f" must be one of {SHADER_SOURCES}, got {source!r}")
+    if source != space.name:  # an encoded space: ACEScct (S-2016-001) codes -> linear
+        lo = _ACESCCT_A * -ocio_ops.LIMIT + _ACESCCT_B
+        hi = (math.log2(ocio_ops.LIMIT) + _ACESCCT_OFFSET) / _ACESCCT_SCALE
+        for ch in "rgb":
+            lines.append(
+                f"    {ch} = ocio_thinfilm_range({ch}, {L.lit(lo)}, {L.lit(hi)});"
+                f"  {ch} = {ch} <= {L.lit(_ACESCCT_BREAK)} ? ({ch} - {L.lit(_ACESCCT_B)}) / "
+                f"{L.lit(_ACESCCT_A)} : {L.exp2}({ch} * {L.lit(_ACESCCT_SCALE)} - "
+                f"{L.lit(_ACESCCT_OFFSET)});"
+            )
+    for ch in "rgb":
+        lines.append(f"    {ch} = ocio_thinfilm_finite({ch});")
+    M = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(space.colorimetry))
+    X, Y, Z = _matrix_rows(L, M, ("r", "g", "b"))
+    lines += [
+        f"    float X = ocio_thinfilm_finite({X});",
+        f"    float Y = ocio_thinfilm_finite({Y});",
+        f"    float Z = ocio_thinfilm_finite({Z});",
+        f"    return {L.make3}(X, Y, Z);",
+        "}",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def _map(L: _Language, gamut: str, soft: bool) -> str:
+    """Display-linear RGB of ``gamut`` -> the map (Smits & Meyer 1990, Section 3.2)."""
+    w = ", ".join(f"{v:.6f}" for v in clip.luminance_weights(gamut))
+    one, zero = L.lit(1.0), L.lit(0.0)
+    text = ""
+    if soft:
+        p = compress.POWER
+        text += f"""
+// The compressed distance over the distance, threshold < d < limit: the ACES 1.3 power
+// curve (S-2020-001, power {p:g}) through (threshold, threshold) with slope 1, reaching
+// the boundary (1) at the limit.
+{L.qualifier}float ocio_thinfilm_scale(float d, float t, float l)
+{{
+    float s = (l - t) / {L.pow}({L.pow}((l - t) / ({one} - t), {L.lit(p)}) - {one}, {L.lit(1 / p)});
+    float x = d - t;
+    return (t + x / {L.pow}({one} + {L.pow}(x / s, {L.lit(p)}), {L.lit(1 / p)})) / d;
+}}
+"""
+    # the distance of one channel along the ray from the grey Y (in (0, 1)) to its faces
+    dist = "{c} < Y ? (Y - {c}) / Y : ({c} - Y) / ({one} - Y)"
+    scale = "d >= l ? {one} / d : ocio_thinfilm_scale(d, t, l)" if soft else "{one} / d"
+    knobs = ", float t, float l" if soft else ""
+    inside = "t" if soft else one
+    on_face = "l" if soft else one
+    text += f"""
+// Display-linear RGB -> the map: towards the grey of the same luminance Y (R = G = B =
+// Y), by the scale k of the normalised distance d to the gamut's faces.
+// Y is the colour's luminance (the weights of R, G, B: {w}), the input's CIE Y:
+// taken from XYZ, no float32 cancellation between large channels moves it.
+{L.qualifier}{L.vec3} ocio_thinfilm_map(float r, float g, float b, float Y{knobs})
+{{
+    if (!(Y > {zero})) return {L.make3}({zero}, {zero}, {zero});
+    if (Y >= {one}) return {L.make3}({one}, {one}, {one});
+    float dr = {dist.format(c="r", one=one)};
+    float dg = {dist.format(c="g", one=one)};
+    float db = {dist.format(c="b", one=one)};
+    float d = {L.max}(dr, {L.max}(dg, db));
+    if (d <= {inside}) return {L.make3}(r, g, b);
+    float k = {scale.format(one=one)};
+    float mr = Y + k * (r - Y);
+    float mg = Y + k * (g - Y);
+    float mb = Y + k * (b - Y);
+    if (d >= {on_face}) {{
+        // on the boundary: the channels that meet a face are on it exactly
+        if (dr == d) mr = r < Y ? {zero} : {one};
+        if (dg == d) mg = g < Y ? {zero} : {one};
+        if (db == d) mb = b < Y ? {zero} : {one};
+    }}
+    return {L.make3}({L.saturate}(mr), {L.saturate}(mg), {L.saturate}(mb));
+}}
+"""
+    return text
+
+
+def _encoding(L: _Language, entry: registry.AnyDisplay) -> str:
+    """Display-linear -> code value of one channel (``v`` in [0, 1], or [0, k] for PQ)."""
+    one, zero = L.lit(1.0), L.lit(0.0)
+    head = f"{L.qualifier}float ocio_thinfilm_encode(float v)\n{{\n"
+    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
+        scale = registry.HDR_REFERENCE_WHITE / 10000.0
+        body = (
+            f"    // SMPTE ST 2084; v = 1 is the reference white, {registry.HDR_REFERENCE_WHITE:g}"
+            " cd/m2\n"
+            f"    float p = v > {zero} ? {L.pow}(v * {L.lit(scale)}, {L.lit(_PQ_M1)}) : {zero};\n"
+            f"    return {L.pow}(({L.lit(_PQ_C1)} + {L.lit(_PQ_C2)} * p) / ({one} + "
+            f"{L.lit(_PQ_C3)} * p), {L.lit(_PQ_M2)});\n"
+        )
+    elif isinstance(entry, registry.HDRDisplay):
+        body = (
+            "    // ITU-R BT.2100 HLG OETF of the scene light E in [0, 1]\n"
+            f"    return v <= {L.lit(1 / 12)} ? {L.sqrt}({L.lit(3.0)} * v) : "
+            f"{L.lit(_HLG_A)} * {L.log}({L.lit(12.0)} * v - {L.lit(_HLG_B)}) + {L.lit(_HLG_C)};\n"
+        )
+    elif entry.encoding.offset is None:
+        gamma = entry.encoding.gamma
+        body = (
+            f"    // ITU-R BT.1886 with a black level of 0: L ** (1 / {gamma:g})\n"
+            f"    return v > {zero} ? {L.pow}(v, {L.lit(1 / gamma)}) : {zero};\n"
+        )
+    else:
+        gamma, offset = entry.encoding.gamma, entry.encoding.offset
+        # where the linear segment meets the power with the same value and slope (as
+        # OCIO's ExponentWithLinearTransform; IEC 61966-2-1 rounds it to 0.0031308, 12.92)
+        brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
+        slope = (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
+        body = (
+            f"    // IEC 61966-2-1 piecewise: {slope:.6g} L below {brk:.6g}, then "
+            f"{1 + offset:g} L ** (1 / {gamma:g}) - {offset:g}\n"
+            f"    return v <= {L.lit(brk)} ? {L.lit(slope)} * v : "
+            f"{L.lit(1 + offset)} * {L.pow}(v, {L.lit(1 / gamma)}) - {L.lit(offset)};\n"
+        )
+    return head + body + "}\n"
+
+
+def _display(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
+    """CIE-XYZ-D65 -> code values: the HDR scale, the matrix, the map, the encoding."""
+    gamut = entry.gamut.name
+    M = colorimetry.matrix_XYZ_to_RGB(gamut)
+    knobs, args = (", float t, float l", ", t, l") if soft else ("", "")
+    lines = [
+        f"{L.qualifier}{L.vec3} ocio_thinfilm_display(float X, float Y, float Z{knobs})",
+        "{",
+    ]
+    scale_out = "v"
+    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
+        k = entry.scale
+        lines.append(f"    // the PQ volume is the gamut's parallelepiped scaled by {k:.6g}")
+        lines += [f"    {c} = {c} * {L.lit(1 / k)};" for c in "XYZ"]
+        scale_out = f"v * {L.lit(k)}"
+    elif isinstance(entry, registry.HDRDisplay):
+        # BT.2100 Table 5 (L_B = 0): F_D = L_W Y_S ** (gamma - 1) E; the display light of
+        # luminance Y_D has scene light E = F_D / (L_W Y_S ** (gamma - 1)), Y_S =
+        # (Y_D / L_W) ** (1 / gamma); the map runs on E, the signal's parallelepiped.
+        a = registry.HDR_REFERENCE_WHITE / entry.peak
+        lines += [
+            "    // HLG: the BT.2100 inverse OOTF to scene light E (the signal's volume is",
+            f"    // the gamut's parallelepiped in E); peak {entry.peak:g} cd/m2, gamma "
+            f"{_HLG_GAMMA:g}",
+            f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y * {L.lit(a)}, "
+            f"{L.lit(1 / _HLG_GAMMA - 1)}) : {L.lit(0.0)};",
+        ]
+        lines += [f"    {c} = {c} * f;" for c in "XYZ"]
+    R, G, B = _matrix_rows(L, M, ("X", "Y", "Z"))
+    lines += [
+        f"    {L.vec3} m = ocio_thinfilm_map({R},",
+        f"        {G},",
+        f"        {B}, Y{args});",
+    ]
+    enc = [f"ocio_thinfilm_encode({scale_out.replace('v', 'm.' + c)})" for c in "xyz"]
+    lines += [f"    return {L.make3}({', '.join(enc)});", "}", ""]
+    return "\n".join(lines)
+
+
+def _header(L, lang, source, entry, view, knobs) -> str:
+    name = "GLSL" if lang == "glsl" else "DaVinci Resolve DCTL"
+    lines = [
+        f"// {view}: {source} -> {entry.name} code values, as {name}.",
+        f"// Written by ocio-thinfilm {__version__} (ocio-thinfilm export shader): the map of",
+        "// the OpenColorIO config's view, computed per pixel instead of from its LUTs.",
+        '// Smits & Meyer (1990), "Newton\'s Colors", Section 3.2: colours outside the',
+        "// display's RGB parallelepiped move at constant luminance Y towards the grey of",
+        "// the same Y.",
+    ]
+    if knobs is not None:
+        t, lim = knobs
+        lines += [
+            f"// Compression: the ACES 1.3 power curve (power {compress.POWER:g}); colours",
+            f"// within threshold (default here {t:g}) of the boundary distance stay, a",
+            f"// colour limit (default here {lim:g}) boundary distances out lands on it.",
+        ]
+    lines += [
+        "// Output for every finite input is finite and in [0, 1]; NaN and -Inf components",
+        "// count as the lowest value, +Inf as the highest (as the config's view).",
+    ]
+    if lang == "glsl":
+        lines += [
+            "// GLSL 3.30 / GLSL ES 3.00 (declare precision highp float), no #version line:",
+            "// call vec3 ocio_thinfilm_view(vec3 rgb).",
+        ]
+        if knobs is not None:
+            lines += [
+                "// Set the uniforms ocio_thinfilm_threshold and ocio_thinfilm_limit; left",
+                f"// at 0 or outside 0 < threshold < 1 < limit <= {KNOB_LIMIT_MAX:g} they give "
+                "the defaults.",
+            ]
+    return "\n".join(lines) + "\n"
+
+
+def shader_source(
+    lang: str,
+    display: str,
+    view: str,
+    source: str = registry.REFERENCE,
+    *,
+    threshold: float = compress.THRESHOLD,
+    limit: float = compress.LIMIT,
+) -> str:
+    """Return the view's map as GLSL or DCTL source code.
+
+    Parameters
+    ----------
+    lang : str
+        ``"glsl"`` or ``"dctl"`` (:data:`LANGUAGES`).
+    display : str
+        A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS` (SDR or HDR).
+    view : str
+        ``"Constant-Lightness Clip"`` or ``"Constant-Lightness Compress"``.
+    source : str, optional
+        The input colour space (:data:`SHADER_SOURCES`), default ``CIE-XYZ-D65``.
+    threshold, limit : float, optional
+        The compression's knobs as the code's defaults (the GLSL's fallback for unset
+        uniforms, the DCTL sliders' defaults): ``0 < threshold < 1 < limit``. Ignored
+        by the clip.
+
+    Returns
+    -------
+    str
+        The source: GLSL defines ``vec3 ocio_thinfilm_view(vec3 rgb)``, DCTL the
+        ``transform`` entry point.
+
+    Raises
+    ------
+    ValueError
+        (:class:`~ocio_thinfilm.checks.ParameterError`) naming the parameter.
+
+    Examples
+    --------
+    >>> text = shader_source("glsl", "sRGB", "Constant-Lightness Compress")
+    >>> "uniform float ocio_thinfilm_threshold;" in text, "#version" in text
+    (True, False)
+    >>> "DEFINE_UI_PARAMS" in shader_source("dctl", "Rec.2100-PQ", "Constant-Lightness Clip")
+    False
+    """
+    as_choice("lang", lang, LANGUAGES)
+    as_choice("display", display, registry.ALL_DISPLAYS)
+    as_choice("view", view, SHADER_VIEWS)
+    if source in registry.THIN_FILM_SPACES:
+        raise ParameterError(
+            "source",
+            f" {source!r} is a spectral table, not a formula: its views are LUTs "
+            "(export view); the shaders take one of " + ", ".join(SHADER_SOURCES),
+        )
+    as_choice("source", source, SHADER_SOURCES)
+    t, lim = check_knobs(threshold, limit)
+    soft = view == "Constant-Lightness Compress"
+    L = _LANGUAGE[lang]
+    entry = registry.as_display(display)
+    parts = [
+        _header(L, lang, source, entry, view, (t, lim) if soft else None),
+    ]
+    if soft and lang == "glsl":
+        parts.append("uniform float ocio_thinfilm_threshold;\nuniform float ocio_thinfilm_limit;\n")
+    if soft and lang == "dctl":
+        t_lo, t_hi, t_step = THRESHOLD_SLIDER
+        l_lo, l_hi, l_step = LIMIT_SLIDER
+        parts.append(
+            "DEFINE_UI_PARAMS(ocio_thinfilm_threshold, Threshold, DCTLUI_SLIDER_FLOAT, "
+            f"{t:g}, {min(t_lo, t):g}, {max(t_hi, t):g}, {t_step:g})\n"
+            "DEFINE_UI_PARAMS(ocio_thinfilm_limit, Limit, DCTLUI_SLIDER_FLOAT, "
+            f"{lim:g}, {min(l_lo, lim):g}, {max(l_hi, lim):g}, {l_step:g})\n"
+        )
+    parts += [
+        _helpers(L),
+        _input(L, source),
+        _map(L, entry.gamut.name, soft),
+        _encoding(L, entry),
+        _display(L, entry, soft),
+    ]
+    if soft:
+        check = (
+            f"if (!(t > {L.lit(0.0)} && t < {L.lit(1.0)} && l > {L.lit(1.0)} && "
+            f"l <= {L.lit(KNOB_LIMIT_MAX)})) {{ t = {L.lit(t)}; l = {L.lit(lim)}; }}"
+        )
+        knob_lines = [
+            "    float t = ocio_thinfilm_threshold;",
+            "    float l = ocio_thinfilm_limit;",
+            f"    {check}",
+        ]
+        args = ", t, l"
+    else:
+        knob_lines, args = [], ""
+    if lang == "glsl":
+        entry_lines = ["vec3 ocio_thinfilm_view(vec3 rgb)", "{", *knob_lines]
+        entry_lines.append("    vec3 xyz = ocio_thinfilm_input(rgb.x, rgb.y, rgb.z);")
+    else:
+        entry_lines = [
+            "__DEVICE__ float3 transform(int p_Width, int p_Height, int p_X, int p_Y, "
+            "float p_R, float p_G, float p_B)",
+            "{",
+            *knob_lines,
+            "    float3 xyz = ocio_thinfilm_input(p_R, p_G, p_B);",
+        ]
+    entry_lines += [f"    return ocio_thinfilm_display(xyz.x, xyz.y, xyz.z{args});", "}", ""]
+    parts.append("\n".join(entry_lines))
+    return "\n".join(p.strip("\n") + "\n" for p in parts)
+
+
+def export_shader(
+    path: StrPath,
+    lang: str,
+    display: str,
+    view: str,
+    source: str = registry.REFERENCE,
+    *,
+    threshold: float = compress.THRESHOLD,
+    limit: float = compress.LIMIT,
+) -> Path:
+    """Write :func:`shader_source` to ``path`` (written aside, checked, then renamed).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file to write (``.glsl``, ``.dctl`` or any name); an existing file that
+        ocio-thinfilm did not write is refused by the I/O layer's rules.
+    lang, display, view, source, threshold, limit
+        As :func:`shader_source`.
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        For a bad argument (naming it) or an output path that cannot be written.
+    """
+    text = shader_source(lang, display, view, source, threshold=threshold, limit=limit)
+    path = check_output_file(path, "path")
+    with atomic_file(path) as tmp:
+        Path(tmp).write_text(text)
+    return Path(path)

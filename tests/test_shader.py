@@ -1,0 +1,334 @@
+"""The views' map as code (``ocio-thinfilm export shader``): GLSL on the headless Mesa
+context and DCTL compiled as C++, held to the double-precision analytic view.
+
+The truth is :func:`evaluation.shaders.analytic_view`: the input decoded by
+colour-science, the analytic map (``colour.clip.clip_XYZ``,
+``colour.compress.compress_XYZ``), the display encoding by colour-science's transfer
+functions. The shaders run in float32 on the same float32 inputs. What no test here
+covers (a real DaVinci Resolve, Flame, Baselight, a browser's WebGL other than
+Chromium's): docs/shaders.md.
+"""
+
+from __future__ import annotations
+
+import re
+import warnings
+
+import numpy as np
+import pytest
+
+from evaluation.colours import gamut_map_sets
+from evaluation.shaders import DctlView, GlslView, analytic_view, compiler, source_values
+from evaluation.views import EXTREME_XYZ, apply_view
+from ocio_thinfilm import registry
+from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.cli.main import main
+from ocio_thinfilm.export import shader
+
+#: The target: float32 code values within 1e-3 (0.26 / 255) of the analytic view.
+TOLERANCE = 1e-3
+CLIP, COMPRESS = shader.SHADER_VIEWS
+#: Knobs other than the defaults the compression is checked with.
+OTHER_KNOBS = [(0.6, 1.5), (0.9, 1.05), (0.3, 3.0)]
+
+
+@pytest.fixture(scope="module")
+def sets():
+    return gamut_map_sets()
+
+
+@pytest.fixture(scope="module")
+def gl():
+    from evaluation import gpu
+
+    try:
+        return gpu.default_context()
+    except RuntimeError as error:
+        pytest.skip(f"no headless OpenGL context: {error}")
+
+
+@pytest.fixture(scope="module")
+def cxx():
+    if compiler() is None:
+        pytest.skip("no C++ compiler (g++) to build the DCTL with")
+
+
+_BUILT: dict = {}
+
+
+def _view(lang, display, view, source=registry.REFERENCE, version="330", **knobs):
+    """The exported shader, compiled once per module run."""
+    key = (lang, display, view, source, version, tuple(sorted(knobs.items())))
+    if key not in _BUILT:
+        text = shader.shader_source(lang, display, view, source, **knobs)
+        _BUILT[key] = GlslView(text, version) if lang == "glsl" else DctlView(text)
+    return _BUILT[key]
+
+
+@pytest.fixture(params=["glsl", "dctl"])
+def lang(request):
+    request.getfixturevalue("gl" if request.param == "glsl" else "cxx")
+    return request.param
+
+
+def _truth(values, source, display, view, knobs=(0.8, 1.3)):
+    with warnings.catch_warnings():  # colour-science's HLG evaluates log(<0) in a masked branch
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return analytic_view(values, source, display, view, *knobs)
+
+
+@pytest.mark.parametrize("view", shader.SHADER_VIEWS)
+@pytest.mark.parametrize("display", registry.ALL_DISPLAYS)
+def test_the_code_is_the_analytic_view_on_every_test_set(lang, display, view, sets):
+    """Object, monochromatic, random-AP0 and spectral-mixture colours (scaled into an
+    HDR display's volume), default knobs and others: within 1e-3 code values."""
+    code = _view(lang, display, view)
+    scale = registry.as_display(display).scale
+    knob_sets = [(0.8, 1.3)] + (OTHER_KNOBS if view == COMPRESS else [])
+    worst = {}
+    for knobs in knob_sets:
+        for name, XYZ in sets.items():
+            x = (XYZ * scale).astype(np.float32)
+            got = code.apply(x, *knobs)
+            worst[knobs, name] = float(
+                np.abs(got - _truth(x, registry.REFERENCE, display, view, knobs)).max()
+            )
+    print({k: round(v * 1e3, 4) for k, v in worst.items()}, "(1e-3 code values)")
+    assert max(worst.values()) <= TOLERANCE
+
+
+@pytest.mark.parametrize("source", shader.SHADER_SOURCES[1:])
+@pytest.mark.parametrize("display", ["sRGB", "Rec.2100-HLG"])
+def test_every_input_space_is_decoded_exactly(lang, source, display, sets):
+    """ACES2065-1, ACEScg, ACEScct and the linear RGB spaces: the same sets as values of
+    the input space (colour-science encodes ACEScct), both views."""
+    scale = registry.as_display(display).scale
+    for view in shader.SHADER_VIEWS:
+        code = _view(lang, display, view, source)
+        for name, XYZ in sets.items():
+            v = source_values(XYZ * scale, source).astype(np.float32)
+            err = float(np.abs(code.apply(v) - _truth(v, source, display, view)).max())
+            assert err <= TOLERANCE, (view, name, err)
+
+
+@pytest.mark.parametrize("view", shader.SHADER_VIEWS)
+@pytest.mark.parametrize("display", registry.ALL_DISPLAYS)
+def test_glsl_es_300_compiles_and_agrees(gl, display, view, sets):
+    """The same file as GLSL ES 3.00 (precision highp float): the same results."""
+    es = _view("glsl", display, view, "ACEScct", version="es300")
+    desktop = _view("glsl", display, view, "ACEScct")
+    v = source_values(sets["mixtures"], "ACEScct").astype(np.float32)
+    assert np.abs(es.apply(v) - desktop.apply(v)).max() <= 1e-6
+
+
+_INF, _NAN = np.inf, np.nan
+#: Non-finite components, alone and together.
+NON_FINITE = np.array(
+    [
+        [_NAN, _NAN, _NAN],
+        [_INF, _INF, _INF],
+        [-_INF, -_INF, -_INF],
+        [_NAN, 0.5, 0.5],
+        [0.5, _NAN, 0.5],
+        [0.3, 0.2, _NAN],
+        [_INF, 0.5, 0.5],
+        [-_INF, 0.5, 0.5],
+        [0.5, _INF, 0.5],
+        [0.5, -_INF, 0.5],
+        [0.3, 0.2, _INF],
+        [0.3, 0.2, -_INF],
+        [_NAN, _INF, -_INF],
+    ],
+    dtype=np.float32,
+)
+
+
+def _as_the_config_limits(values):
+    """NaN and -Inf as -1e6, +Inf as 1e6: what the config's Range makes of them."""
+    v = np.where(np.isnan(values), -1e6, values)
+    return np.clip(v, -1e6, 1e6).astype(np.float32)
+
+
+@pytest.mark.parametrize("view", shader.SHADER_VIEWS)
+@pytest.mark.parametrize("display", registry.ALL_DISPLAYS)
+def test_every_finite_input_gives_finite_codes_and_non_finite_ones_the_config_s(
+    lang, display, view, cfg
+):
+    """Random components of every magnitude up to 1e30 and float32's largest: finite
+    codes in [0, 1]; +-Inf and NaN give what the config's view gives them (NaN and -Inf
+    the lowest value, +Inf the highest), which is the analytic view of those values."""
+    code = _view(lang, display, view)
+    rng = np.random.default_rng(5)
+    magnitude = 10.0 ** rng.uniform(-40, 30, (20000, 3))
+    finite = np.concatenate(
+        [EXTREME_XYZ, (magnitude * rng.choice([-1.0, 1.0], (20000, 3))).astype(np.float32)]
+    )
+    got = code.apply(finite)
+    assert np.isfinite(got).all() and got.min() >= 0.0 and got.max() <= 1.0
+    # the extreme set itself against the analytic view (float32 keeps its luminance: the
+    # code takes Y from XYZ, so no cancellation between channels of 1e6)
+    assert (
+        np.abs(
+            got[: len(EXTREME_XYZ)] - _truth(EXTREME_XYZ, registry.REFERENCE, display, view)
+        ).max()
+        <= TOLERANCE
+    )
+
+    got = code.apply(NON_FINITE)
+    limited = _as_the_config_limits(NON_FINITE)
+    np.testing.assert_array_equal(got, code.apply(limited))
+    assert np.abs(got - _truth(limited, registry.REFERENCE, display, view)).max() <= TOLERANCE
+    config = apply_view(cfg, display, NON_FINITE, view=view)
+    np.testing.assert_allclose(config, apply_view(cfg, display, limited, view=view), atol=1e-3)
+    # all-NaN / all -Inf: black, all +Inf: the peak white, as the config's view (whose
+    # LUTs put that white 1.5e-4 below 1 in one channel)
+    np.testing.assert_allclose(got[:3], config[:3], atol=1e-3)
+
+
+def test_glsl_uniforms_left_unset_or_invalid_give_the_exported_knobs(gl, sets):
+    text = shader.shader_source("glsl", "sRGB", COMPRESS, threshold=0.6, limit=1.5)
+    assert "uniform float ocio_thinfilm_threshold;" in text
+    assert "uniform float ocio_thinfilm_limit;" in text
+    assert not re.search(r"^\s*#\s*version", text, re.M)
+    code = GlslView(text)
+    try:
+        x = sets["monochromatic"].astype(np.float32)
+        exported = _truth(x, registry.REFERENCE, "sRGB", COMPRESS, (0.6, 1.5))
+        for knobs in [(0.0, 0.0), (1.2, 1.5), (0.6, 0.9), (0.6, 1e9), (_NAN, 1.5)]:
+            assert np.abs(code.apply(x, *knobs) - exported).max() <= TOLERANCE, knobs
+        other = code.apply(x, 0.8, 1.3)
+        assert np.abs(other - _truth(x, registry.REFERENCE, "sRGB", COMPRESS)).max() <= TOLERANCE
+        assert np.abs(other - exported).max() > 0.05  # the knobs do move colours
+    finally:
+        code.release()
+
+
+def test_dctl_sliders_and_built_ins(cxx):
+    text = shader.shader_source("dctl", "Rec.2100-PQ", COMPRESS, "ACEScct", threshold=0.7)
+    assert (
+        "__DEVICE__ float3 transform(int p_Width, int p_Height, int p_X, int p_Y, "
+        "float p_R, float p_G, float p_B)" in text
+    )
+    sliders = DctlView(text).sliders()
+    assert set(sliders) == {"Threshold", "Limit"}
+    assert sliders["Threshold"][0] == pytest.approx(0.7) and sliders["Limit"][0] == pytest.approx(
+        1.3
+    )
+    lo, hi = sliders["Threshold"][1:3]
+    assert 0.0 < lo < hi < 1.0
+    assert sliders["Limit"][1] > 1.0
+    # DCTL's documented math built-ins (DaVinci Resolve's DCTL reference, section 8) are
+    # the only calls of names that start with an underscore; every float literal ends in f
+    documented = {
+        "_fabs",
+        "_powf",
+        "_logf",
+        "_log2f",
+        "_log10f",
+        "_expf",
+        "_exp2f",
+        "_exp10f",
+        "_copysignf",
+        "_fmaxf",
+        "_fminf",
+        "_clampf",
+        "_saturatef",
+        "_sqrtf",
+        "_ceilf",
+        "_floorf",
+        "_truncf",
+        "_round",
+        "_fmod",
+        "_hypotf",
+    }
+    code = "\n".join(
+        line.split("//")[0] for line in text.splitlines() if not line.startswith("DEFINE_UI")
+    )
+    assert set(re.findall(r"\b(_\w+)\s*\(", code)) <= documented
+    assert not re.findall(r"\b\d+\.\d+(?:e[-+]?\d+)?(?![\w.])", code)
+    clip_text = shader.shader_source("dctl", "sRGB", CLIP)
+    assert "DEFINE_UI_PARAMS" not in clip_text and "uniform" not in shader.shader_source(
+        "glsl", "sRGB", CLIP
+    )
+
+
+def test_knobs_move_the_dctl_as_they_move_the_map(cxx, sets):
+    code = _view("dctl", "Display P3", COMPRESS)
+    x = sets["mixtures"].astype(np.float32)
+    for knobs in OTHER_KNOBS:
+        assert (
+            np.abs(
+                code.apply(x, *knobs) - _truth(x, registry.REFERENCE, "Display P3", COMPRESS, knobs)
+            ).max()
+            <= TOLERANCE
+        )
+
+
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        (dict(lang="hlsl"), "lang"),
+        (dict(display="Rec.709"), "display"),
+        (dict(view="Raw"), "view"),
+        (dict(source="Thin Film Morpho Iridescence"), "source"),
+        (dict(source="sRGB - Display"), "source"),
+        (dict(threshold=0.0), "threshold"),
+        (dict(threshold=1.0), "threshold"),
+        (dict(limit=1.0), "limit"),
+        (dict(limit=float("nan")), "limit"),
+    ],
+)
+def test_library_refuses_bad_arguments_naming_them(kwargs, parameter):
+    args = dict(lang="glsl", display="sRGB", view=COMPRESS, source=registry.REFERENCE)
+    args.update(kwargs)
+    knobs = {k: args.pop(k) for k in ("threshold", "limit") if k in args}
+    with pytest.raises(ParameterError) as info:
+        shader.shader_source(args["lang"], args["display"], args["view"], args["source"], **knobs)
+    assert info.value.parameter == parameter
+
+
+def test_cli_writes_the_file_and_refuses_bad_options(tmp_path, capsys, cxx, sets):
+    out = tmp_path / "p3.dctl"
+    argv = ["export", "shader", "--lang", "dctl", "--display", "Display P3", "--view", COMPRESS]
+    assert (
+        main(argv + ["--compress-threshold", "0.6", "--compress-limit", "1.5", "--out", str(out)])
+        == 0
+    )
+    code = DctlView(out.read_text())
+    x = sets["ap0"].astype(np.float32)
+    truth = _truth(x, registry.REFERENCE, "Display P3", COMPRESS, (0.6, 1.5))
+    assert np.abs(code.apply(x) - truth).max() <= TOLERANCE  # the sliders' defaults
+    assert code.sliders()["Threshold"][0] == pytest.approx(0.6)
+    capsys.readouterr()
+    for extra, option in [
+        (["--compress-threshold", "1.3"], "--compress-threshold"),
+        (["--compress-limit", "0.9"], "--compress-limit"),
+        (["--lang", "hlsl"], "--lang"),
+        (["--size", "33"], "--size"),
+        (["--from", "Thin Film Phase-Change Thickness"], "--from"),
+    ]:
+        bad = tmp_path / "bad.dctl"
+        assert main(argv + extra + ["--out", str(bad)]) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and option in err, err
+        assert not bad.exists()
+    assert (
+        main(
+            [
+                "export",
+                "view",
+                "--lang",
+                "glsl",
+                "--display",
+                "sRGB",
+                "--view",
+                CLIP,
+                "--from",
+                "ACEScct",
+                "--out",
+                str(tmp_path / "v.cube"),
+            ]
+        )
+        == 2
+    )
+    assert "--lang" in capsys.readouterr().err
