@@ -37,6 +37,8 @@ __all__ = [
     "GlslView",
     "DctlView",
     "compiler",
+    "count_operations",
+    "OPERATIONS",
 ]
 
 #: The config's limit of every component (+-1e6; NaN and -Inf to the lowest).
@@ -313,6 +315,53 @@ class DctlView:
         done = subprocess.run(args, input=rgb.tobytes(), capture_output=True, check=True)
         return np.frombuffer(done.stdout, dtype=np.float32).reshape(-1, 3).copy()
 
+    def time(self, pixels: npt.ArrayLike, repeats: int = 5) -> float:
+        """Seconds of the fastest of ``repeats`` passes of ``transform`` over the pixels
+        (default knobs; timed inside the program, without reading or writing them)."""
+        rgb = np.ascontiguousarray(np.asarray(pixels, dtype=np.float32).reshape(-1, 3))
+        args = [str(self.binary), "time", str(len(rgb)), str(int(repeats))]
+        done = subprocess.run(args, input=rgb.tobytes(), capture_output=True, check=True)
+        return float(done.stdout.split()[0])
+
     def release(self) -> None:
         if self._tmp is not None:
             self._tmp.cleanup()
+
+
+#: The columns :func:`count_operations` returns, per pixel.
+OPERATIONS = ("add", "multiply", "divide", "compare", "min/max", "transcendental")
+
+
+def count_operations(dctl: str, pixels: npt.ArrayLike) -> dict:
+    """Mean float operations per pixel of a transform DCTL over ``pixels``.
+
+    The DCTL is compiled with ``float`` as a counting type (``dctl/dctl_count.h``):
+    adds and subtractions, multiplies, divides, comparisons, min/max (a clamp counts 2)
+    and transcendental calls (pow, exp2, log, sqrt), averaged over the pixels (the map
+    branches: colours inside the threshold take the short way).
+    """
+    cxx = compiler()
+    if cxx is None:
+        raise RuntimeError("no C++ compiler (g++) found")
+    rgb = np.ascontiguousarray(np.asarray(pixels, dtype=np.float32).reshape(-1, 3))
+    with tempfile.TemporaryDirectory() as work:
+        source = Path(work) / "view.dctl"
+        source.write_text(dctl)
+        binary = Path(work) / "dctl_count"
+        cmd = [
+            cxx,
+            "-std=c++17",
+            "-O1",
+            f"-I{_HERE}",
+            f'-DDCTL_FILE="{source}"',
+            str(_HERE / "dctl_count.cpp"),
+            "-o",
+            str(binary),
+        ]
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0:
+            raise RuntimeError(f"the counting build failed:\n{done.stderr}")
+        out = subprocess.run(
+            [str(binary), str(len(rgb))], input=rgb.tobytes(), capture_output=True, check=True
+        )
+    return dict(zip(OPERATIONS, (float(v) for v in out.stdout.split()), strict=True))
