@@ -10,6 +10,8 @@
   :mod:`evaluation.gpu`, as GLSL 3.30 or GLSL ES 3.00, float32 in and out.
 - :class:`DctlView` -- the exported DCTL compiled as C++ against ``dctl/dctl_host.h``
   (DCTL's built-ins on ``<cmath>`` in single precision) and run over float32 pixels.
+- :func:`analytic_inverse_view` -- the view's inverse (code values -> the input space)
+  in double precision, the compression's preimage by ``compress_RGB_inverse``.
 - :func:`source_values` -- CIE-XYZ-D65 test colours as values of an input space.
 """
 
@@ -33,6 +35,7 @@ __all__ = [
     "WHITE",
     "analytic_display_XYZ",
     "analytic_view",
+    "analytic_inverse_view",
     "source_values",
     "GlslView",
     "DctlView",
@@ -68,7 +71,8 @@ def _to_XYZ(values, source):
     assert space is not None, source
     v = np.asarray(values, dtype=np.float64)
     if source != space.name:  # ACEScct, decoded by colour-science (S-2016-001)
-        lo = colour.models.log_encoding_ACEScct(-LIMIT)
+        with np.errstate(invalid="ignore"):  # log2 of -LIMIT, in the masked branch
+            lo = colour.models.log_encoding_ACEScct(-LIMIT)
         hi = colour.models.log_encoding_ACEScct(LIMIT)
         v = colour.models.log_decoding_ACEScct(np.clip(np.where(np.isnan(v), lo, v), lo, hi))
     rgb = _limited(v)
@@ -144,6 +148,42 @@ def analytic_view(
     return colour.cctf_encoding(rgb, function="sRGB")
 
 
+def analytic_inverse_view(
+    codes: npt.ArrayLike,
+    source: str,
+    display: str,
+    view: str,
+    threshold: float = compress.THRESHOLD,
+    limit: float = compress.LIMIT,
+) -> np.ndarray:
+    """The view's inverse in double precision: code values (limited to [0, 1]) ->
+    values of ``source`` (N, 3), decoded by colour-science, the map's preimage by
+    ``colour.compress.compress_RGB_inverse`` (the clip's: the colour itself)."""
+    import colour
+
+    entry = registry.as_display(display)
+    gamut = entry.gamut.name
+    code = np.clip(np.nan_to_num(np.asarray(codes, dtype=np.float64).reshape(-1, 3)), 0.0, 1.0)
+    if not entry.hdr:
+        if entry.encoding.offset is None:
+            rgb = colour.models.eotf_BT1886(code)
+        else:
+            rgb = colour.cctf_decoding(code, function="sRGB")
+    elif entry.transfer == "PQ":
+        rgb = colour.models.eotf_ST2084(code) / WHITE / (entry.peak / WHITE)
+    else:
+        rgb = colour.models.oetf_inverse_BT2100_HLG(code)
+    rgb = np.clip(rgb, 0.0, 1.0)
+    if view == "Constant-Lightness Compress":
+        rgb = compress.compress_RGB_inverse(rgb, gamut, threshold, limit)
+    XYZ = colorimetry.RGB_to_XYZ(rgb, gamut)
+    if entry.hdr and entry.transfer == "PQ":
+        XYZ = XYZ * entry.peak / WHITE
+    elif entry.hdr:  # the BT.2100 OOTF, L_B = 0
+        XYZ = XYZ * (PEAK * np.maximum(XYZ[:, 1:2], 0.0) ** (HLG_GAMMA - 1.0)) / WHITE
+    return source_values(XYZ, source)
+
+
 def source_values(XYZ: npt.ArrayLike, source: str) -> np.ndarray:
     """CIE-XYZ-D65 -> values of the input space ``source`` (float64, (N, 3)); ACEScct
     encoded by colour-science."""
@@ -180,7 +220,7 @@ out vec4 thinfilm_output;
 void main()
 {{
     vec3 rgb = texelFetch(thinfilm_input, ivec2(gl_FragCoord.xy), 0).rgb;
-    thinfilm_output = vec4(ocio_thinfilm_view(rgb), 1.0);
+    thinfilm_output = vec4({function}(rgb), 1.0);
 }}
 """
 
@@ -197,16 +237,22 @@ class GlslView:
     """An exported GLSL view compiled on the headless context (:mod:`evaluation.gpu`).
 
     ``version``: ``"330"`` (GLSL 3.30 core) or ``"es300"`` (GLSL ES 3.00 with
-    ``precision highp float``). Raises RuntimeError without a context, and moderngl's
-    error (the compiler's log) for code that does not compile.
+    ``precision highp float``); ``function``: the function run on each pixel
+    (``ocio_thinfilm_view`` or ``ocio_thinfilm_view_inverse``). Raises RuntimeError
+    without a context, and moderngl's error (the compiler's log) for code that does not
+    compile.
     """
 
-    def __init__(self, shader: str, version: str = "330", ctx=None):
+    def __init__(
+        self, shader: str, version: str = "330", ctx=None, function: str = "ocio_thinfilm_view"
+    ):
         from evaluation import gpu
 
         self.ctx = gpu.default_context() if ctx is None else ctx
         head, precision = _VERSIONS[version]
-        self.fragment = _FRAGMENT.format(version=head, precision=precision, shader=shader)
+        self.fragment = _FRAGMENT.format(
+            version=head, precision=precision, shader=shader, function=function
+        )
         self.program = self.ctx.program(
             vertex_shader=_VERTEX.format(version=head), fragment_shader=self.fragment
         )
@@ -276,7 +322,7 @@ class DctlView:
         source = work / "view.dctl"
         source.write_text(dctl)
         self.binary = work / "dctl_runner"
-        self.knobs = "DEFINE_UI_PARAMS" in dctl
+        self.knobs = "DCTLUI_SLIDER_FLOAT" in dctl
         cmd = [
             cxx,
             "-std=c++17",
@@ -306,12 +352,17 @@ class DctlView:
         rows = [line.split() for line in out.stdout.splitlines()]
         return {r[0]: tuple(float(v) for v in r[1:]) for r in rows}
 
-    def apply(self, pixels: npt.ArrayLike, threshold=None, limit=None) -> np.ndarray:
-        """Run ``transform`` on float32 pixels (knobs set when given); (N, 3) float32."""
+    def apply(
+        self, pixels: npt.ArrayLike, threshold=None, limit=None, invert: bool = False
+    ) -> np.ndarray:
+        """Run ``transform`` on float32 pixels (knobs set when given, the ``Invert`` check
+        box when ``invert``); (N, 3) float32."""
         rgb = np.ascontiguousarray(np.asarray(pixels, dtype=np.float32).reshape(-1, 3))
-        args = [str(self.binary), str(len(rgb))]
-        if threshold is not None or limit is not None:
-            args += [repr(float(threshold)), repr(float(limit))]
+        args = [str(self.binary), str(len(rgb)), f"invert={int(bool(invert))}"]
+        if threshold is not None:
+            args.append(f"threshold={float(threshold)!r}")
+        if limit is not None:
+            args.append(f"limit={float(limit)!r}")
         done = subprocess.run(args, input=rgb.tobytes(), capture_output=True, check=True)
         return np.frombuffer(done.stdout, dtype=np.float32).reshape(-1, 3).copy()
 

@@ -16,6 +16,7 @@ import pytest
 
 from evaluation.colours import gamut_map_sets, half_way_colours, object_colours
 from evaluation.views import OPTIMIZATION_LEVELS, apply_view, decode_display
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import compress_lut
 
@@ -383,3 +384,28 @@ def test_documented_accuracy_comes_from_the_benchmark(load_benchmark, marked):
         if (r["black"], r["white"]) == (compress_lut.SOFT_SIZE, compress_lut.SOFT_WHITE_SIZE)
     ]
     assert len(shipped) == len(DISPLAYS)
+
+
+@pytest.mark.parametrize("knobs", [(0.8, 1.3), (0.6, 1.5), (0.9, 1.05)])
+@pytest.mark.parametrize("display", registry.DISPLAYS)
+def test_the_inverse_is_the_preimage_within_the_limit(display, knobs):
+    """compress_RGB_inverse: every colour of the unit cube comes back through the map
+    (to 1e-12), from at most ``limit`` boundary distances out; a colour inside the limit
+    is its own preimage's image's preimage."""
+    rng = np.random.default_rng(2)
+    cube = rng.uniform(0.0, 1.0, (50000, 3))
+    pre = compress.compress_RGB_inverse(cube, display, *knobs)
+    assert np.abs(compress.compress_RGB(pre, display, *knobs) - cube).max() <= 1e-12
+    d = compress.boundary_distance(pre, display)
+    assert np.nanmax(d) <= knobs[1] * (1 + 1e-12)
+    # colours inside the limit: the inverse of the map gives them back
+    w = clip.luminance_weights(display)
+    Y = rng.uniform(0.05, 0.95, 50000)
+    direction = rng.normal(size=(50000, 3))
+    direction -= (direction @ w)[:, None]  # along a plane of constant Y
+    x = Y[:, None] + direction * 0.05
+    keep = compress.boundary_distance(x, display) < knobs[1] * 0.999
+    back = compress.compress_RGB_inverse(
+        compress.compress_RGB(x[keep], display, *knobs), display, *knobs
+    )
+    assert np.abs(back - x[keep]).max() <= 1e-9

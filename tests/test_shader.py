@@ -18,7 +18,14 @@ import numpy as np
 import pytest
 
 from evaluation.colours import gamut_map_sets
-from evaluation.shaders import DctlView, GlslView, analytic_view, compiler, source_values
+from evaluation.shaders import (
+    DctlView,
+    GlslView,
+    analytic_inverse_view,
+    analytic_view,
+    compiler,
+    source_values,
+)
 from evaluation.views import EXTREME_XYZ, apply_view
 from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError
@@ -56,12 +63,16 @@ def cxx():
 _BUILT: dict = {}
 
 
-def _view(lang, display, view, source=registry.REFERENCE, version="330", **knobs):
-    """The exported shader, compiled once per module run."""
-    key = (lang, display, view, source, version, tuple(sorted(knobs.items())))
+def _view(lang, display, view, source=registry.REFERENCE, version="330", inverse=False):
+    """The exported shader, compiled once per module run (GLSL: the view's function or
+    its inverse; the DCTL has both, its Invert check box picks)."""
+    key = (lang, display, view, source, version, inverse and lang == "glsl")
     if key not in _BUILT:
-        text = shader.shader_source(lang, display, view, source, **knobs)
-        _BUILT[key] = GlslView(text, version) if lang == "glsl" else DctlView(text)
+        text = shader.shader_source(lang, display, view, source)
+        function = "ocio_thinfilm_view_inverse" if inverse else "ocio_thinfilm_view"
+        _BUILT[key] = (
+            GlslView(text, version, function=function) if lang == "glsl" else DctlView(text)
+        )
     return _BUILT[key]
 
 
@@ -209,6 +220,7 @@ def test_dctl_sliders_and_built_ins(cxx):
         "__DEVICE__ float3 transform(int p_Width, int p_Height, int p_X, int p_Y, "
         "float p_R, float p_G, float p_B)" in text
     )
+    assert "DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert, DCTLUI_CHECK_BOX, 0)" in text
     sliders = DctlView(text).sliders()
     assert set(sliders) == {"Threshold", "Limit"}
     assert sliders["Threshold"][0] == pytest.approx(0.7) and sliders["Limit"][0] == pytest.approx(
@@ -247,7 +259,7 @@ def test_dctl_sliders_and_built_ins(cxx):
     assert set(re.findall(r"\b(_\w+)\s*\(", code)) <= documented
     assert not re.findall(r"\b\d+\.\d+(?:e[-+]?\d+)?(?![\w.])", code)
     clip_text = shader.shader_source("dctl", "sRGB", CLIP)
-    assert "DEFINE_UI_PARAMS" not in clip_text and "uniform" not in shader.shader_source(
+    assert "DCTLUI_SLIDER_FLOAT" not in clip_text and "uniform" not in shader.shader_source(
         "glsl", "sRGB", CLIP
     )
 
@@ -262,6 +274,54 @@ def test_knobs_move_the_dctl_as_they_move_the_map(cxx, sets):
             ).max()
             <= TOLERANCE
         )
+
+
+#: The inverse's target: the preimage within this ΔE2000 of the analytic one (relative to
+#: the display's peak white). Measured: <= 0.004 but for the PQ displays' compression,
+#: 0.115 (GLSL on llvmpipe) / 0.073 (DCTL as C++): the compression's inverse amplifies the
+#: float32 round-off of the decoded colour by 1 / (the curve's slope) near the limit (7.5
+#: at the defaults), and ST 2084's decoding loses most near its peak (c2 - c3 p cancels).
+INVERSE_TOLERANCE = 0.15
+
+
+@pytest.mark.parametrize("view", shader.SHADER_VIEWS)
+@pytest.mark.parametrize("display", registry.ALL_DISPLAYS)
+def test_the_inverse_is_the_analytic_inverse(lang, display, view):
+    """Display code values -> the input space (GLSL ``ocio_thinfilm_view_inverse``, the
+    DCTL's Invert check box): the colour the view maps onto each code, compared in
+    CIE XYZ with ΔE2000; and the view of it gives the code back."""
+    from evaluation.shaders import _to_XYZ
+    from ocio_thinfilm.colour import colorimetry
+
+    entry = registry.as_display(display)
+    rng = np.random.default_rng(11)
+    codes = rng.uniform(0.0, 1.0, (20000, 3))
+    if entry.hdr and entry.transfer == "PQ":  # the display's volume: up to the peak's code
+        codes *= _truth(
+            [[0.95047 * entry.scale, entry.scale, 1.08883 * entry.scale]],
+            registry.REFERENCE,
+            display,
+            CLIP,
+        )[0, 1]
+    codes = codes.astype(np.float32)
+    worst = {}
+    for source in (registry.REFERENCE, "ACEScct"):
+        inverse = _view(lang, display, view, source, inverse=True)
+        for knobs in [(0.8, 1.3)] + (OTHER_KNOBS[:1] if view == COMPRESS else []):
+            got = inverse.apply(codes, *knobs, **({"invert": True} if lang == "dctl" else {}))
+            assert np.isfinite(got).all()
+            truth = analytic_inverse_view(codes, source, display, view, *knobs)
+            de = colorimetry.delta_E2000(
+                _to_XYZ(got, source) / entry.scale, _to_XYZ(truth, source) / entry.scale
+            )
+            worst[source, knobs] = float(de.max())
+            if source == registry.REFERENCE:
+                again = _truth(got, source, display, view, knobs)
+                # well inside the range: the view gives the code back
+                inside = (codes > 0.05).all(axis=1) & (codes < 0.7).all(axis=1)
+                assert np.abs(again - codes)[inside].max() <= TOLERANCE
+    print({k: round(v, 4) for k, v in worst.items()}, "(ΔE2000)")
+    assert max(worst.values()) <= INVERSE_TOLERANCE
 
 
 @pytest.mark.parametrize(

@@ -39,9 +39,13 @@ static inline float3 make_float3(counted x, counted y, counted z) { return float
 static inline counted _powf(counted x, counted y) { ++dctl_ops.transcendental; return std::pow(x.v, y.v); }
 static inline counted _logf(counted x) { ++dctl_ops.transcendental; return std::log(x.v); }
 static inline counted _exp2f(counted x) { ++dctl_ops.transcendental; return std::exp2(x.v); }
+static inline counted _expf(counted x) { ++dctl_ops.transcendental; return std::exp(x.v); }
+static inline counted _log2f(counted x) { ++dctl_ops.transcendental; return std::log2(x.v); }
 static inline counted _sqrtf(counted x) { ++dctl_ops.transcendental; return std::sqrt(x.v); }
 static inline counted _fmaxf(counted x, counted y) { ++dctl_ops.minmax; return std::fmax(x.v, y.v); }
 static inline counted _fminf(counted x, counted y) { ++dctl_ops.minmax; return std::fmin(x.v, y.v); }
 static inline counted _saturatef(counted x) { dctl_ops.minmax += 2; return std::fmin(std::fmax(x.v, 0.0f), 1.0f); }
 
-#define DEFINE_UI_PARAMS(name, label, type, def, lo, hi, step) static counted name = (def);
+#define DCTL_UI_DCTLUI_SLIDER_FLOAT(name, label, def, lo, hi, step) static counted name = (def);
+#define DCTL_UI_DCTLUI_CHECK_BOX(name, label, def) static int name = (def);
+#define DEFINE_UI_PARAMS(name, label, type, ...) DCTL_UI_##type(name, label, __VA_ARGS__)

@@ -27,12 +27,17 @@ static inline float _fminf(float x, float y) { return std::fmin(x, y); }
 static inline float _clampf(float x, float lo, float hi) { return std::fmin(std::fmax(x, lo), hi); }
 static inline float _saturatef(float x) { return std::fmin(std::fmax(x, 0.0f), 1.0f); }
 
-// DEFINE_UI_PARAMS(variable, label, DCTLUI_SLIDER_FLOAT, default, min, max, step): a global
-// holding the default; its range is kept so a test can check the slider's declaration.
+// DEFINE_UI_PARAMS(variable, label, type, ...): a global holding the control's default,
+// which a test can set; a slider's range is kept so a test can check its declaration.
+// The float slider and the check box are mapped (what the exported shaders use).
 struct dctl_slider {
     const char *label;
     float def, lo, hi, step;
 };
-#define DEFINE_UI_PARAMS(name, label, type, def, lo, hi, step)                          \
-    static float name = (def);                                                          \
+#define DCTL_UI_DCTLUI_SLIDER_FLOAT(name, label, def, lo, hi, step)                      \
+    static float name = (def);                                                           \
     static const dctl_slider name##_ui = {#label, (def), (lo), (hi), (step)};
+#define DCTL_UI_DCTLUI_CHECK_BOX(name, label, def)                                       \
+    static int name = (def);                                                             \
+    static const char *name##_label = #label;
+#define DEFINE_UI_PARAMS(name, label, type, ...) DCTL_UI_##type(name, label, __VA_ARGS__)

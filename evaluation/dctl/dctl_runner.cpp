@@ -1,5 +1,5 @@
 // Runs a transform DCTL (included as DCTL_FILE) over float32 RGB triples: stdin -> stdout.
-// Usage: runner N [threshold limit]   (knobs only for DCTLs that declare the sliders)
+// Usage: runner N [threshold=T] [limit=L] [invert=0|1]   (the controls the DCTL declares)
 // With the single argument "sliders" it prints the sliders' declarations; "time N K"
 // reads N pixels, runs the transform over them K times and prints the fastest pass in
 // seconds (the output is not written).
@@ -21,11 +21,15 @@ int main(int argc, char **argv)
             std::printf("%s %.9g %.9g %.9g %.9g\n", u->label, u->def, u->lo, u->hi, u->step);
         return 0;
     }
-    if (argc == 4) {
-        ocio_thinfilm_threshold = std::strtof(argv[2], nullptr);
-        ocio_thinfilm_limit = std::strtof(argv[3], nullptr);
-    }
 #endif
+    for (int i = 3; i <= argc; ++i) {
+        const char *arg = argv[i - 1];
+        if (std::strncmp(arg, "invert=", 7) == 0) ocio_thinfilm_invert = std::atoi(arg + 7);
+#ifdef DCTL_KNOBS
+        if (std::strncmp(arg, "threshold=", 10) == 0) ocio_thinfilm_threshold = std::strtof(arg + 10, nullptr);
+        if (std::strncmp(arg, "limit=", 6) == 0) ocio_thinfilm_limit = std::strtof(arg + 6, nullptr);
+#endif
+    }
     if (argc == 4 && std::strcmp(argv[1], "time") == 0) {
         long n = std::strtol(argv[2], nullptr, 10), k = std::strtol(argv[3], nullptr, 10);
         std::vector<float> px(3 * n), out(3 * n);

@@ -57,6 +57,7 @@ __all__ = [
     "compression_curve_inverse",
     "boundary_distance",
     "compress_RGB",
+    "compress_RGB_inverse",
     "compress_XYZ",
     "soft_black_RGB",
     "soft_white_RGB",
@@ -243,6 +244,67 @@ def compress_RGB(
             )
         k = np.where(d > threshold, k, 1.0)
         out = np.where(d > threshold, np.clip(grey + k * (rgb - grey), 0.0, 1.0), rgb)
+        out[:, Y <= 0.0] = 0.0
+        out[:, Y >= 1.0] = 1.0
+        return out
+
+    return clip._apply(RGB, "RGB", kernel)
+
+
+def compress_RGB_inverse(
+    RGB: npt.ArrayLike,
+    display: registry.DisplayLike = "sRGB",
+    threshold: float = THRESHOLD,
+    limit: float = LIMIT,
+    power: float = POWER,
+) -> np.ndarray:
+    """Return the colours that :func:`compress_RGB` maps onto display-linear ``RGB``.
+
+    The compression is strictly increasing along each ray up to the limit, so every
+    colour of the gamut has one preimage at most ``limit`` boundary distances out: the
+    distance ``d'`` of the colour from its grey becomes
+    :func:`compression_curve_inverse` (d') (``limit`` on the boundary itself, where the
+    colours further out land too), along the same ray, Y kept. Colours up to the
+    threshold are their own preimage; ``Y <= 0`` gives black, ``Y >= 1`` white. Input
+    outside the unit cube is clamped to it first (the view's output range).
+
+    Parameters
+    ----------
+    RGB : array_like
+        Display-linear RGB of ``display``, last axis 3.
+    display : str or registry display
+        One of :data:`ocio_thinfilm.colour.clip.DISPLAYS`.
+    threshold, limit, power : float
+        The curve (:func:`compression_curve`).
+
+    Returns
+    -------
+    numpy.ndarray
+        Same shape and dtype (float32 or float64).
+
+    Examples
+    --------
+    The boundary colour (0.6, 0.3, 0) came from 1.3 boundary distances out; the map
+    takes it back there:
+
+    >>> out = compress_RGB_inverse([0.6, 0.3, 0.0])
+    >>> round(float(boundary_distance(out)), 6)
+    1.3
+    >>> bool(np.allclose(compress_RGB(out), [0.6, 0.3, 0.0], atol=1e-12))
+    True
+    """
+    threshold, limit, power = _check(threshold, limit, power)
+    luminance = clip.luminance_weights(display)
+
+    def kernel(rgb):
+        np.clip(rgb, 0.0, 1.0, out=rgb)
+        Y = luminance[0] * rgb[0] + luminance[1] * rgb[1] + luminance[2] * rgb[2]
+        grey = np.clip(Y, 0.0, 1.0)
+        d = _distance(rgb, grey)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            k = compression_curve_inverse(np.minimum(d, 1.0), threshold, limit, power) / d
+        k = np.where(d >= 1.0, limit / d, k)
+        out = np.where(d > threshold, grey + k * (rgb - grey), rgb)
         out[:, Y <= 0.0] = 0.0
         out[:, Y >= 1.0] = 1.0
         return out

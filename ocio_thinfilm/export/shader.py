@@ -21,6 +21,12 @@ input colour space to display code values, as one function:
    ``L ** (1 / 2.4)``, SMPTE ST 2084 with Y = 1 at 203 cd/m2, or the BT.2100 HLG OETF
    of the scene light.
 
+Both languages carry the view's inverse too (display code values -> the input space,
+the colour of the display's volume that the view maps onto each code: the
+compression's preimage at most ``limit`` boundary distances out, as the ACES gamut
+compression's ``invert``): GLSL ``vec3 ocio_thinfilm_view_inverse(vec3 code)``, the DCTL's
+``Invert`` check box.
+
 The clip is the compression with threshold = limit = 1. Colours whose ray ends on the
 boundary get the channels that meet a face set exactly to it (0 or 1), so display
 encodings with an infinite slope at 0 (BT.1886, ST 2084) do not turn float32 round-off
@@ -115,6 +121,8 @@ class _Language:
     sqrt: str
     log: str
     exp2: str
+    exp: str
+    log2: str
     saturate: str
 
     def lit(self, x: float) -> str:
@@ -135,6 +143,8 @@ _GLSL = _Language(
     sqrt="sqrt",
     log="log",
     exp2="exp2",
+    exp="exp",
+    log2="log2",
     saturate="ocio_thinfilm_saturate",
 )
 _DCTL = _Language(
@@ -147,6 +157,8 @@ _DCTL = _Language(
     sqrt="_sqrtf",
     log="_logf",
     exp2="_exp2f",
+    exp="_expf",
+    log2="_log2f",
     saturate="_saturatef",
 )
 _LANGUAGE = {"glsl": _GLSL, "dctl": _DCTL}
@@ -274,9 +286,15 @@ def _map(L: _Language, gamut: str, soft: bool) -> str:
 // The compressed distance over the distance, threshold < d < limit: the ACES 1.3 power
 // curve (S-2020-001, power {p:g}) through (threshold, threshold) with slope 1, reaching
 // the boundary (1) at the limit.
+{L.qualifier}float ocio_thinfilm_curve_s(float t, float l)
+{{
+    // the curve's scale: its asymptote is t + s, it reaches 1 at l
+    return (l - t) / {L.pow}({L.pow}((l - t) / ({one} - t), {L.lit(p)}) - {one}, {L.lit(1 / p)});
+}}
+
 {L.qualifier}float ocio_thinfilm_scale(float d, float t, float l)
 {{
-    float s = (l - t) / {L.pow}({L.pow}((l - t) / ({one} - t), {L.lit(p)}) - {one}, {L.lit(1 / p)});
+    float s = ocio_thinfilm_curve_s(t, l);
     float x = d - t;
     return (t + x / {L.pow}({one} + {L.pow}(x / s, {L.lit(p)}), {L.lit(1 / p)})) / d;
 }}
@@ -396,6 +414,147 @@ def _display(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
     return "\n".join(lines)
 
 
+def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
+    """Code value -> display-linear of one channel (the inverse of :func:`_encoding`).
+
+    Code values are limited to [0, 1] first (NaN to 0); PQ gives units of the reference
+    white (203 cd/m2), HLG the scene light E in [0, 1].
+    """
+    one, zero = L.lit(1.0), L.lit(0.0)
+    head = (
+        f"{L.qualifier}float ocio_thinfilm_decode(float v)\n{{\n"
+        f"    v = ocio_thinfilm_range(v, {zero}, {one});\n"
+    )
+    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
+        scale = 10000.0 / registry.HDR_REFERENCE_WHITE
+        body = (
+            "    // SMPTE ST 2084 EOTF, in units of the reference white\n"
+            f"    float p = {L.pow}(v, {L.lit(1 / _PQ_M2)});\n"
+            f"    float n = {L.max}(p - {L.lit(_PQ_C1)}, {zero}) / ({L.lit(_PQ_C2)} - "
+            f"{L.lit(_PQ_C3)} * p);\n"
+            f"    return n > {zero} ? {L.lit(scale)} * {L.pow}(n, {L.lit(1 / _PQ_M1)}) : {zero};\n"
+        )
+    elif isinstance(entry, registry.HDRDisplay):
+        body = (
+            "    // the inverse of the BT.2100 HLG OETF: scene light E in [0, 1]\n"
+            f"    return v <= {L.lit(0.5)} ? v * v / {L.lit(3.0)} : ({L.exp}((v - "
+            f"{L.lit(_HLG_C)}) / {L.lit(_HLG_A)}) + {L.lit(_HLG_B)}) / {L.lit(12.0)};\n"
+        )
+    elif entry.encoding.offset is None:
+        gamma = entry.encoding.gamma
+        body = (
+            f"    // ITU-R BT.1886 with a black level of 0: V ** {gamma:g}\n"
+            f"    return {L.pow}(v, {L.lit(gamma)});\n"
+        )
+    else:
+        gamma, offset = entry.encoding.gamma, entry.encoding.offset
+        brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
+        slope = (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
+        body = (
+            "    // IEC 61966-2-1 piecewise, inverted\n"
+            f"    return v <= {L.lit(slope * brk)} ? v / {L.lit(slope)} : "
+            f"{L.pow}((v + {L.lit(offset)}) / {L.lit(1 + offset)}, {L.lit(gamma)});\n"
+        )
+    return head + body + "}\n"
+
+
+def _unmap(L: _Language, gamut: str, soft: bool) -> str:
+    """Return the map's inverse on display-linear RGB in [0, 1] (the preimage)."""
+    w = clip.luminance_weights(gamut)
+    one, zero = L.lit(1.0), L.lit(0.0)
+    if not soft:
+        return f"""
+// The clip's inverse inside the gamut: every colour of the gamut is its own preimage.
+{L.qualifier}{L.vec3} ocio_thinfilm_unmap(float r, float g, float b)
+{{
+    return {L.make3}({L.saturate}(r), {L.saturate}(g), {L.saturate}(b));
+}}
+"""
+    p = compress.POWER
+    dist = "{c} < Y ? (Y - {c}) / Y : ({c} - Y) / ({one} - Y)"
+    return f"""
+// The compression's inverse: the colour at most limit boundary distances out that the
+// map takes to this one (the boundary itself: limit), along the same ray, Y kept.
+{L.qualifier}{L.vec3} ocio_thinfilm_unmap(float r, float g, float b, float t, float l)
+{{
+    r = {L.saturate}(r);
+    g = {L.saturate}(g);
+    b = {L.saturate}(b);
+    float Y = {L.lit(w[0])} * r + {L.lit(w[1])} * g + {L.lit(w[2])} * b;
+    if (!(Y > {zero})) return {L.make3}({zero}, {zero}, {zero});
+    if (Y >= {one}) return {L.make3}({one}, {one}, {one});
+    float dr = {dist.format(c="r", one=one)};
+    float dg = {dist.format(c="g", one=one)};
+    float db = {dist.format(c="b", one=one)};
+    float d = {L.max}(dr, {L.max}(dg, db));
+    if (d <= t) return {L.make3}(r, g, b);
+    float k = l / d;
+    if (d < {one}) {{
+        float s = ocio_thinfilm_curve_s(t, l);
+        float u = d - t;
+        k = (t + u / {L.pow}({one} - {L.pow}(u / s, {L.lit(p)}), {L.lit(1 / p)})) / d;
+    }}
+    return {L.make3}(Y + k * (r - Y), Y + k * (g - Y), Y + k * (b - Y));
+}}
+"""
+
+
+def _undisplay(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
+    """Code values -> CIE-XYZ-D65: the decoding, the map's inverse, the HDR scale."""
+    gamut = entry.gamut.name
+    Minv = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(gamut))
+    knobs, args = (", float t, float l", ", t, l") if soft else ("", "")
+    lines = [
+        f"{L.qualifier}{L.vec3} ocio_thinfilm_undisplay(float r, float g, float b{knobs})",
+        "{",
+    ]
+    decoded = [f"ocio_thinfilm_decode({c})" for c in "rgb"]
+    pq = isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ"
+    if pq:
+        decoded = [f"{d} * {L.lit(1 / entry.scale)}" for d in decoded]
+    lines.append(f"    {L.vec3} m = ocio_thinfilm_unmap({', '.join(decoded)}{args});")
+    rows = _matrix_rows(L, Minv, ("m.x", "m.y", "m.z"))
+    if pq:
+        rows = [f"{L.lit(entry.scale)} * ({row})" for row in rows]
+    lines += [f"    float {c} = {row};" for c, row in zip("XYZ", rows, strict=True)]
+    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "HLG":
+        # the BT.2100 OOTF: display light F_D = L_W Y_S ** (gamma - 1) E, in units of 203
+        a = entry.peak / registry.HDR_REFERENCE_WHITE
+        lines += [
+            f"    // the BT.2100 OOTF (gamma {_HLG_GAMMA:g}) back to display light, Y = 1 at "
+            f"{registry.HDR_REFERENCE_WHITE:g} cd/m2",
+            f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y, {L.lit(_HLG_GAMMA - 1)}) "
+            f": {L.lit(0.0)};",
+            "    X = X * f;",
+            "    Y = Y * f;",
+            "    Z = Z * f;",
+        ]
+    lines += [f"    return {L.make3}(X, Y, Z);", "}", ""]
+    return "\n".join(lines)
+
+
+def _output(L: _Language, source: str) -> str:
+    """CIE-XYZ-D65 -> the input colour space (the inverse of :func:`_input`)."""
+    lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_output(float X, float Y, float Z)", "{"]
+    if source == registry.REFERENCE:
+        return "\n".join(lines + [f"    return {L.make3}(X, Y, Z);", "}", ""])
+    space = registry.linear_space_of(source)
+    assert space is not None  # shader_source checked the source
+    M = colorimetry.matrix_XYZ_to_RGB(space.colorimetry)
+    R, G, B = _matrix_rows(L, M, ("X", "Y", "Z"))
+    lines += [f"    float r = {R};", f"    float g = {G};", f"    float b = {B};"]
+    if source != space.name:  # ACEScct encoding (S-2016-001)
+        brk = 2.0 ** (_ACESCCT_BREAK * _ACESCCT_SCALE - _ACESCCT_OFFSET)
+        for ch in "rgb":
+            lines.append(
+                f"    {ch} = {ch} <= {L.lit(brk)} ? {L.lit(_ACESCCT_A)} * {ch} + "
+                f"{L.lit(_ACESCCT_B)} : ({L.log2}({ch}) + {L.lit(_ACESCCT_OFFSET)}) / "
+                f"{L.lit(_ACESCCT_SCALE)};"
+            )
+    lines += [f"    return {L.make3}(r, g, b);", "}", ""]
+    return "\n".join(lines)
+
+
 def _header(L, lang, source, entry, view, knobs) -> str:
     name = "GLSL" if lang == "glsl" else "DaVinci Resolve DCTL"
     lines = [
@@ -417,10 +576,16 @@ def _header(L, lang, source, entry, view, knobs) -> str:
         "// Output for every finite input is finite and in [0, 1]; NaN and -Inf components",
         "// count as the lowest value, +Inf as the highest (as the config's view).",
     ]
+    if lang == "dctl":
+        lines += [
+            "// DaVinci Resolve: in the ResolveFX DCTL plugin for the controls; Invert takes",
+            "// display code values back to the input space.",
+        ]
     if lang == "glsl":
         lines += [
             "// GLSL 3.30 / GLSL ES 3.00 (declare precision highp float), no #version line:",
-            "// call vec3 ocio_thinfilm_view(vec3 rgb).",
+            "// call vec3 ocio_thinfilm_view(vec3 rgb); vec3 ocio_thinfilm_view_inverse(vec3",
+            "// code) takes display code values back to the input space.",
         ]
         if knobs is not None:
             lines += [
@@ -504,12 +669,18 @@ def shader_source(
             "DEFINE_UI_PARAMS(ocio_thinfilm_limit, Limit, DCTLUI_SLIDER_FLOAT, "
             f"{lim:g}, {min(l_lo, lim):g}, {max(l_hi, lim):g}, {l_step:g})\n"
         )
+    if lang == "dctl":
+        parts.append("DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert, DCTLUI_CHECK_BOX, 0)\n")
     parts += [
         _helpers(L),
         _input(L, source),
         _map(L, entry.gamut.name, soft),
         _encoding(L, entry),
         _display(L, entry, soft),
+        _decoding(L, entry),
+        _unmap(L, entry.gamut.name, soft),
+        _undisplay(L, entry, soft),
+        _output(L, source),
     ]
     if soft:
         check = (
@@ -524,18 +695,42 @@ def shader_source(
         args = ", t, l"
     else:
         knob_lines, args = [], ""
+    unmapped = "ocio_thinfilm_undisplay({}{})"
     if lang == "glsl":
-        entry_lines = ["vec3 ocio_thinfilm_view(vec3 rgb)", "{", *knob_lines]
-        entry_lines.append("    vec3 xyz = ocio_thinfilm_input(rgb.x, rgb.y, rgb.z);")
+        entry_lines = [
+            "vec3 ocio_thinfilm_view(vec3 rgb)",
+            "{",
+            *knob_lines,
+            "    vec3 xyz = ocio_thinfilm_input(rgb.x, rgb.y, rgb.z);",
+            f"    return ocio_thinfilm_display(xyz.x, xyz.y, xyz.z{args});",
+            "}",
+            "",
+            "// The view's inverse: display code values -> the input space (for colours",
+            "// of the display's volume; codes are limited to [0, 1]).",
+            "vec3 ocio_thinfilm_view_inverse(vec3 code)",
+            "{",
+            *knob_lines,
+            f"    vec3 xyz = {unmapped.format('code.x, code.y, code.z', args)};",
+            "    return ocio_thinfilm_output(xyz.x, xyz.y, xyz.z);",
+            "}",
+            "",
+        ]
     else:
         entry_lines = [
             "__DEVICE__ float3 transform(int p_Width, int p_Height, int p_X, int p_Y, "
             "float p_R, float p_G, float p_B)",
             "{",
             *knob_lines,
+            "    if (ocio_thinfilm_invert) {",
+            "        // the view's inverse: display code values -> the input space",
+            f"        float3 back = {unmapped.format('p_R, p_G, p_B', args)};",
+            "        return ocio_thinfilm_output(back.x, back.y, back.z);",
+            "    }",
             "    float3 xyz = ocio_thinfilm_input(p_R, p_G, p_B);",
+            f"    return ocio_thinfilm_display(xyz.x, xyz.y, xyz.z{args});",
+            "}",
+            "",
         ]
-    entry_lines += [f"    return ocio_thinfilm_display(xyz.x, xyz.y, xyz.z{args});", "}", ""]
     parts.append("\n".join(entry_lines))
     return "\n".join(p.strip("\n") + "\n" for p in parts)
 
