@@ -63,6 +63,12 @@ __all__ = [
     "SOFT_WHITE_INSIDE",
     "SOFT_WHITE_GRADED",
     "SOFT_WHITE_RATIO",
+    "TESTED_THRESHOLD",
+    "TESTED_LIMIT",
+    "KNOB_TARGETS",
+    "MEASURED_KNOBS",
+    "knobs_tested",
+    "untested_knobs_note",
     "CompressLUT",
     "compress_lut",
 ]
@@ -81,6 +87,22 @@ SOFT_WHITE_SIZE = 49
 SOFT_WHITE_INSIDE = 0.55
 SOFT_WHITE_GRADED = 9
 SOFT_WHITE_RATIO = 0.57
+
+#: The tested range of the knobs (threshold, limit), both bounds included: on a grid of
+#: pairs inside it (``benchmarks/bench_compress_knobs.py``, docs/compress.md) the baked
+#: view keeps the accuracy targets :data:`KNOB_TARGETS` of the defaults against the
+#: analytic map on every display.
+TESTED_THRESHOLD = (0.3, 0.85)
+TESTED_LIMIT = (1.1, 1.5)
+#: The defaults' accuracy targets, worst over the displays and the clip's test sets:
+#: dE2000 p99 and max, |dY| max against the analytic map; colours below the threshold
+#: (at most ``min(0.5, 0.625 threshold)`` of the way to the boundary: half-way at the
+#: defaults) moved by at most dE2000 0.1.
+KNOB_TARGETS = {"p99": 0.5, "max": 1.5, "dY": 1e-3, "inside": 0.1}
+#: Measured by ``benchmarks/bench_compress_knobs.py`` (reports/bench_compress_knobs.json):
+#: (threshold, limit) -> (dE2000 p99, dE2000 max, |dY| max, dE2000 max of colours below
+#: the threshold), each the worst over the displays and test sets.
+MEASURED_KNOBS: dict[tuple[float, float], tuple[float, float, float, float]] = {}
 
 
 @dataclass(frozen=True, eq=False)
@@ -130,7 +152,7 @@ class CompressLUT:
     def black_core(self) -> ocio_ops.Transform:
         """CLF-writable S_b: chart (u_a, u_b, Y) in and out."""
         name = f"{self.name} Black Faces"
-        t, lim, _ = self.parameters
+        t, lim = (soft.knob_text(v) for v in self.parameters[:2])
         return group(
             [
                 lut3d_transform(self.black, bitdepth="uint16"),
@@ -140,7 +162,7 @@ class CompressLUT:
             id=transform_id("Gamut_Map", name),
             description=(
                 f"Soft constant-lightness compression into {self.display}"
-                f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
+                f" (threshold {t}, limit {lim}), the squeeze by the "
                 "distance to the faces through black, before the clip's "
                 f"black pass: a {self.black.shape[0]}^3 tetrahedral "
                 "Lut3D over its own chromaticity chart, which stores its output "
@@ -156,7 +178,7 @@ class CompressLUT:
     def white_core(self) -> ocio_ops.Transform:
         """CLF-writable S_w: c_i / tops[i] in and out (after the clip's black pass)."""
         name = f"{self.name} White Faces"
-        t, lim, _ = self.parameters
+        t, lim = (soft.knob_text(v) for v in self.parameters[:2])
         return group(
             [
                 lut1d_transform(self.white_shaper, bitdepth="uint16"),
@@ -166,7 +188,7 @@ class CompressLUT:
             id=transform_id("Gamut_Map", name),
             description=(
                 f"Soft constant-lightness compression into {self.display}"
-                f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
+                f" (threshold {t}, limit {lim}), the squeeze by the "
                 "distance to the faces through white, before the clip's "
                 f"white pass: a {self.white.shape[0]}^3 tetrahedral "
                 "Lut3D over display RGB; keeps Y. See "
@@ -313,3 +335,69 @@ def compress_lut(
     return _compress_lut(
         name, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
     )
+
+
+def knobs_tested(threshold: float, limit: float) -> bool:
+    """Return whether the knobs lie in the tested range.
+
+    :data:`TESTED_THRESHOLD` and :data:`TESTED_LIMIT`, bounds included.
+
+    Parameters
+    ----------
+    threshold, limit : float
+        The compression's knobs.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> knobs_tested(0.8, 1.3), knobs_tested(0.95, 1.05)
+    (True, False)
+    """
+    (t_lo, t_hi), (l_lo, l_hi) = TESTED_THRESHOLD, TESTED_LIMIT
+    return bool(t_lo <= threshold <= t_hi and l_lo <= limit <= l_hi)
+
+
+def untested_knobs_note(threshold: float, limit: float) -> str | None:
+    """Return one line on knobs outside the tested range, with the measured figure.
+
+    ``None`` inside the range (:func:`knobs_tested`). Outside it, the line names the
+    tested range and the accuracy measured at the nearest measured pair
+    (:data:`MEASURED_KNOBS`: the pair itself when it was measured).
+
+    Parameters
+    ----------
+    threshold, limit : float
+        The compression's knobs.
+
+    Returns
+    -------
+    str or None
+    """
+    if knobs_tested(threshold, limit):
+        return None
+    (t_lo, t_hi), (l_lo, l_hi) = TESTED_THRESHOLD, TESTED_LIMIT
+    text = (
+        f"threshold {soft.knob_text(threshold)} / limit {soft.knob_text(limit)} lie outside "
+        f"the tested range (threshold {t_lo:g}-{t_hi:g}, limit {l_lo:g}-{l_hi:g}), where the "
+        f"baked view keeps dE2000 p99 <= {KNOB_TARGETS['p99']:g} / max <= "
+        f"{KNOB_TARGETS['max']:g} of the analytic map"
+    )
+    if MEASURED_KNOBS:
+        pair = min(
+            MEASURED_KNOBS,
+            key=lambda p: (abs(p[0] - threshold), abs(p[1] - limit)),
+        )
+        p99, worst, dY, inside = MEASURED_KNOBS[pair]
+        where = (
+            "measured there"
+            if pair == (threshold, limit)
+            else f"measured at {pair[0]:g} / {pair[1]:g}"
+        )
+        text += (
+            f"; {where}: p99 {p99:.2f} / max {worst:.2f}, |dY| {dY:.1e}, colours below "
+            f"the threshold moved by up to {inside:.3f} (docs/compress.md)"
+        )
+    return text
