@@ -44,6 +44,8 @@ __all__ = [
     "DISPLAY_LIST",
     "HDR_DISPLAY_LIST",
     "VIEW_LIST",
+    "COMPRESS_VIEW",
+    "compress_view_description",
     "THIN_FILM_LIST",
     "DISPLAYS",
     "HDR_DISPLAYS",
@@ -411,6 +413,39 @@ HDR_DISPLAY_LIST = (
     ),
 )
 
+#: The view whose knobs (threshold, limit) a bake may set.
+COMPRESS_VIEW = "Constant-Lightness Compress"
+
+
+def compress_view_description(threshold: str = "0.8", limit: str = "1.3") -> str:
+    """Return the description of the Constant-Lightness Compress view for its knobs.
+
+    Parameters
+    ----------
+    threshold, limit : str, optional
+        The knobs as the description states them
+        (:func:`ocio_thinfilm.colour.compress.knob_text`); the defaults are
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> "beyond 0.6 of the distance" in compress_view_description("0.6", "1.5")
+    True
+    """
+    return (
+        "Soft constant-lightness gamut compression: along the same ray as the clip "
+        "(towards the grey of the same luminance Y, which it keeps exactly), colours "
+        f"beyond {threshold} of the distance to the gamut boundary are compressed by the "
+        f"ACES 1.3 power curve so that {limit} boundary distances reach the boundary; "
+        "further out, the clip. Smooth where the clip is flat (four 3D LUTs, two of them "
+        "the clip's)."
+    )
+
+
 VIEW_LIST = (
     View(
         "Constant-Lightness Clip",
@@ -419,14 +454,7 @@ VIEW_LIST = (
         "through white); scene-linear 1.0 is display white, above white gives white, no "
         "tone mapping.",
     ),
-    View(
-        "Constant-Lightness Compress",
-        "Soft constant-lightness gamut compression: along the same ray as the clip "
-        "(towards the grey of the same luminance Y, which it keeps exactly), colours "
-        "beyond 0.8 of the distance to the gamut boundary are compressed by the ACES 1.3 "
-        "power curve so that 1.3 boundary distances reach the boundary; further out, the "
-        "clip. Smooth where the clip is flat (four 3D LUTs, two of them the clip's).",
-    ),
+    View(COMPRESS_VIEW, compress_view_description()),
     View("Channel Clamp", "Baseline: display-linear RGB clamped per channel to [0, 1]."),
     View(
         "ACES Gamut Compression",

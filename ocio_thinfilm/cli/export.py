@@ -13,6 +13,7 @@ import sys
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.checks import UsageError
+from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import bake as bake_module
 from ocio_thinfilm.export.files import FORMATS, export_lut
 from ocio_thinfilm.io import is_stdout
@@ -20,8 +21,63 @@ from ocio_thinfilm.lut import clip_lut
 
 __all__ = ["register"]
 
+#: The compression's knobs: option -> (``dest``, the library default).
+_KNOB_OPTIONS = {
+    "--compress-threshold": ("compress_threshold", compress_map.THRESHOLD),
+    "--compress-limit": ("compress_limit", compress_map.LIMIT),
+}
+
+
+def _compress_knobs(args) -> dict[str, float]:
+    """Return the knobs as the library's keyword arguments, checked, and warn if untested.
+
+    A knob out of range is a ParameterError naming the library parameter (the command
+    line names the option). Knobs outside the tested range
+    (:func:`ocio_thinfilm.lut.compress_lut.untested_knobs_note`) print one warning line
+    on stderr with the accuracy measured there.
+    """
+    from ocio_thinfilm.lut import compress_lut
+
+    names = tuple(dest for dest, _ in _KNOB_OPTIONS.values())
+    given = [
+        default if getattr(args, dest) is None else getattr(args, dest)
+        for dest, default in _KNOB_OPTIONS.values()
+    ]
+    threshold, limit = compress_map.check_knobs(*given, names=(names[0], names[1]))
+    note = compress_lut.untested_knobs_note(threshold, limit)
+    if note is not None:
+        print(f"ocio-thinfilm {args.command}: warning: {note}", file=sys.stderr)
+    return dict(zip(names, (threshold, limit), strict=True))
+
+
+def _knobs_given(args) -> list[str]:
+    return [
+        option for option, (dest, _) in _KNOB_OPTIONS.items() if getattr(args, dest) is not None
+    ]
+
+
+def _add_knob_options(parser: argparse.ArgumentParser, what: str) -> None:
+    parser.add_argument(
+        "--compress-threshold",
+        type=float,
+        default=None,
+        metavar="T",
+        help=f"{what}: the Constant-Lightness Compress view's threshold, the fraction of "
+        "the distance to the gamut boundary left untouched, 0 < T < 1 (default "
+        f"{compress_map.THRESHOLD:g}; tested range: docs/compress.md)",
+    )
+    parser.add_argument(
+        "--compress-limit",
+        type=float,
+        default=None,
+        metavar="L",
+        help=f"{what}: its limit, the boundary distance mapped onto the boundary, L > 1 "
+        f"(default {compress_map.LIMIT:g})",
+    )
+
 
 def _run_bake(args) -> int:
+    knobs = _compress_knobs(args)
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
         # --into CONFIG (merge into a studio config) and/or an .ocioz archive
         from ocio_thinfilm.config import merge
@@ -33,9 +89,9 @@ def _run_bake(args) -> int:
             raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
         clip_size = bake_module.check_clip_size(args.clip_size)
         path = (
-            merged.bake_into(args.into, args.out, clip_size=clip_size, films=args.films)
+            merged.bake_into(args.into, args.out, clip_size=clip_size, films=args.films, **knobs)
             if args.into
-            else merged.bake_archive(args.out, clip_size=clip_size, films=args.films)
+            else merged.bake_archive(args.out, clip_size=clip_size, films=args.films, **knobs)
         )
         print(f"wrote {path}")
         if args.into:  # a merged config has the base config's profile: say who reads it
@@ -49,6 +105,7 @@ def _run_bake(args) -> int:
         show_progress=not args.quiet,
         luts=args.luts,
         films=args.films,
+        **knobs,
     )
     print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
     return 0
@@ -97,8 +154,17 @@ def _run_export(args) -> int:
         return _run_shader(args)
     if args.lang is not None:
         raise UsageError(f"--lang applies to 'export shader', not {args.table!r}")
+    given = _knobs_given(args)
+    if given and (args.table != "view" or args.view != registry.COMPRESS_VIEW):
+        what = f"'export {args.table}'" if args.table != "view" else f"--view {args.view!r}"
+        raise UsageError(
+            f"{given[0]} applies to 'export view --view \"{registry.COMPRESS_VIEW}\"' and "
+            f"'export shader', not {what}"
+        )
     if args.table == "view":
         from ocio_thinfilm.export.view import export_view
+
+        knobs = _compress_knobs(args) if given else {}
 
         paths = export_view(
             args.source,
@@ -109,6 +175,7 @@ def _run_export(args) -> int:
             size=args.size,
             value_range=args.range,
             shaper=True if args.resolve_shaper else None,
+            **knobs,
         )
         for path in paths:
             print(f"wrote {path}")
@@ -194,6 +261,7 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         "film, 'Thin Film <key>' unless it sets a name (pixel value: physical "
         "thickness of its varying layer in um)",
     )
+    _add_knob_options(p, "the config")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_run_bake)
 
@@ -293,26 +361,10 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     e.add_argument(
         "--lang",
         default=None,
-        choices=None,
         metavar="LANG",
         help="shader: glsl (a function vec3 ocio_thinfilm_view(vec3), GLSL 3.30 / ES "
         "3.00) or dctl (a DaVinci Resolve transform DCTL)",
     )
-    e.add_argument(
-        "--compress-threshold",
-        type=float,
-        default=None,
-        metavar="T",
-        help="Constant-Lightness Compress: boundary distance up to which colours stay, "
-        "0 < T < 1 (default 0.8; for shader the knob's default)",
-    )
-    e.add_argument(
-        "--compress-limit",
-        type=float,
-        default=None,
-        metavar="L",
-        help="Constant-Lightness Compress: boundary distance mapped onto the boundary, "
-        "L > 1 (default 1.3; for shader the knob's default)",
-    )
+    _add_knob_options(e, "view and shader (there: the knobs' defaults)")
     e.add_argument("--quiet", action="store_true", help="no progress bar")
     e.set_defaults(func=_run_export)

@@ -46,13 +46,15 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.checks import ParameterError, as_real
 from ocio_thinfilm.colour import clip, colorimetry
 
 __all__ = [
     "THRESHOLD",
     "LIMIT",
     "POWER",
+    "check_knobs",
+    "knob_text",
     "compression_curve",
     "compression_curve_inverse",
     "boundary_distance",
@@ -71,11 +73,78 @@ LIMIT = 1.3
 POWER = 1.2
 
 
+def check_knobs(
+    threshold: object, limit: object, *, names: tuple[str, str] = ("threshold", "limit")
+) -> tuple[float, float]:
+    """Return the compression's knobs ``(threshold, limit)`` as floats, checked.
+
+    The threshold is a fraction of the distance to the gamut boundary, so it lies in
+    (0, 1); the limit is the distance mapped onto the boundary, beyond it: ``0 <
+    threshold < 1 < limit``, both finite.
+
+    Parameters
+    ----------
+    threshold, limit : float
+        The knobs (:func:`compression_curve`).
+    names : tuple of str, optional
+        The parameters' names in the error messages (e.g. ``("compress_threshold",
+        "compress_limit")`` for the functions that bake the view).
+
+    Returns
+    -------
+    tuple of float
+        ``(threshold, limit)``.
+
+    Raises
+    ------
+    TypeError
+        If a knob is not a real number (a string is not parsed).
+    ParameterError
+        Naming the parameter, for a knob that is not finite or out of its range, or a
+        threshold not below the limit.
+
+    Examples
+    --------
+    >>> check_knobs(0.6, 1.5)
+    (0.6, 1.5)
+    >>> check_knobs(1.0, 1.3, names=("compress_threshold", "compress_limit"))
+    ... # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ocio_thinfilm.checks.ParameterError: compress_threshold must be ... < 1 ..., got 1
+    """
+    t_name, l_name = names
+    t, lim = as_real(t_name, threshold), as_real(l_name, limit)
+    if not (np.isfinite(t) and 0.0 < t < 1.0):
+        raise ParameterError(
+            t_name,
+            " must be a finite number > 0 and < 1 (a fraction of the distance to the "
+            f"gamut boundary), got {t:g}",
+        )
+    if not (np.isfinite(lim) and lim > 1.0):
+        raise ParameterError(
+            l_name,
+            " must be a finite number > 1 (the distance mapped onto the gamut boundary), "
+            f"got {lim:g}",
+        )
+    if t >= lim:  # implied by the two ranges; kept for a clear message if they change
+        raise ParameterError(t_name, f" must be below {l_name} ({lim:g}), got {t:g}")
+    return t, lim
+
+
+def knob_text(value: float) -> str:
+    """Return a knob as the descriptions state it: the shortest decimal that reads back.
+
+    Examples
+    --------
+    >>> knob_text(0.8), knob_text(2.0), knob_text(0.8123456)
+    ('0.8', '2', '0.8123456')
+    """
+    return format(float(value), ".15g")
+
+
 def _check(threshold, limit, power):
-    if not (np.isfinite(threshold) and 0.0 < threshold < 1.0):
-        raise ParameterError("threshold", f" must be a number in (0, 1), got {threshold!r}")
-    if not (np.isfinite(limit) and limit > 1.0):
-        raise ParameterError("limit", f" must be a number greater than 1, got {limit!r}")
+    threshold, limit = check_knobs(threshold, limit)
     if not (np.isfinite(power) and power > 0.0):
         raise ParameterError("power", f" must be a positive number, got {power!r}")
     return float(threshold), float(limit), float(power)

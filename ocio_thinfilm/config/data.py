@@ -24,6 +24,7 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.factories import file_transform
 from ocio_thinfilm.lut import (
     clip_lut,
@@ -43,6 +44,7 @@ __all__ = [
     "ConfigData",
     "named_lut",
     "clip_luts",
+    "KNOB_NAMES",
     "compress_luts",
     "lut_files",
     "view_parts",
@@ -177,7 +179,16 @@ def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
     return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
 
 
-def compress_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
+#: The names of the compression's knobs in the functions that bake the config.
+KNOB_NAMES = ("compress_threshold", "compress_limit")
+
+
+def compress_luts(
+    clip_size: int = clip_lut.CLIP_SIZE,
+    *,
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
+) -> dict:
     """Return the compression LUTs of every SDR display of the registry.
 
     Parameters
@@ -185,6 +196,12 @@ def compress_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
     clip_size : int, optional
         Edge length of the clip LUTs they run with, an integer in [9, 129] (default
         :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    compress_threshold : float, optional
+        The compression's threshold, in (0, 1) (default
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD`).
+    compress_limit : float, optional
+        The compression's limit, above 1 (default
+        :data:`ocio_thinfilm.colour.compress.LIMIT`).
 
     Returns
     -------
@@ -194,11 +211,19 @@ def compress_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
 
     Raises
     ------
+    ParameterError
+        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range
+        (:func:`ocio_thinfilm.colour.compress.check_knobs`).
     ValueError
         For a ``clip_size`` outside [9, 129].
     """
+    threshold, limit = compress_map.check_knobs(
+        compress_threshold, compress_limit, names=KNOB_NAMES
+    )
     return {
-        display: compress_lut.compress_lut(display, clip_size=clip_size)
+        display: compress_lut.compress_lut(
+            display, threshold=threshold, limit=limit, clip_size=clip_size
+        )
         for display in registry.DISPLAYS
     }
 
@@ -377,6 +402,8 @@ def config_data(
     film_size: int = tables.FILM_SIZE,
     morpho_size: int = tables.MORPHO_SIZE,
     films: Sequence[Any] = (),
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> ConfigData:
     """Return the config as data.
 
@@ -399,6 +426,14 @@ def config_data(
         Users' films (:class:`ocio_thinfilm.physics.films.Film`): one input colour
         space and named transform each (:func:`film_parts`); none (the default) leaves
         the config as it is without them.
+    compress_threshold : float, optional
+        The Constant-Lightness Compress view's threshold, in (0, 1) (default
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD`): the fraction of the distance
+        to the gamut boundary left untouched.
+    compress_limit : float, optional
+        Its limit, above 1 (default :data:`ocio_thinfilm.colour.compress.LIMIT`): the
+        distance mapped onto the boundary. The view's description, its LUTs' and its
+        named transforms' state both knobs.
 
     Returns
     -------
@@ -408,11 +443,17 @@ def config_data(
 
     Raises
     ------
+    ParameterError
+        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range
+        (:func:`ocio_thinfilm.colour.compress.check_knobs`).
     ValueError
         For a size out of range.
     """
+    threshold, limit = compress_map.check_knobs(
+        compress_threshold, compress_limit, names=KNOB_NAMES
+    )
     by_display = clip_luts(clip_size)
-    soft_by_display = compress_luts(clip_size)
+    soft_by_display = compress_luts(clip_size, compress_threshold=threshold, compress_limit=limit)
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
     ref = registry.REFERENCE
     cs: list[dict[str, Any]] = []
@@ -534,6 +575,9 @@ def config_data(
     ]
     displays = {}
     descriptions = {v.name: v.description for v in registry.VIEW_LIST}
+    descriptions[registry.COMPRESS_VIEW] = registry.compress_view_description(
+        compress_map.knob_text(threshold), compress_map.knob_text(limit)
+    )
     for entry in registry.ALL_DISPLAY_LIST:
         display = entry.name
         views = []
@@ -720,15 +764,15 @@ def named_transforms(
         )
         for display, lut in luts_by_display.items()
     ]
-    for display, soft in (compress_by_display or {}).items():
-        t, lim, _ = soft.parameters
+    for display, squeeze in (compress_by_display or {}).items():
+        t, lim = (compress_map.knob_text(v) for v in squeeze.parameters[:2])
         out.append(
             gamut_map(
                 COMPRESS_NAMED_TRANSFORM,
                 display,
                 f"Soft constant-lightness compression into {display} on its own "
-                f"(threshold {t:g}, limit {lim:g})",
-                compress_named_transform(soft, inline=inline, luts=luts),
+                f"(threshold {t}, limit {lim})",
+                compress_named_transform(squeeze, inline=inline, luts=luts),
             )
         )
     for space in registry.THIN_FILM_LIST:

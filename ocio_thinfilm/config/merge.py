@@ -54,6 +54,7 @@ import numpy as np
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.io import StrPath
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
@@ -444,6 +445,8 @@ def merge_config(
     *,
     clip_size: int = clip_lut.CLIP_SIZE,
     films: Sequence[Any] = (),
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> tuple[ocio_ops.Config, dict[str, ocio_ops.Transform], dict[str, tuple[str, str]]]:
     """Return ``base`` plus the additions (module docstring) as a new config.
 
@@ -463,6 +466,11 @@ def merge_config(
     films : sequence of Film, optional
         Users' films (:class:`ocio_thinfilm.physics.films.Film`): an input colour space
         and a named transform each, as the built-in thin-film spaces.
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``; checked by
+        :func:`ocio_thinfilm.colour.compress.check_knobs`, a ParameterError naming the
+        parameter).
 
     Returns
     -------
@@ -481,6 +489,9 @@ def merge_config(
         (:func:`interchange`), no display matches, or a colour space, view transform,
         named transform or view to add already exists (merged before?).
     """
+    compress_threshold, compress_limit = compress_map.check_knobs(
+        compress_threshold, compress_limit, names=config.KNOB_NAMES
+    )
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
         raise ValueError(
@@ -515,10 +526,17 @@ def merge_config(
             [n for cs in spaces for n in [cs.getName(), *cs.getAliases()]]
             + list(base.getNamedTransformNames()),
         )
-    data = config.config_data(clip_size=clip_size, films=films)
+    data = config.config_data(
+        clip_size=clip_size,
+        films=films,
+        compress_threshold=compress_threshold,
+        compress_limit=compress_limit,
+    )
     film_names = [f.name for f in films]
     by_display = config.clip_luts(clip_size)
-    soft_by_display = config.compress_luts(clip_size)
+    soft_by_display = config.compress_luts(
+        clip_size, compress_threshold=compress_threshold, compress_limit=compress_limit
+    )
     cfg = copy.deepcopy(base)
 
     def _taken(name):

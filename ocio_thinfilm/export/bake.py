@@ -16,6 +16,7 @@ from typing import Any
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.checks import ParameterError, as_count
 from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import view as export_view
 from ocio_thinfilm.export.files import FORMATS, lut_contents, progress_bar, write_lut
 from ocio_thinfilm.io import StrPath, check_xml, claim_directory, transaction
@@ -85,6 +86,8 @@ def write_config(
     morpho_size: int = tables.MORPHO_SIZE,
     progress: Callable[[str], object] | None = None,
     films: Sequence[Any] = (),
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
@@ -111,6 +114,11 @@ def write_config(
         then ``"config.ocio"``).
     films : sequence of Film, optional
         Users' films (:func:`load_films`): an input colour space each.
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
+        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
+        ParameterError naming the parameter).
 
     Returns
     -------
@@ -130,7 +138,12 @@ def write_config(
 
     directory = Path(directory)
     data = config.config_data(
-        clip_size=clip_size, film_size=film_size, morpho_size=morpho_size, films=films
+        clip_size=clip_size,
+        film_size=film_size,
+        morpho_size=morpho_size,
+        films=films,
+        compress_threshold=compress_threshold,
+        compress_limit=compress_limit,
     )
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
     raw = ocio.Config.CreateRaw()
@@ -233,6 +246,8 @@ def bake(
     show_progress: bool = False,
     luts: StrPath | None = None,
     films: StrPath | Sequence[Any] | None = None,
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) and, optionally, the LUT set.
 
@@ -260,6 +275,13 @@ def bake(
         read from one: each adds an input colour space and its named transform. Bad
         films are refused (a ParameterError naming ``films``) before anything is
         written.
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs in the config (defaults 0.8 and 1.3,
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
+        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
+        ParameterError naming the parameter).
+        The standalone LUT set (``luts``) holds no Compress view: the knobs do not
+        change it.
 
     Returns
     -------
@@ -281,6 +303,9 @@ def bake(
         replaced.
     """
     clip_size = check_clip_size(clip_size)
+    compress_threshold, compress_limit = compress_map.check_knobs(
+        compress_threshold, compress_limit, names=config.KNOB_NAMES
+    )
     film_list = load_films(films)
     if film_list:  # the tables are computed (and a bad film refused) before any claim
         from ocio_thinfilm.lut import film_tables
@@ -309,6 +334,8 @@ def bake(
                     clip_size=int(clip_size),
                     progress=(lambda name: bar.update(1)) if bar else None,
                     films=film_list,
+                    compress_threshold=compress_threshold,
+                    compress_limit=compress_limit,
                 )
             except OSError as error:
                 raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None

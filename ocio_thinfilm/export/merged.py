@@ -20,6 +20,7 @@ from typing import Any
 
 from ocio_thinfilm import config
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export.bake import load_films, write_config
 from ocio_thinfilm.io import StrPath, atomic_directory, atomic_file, check_writable
@@ -47,6 +48,8 @@ def write_merged(
     *,
     clip_size: int = clip_lut.CLIP_SIZE,
     films: Sequence[Any] = (),
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> tuple[Path, dict[str, tuple[str, str]]]:
     """Write the merged config (``config.ocio``, ``luts/``) into the existing ``directory``.
 
@@ -69,6 +72,11 @@ def write_merged(
     films : sequence of Film, optional
         Users' films (:func:`ocio_thinfilm.export.bake.load_films`), added as input
         colour spaces.
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
+        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
+        ParameterError naming the parameter).
 
     Returns
     -------
@@ -92,7 +100,13 @@ def write_merged(
     """
     ocio = ocio_ops.module()
     base = merge.load_base(source)
-    cfg, luts, matches = merge.merge_config(base, clip_size=clip_size, films=films)
+    cfg, luts, matches = merge.merge_config(
+        base,
+        clip_size=clip_size,
+        films=films,
+        compress_threshold=compress_threshold,
+        compress_limit=compress_limit,
+    )
     directory = Path(directory)
     _copy_base_files(base, source, directory)
     (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
@@ -161,6 +175,8 @@ def bake_into(
     *,
     clip_size: int = clip_lut.CLIP_SIZE,
     films: StrPath | Sequence[Any] | None = None,
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> Path:
     """Merge into the base config and write the result: ``bake --into SOURCE --out OUT``.
 
@@ -178,6 +194,11 @@ def bake_into(
     films : str, os.PathLike or sequence of Film, optional
         A film file or films (:func:`ocio_thinfilm.export.bake.load_films`), added as
         input colour spaces.
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
+        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
+        ParameterError naming the parameter).
 
     Returns
     -------
@@ -197,17 +218,19 @@ def bake_into(
     OSError
         If a file cannot be written.
     """
+    knobs = compress_map.check_knobs(compress_threshold, compress_limit, names=config.KNOB_NAMES)
     film_list = load_films(films)
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
+    compress = dict(zip(config.KNOB_NAMES, knobs, strict=True))
     if out.suffix.lower() == ".ocioz":
         with tempfile.TemporaryDirectory() as tmp:
-            path, _ = write_merged(source, tmp, clip_size=clip_size, films=film_list)
+            path, _ = write_merged(source, tmp, clip_size=clip_size, films=film_list, **compress)
             return write_archive(path, out)
     if out.exists() and not out.is_dir():
         raise ParameterError("out", f" {out}: not a directory")
     with atomic_directory(out) as tmp:
-        write_merged(source, tmp, clip_size=clip_size, films=film_list)
+        write_merged(source, tmp, clip_size=clip_size, films=film_list, **compress)
     return out / "config.ocio"
 
 
@@ -216,6 +239,8 @@ def bake_archive(
     *,
     clip_size: int = clip_lut.CLIP_SIZE,
     films: StrPath | Sequence[Any] | None = None,
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> Path:
     """Write the project's config as an archive: ``bake --out thinfilm.ocioz``.
 
@@ -228,6 +253,11 @@ def bake_archive(
         :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
     films : str, os.PathLike or sequence of Film, optional
         A film file or films, as for :func:`ocio_thinfilm.export.bake.bake`.
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
+        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
+        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
+        ParameterError naming the parameter).
 
     Returns
     -------
@@ -241,9 +271,18 @@ def bake_archive(
     OSError
         If the archive cannot be written.
     """
+    compress_threshold, compress_limit = compress_map.check_knobs(
+        compress_threshold, compress_limit, names=config.KNOB_NAMES
+    )
     film_list = load_films(films)
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."))
     with tempfile.TemporaryDirectory() as tmp:
-        path = write_config(tmp, clip_size=clip_size, films=film_list)
+        path = write_config(
+            tmp,
+            clip_size=clip_size,
+            films=film_list,
+            compress_threshold=compress_threshold,
+            compress_limit=compress_limit,
+        )
         return write_archive(path, out)

@@ -57,7 +57,7 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm import __version__, registry
-from ocio_thinfilm.checks import ParameterError, as_choice, as_real
+from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops
@@ -167,6 +167,9 @@ _LANGUAGE = {"glsl": _GLSL, "dctl": _DCTL}
 def check_knobs(threshold: float, limit: float) -> tuple[float, float]:
     """Return the compression's knobs as floats, or refuse them.
 
+    :func:`ocio_thinfilm.colour.compress.check_knobs`, and a limit of at most
+    :data:`KNOB_LIMIT_MAX` (the shaders' fallback refuses larger uniforms).
+
     Parameters
     ----------
     threshold : float
@@ -187,19 +190,14 @@ def check_knobs(threshold: float, limit: float) -> tuple[float, float]:
     --------
     >>> check_knobs(0.6, 1.5)
     (0.6, 1.5)
-    >>> check_knobs(0.8, 0.9)
+    >>> check_knobs(0.8, 200.0)
     Traceback (most recent call last):
     ...
-    ocio_thinfilm.checks.ParameterError: limit must be a number in (1, 100], got 0.9
+    ocio_thinfilm.checks.ParameterError: limit must be at most 100 here, got 200
     """
-    t = as_real("threshold", threshold)
-    lim = as_real("limit", limit)
-    if not (math.isfinite(t) and 0.0 < t < 1.0):
-        raise ParameterError("threshold", f" must be a number in (0, 1), got {threshold!r}")
-    if not (math.isfinite(lim) and 1.0 < lim <= KNOB_LIMIT_MAX):
-        raise ParameterError(
-            "limit", f" must be a number in (1, {KNOB_LIMIT_MAX:g}], got {limit!r}"
-        )
+    t, lim = compress.check_knobs(threshold, limit)
+    if lim > KNOB_LIMIT_MAX:
+        raise ParameterError("limit", f" must be at most {KNOB_LIMIT_MAX:g} here, got {lim:g}")
     return t, lim
 
 

@@ -85,6 +85,7 @@ import numpy as np
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import view_fit
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable
 from ocio_thinfilm.lut import ocio_ops, storage
@@ -119,6 +120,8 @@ SHAPER_SPACE = "ocio-thinfilm export shaper"
 #: lattice regression) rather than samples of the view, for the SDR displays (the HDR
 #: displays' tables stay samples; see :func:`_fitted_table`).
 FITTED_FORMATS = ("cube", "csp")
+#: The compression's knobs as the parameters of :func:`export_view` and :func:`view_config`.
+_KNOB_NAMES = ("compress_threshold", "compress_limit")
 
 
 # --------------------------------------------------------------------------- #
@@ -203,18 +206,50 @@ def _shaper_to_linear(lo, hi):
 
 
 def view_config(
-    source: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
+    source: str,
+    size: int = DEFAULT_VIEW_SIZE,
+    display: str | None = None,
+    *,
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> tuple[ocio_ops.Config, str | None]:
     """Return the config in memory (LUTs inline, no files) and the shaper space's name.
 
     The shaper colour space for ``source`` (for a ``size`` grid and ``display``) is
-    added when it needs one. Returns (config, shaper space name or None).
+    added when it needs one.
+
+    Parameters
+    ----------
+    source : str
+        The input colour space of the config.
+    size : int, optional
+        Edge of the 3D LUT the shaper is for (default :data:`DEFAULT_VIEW_SIZE`).
+    display : str, optional
+        The display (an HDR display widens the shaper's domain).
+    compress_threshold, compress_limit : float, optional
+        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3;
+        :func:`ocio_thinfilm.colour.compress.check_knobs`).
+
+    Returns
+    -------
+    config : PyOpenColorIO.Config
+        The config, with the shaper space added when ``source`` needs one.
+    shaper : str or None
+        The shaper space's name, or ``None``.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range.
     """
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm import config as config_module
 
-    cfg = config_module.generate_config(config_module.config_data(inline=True), validate=False)
+    data = config_module.config_data(
+        inline=True, compress_threshold=compress_threshold, compress_limit=compress_limit
+    )
+    cfg = config_module.generate_config(data, validate=False)
     sibling = _linear_sibling(source)
     if sibling is None:
         return cfg, None
@@ -326,11 +361,14 @@ def set_name(source: str, display: str, view: str) -> str:
 # --------------------------------------------------------------------------- #
 # Writing
 # --------------------------------------------------------------------------- #
-def _description(source, display, view, size, shaper, baked):
+def _description(source, display, view, size, shaper, baked, knobs=None):
     text = (
         f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
         f"pixel values of {source}; output: {display} display code values."
     )
+    if knobs is not None:
+        t, lim = (compress_map.knob_text(v) for v in knobs)
+        text += f" Compression threshold {t}, limit {lim}."
     if shaper:
         sibling = _linear_sibling(source)
         assert sibling is not None  # a 3D input: XYZ, scene-linear or encoded
@@ -373,7 +411,7 @@ def _metadata(source, display, view):
     )
 
 
-def _bake_text(cfg, fmt, source, shaper, display, view, size, description, target=None):
+def _bake_text(cfg, fmt, source, shaper, display, view, size, description, target=None, knobs=None):
     import PyOpenColorIO as ocio
 
     baker = ocio.Baker()
@@ -391,7 +429,7 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
     baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
     text = baker.bake()
     if target is None and _fitted_table(source, fmt, shaper, display):
-        nodes = _fitted_nodes(source, display, view, size, bool(shaper))
+        nodes = _fitted_nodes(source, display, view, size, bool(shaper), knobs)
         text = _with_table(text, nodes)
     if fmt == "cube":
         text = _without_trailing_zeros(text)
@@ -415,13 +453,16 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
         "ocio_thinfilm.registry",
     )
 )
-def _fitted_nodes(source, display, view, size, shaper):
+def _fitted_nodes(source, display, view, size, shaper, knobs):
     """Return the fitted 3D table of a display LUT, memoised on disk (a fit takes seconds).
 
     :func:`ocio_thinfilm.export.view_fit.fit_view_table` for ``source`` (over its code
-    values, or with ``shaper`` over the shaper of :func:`view_config`).
+    values, or with ``shaper`` over the shaper of :func:`view_config`). ``knobs``: the
+    compression's (threshold, limit) for the Constant-Lightness Compress view, ``None``
+    for the other views (which do not depend on them: one fit serves every knob).
     """
-    cfg, shaper_space = view_config(source, size, display)
+    compress = {} if knobs is None else dict(zip(_KNOB_NAMES, knobs, strict=True))
+    cfg, shaper_space = view_config(source, size, display, **compress)
     if shaper and shaper_space:
         return view_fit.fit_view_table(
             cfg, shaper_space, display, view, size, object_weight=view_fit.SHAPER_OBJECT_WEIGHT
@@ -574,6 +615,8 @@ def export_view(
     size: int | None = None,
     value_range: Sequence[float] | None = None,
     shaper: bool | None = None,
+    compress_threshold: float = compress_map.THRESHOLD,
+    compress_limit: float = compress_map.LIMIT,
 ) -> list[Path]:
     """Write the display LUT ``source`` -> ``display`` / ``view``.
 
@@ -583,9 +626,16 @@ def export_view(
     ``shaper`` (``.cube`` only): None -- the plain 3D form for the plain inputs (ACEScct),
     the Resolve form (1D shaper + 3D) for the others; True -- the Resolve form;
     False -- the plain form (only for the plain inputs (ACEScct)).
+
+    ``compress_threshold``, ``compress_limit``: the Constant-Lightness Compress view's
+    knobs (defaults 0.8 and 1.3), checked first
+    (:func:`ocio_thinfilm.colour.compress.check_knobs`: a ParameterError naming the
+    parameter); the file's description states them for that view. The other views do
+    not depend on them.
     """
     import PyOpenColorIO as ocio
 
+    knob_values = compress_map.check_knobs(compress_threshold, compress_limit, names=_KNOB_NAMES)
     display = registry.display_name(display)
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
@@ -608,17 +658,19 @@ def export_view(
         raise ParameterError("out", f" {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
 
-    cfg, shaper_space = view_config(source, size, display)
+    knobs = knob_values if view == registry.COMPRESS_VIEW else None
+    compress = dict(zip(_KNOB_NAMES, knob_values, strict=True))
+    cfg, shaper_space = view_config(source, size, display, **compress)
     meta = _metadata(source, display, view)
     if source in _THIN_FILM:
-        description = _description(source, display, view, size, None, False)
+        description = _description(source, display, view, size, None, False, knobs)
         return [
             _write_1d(out, fmt, cfg, source, display, view, size, value_range, meta, description)
         ]
     if fmt in ("clf", "ctf"):
         proc = cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD)
         exact = list(proc.createGroupTransform())
-        description = _description(source, display, view, size, None, False)
+        description = _description(source, display, view, size, None, False, knobs)
         try:
             return [_write_group(out, fmt, exact, meta, description + " Exact chain.")]
         except ocio.Exception:
@@ -631,15 +683,17 @@ def export_view(
                 fmt,
                 _baked_3d_transforms(cfg, source, shaper_space, display, view, size),
                 meta,
-                _description(source, display, view, size, shaper_space, True),
+                _description(source, display, view, size, shaper_space, True, knobs),
             )
         ]
     if fmt == "cube" and not cube_shaper:
         shaper_space = None  # the plain form: the grid over ACEScct itself
-    description = _description(source, display, view, size, shaper_space, True)
+    description = _description(source, display, view, size, shaper_space, True, knobs)
     if fmt == "spi3d" and shaper_space:
         companion = out.with_name(out.stem + ".shaper.spi1d")
-        text3d = _bake_text(cfg, "spi3d", shaper_space, None, display, view, size, description)
+        text3d = _bake_text(
+            cfg, "spi3d", shaper_space, None, display, view, size, description, knobs=knobs
+        )
         text1d = _bake_text(
             cfg,
             "spi1d",
@@ -650,9 +704,10 @@ def export_view(
             size,
             description,
             target=shaper_space,
+            knobs=knobs,
         )
         return [_write_text(out, text3d), _write_text(companion, text1d)]
-    text = _bake_text(cfg, fmt, source, shaper_space, display, view, size, description)
+    text = _bake_text(cfg, fmt, source, shaper_space, display, view, size, description, knobs=knobs)
     if fmt == "cube":  # OCIO's writer has no title line: say which form the file is
         text = _cube_title(source, display, view, size, bool(shaper_space)) + "\n" + text
     return [_write_text(out, text)]

@@ -63,6 +63,12 @@ __all__ = [
     "SOFT_WHITE_INSIDE",
     "SOFT_WHITE_GRADED",
     "SOFT_WHITE_RATIO",
+    "TESTED_THRESHOLD",
+    "TESTED_LIMIT",
+    "KNOB_TARGETS",
+    "MEASURED_KNOBS",
+    "knobs_tested",
+    "untested_knobs_note",
     "CompressLUT",
     "compress_lut",
 ]
@@ -81,6 +87,146 @@ SOFT_WHITE_SIZE = 49
 SOFT_WHITE_INSIDE = 0.55
 SOFT_WHITE_GRADED = 9
 SOFT_WHITE_RATIO = 0.57
+
+#: The tested range of the knobs (threshold, limit), both bounds included: on a grid of
+#: pairs inside it (``benchmarks/bench_compress_knobs.py``, docs/compress.md) the baked
+#: view keeps the accuracy targets :data:`KNOB_TARGETS` of the defaults against the
+#: analytic map on every display.
+TESTED_THRESHOLD = (0.3, 0.85)
+TESTED_LIMIT = (1.1, 1.5)
+#: The defaults' accuracy targets, worst over the displays and the clip's test sets:
+#: dE2000 p99 and max, |dY| max against the analytic map; colours below the threshold
+#: (at most ``min(0.5, 0.625 threshold)`` of the way to the boundary: half-way at the
+#: defaults) moved by at most dE2000 0.1.
+KNOB_TARGETS = {"p99": 0.5, "max": 1.5, "dY": 1e-3, "inside": 0.1}
+#: Measured by ``benchmarks/bench_compress_knobs.py`` (reports/bench_compress_knobs.json)
+#: at the grid's pairs outside the tested range: (threshold, limit) -> (dE2000 p99,
+#: dE2000 max, |dY| max, dE2000 max of the colours below the threshold, the targets
+#: missed), each the worst over the displays and test sets.
+MEASURED_KNOBS: dict[tuple[float, float], tuple[float, float, float, float, str]] = {
+    (0.1, 1.01): (5.83, 20.39, 0.064, 0.039, "p99, max, |dY|"),
+    (0.1, 1.05): (0.55, 5.38, 0.027, 0.047, "p99, max, |dY|"),
+    (0.1, 1.1): (0.48, 1.89, 0.0055, 0.067, "max, |dY|"),
+    (0.1, 1.2): (0.45, 1.1, 0.00057, 0.102, "colours left alone"),
+    (0.1, 1.3): (0.43, 1.18, 0.00056, 0.134, "colours left alone"),
+    (0.1, 1.5): (0.45, 1.21, 0.00041, 0.184, "colours left alone"),
+    (0.1, 2.0): (0.45, 0.9, 0.00029, 0.262, "colours left alone"),
+    (0.1, 3.0): (0.43, 0.92, 0.00019, 0.319, "colours left alone"),
+    (0.1, 5.0): (0.46, 0.92, 0.00012, 0.365, "colours left alone"),
+    (0.2, 1.01): (4.71, 19.0, 0.053, 0.041, "p99, max, |dY|"),
+    (0.2, 1.05): (0.5, 3.71, 0.019, 0.041, "p99, max, |dY|"),
+    (0.2, 1.1): (0.47, 1.43, 0.00096, 0.05, ""),
+    (0.2, 1.2): (0.44, 1.25, 0.00058, 0.068, ""),
+    (0.2, 1.3): (0.45, 1.04, 0.0005, 0.087, ""),
+    (0.2, 1.5): (0.46, 1.31, 0.00034, 0.115, "colours left alone"),
+    (0.2, 2.0): (0.44, 0.84, 0.00021, 0.145, "colours left alone"),
+    (0.2, 3.0): (0.42, 0.86, 0.00023, 0.176, "colours left alone"),
+    (0.2, 5.0): (0.43, 0.87, 0.00013, 0.195, "colours left alone"),
+    (0.3, 1.01): (2.66, 14.62, 0.044, 0.038, "p99, max, |dY|"),
+    (0.3, 1.05): (0.48, 2.0, 0.0095, 0.038, "max, |dY|"),
+    (0.3, 2.0): (0.43, 0.91, 0.00023, 0.088, ""),
+    (0.3, 3.0): (0.42, 0.84, 0.00021, 0.105, "colours left alone"),
+    (0.3, 5.0): (0.43, 0.85, 0.00011, 0.115, "colours left alone"),
+    (0.4, 1.01): (1.59, 14.64, 0.041, 0.037, "p99, max, |dY|"),
+    (0.4, 1.05): (0.48, 1.2, 0.0027, 0.037, "|dY|"),
+    (0.4, 2.0): (0.43, 0.86, 0.00025, 0.088, ""),
+    (0.4, 3.0): (0.43, 0.79, 0.00016, 0.095, ""),
+    (0.4, 5.0): (0.42, 0.82, 0.0001, 0.102, "colours left alone"),
+    (0.5, 1.01): (0.89, 9.45, 0.031, 0.043, "p99, max, |dY|"),
+    (0.5, 1.05): (0.44, 1.21, 0.00051, 0.043, ""),
+    (0.5, 2.0): (0.41, 0.86, 0.00024, 0.091, ""),
+    (0.5, 3.0): (0.42, 0.8, 0.00015, 0.103, "colours left alone"),
+    (0.5, 5.0): (0.41, 0.77, 0.00012, 0.103, "colours left alone, ramps not strictly rising"),
+    (0.6, 1.01): (0.5, 4.04, 0.023, 0.035, "p99, max, |dY|"),
+    (0.6, 1.05): (0.43, 1.24, 0.00055, 0.035, ""),
+    (0.6, 2.0): (0.41, 0.79, 0.00019, 0.091, ""),
+    (0.6, 3.0): (0.41, 0.87, 0.00015, 0.103, "colours left alone, ramps not strictly rising"),
+    (0.6, 5.0): (0.41, 0.86, 0.00012, 0.103, "colours left alone, ramps not strictly rising"),
+    (0.7, 1.01): (0.47, 1.57, 0.0075, 0.037, "max, |dY|"),
+    (0.7, 1.05): (0.45, 1.29, 0.00061, 0.037, ""),
+    (0.7, 2.0): (0.41, 0.92, 0.00015, 0.104, "colours left alone"),
+    (0.7, 3.0): (0.41, 0.81, 0.00014, 0.113, "colours left alone, ramps not strictly rising"),
+    (0.7, 5.0): (0.4, 0.77, 0.00014, 0.113, "colours left alone, ramps not strictly rising"),
+    (0.8, 1.01): (0.45, 1.45, 0.00045, 0.036, ""),
+    (0.8, 1.05): (0.45, 1.24, 0.00048, 0.036, ""),
+    (0.8, 2.0): (0.4, 1.08, 0.00014, 0.073, "ramps not strictly rising"),
+    (0.8, 3.0): (0.4, 1.04, 0.00014, 0.081, "ramps not strictly rising"),
+    (0.8, 5.0): (0.4, 1.01, 0.00014, 0.081, "ramps not strictly rising"),
+    (0.85, 1.01): (0.45, 1.4, 0.00047, 0.036, ""),
+    (0.85, 1.05): (0.44, 1.45, 0.00038, 0.036, ""),
+    (0.85, 2.0): (0.43, 0.89, 0.00015, 0.052, "ramps not strictly rising"),
+    (0.85, 3.0): (0.44, 0.82, 0.00015, 0.061, "ramps not strictly rising"),
+    (0.85, 5.0): (0.44, 0.81, 0.00015, 0.061, "ramps not strictly rising"),
+    (0.9, 1.01): (0.45, 1.36, 0.00056, 0.036, ""),
+    (0.9, 1.05): (0.48, 1.05, 0.00039, 0.036, ""),
+    (0.9, 1.1): (0.44, 1.14, 0.00026, 0.036, ""),
+    (0.9, 1.2): (0.46, 1.4, 0.00018, 0.036, ""),
+    (0.9, 1.3): (0.45, 1.33, 0.00014, 0.036, ""),
+    (0.9, 1.5): (0.46, 1.47, 0.00014, 0.036, ""),
+    (0.9, 2.0): (0.47, 1.4, 0.00015, 0.036, "ramps not strictly rising"),
+    (0.9, 3.0): (0.48, 1.38, 0.00015, 0.041, "ramps not strictly rising"),
+    (0.9, 5.0): (0.48, 1.36, 0.00015, 0.042, "ramps not strictly rising"),
+    (0.95, 1.01): (0.47, 1.28, 0.0005, 0.036, ""),
+    (0.95, 1.05): (0.83, 1.79, 0.00026, 0.036, "p99, max"),
+    (0.95, 1.1): (0.78, 1.95, 0.00016, 0.036, "p99, max"),
+    (0.95, 1.2): (0.75, 1.92, 0.00016, 0.036, "p99, max"),
+    (0.95, 1.3): (0.76, 1.9, 0.00014, 0.036, "p99, max, ramps not strictly rising"),
+    (0.95, 1.5): (0.76, 1.89, 0.00016, 0.036, "p99, max, ramps not strictly rising"),
+    (0.95, 2.0): (0.74, 1.87, 0.00016, 0.036, "p99, max, ramps not strictly rising"),
+    (0.95, 3.0): (0.73, 1.86, 0.00014, 0.036, "p99, max, ramps not strictly rising"),
+    (0.95, 5.0): (0.73, 1.86, 0.00014, 0.036, "p99, max, ramps not strictly rising"),
+    (0.99, 1.01): (1.32, 2.94, 0.00017, 0.036, "p99, max, ramps off the curve"),
+    (0.99, 1.05): (1.31, 3.14, 0.00016, 0.036, "p99, max, ramps off the curve"),
+    (0.99, 1.1): (
+        1.31,
+        3.09,
+        0.00015,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+    (0.99, 1.2): (
+        1.31,
+        3.1,
+        0.00014,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+    (0.99, 1.3): (
+        1.31,
+        3.09,
+        0.00013,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+    (0.99, 1.5): (
+        1.3,
+        3.08,
+        0.00013,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+    (0.99, 2.0): (
+        1.3,
+        3.08,
+        0.00014,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+    (0.99, 3.0): (
+        1.3,
+        3.08,
+        0.00014,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+    (0.99, 5.0): (
+        1.3,
+        3.08,
+        0.00014,
+        0.036,
+        "p99, max, ramps off the curve, ramps not strictly rising",
+    ),
+}
 
 
 @dataclass(frozen=True, eq=False)
@@ -130,7 +276,7 @@ class CompressLUT:
     def black_core(self) -> ocio_ops.Transform:
         """CLF-writable S_b: chart (u_a, u_b, Y) in and out."""
         name = f"{self.name} Black Faces"
-        t, lim, _ = self.parameters
+        t, lim = (soft.knob_text(v) for v in self.parameters[:2])
         return group(
             [
                 lut3d_transform(self.black, bitdepth="uint16"),
@@ -140,7 +286,7 @@ class CompressLUT:
             id=transform_id("Gamut_Map", name),
             description=(
                 f"Soft constant-lightness compression into {self.display}"
-                f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
+                f" (threshold {t}, limit {lim}), the squeeze by the "
                 "distance to the faces through black, before the clip's "
                 f"black pass: a {self.black.shape[0]}^3 tetrahedral "
                 "Lut3D over its own chromaticity chart, which stores its output "
@@ -156,7 +302,7 @@ class CompressLUT:
     def white_core(self) -> ocio_ops.Transform:
         """CLF-writable S_w: c_i / tops[i] in and out (after the clip's black pass)."""
         name = f"{self.name} White Faces"
-        t, lim, _ = self.parameters
+        t, lim = (soft.knob_text(v) for v in self.parameters[:2])
         return group(
             [
                 lut1d_transform(self.white_shaper, bitdepth="uint16"),
@@ -166,7 +312,7 @@ class CompressLUT:
             id=transform_id("Gamut_Map", name),
             description=(
                 f"Soft constant-lightness compression into {self.display}"
-                f" (threshold {t:g}, limit {lim:g}), the squeeze by the "
+                f" (threshold {t}, limit {lim}), the squeeze by the "
                 "distance to the faces through white, before the clip's "
                 f"white pass: a {self.white.shape[0]}^3 tetrahedral "
                 "Lut3D over display RGB; keeps Y. See "
@@ -313,3 +459,73 @@ def compress_lut(
     return _compress_lut(
         name, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
     )
+
+
+def knobs_tested(threshold: float, limit: float) -> bool:
+    """Return whether the knobs lie in the tested range.
+
+    :data:`TESTED_THRESHOLD` and :data:`TESTED_LIMIT`, bounds included.
+
+    Parameters
+    ----------
+    threshold, limit : float
+        The compression's knobs.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> knobs_tested(0.8, 1.3), knobs_tested(0.95, 1.05)
+    (True, False)
+    """
+    (t_lo, t_hi), (l_lo, l_hi) = TESTED_THRESHOLD, TESTED_LIMIT
+    return bool(t_lo <= threshold <= t_hi and l_lo <= limit <= l_hi)
+
+
+def _knob_distance(a: tuple[float, float], b: tuple[float, float]) -> float:
+    """Return the distance between knob pairs, over 10 x threshold and log(limit - 1).
+
+    The scale the view's accuracy changes on: limits 1.05 and 1.1 differ more than 2
+    and 3.
+    """
+    return float(np.hypot(10.0 * (a[0] - b[0]), np.log(a[1] - 1.0) - np.log(b[1] - 1.0)))
+
+
+def untested_knobs_note(threshold: float, limit: float) -> str | None:
+    """Return one line on knobs outside the tested range, with the measured figure.
+
+    ``None`` inside the range (:func:`knobs_tested`). Outside it, the line names the
+    tested range and the accuracy measured at the nearest measured pair
+    (:data:`MEASURED_KNOBS`: the pair itself when it was measured).
+
+    Parameters
+    ----------
+    threshold, limit : float
+        The compression's knobs.
+
+    Returns
+    -------
+    str or None
+    """
+    if knobs_tested(threshold, limit):
+        return None
+    (t_lo, t_hi), (l_lo, l_hi) = TESTED_THRESHOLD, TESTED_LIMIT
+    text = (
+        f"threshold {soft.knob_text(threshold)} / limit {soft.knob_text(limit)} lie outside "
+        f"the tested range (threshold {t_lo:g}-{t_hi:g}, limit {l_lo:g}-{l_hi:g}), where the "
+        f"baked view keeps dE2000 p99 <= {KNOB_TARGETS['p99']:g} / max <= "
+        f"{KNOB_TARGETS['max']:g} of the analytic map"
+    )
+    if MEASURED_KNOBS:
+        pair = min(MEASURED_KNOBS, key=lambda p: _knob_distance(p, (threshold, limit)))
+        p99, worst, dY, inside, misses = MEASURED_KNOBS[pair]
+        where = "measured there" if pair == (threshold, limit) else "measured at the nearest pair"
+        text += (
+            f"; {where}, {pair[0]:g} / {pair[1]:g}: p99 {p99:.2f} / max {worst:.2f}, |dY| "
+            f"{dY:.1e}, colours below the threshold moved by up to {inside:.3f}, "
+            + (f"missing: {misses}" if misses else "every target met")
+            + " (docs/compress.md)"
+        )
+    return text
