@@ -581,7 +581,7 @@ def _header(L, lang, source, entry, view, knobs) -> str:
         ]
     if lang == "glsl":
         lines += [
-            "// GLSL 3.30 / GLSL ES 3.00 (declare precision highp float), no #version line:",
+            "// GLSL 3.30 / GLSL ES 3.00 (declare precision highp float); no version directive:",
             "// call vec3 ocio_thinfilm_view(vec3 rgb); vec3 ocio_thinfilm_view_inverse(vec3",
             "// code) takes display code values back to the input space.",
         ]
