@@ -7,6 +7,8 @@ objects).
 - :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``);
 - :mod:`.shader` -- the clip and compression views as GLSL and DCTL code, no LUT
   (``export shader``);
+- :mod:`.knob_page` -- ``docs/knobs.html``, a WebGL2 page that draws test colours
+  through the exported GLSL, to choose the compression's knobs;
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.

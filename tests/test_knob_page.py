@@ -1,0 +1,149 @@
+"""The knob page (docs/knobs.html): committed as generated, and drawing the views right.
+
+The page is opened from disk in headless Chromium (SwiftShader's WebGL2), its URL query
+sets the display and the knobs through the page's own controls, and the canvas it reads
+back (``<pre id="readback">``) is held, pixel by pixel, to the double-precision analytic
+view (:func:`evaluation.shaders.analytic_view`) of the XYZ values the page embeds.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import json
+import re
+import shutil
+import subprocess
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from evaluation.shaders import analytic_view
+from ocio_thinfilm import registry
+from ocio_thinfilm.export import knob_page, shader
+
+PAGE = Path(__file__).resolve().parents[1] / "docs" / "knobs.html"
+CHROMIUM = "/usr/bin/chromium"
+#: 8-bit canvas codes against the analytic view's code values.
+TOLERANCE = 2.0 / 255.0
+#: WebGL2 without a GPU: ANGLE on SwiftShader (Chromium 120+ wants the unsafe flag for it).
+FLAGS = [
+    "--headless",
+    "--disable-gpu",
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+    "--no-sandbox",
+    "--no-first-run",
+    "--disable-extensions",
+    "--virtual-time-budget=10000",
+]
+
+
+def test_the_committed_page_is_what_the_generator_writes(tmp_path):
+    written = knob_page.write_knob_page(tmp_path / "knobs.html")
+    assert PAGE.read_text(encoding="utf-8") == written.read_text(encoding="utf-8"), (
+        "docs/knobs.html is stale: regenerate it with "
+        "python -c 'from ocio_thinfilm.export.knob_page import write_knob_page; "
+        'write_knob_page("docs/knobs.html")\''
+    )
+
+
+def test_the_page_embeds_the_exported_glsl_and_is_self_contained():
+    text = PAGE.read_text(encoding="utf-8")
+    data = _data(text)
+    assert set(data["shaders"]) == set(registry.DISPLAYS)
+    for display, views in data["shaders"].items():
+        for key, view in knob_page.VIEW_KEYS.items():
+            assert views[key] == shader.shader_source("glsl", display, view)
+    assert not re.search(r"""(src|href)=["']?(https?:)?//""", text)  # nothing from the net
+    assert "drawingBufferColorSpace" in text and "readPixels" in text
+
+
+def _data(text):
+    block = re.search(
+        rf'<script type="application/json" id="{knob_page.DATA_ID}">(.*?)</script>', text, re.S
+    )
+    return json.loads(block.group(1))
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    path = shutil.which("chromium") or (CHROMIUM if Path(CHROMIUM).exists() else None)
+    if path is None:
+        pytest.skip("no chromium (Debian's chromium package) to open docs/knobs.html with")
+    return path
+
+
+def _readback(chromium, tmp_path, query):
+    """Open the page with ``query`` and return its readback JSON and the seconds it took."""
+    start = time.perf_counter()
+    done = subprocess.run(
+        [
+            chromium,
+            *FLAGS,
+            f"--user-data-dir={tmp_path / 'profile'}",
+            "--dump-dom",
+            f"{PAGE.as_uri()}?{query}&readback=1",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    seconds = time.perf_counter() - start
+    match = re.search(r'<pre id="readback">(.*?)</pre>', done.stdout, re.S)
+    assert match and match.group(1), f"no readback from the page: {done.stderr[-2000:]}"
+    return json.loads(html.unescape(match.group(1))), seconds
+
+
+@pytest.mark.parametrize(
+    "display, threshold, limit",
+    [("sRGB", 0.8, 1.3), ("sRGB", 0.6, 1.5), ("Display P3", 0.9, 1.1), ("Rec.2020", 0.8, 1.3)],
+)
+def test_the_page_draws_the_analytic_view(chromium, tmp_path, display, threshold, limit):
+    """Every canvas pixel of every strip within 2/255 of the analytic view; the gaps
+    between the strips are the background."""
+    out, seconds = _readback(
+        chromium, tmp_path, f"display={display}&threshold={threshold}&limit={limit}"
+    )
+    if out["error"] == "this browser gives no WebGL2 context":
+        pytest.skip("this Chromium gives no WebGL2 context headless (no SwiftShader)")
+    assert out["error"] is None, out["error"]
+    assert (out["display"], out["threshold"], out["limit"]) == (display, threshold, limit)
+    if display == "Display P3":
+        assert out["drawingBufferColorSpace"] == "display-p3"
+    width, height = out["width"], out["height"]
+    assert (width, height) == (knob_page.WIDTH, knob_page.canvas_height())
+    rgba = np.frombuffer(base64.b64decode(out["rgba"]), dtype=np.uint8)
+    canvas = rgba.reshape(height, width, 4)[::-1] / 255.0  # top row first
+    data = _data(PAGE.read_text(encoding="utf-8"))
+    drawn = np.zeros(height, bool)
+    worst, exact, total, moved = {}, 0, 0, 0.0
+    for band in knob_page.bands():
+        XYZ = np.asarray(data["rows"][band.row]["xyz"], np.float32).reshape(-1, 3)
+        view = knob_page.VIEW_KEYS[band.view]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            truth = analytic_view(XYZ, registry.REFERENCE, display, view, threshold, limit)
+        strip = canvas[band.top : band.top + band.height, :, :3]
+        err = np.abs(strip - truth[None]).max()
+        if band.view == "compress" and (threshold, limit) != (0.8, 1.3):
+            default = analytic_view(XYZ, registry.REFERENCE, display, view)
+            moved = max(moved, float(np.abs(truth - default).max()))
+        key = (data["rows"][band.row]["label"], band.view)
+        worst[key] = round(float(err) * 255, 3)
+        exact += int((np.round(strip * 255) == np.round(truth * 255)[None]).sum())
+        total += strip.size
+        drawn[band.top : band.top + band.height] = True
+    print(
+        f"\n{display} {threshold}/{limit}: max |page - analytic| = "
+        f"{max(worst.values()):.3f}/255; {exact / total:.2%} of the 8-bit codes equal to "
+        f"the analytic view's rounded (Chromium {seconds:.1f} s); per strip (1/255): {worst}"
+    )
+    assert max(worst.values()) <= TOLERANCE * 255
+    if (threshold, limit) != (0.8, 1.3):  # the knobs set by the query do show
+        assert moved > 10 * TOLERANCE
+    assert np.all(canvas[~drawn, :, 3] == 1.0)
+    assert np.ptp(canvas[~drawn, :, :3]) == 0.0  # the gaps: one background colour
