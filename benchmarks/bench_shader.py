@@ -180,8 +180,8 @@ def markdown(result):
         f"{result['repeats']} passes, one thread. `python benchmarks/bench_shader.py`.",
         "",
         "Operations per pixel: the DCTL compiled with a counting float type (mean over the"
-        " pixels; a clamp counts 2 min/max). CPU: the DCTL compiled as C++ (g++ -O2) and"
-        " (and -O3 -march=native -ffast-math, as GPU compilers treat shader arithmetic),"
+        " pixels; a clamp counts 2 min/max). CPU: the DCTL compiled as C++ (g++ -O2, and"
+        " -O3 -march=native -ffast-math as GPU compilers treat shader arithmetic),"
         " OCIO's default CPU processors (the committed config's view, its ACES Gamut"
         " Compression view, a single 65^3 Lut3D) on the same pixels.",
         "",
