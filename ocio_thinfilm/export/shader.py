@@ -41,8 +41,9 @@ into visible code values.
 - **DCTL** (``"dctl"``): the transform DCTL entry point ``__DEVICE__ float3
   transform(int p_Width, int p_Height, int p_X, int p_Y, float p_R, float p_G, float
   p_B)``; the compression has two ``DEFINE_UI_PARAMS`` sliders, ``Threshold`` and
-  ``Limit``. Only DCTL's documented built-ins (``_powf``, ``_fmaxf``, ``_sqrtf``,
-  ``_logf``, ``_exp2f``, ``_saturatef``, ``make_float3``).
+  ``Limit``, and every DCTL an ``Invert`` check box. Only DCTL's documented built-ins
+  (``_powf``, ``_fmaxf``, ``_sqrtf``, ``_logf``, ``_expf``, ``_exp2f``, ``_log2f``,
+  ``_saturatef``, ``make_float3``).
 
 Every constant (matrices, luminance weights, scales) comes from the same registry and
 colorimetry the config is built from.
@@ -61,6 +62,7 @@ from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
 from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
 
 __all__ = [
     "LANGUAGES",
@@ -101,11 +103,10 @@ _PQ_M2 = 2523.0 / 4096.0 * 128.0
 _PQ_C1 = 3424.0 / 4096.0
 _PQ_C2 = 2413.0 / 4096.0 * 32.0
 _PQ_C3 = 2392.0 / 4096.0 * 32.0
-#: ITU-R BT.2100 HLG OETF constants and the OOTF's system gamma for a 1000 cd/m2 peak.
+#: ITU-R BT.2100 HLG OETF constants (the OOTF's system gamma: the config's, HLG_GAMMA).
 _HLG_A = 0.17883277
 _HLG_B = 1.0 - 4.0 * _HLG_A
 _HLG_C = 0.5 - _HLG_A * math.log(4.0 * _HLG_A)
-_HLG_GAMMA = 1.2
 
 
 @dataclass(frozen=True)
@@ -396,9 +397,9 @@ def _display(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
         lines += [
             "    // HLG: the BT.2100 inverse OOTF to scene light E (the signal's volume is",
             f"    // the gamut's parallelepiped in E); peak {entry.peak:g} cd/m2, gamma "
-            f"{_HLG_GAMMA:g}",
+            f"{HLG_GAMMA:g}",
             f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y * {L.lit(a)}, "
-            f"{L.lit(1 / _HLG_GAMMA - 1)}) : {L.lit(0.0)};",
+            f"{L.lit(1 / HLG_GAMMA - 1)}) : {L.lit(0.0)};",
         ]
         lines += [f"    {c} = {c} * f;" for c in "XYZ"]
     R, G, B = _matrix_rows(L, M, ("X", "Y", "Z"))
@@ -519,9 +520,9 @@ def _undisplay(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
         # the BT.2100 OOTF: display light F_D = L_W Y_S ** (gamma - 1) E, in units of 203
         a = entry.peak / registry.HDR_REFERENCE_WHITE
         lines += [
-            f"    // the BT.2100 OOTF (gamma {_HLG_GAMMA:g}) back to display light, Y = 1 at "
+            f"    // the BT.2100 OOTF (gamma {HLG_GAMMA:g}) back to display light, Y = 1 at "
             f"{registry.HDR_REFERENCE_WHITE:g} cd/m2",
-            f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y, {L.lit(_HLG_GAMMA - 1)}) "
+            f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y, {L.lit(HLG_GAMMA - 1)}) "
             f": {L.lit(0.0)};",
             "    X = X * f;",
             "    Y = Y * f;",
@@ -623,8 +624,9 @@ def shader_source(
     Returns
     -------
     str
-        The source: GLSL defines ``vec3 ocio_thinfilm_view(vec3 rgb)``, DCTL the
-        ``transform`` entry point.
+        The source: GLSL defines ``vec3 ocio_thinfilm_view(vec3 rgb)`` and its inverse
+        ``vec3 ocio_thinfilm_view_inverse(vec3 code)``, DCTL the ``transform`` entry
+        point with an ``Invert`` check box.
 
     Raises
     ------
@@ -636,8 +638,9 @@ def shader_source(
     >>> text = shader_source("glsl", "sRGB", "Constant-Lightness Compress")
     >>> "uniform float ocio_thinfilm_threshold;" in text, "#version" in text
     (True, False)
-    >>> "DEFINE_UI_PARAMS" in shader_source("dctl", "Rec.2100-PQ", "Constant-Lightness Clip")
-    False
+    >>> dctl = shader_source("dctl", "Rec.2100-PQ", "Constant-Lightness Clip")
+    >>> "DCTLUI_SLIDER_FLOAT" in dctl, "DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert" in dctl
+    (False, True)
     """
     as_choice("lang", lang, LANGUAGES)
     as_choice("display", display, registry.ALL_DISPLAYS)
