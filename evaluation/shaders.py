@@ -51,6 +51,8 @@ WHITE = registry.HDR_REFERENCE_WHITE
 PEAK = 1000.0
 #: BT.2100's HLG system gamma at a 1000 cd/m2 peak (Table 5).
 HLG_GAMMA = 1.2
+#: The config's sRGB-encoded texture space (sRGB curve, Rec.709 primaries).
+TEXTURE = "sRGB - Texture"
 
 _HERE = Path(__file__).resolve().parent / "dctl"
 
@@ -67,9 +69,13 @@ def _to_XYZ(values, source):
 
     if source == registry.REFERENCE:
         return _limited(values)
+    v = np.asarray(values, dtype=np.float64)
+    if source == TEXTURE:  # sRGB-encoded Rec.709, decoded by colour-science
+        with np.errstate(invalid="ignore", over="ignore"):
+            rgb = _limited(colour.cctf_decoding(v, function="sRGB"))
+        return _limited(colorimetry.RGB_to_XYZ(rgb, "Rec.709"))
     space = registry.linear_space_of(source)
     assert space is not None, source
-    v = np.asarray(values, dtype=np.float64)
     if source != space.name:  # ACEScct, decoded by colour-science (S-2016-001)
         with np.errstate(invalid="ignore"):  # log2 of -LIMIT, in the masked branch
             lo = colour.models.log_encoding_ACEScct(-LIMIT)
@@ -192,6 +198,8 @@ def source_values(XYZ: npt.ArrayLike, source: str) -> np.ndarray:
     XYZ = np.asarray(XYZ, dtype=np.float64).reshape(-1, 3)
     if source == registry.REFERENCE:
         return XYZ
+    if source == TEXTURE:
+        return colour.cctf_encoding(colorimetry.XYZ_to_RGB(XYZ, "Rec.709"), function="sRGB")
     space = registry.linear_space_of(source)
     assert space is not None, source
     rgb = colorimetry.XYZ_to_RGB(XYZ, space.colorimetry)

@@ -83,7 +83,15 @@ SHADER_VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress")
 #: The input colour spaces it decodes analytically: the reference, the scene-linear
 #: spaces and the encoded ones (the thin-film inputs are spectral tables: use
 #: ``export view``).
-SHADER_SOURCES = (registry.REFERENCE,) + registry.SCENE_LINEAR_SPACES + registry.ENCODED_SPACES
+SHADER_SOURCES = (
+    (registry.REFERENCE,)
+    + registry.SCENE_LINEAR_SPACES
+    + registry.ENCODED_SPACES
+    + ("sRGB - Texture",)
+)
+#: The config's sRGB-encoded texture space: the sRGB display's encoding over Rec.709
+#: primaries (its colour space decodes with the display's curve, then the matrix).
+_TEXTURE = ("sRGB - Texture", "Rec.709", "sRGB")
 #: The largest limit the shaders accept from a host (a larger uniform gives the defaults).
 KNOB_LIMIT_MAX = 100.0
 #: DCTL slider ranges (min, max, step); widened to hold the exported default.
@@ -237,6 +245,37 @@ def _matrix_rows(L: _Language, M: np.ndarray, names: tuple[str, str, str]) -> li
     ]
 
 
+def _piecewise(encoding: registry.Encoding) -> tuple[float, float]:
+    """Return where the sRGB-style curve's linear segment ends (linear) and its slope.
+
+    Value and slope continuous there, as OCIO's ExponentWithLinearTransform (IEC
+    61966-2-1 rounds them to 0.0031308 and 12.92).
+    """
+    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
+    brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
+    return brk, (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
+
+
+def _piecewise_encode(L: _Language, encoding: registry.Encoding, v: str) -> str:
+    """Return the sRGB-style curve's encoding of the expression ``v`` (linear below 0)."""
+    brk, slope = _piecewise(encoding)
+    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
+    return (
+        f"{v} <= {L.lit(brk)} ? {L.lit(slope)} * {v} : "
+        f"{L.lit(1 + offset)} * {L.pow}({v}, {L.lit(1 / gamma)}) - {L.lit(offset)}"
+    )
+
+
+def _piecewise_decode(L: _Language, encoding: registry.Encoding, v: str) -> str:
+    """Return the sRGB-style curve's decoding of the expression ``v`` (linear below 0)."""
+    brk, slope = _piecewise(encoding)
+    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
+    return (
+        f"{v} <= {L.lit(slope * brk)} ? {v} / {L.lit(slope)} : "
+        f"{L.pow}(({v} + {L.lit(offset)}) / {L.lit(1 + offset)}, {L.lit(gamma)})"
+    )
+
+
 def _input(L: _Language, source: str) -> str:
     """Input colour space -> CIE-XYZ-D65, limited as the config's colour space and view."""
     lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_input(float r, float g, float b)", "{"]
@@ -246,10 +285,16 @@ def _input(L: _Language, source: str) -> str:
             "ocio_thinfilm_finite(b));"
         )
         return "\n".join(lines + ["}", ""])
-    space = registry.linear_space_of(source)
-    if space is None:  # pragma: no cover - SHADER_SOURCES holds only these
-        raise ParameterError("source", f" must be one of {SHADER_SOURCES}, got {source!r}")
-    if source != space.name:  # an encoded space: ACEScct (S-2016-001) codes -> linear
+    if source == _TEXTURE[0]:
+        encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
+        for ch in "rgb":
+            lines.append(f"    {ch} = {_piecewise_decode(L, encoding, ch)};")
+        colorimetry_name = _TEXTURE[1]
+    else:
+        space = registry.linear_space_of(source)
+        assert space is not None  # shader_source checked the source
+        colorimetry_name = space.colorimetry
+    if source in registry.ENCODED_SPACES:  # ACEScct (S-2016-001) codes -> linear
         lo = _ACESCCT_A * -ocio_ops.LIMIT + _ACESCCT_B
         hi = (math.log2(ocio_ops.LIMIT) + _ACESCCT_OFFSET) / _ACESCCT_SCALE
         for ch in "rgb":
@@ -261,7 +306,7 @@ def _input(L: _Language, source: str) -> str:
             )
     for ch in "rgb":
         lines.append(f"    {ch} = ocio_thinfilm_finite({ch});")
-    M = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(space.colorimetry))
+    M = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(colorimetry_name))
     X, Y, Z = _matrix_rows(L, M, ("r", "g", "b"))
     lines += [
         f"    float X = ocio_thinfilm_finite({X});",
@@ -360,16 +405,10 @@ def _encoding(L: _Language, entry: registry.AnyDisplay) -> str:
             f"    return v > {zero} ? {L.pow}(v, {L.lit(1 / gamma)}) : {zero};\n"
         )
     else:
-        gamma, offset = entry.encoding.gamma, entry.encoding.offset
-        # where the linear segment meets the power with the same value and slope (as
-        # OCIO's ExponentWithLinearTransform; IEC 61966-2-1 rounds it to 0.0031308, 12.92)
-        brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
-        slope = (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
         body = (
-            f"    // IEC 61966-2-1 piecewise: {slope:.6g} L below {brk:.6g}, then "
-            f"{1 + offset:g} L ** (1 / {gamma:g}) - {offset:g}\n"
-            f"    return v <= {L.lit(brk)} ? {L.lit(slope)} * v : "
-            f"{L.lit(1 + offset)} * {L.pow}(v, {L.lit(1 / gamma)}) - {L.lit(offset)};\n"
+            f"    // IEC 61966-2-1 piecewise ({_piecewise(entry.encoding)[1]:.6g} L below "
+            f"{_piecewise(entry.encoding)[0]:.6g})\n"
+            f"    return {_piecewise_encode(L, entry.encoding, 'v')};\n"
         )
     return head + body + "}\n"
 
@@ -446,13 +485,9 @@ def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
             f"    return {L.pow}(v, {L.lit(gamma)});\n"
         )
     else:
-        gamma, offset = entry.encoding.gamma, entry.encoding.offset
-        brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
-        slope = (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
         body = (
             "    // IEC 61966-2-1 piecewise, inverted\n"
-            f"    return v <= {L.lit(slope * brk)} ? v / {L.lit(slope)} : "
-            f"{L.pow}((v + {L.lit(offset)}) / {L.lit(1 + offset)}, {L.lit(gamma)});\n"
+            f"    return {_piecewise_decode(L, entry.encoding, 'v')};\n"
         )
     return head + body + "}\n"
 
@@ -537,12 +572,15 @@ def _output(L: _Language, source: str) -> str:
     lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_output(float X, float Y, float Z)", "{"]
     if source == registry.REFERENCE:
         return "\n".join(lines + [f"    return {L.make3}(X, Y, Z);", "}", ""])
-    space = registry.linear_space_of(source)
-    assert space is not None  # shader_source checked the source
-    M = colorimetry.matrix_XYZ_to_RGB(space.colorimetry)
+    texture = source == _TEXTURE[0]
+    space = None if texture else registry.linear_space_of(source)
+    M = colorimetry.matrix_XYZ_to_RGB(_TEXTURE[1] if space is None else space.colorimetry)
     R, G, B = _matrix_rows(L, M, ("X", "Y", "Z"))
     lines += [f"    float r = {R};", f"    float g = {G};", f"    float b = {B};"]
-    if source != space.name:  # ACEScct encoding (S-2016-001)
+    if texture:
+        encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
+        lines += [f"    {ch} = {_piecewise_encode(L, encoding, ch)};" for ch in "rgb"]
+    elif space is not None and source != space.name:  # ACEScct encoding (S-2016-001)
         brk = 2.0 ** (_ACESCCT_BREAK * _ACESCCT_SCALE - _ACESCCT_OFFSET)
         for ch in "rgb":
             lines.append(
