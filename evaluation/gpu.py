@@ -40,7 +40,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["gl_context", "default_context", "GpuProgram", "apply_gpu", "supported_languages"]
+__all__ = [
+    "gl_context",
+    "default_context",
+    "GpuProgram",
+    "apply_gpu",
+    "render_pixels",
+    "supported_languages",
+]
 
 #: Name of the input-pixel sampler in the wrapper shader (kept out of OCIO's
 #: resource prefix so it cannot collide with OCIO's samplers or uniforms).
@@ -334,38 +341,15 @@ class GpuProgram:
         """
         if texture_dtype not in ("f4", "f2"):
             raise ValueError(f"texture_dtype must be 'f4' or 'f2', not {texture_dtype!r}")
-        rgb = np.asarray(pixels, dtype=np.float32).reshape(-1, 3)
-        n = rgb.shape[0]
-        if n == 0:
-            return np.zeros((0, 3), np.float32)
-        width = min(n, _ROW)
-        height = -(-n // width)
-        rgba = np.zeros((height * width, 4), np.float32)
-        rgba[:n, :3] = rgb
-        rgba[:, 3] = 1.0
+        textures = self._upload_luts(texture_dtype)
 
-        ctx = self.ctx
-        src = ctx.texture((width, height), 4, rgba.tobytes(), dtype="f4")
-        src.filter = (ctx.NEAREST, ctx.NEAREST)
-        dst = ctx.texture((width, height), 4, dtype="f4")
-        fbo = ctx.framebuffer(color_attachments=[dst])
-        try:
-            src.use(location=0)
-            if _INPUT_SAMPLER in self.program:
-                self.program[_INPUT_SAMPLER].value = 0
-            for texture, unit, sampler in self._upload_luts(texture_dtype):
+        def bind():
+            for texture, unit, sampler in textures:
                 texture.use(location=unit)
                 if sampler in self.program:
                     self.program[sampler].value = unit
-            fbo.use()
-            fbo.viewport = (0, 0, width, height)
-            self._vao.render(mode=ctx.TRIANGLES, vertices=3)
-            out = np.frombuffer(fbo.read(components=4, dtype="f4"), dtype=np.float32)
-        finally:
-            fbo.release()
-            dst.release()
-            src.release()
-        return out.reshape(-1, 4)[:n, :3].copy()
+
+        return render_pixels(self.ctx, self.program, self._vao, pixels, _INPUT_SAMPLER, bind)
 
     def release(self):
         """Free the program and its textures."""
@@ -375,6 +359,48 @@ class GpuProgram:
         self._luts.clear()
         self._vao.release()
         self.program.release()
+
+
+def render_pixels(ctx, program, vao, pixels, sampler, bind=None):
+    """Draw ``program`` once over a float32 image of the pixels and read it back.
+
+    The pixels (RGB, any shape ``(..., 3)``, cast to float32, non-finite values kept)
+    are laid out in rows of at most 256 as an RGBA32F texture on unit 0, bound to the
+    uniform ``sampler``; ``bind()`` binds whatever else the program reads; the program
+    draws one full-viewport triangle (``vao``) into a float32 framebuffer.
+
+    Returns
+    -------
+    numpy.ndarray, shape (N, 3), float32
+    """
+    rgb = np.asarray(pixels, dtype=np.float32).reshape(-1, 3)
+    n = rgb.shape[0]
+    if n == 0:
+        return np.zeros((0, 3), np.float32)
+    width = min(n, _ROW)
+    height = -(-n // width)
+    rgba = np.zeros((height * width, 4), np.float32)
+    rgba[:n, :3] = rgb
+    rgba[:, 3] = 1.0
+    src = ctx.texture((width, height), 4, rgba.tobytes(), dtype="f4")
+    src.filter = (ctx.NEAREST, ctx.NEAREST)
+    dst = ctx.texture((width, height), 4, dtype="f4")
+    fbo = ctx.framebuffer(color_attachments=[dst])
+    try:
+        src.use(location=0)
+        if sampler in program:
+            program[sampler].value = 0
+        if bind is not None:
+            bind()
+        fbo.use()
+        fbo.viewport = (0, 0, width, height)
+        vao.render(mode=ctx.TRIANGLES, vertices=3)
+        out = np.frombuffer(fbo.read(components=4, dtype="f4"), dtype=np.float32)
+    finally:
+        fbo.release()
+        dst.release()
+        src.release()
+    return out.reshape(-1, 4)[:n, :3].copy()
 
 
 def apply_gpu(processor, pixels, *, texture_dtype="f4", language=None, ctx=None):

@@ -85,6 +85,16 @@ def _to_XYZ(values, source):
     return _limited(colorimetry.RGB_to_XYZ(rgb, space.colorimetry))
 
 
+def _hlg_scene_light(XYZ):
+    """HLG display light (XYZ, Y = 1 at 203 cd/m2) -> scene light E (the BT.2100 inverse
+    OOTF, Table 5, L_B = 0): E = F_D / (L_W Y_S ** (gamma - 1)), Y_S = (Y_D / L_W) **
+    (1 / gamma)."""
+    Yd = np.maximum(XYZ[:, 1], 0.0) * WHITE
+    with np.errstate(all="ignore"):
+        to_scene = np.where(Yd > 0, (Yd / PEAK) ** (1.0 / HLG_GAMMA - 1.0) / PEAK, 0.0)
+    return XYZ * WHITE * to_scene[:, None]
+
+
 def analytic_display_XYZ(
     XYZ: npt.ArrayLike,
     display: str,
@@ -116,10 +126,7 @@ def analytic_display_XYZ(
     if entry.transfer == "PQ":
         k = entry.peak / WHITE
         return k * mapping(XYZ / k)
-    Yd = np.maximum(XYZ[:, 1], 0.0) * WHITE
-    with np.errstate(all="ignore"):
-        to_scene = np.where(Yd > 0, (Yd / PEAK) ** (1.0 / HLG_GAMMA - 1.0) / PEAK, 0.0)
-    E = mapping(XYZ * WHITE * to_scene[:, None])
+    E = mapping(_hlg_scene_light(XYZ))
     return E * (PEAK * np.maximum(E[:, 1:2], 0.0) ** (HLG_GAMMA - 1.0)) / WHITE
 
 
@@ -139,10 +146,7 @@ def analytic_view(
     XYZ = _to_XYZ(np.asarray(values, dtype=np.float64).reshape(-1, 3), source)
     if entry.hdr and entry.transfer == "HLG":
         # the code is the OETF of the mapped scene light (the OOTF and its inverse cancel)
-        Yd = np.maximum(XYZ[:, 1], 0.0) * WHITE
-        with np.errstate(all="ignore"):
-            to_scene = np.where(Yd > 0, (Yd / PEAK) ** (1.0 / HLG_GAMMA - 1.0) / PEAK, 0.0)
-        E = analytic_display_XYZ(XYZ * WHITE * to_scene[:, None], gamut, view, threshold, limit)
+        E = analytic_display_XYZ(_hlg_scene_light(XYZ), gamut, view, threshold, limit)
         rgb = np.clip(colorimetry.XYZ_to_RGB(E, gamut), 0.0, 1.0)
         return colour.models.oetf_BT2100_HLG(rgb)
     light = analytic_display_XYZ(XYZ, display, view, threshold, limit)
@@ -274,29 +278,9 @@ class GlslView:
         for name, value in (("ocio_thinfilm_threshold", threshold), ("ocio_thinfilm_limit", limit)):
             if name in self.program:
                 self.program[name].value = 0.0 if value is None else float(value)
-        rgb = np.asarray(pixels, dtype=np.float32).reshape(-1, 3)
-        n = rgb.shape[0]
-        width = min(max(n, 1), 256)
-        height = max(-(-n // width), 1)
-        rgba = np.zeros((height * width, 4), np.float32)
-        rgba[:n, :3] = rgb
-        ctx = self.ctx
-        src = ctx.texture((width, height), 4, rgba.tobytes(), dtype="f4")
-        src.filter = (ctx.NEAREST, ctx.NEAREST)
-        dst = ctx.texture((width, height), 4, dtype="f4")
-        fbo = ctx.framebuffer(color_attachments=[dst])
-        try:
-            src.use(location=0)
-            self.program["thinfilm_input"].value = 0
-            fbo.use()
-            fbo.viewport = (0, 0, width, height)
-            self._vao.render(mode=ctx.TRIANGLES, vertices=3)
-            out = np.frombuffer(fbo.read(components=4, dtype="f4"), dtype=np.float32)
-        finally:
-            fbo.release()
-            dst.release()
-            src.release()
-        return out.reshape(-1, 4)[:n, :3].copy()
+        from evaluation.gpu import render_pixels
+
+        return render_pixels(self.ctx, self.program, self._vao, pixels, "thinfilm_input")
 
     def release(self) -> None:
         self._vao.release()

@@ -2,7 +2,8 @@
 
 Everything here is a *reference*: written from the textbook formulas (or taken from
 colour-science), never copied from the code under test. Shared fixtures: ``cfg`` (the
-committed config), ``colour`` (colour-science), ``load_benchmark``, ``marked``. What
+committed config), ``colour`` (colour-science), ``gl`` (a headless OpenGL context),
+``cxx`` (a C++ compiler), ``load_benchmark``, ``marked``. What
 tests and benchmarks share as importable code (the test-colour sets, applying a view as
 a host does, decoding display code values) is the repository's ``evaluation`` package:
 :mod:`evaluation.colours`, :mod:`evaluation.views`.
@@ -65,6 +66,29 @@ def cfg():
     if not COMMITTED_CONFIG.exists():
         pytest.skip(f"{COMMITTED_CONFIG} not built (ocio-thinfilm bake)")
     return ocio.Config.CreateFromFile(str(COMMITTED_CONFIG))
+
+
+@pytest.fixture(scope="session")
+def gl():
+    """The headless OpenGL context of :mod:`evaluation.gpu` (Mesa llvmpipe in CI); skips
+    with the reason where there is none."""
+    from evaluation import gpu
+
+    try:
+        return gpu.default_context()
+    except RuntimeError as error:
+        pytest.skip(f"no headless OpenGL context: {error}")
+
+
+@pytest.fixture(scope="session")
+def cxx():
+    """The C++ compiler the exported DCTLs are built with; skips where there is none."""
+    from evaluation.shaders import compiler
+
+    name = compiler()
+    if name is None:
+        pytest.skip("no C++ compiler (g++) to build the DCTL with")
+    return name
 
 
 @pytest.fixture(scope="session")

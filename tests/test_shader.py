@@ -23,7 +23,6 @@ from evaluation.shaders import (
     GlslView,
     analytic_inverse_view,
     analytic_view,
-    compiler,
     source_values,
 )
 from evaluation.views import EXTREME_XYZ, apply_view
@@ -42,22 +41,6 @@ OTHER_KNOBS = [(0.6, 1.5), (0.9, 1.05), (0.3, 3.0)]
 @pytest.fixture(scope="module")
 def sets():
     return gamut_map_sets()
-
-
-@pytest.fixture(scope="module")
-def gl():
-    from evaluation import gpu
-
-    try:
-        return gpu.default_context()
-    except RuntimeError as error:
-        pytest.skip(f"no headless OpenGL context: {error}")
-
-
-@pytest.fixture(scope="module")
-def cxx():
-    if compiler() is None:
-        pytest.skip("no C++ compiler (g++) to build the DCTL with")
 
 
 _BUILT: dict = {}

@@ -32,16 +32,6 @@ def _block(name):
     return match.group(1)
 
 
-@pytest.fixture(scope="module")
-def gl():
-    from evaluation import gpu
-
-    try:
-        return gpu.default_context()
-    except RuntimeError as error:
-        pytest.skip(f"no headless OpenGL context: {error}")
-
-
 _VERTEX = """#version 130
 void main()
 {

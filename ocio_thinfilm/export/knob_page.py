@@ -43,7 +43,7 @@ import numpy as np
 from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.colour import colorimetry, compress
 from ocio_thinfilm.export import shader
-from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
+from ocio_thinfilm.io import StrPath, check_output_file, write_text
 
 __all__ = [
     "DISPLAYS",
@@ -622,8 +622,4 @@ def write_knob_page(path: StrPath) -> Path:
     OSError
         If the write fails.
     """
-    text = knob_page_html()
-    path = check_output_file(path, "path")
-    with atomic_file(path) as tmp:
-        Path(tmp).write_text(text, encoding="utf-8")
-    return Path(path)
+    return write_text(check_output_file(path, "path"), knob_page_html())

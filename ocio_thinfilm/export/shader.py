@@ -60,7 +60,7 @@ import numpy as np
 from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.io import StrPath, atomic_file, check_output_file
+from ocio_thinfilm.io import StrPath, check_output_file, write_text
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
 
@@ -227,6 +227,15 @@ def _helpers(L: _Language) -> str:
     return ocio_thinfilm_range(x, -{lim}, {lim});
 }}
 """
+    one = L.lit(1.0)
+    text += f"""
+// A channel's normalised distance along the ray from the grey Y (0 < Y < 1): the
+// fraction of the way to the face through black (below Y) or through white (above).
+{L.qualifier}float ocio_thinfilm_distance(float c, float Y)
+{{
+    return c < Y ? (Y - c) / Y : (c - Y) / ({one} - Y);
+}}
+"""
     if L is _GLSL:
         text += """
 float ocio_thinfilm_saturate(float x)
@@ -343,8 +352,6 @@ def _map(L: _Language, gamut: str, soft: bool) -> str:
     return (t + x / {L.pow}({one} + {L.pow}(x / s, {L.lit(p)}), {L.lit(1 / p)})) / d;
 }}
 """
-    # the distance of one channel along the ray from the grey Y (in (0, 1)) to its faces
-    dist = "{c} < Y ? (Y - {c}) / Y : ({c} - Y) / ({one} - Y)"
     scale = "d >= l ? {one} / d : ocio_thinfilm_scale(d, t, l)" if soft else "{one} / d"
     knobs = ", float t, float l" if soft else ""
     inside = "t" if soft else one
@@ -358,9 +365,9 @@ def _map(L: _Language, gamut: str, soft: bool) -> str:
 {{
     if (!(Y > {zero})) return {L.make3}({zero}, {zero}, {zero});
     if (Y >= {one}) return {L.make3}({one}, {one}, {one});
-    float dr = {dist.format(c="r", one=one)};
-    float dg = {dist.format(c="g", one=one)};
-    float db = {dist.format(c="b", one=one)};
+    float dr = ocio_thinfilm_distance(r, Y);
+    float dg = ocio_thinfilm_distance(g, Y);
+    float db = ocio_thinfilm_distance(b, Y);
     float d = {L.max}(dr, {L.max}(dg, db));
     if (d <= {inside}) return {L.make3}(r, g, b);
     float k = {scale.format(one=one)};
@@ -505,7 +512,6 @@ def _unmap(L: _Language, gamut: str, soft: bool) -> str:
 }}
 """
     p = compress.POWER
-    dist = "{c} < Y ? (Y - {c}) / Y : ({c} - Y) / ({one} - Y)"
     return f"""
 // The compression's inverse: the colour at most limit boundary distances out that the
 // map takes to this one (the boundary itself: limit), along the same ray, Y kept.
@@ -517,10 +523,8 @@ def _unmap(L: _Language, gamut: str, soft: bool) -> str:
     float Y = {L.lit(w[0])} * r + {L.lit(w[1])} * g + {L.lit(w[2])} * b;
     if (!(Y > {zero})) return {L.make3}({zero}, {zero}, {zero});
     if (Y >= {one}) return {L.make3}({one}, {one}, {one});
-    float dr = {dist.format(c="r", one=one)};
-    float dg = {dist.format(c="g", one=one)};
-    float db = {dist.format(c="b", one=one)};
-    float d = {L.max}(dr, {L.max}(dg, db));
+    float d = {L.max}(ocio_thinfilm_distance(r, Y),
+        {L.max}(ocio_thinfilm_distance(g, Y), ocio_thinfilm_distance(b, Y)));
     if (d <= t) return {L.make3}(r, g, b);
     float k = l / d;
     if (d < {one}) {{
@@ -789,8 +793,8 @@ def export_shader(
     Parameters
     ----------
     path : str or os.PathLike
-        The file to write (``.glsl``, ``.dctl`` or any name); an existing file that
-        ocio-thinfilm did not write is refused by the I/O layer's rules.
+        The file to write (``.glsl``, ``.dctl`` or any name); the file named is
+        replaced atomically, a directory in its place is refused.
     lang, display, view, source, threshold, limit
         As :func:`shader_source`.
 
@@ -805,7 +809,4 @@ def export_shader(
         For a bad argument (naming it) or an output path that cannot be written.
     """
     text = shader_source(lang, display, view, source, threshold=threshold, limit=limit)
-    path = check_output_file(path, "path")
-    with atomic_file(path) as tmp:
-        Path(tmp).write_text(text)
-    return Path(path)
+    return write_text(check_output_file(path, "path"), text)

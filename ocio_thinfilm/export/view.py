@@ -87,7 +87,7 @@ from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import view_fit
-from ocio_thinfilm.io import StrPath, atomic_file, check_writable
+from ocio_thinfilm.io import StrPath, atomic_file, check_writable, write_text
 from ocio_thinfilm.lut import ocio_ops, storage
 
 __all__ = [
@@ -527,12 +527,6 @@ def _without_trailing_zeros(text):
     return "\n".join(lines)
 
 
-def _write_text(path, text):
-    with atomic_file(path) as tmp:
-        Path(tmp).write_text(text)
-    return Path(path)
-
-
 def _write_group(path, fmt, transforms, meta, description):
     import PyOpenColorIO as ocio
 
@@ -706,8 +700,8 @@ def export_view(
             target=shaper_space,
             knobs=knobs,
         )
-        return [_write_text(out, text3d), _write_text(companion, text1d)]
+        return [write_text(out, text3d), write_text(companion, text1d)]
     text = _bake_text(cfg, fmt, source, shaper_space, display, view, size, description, knobs=knobs)
     if fmt == "cube":  # OCIO's writer has no title line: say which form the file is
         text = _cube_title(source, display, view, size, bool(shaper_space)) + "\n" + text
-    return [_write_text(out, text)]
+    return [write_text(out, text)]

@@ -31,6 +31,7 @@ from ocio_thinfilm.io.transactions import (
     atomic_directory,
     atomic_file,
     transaction,
+    write_text,
 )
 
 __all__ = [
@@ -48,6 +49,7 @@ __all__ = [
     "clean_stale",
     "is_stdout",
     "write_bytes",
+    "write_text",
     "write_image",
     "read_image",
     "deferred_signals",

@@ -27,6 +27,7 @@ __all__ = [
     "transaction",
     "atomic_file",
     "atomic_directory",
+    "write_text",
 ]
 
 
@@ -404,3 +405,31 @@ def atomic_directory(
     claim = ownership.claim_directory(path, parameter=parameter, last=last)
     with transaction() as tx:
         yield tx.directory(claim)
+
+
+def write_text(path: StrPath, text: str) -> Path:
+    """Write ``text`` (UTF-8) to the file ``path`` with :func:`atomic_file`.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The destination (a regular file is replaced atomically, a special file written
+        through).
+    text : str
+        The file's content.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    OSError
+        Naming ``path``, if the write or the commit fails.
+    ValueError
+        If ``path`` cannot be written.
+    """
+    with atomic_file(path) as tmp:
+        Path(tmp).write_text(text, encoding="utf-8")
+    return Path(path)
