@@ -237,13 +237,15 @@ def test_bad_knobs_one_line_exit_2_nothing_written(
         ["export", "film", "--compress-threshold", "0.6"],
         ["export", "view", "--from", "ACEScct", "--display", "sRGB"]
         + ["--view", "Constant-Lightness Clip", "--compress-limit", "1.5"],
+        ["export", "shader", "--lang", "glsl", "--display", "sRGB"]
+        + ["--view", "Constant-Lightness Clip", "--compress-threshold", "0.6"],
     ],
 )
 def test_knobs_refused_where_there_is_no_compression(argv, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert cli.main(argv + ["--out", str(tmp_path / "x.cube")]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "applies to 'export view --view" in err, err
+    assert len(err.splitlines()) == 1 and "applies to 'export view|shader --view" in err, err
     assert list(tmp_path.iterdir()) == []
 
 

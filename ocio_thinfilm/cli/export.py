@@ -113,7 +113,6 @@ def _run_bake(args) -> int:
 
 def _run_shader(args) -> int:
     """``export shader``: the view's map as GLSL or DCTL."""
-    from ocio_thinfilm.colour import compress
     from ocio_thinfilm.export import shader, view
 
     for option, given in (
@@ -134,9 +133,12 @@ def _run_shader(args) -> int:
     out = args.out
     if out is None and args.display is not None and args.view is not None:
         out = f"{view.set_name(source, args.display, args.view)}.{args.lang}"
-    threshold = compress.THRESHOLD if args.compress_threshold is None else args.compress_threshold
-    limit = compress.LIMIT if args.compress_limit is None else args.compress_limit
+    threshold, limit = (
+        default if getattr(args, dest) is None else getattr(args, dest)
+        for dest, default in _KNOB_OPTIONS.values()
+    )
     path = shader.export_shader(
+        # without --display or --view the library refuses before it writes anything
         out if out is not None else "ocio_thinfilm_view",
         args.lang,
         args.display,
@@ -150,17 +152,21 @@ def _run_shader(args) -> int:
 
 
 def _run_export(args) -> int:
+    given = _knobs_given(args)
+    if given and (args.table not in ("view", "shader") or args.view != registry.COMPRESS_VIEW):
+        what = (
+            f"'export {args.table}'"
+            if args.table not in ("view", "shader")
+            else f"--view {args.view!r}"
+        )
+        raise UsageError(
+            f"{given[0]} applies to 'export view|shader --view \"{registry.COMPRESS_VIEW}\"', "
+            f"not {what}"
+        )
     if args.table == "shader":
         return _run_shader(args)
     if args.lang is not None:
         raise UsageError(f"--lang applies to 'export shader', not {args.table!r}")
-    given = _knobs_given(args)
-    if given and (args.table != "view" or args.view != registry.COMPRESS_VIEW):
-        what = f"'export {args.table}'" if args.table != "view" else f"--view {args.view!r}"
-        raise UsageError(
-            f"{given[0]} applies to 'export view --view \"{registry.COMPRESS_VIEW}\"' and "
-            f"'export shader', not {what}"
-        )
     if args.table == "view":
         from ocio_thinfilm.export.view import export_view
 
