@@ -473,10 +473,15 @@ def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
     if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
         scale = 10000.0 / registry.HDR_REFERENCE_WHITE
         body = (
-            "    // SMPTE ST 2084 EOTF, in units of the reference white\n"
-            f"    float p = {L.pow}(v, {L.lit(1 / _PQ_M2)});\n"
-            f"    float n = {L.max}(p - {L.lit(_PQ_C1)}, {zero}) / ({L.lit(_PQ_C2)} - "
-            f"{L.lit(_PQ_C3)} * p);\n"
+            "    // SMPTE ST 2084 EOTF, in units of the reference white. With p = v ** (1 / m2)\n"
+            "    // = exp(x) and q = 1 - p: (p - c1) / (c2 - c3 p) = (1 - c1 - q) / (c2 - c3 + c3 q),\n"
+            "    // no cancellation near the peak (q from its series where x is small).\n"
+            f"    if (!(v > {zero})) return {zero};\n"
+            f"    float x = {L.log}(v) * {L.lit(1 / _PQ_M2)};\n"
+            f"    float q = x > {L.lit(-0.05)} ? -x * ({one} + x * ({L.lit(0.5)} + x * "
+            f"({L.lit(1 / 6)} + x * {L.lit(1 / 24)}))) : {one} - {L.exp}(x);\n"
+            f"    float n = {L.max}({L.lit(1 - _PQ_C1)} - q, {zero}) / ({L.lit(_PQ_C2 - _PQ_C3)} + "
+            f"{L.lit(_PQ_C3)} * q);\n"
             f"    return n > {zero} ? {L.lit(scale)} * {L.pow}(n, {L.lit(1 / _PQ_M1)}) : {zero};\n"
         )
     elif isinstance(entry, registry.HDRDisplay):
