@@ -474,8 +474,8 @@ def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
         scale = 10000.0 / registry.HDR_REFERENCE_WHITE
         body = (
             "    // SMPTE ST 2084 EOTF, in units of the reference white. With p = v ** (1 / m2)\n"
-            "    // = exp(x) and q = 1 - p: (p - c1) / (c2 - c3 p) = (1 - c1 - q) / (c2 - c3 + c3 q),\n"
-            "    // no cancellation near the peak (q from its series where x is small).\n"
+            "    // = exp(x), q = 1 - p: (p - c1) / (c2 - c3 p) = (1 - c1 - q) / (c2 - c3 + c3 q)\n"
+            "    // does not cancel near the peak (q from its series where x is small).\n"
             f"    if (!(v > {zero})) return {zero};\n"
             f"    float x = {L.log}(v) * {L.lit(1 / _PQ_M2)};\n"
             f"    float q = x > {L.lit(-0.05)} ? -x * ({one} + x * ({L.lit(0.5)} + x * "
