@@ -52,7 +52,7 @@ PEAK = 1000.0
 #: BT.2100's HLG system gamma at a 1000 cd/m2 peak (Table 5).
 HLG_GAMMA = 1.2
 #: The config's sRGB-encoded texture space (sRGB curve, Rec.709 primaries).
-TEXTURE = "sRGB - Texture"
+TEXTURE = registry.TEXTURE_SPACE
 
 _HERE = Path(__file__).resolve().parent / "dctl"
 

@@ -35,6 +35,7 @@ __all__ = [
     "SceneSpace",
     "EncodedSpace",
     "REFERENCE",
+    "TEXTURE_SPACE",
     "RGB_COLORIMETRY",
     "SCENE_LINEAR_LIST",
     "SCENE_LINEAR_SPACES",
@@ -553,6 +554,9 @@ class EncodedSpace:
 #: The reference space of the scene and of the displays (CIE XYZ, D65 white, Y = 1 for
 #: the perfect reflector).
 REFERENCE = "CIE-XYZ-D65"
+#: The sRGB-encoded texture space (8-bit images, colour picking): the sRGB display's
+#: encoding over Rec.709 primaries.
+TEXTURE_SPACE = "sRGB - Texture"
 
 #: Our names of RGB colorimetries (primaries and white) -> colour-science's
 #: ``colour.RGB_COLOURSPACES`` names.

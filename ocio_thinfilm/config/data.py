@@ -73,16 +73,16 @@ ROLES = {
     "default": "Linear Rec.709 (sRGB)",
     "data": "Raw",
     "reference": "CIE-XYZ-D65",
-    "color_picking": "sRGB - Texture",
+    "color_picking": registry.TEXTURE_SPACE,
     "texture_paint": "Linear Rec.709 (sRGB)",
-    "matte_paint": "sRGB - Texture",
+    "matte_paint": registry.TEXTURE_SPACE,
     "compositing_log": "ACEScct",
     "color_timing": "ACEScct",
     "aces_interchange": "ACES2065-1",
     "cie_xyz_d65_interchange": "CIE-XYZ-D65",
-    "default_byte": "sRGB - Texture",
+    "default_byte": registry.TEXTURE_SPACE,
     "default_float": "Linear Rec.709 (sRGB)",
-    "default_sequencer": "sRGB - Texture",
+    "default_sequencer": registry.TEXTURE_SPACE,
 }
 
 
@@ -492,7 +492,7 @@ def config_data(
         )
     cs.append(
         dict(
-            name="sRGB - Texture",
+            name=registry.TEXTURE_SPACE,
             family="Texture",
             encoding="sdr-video",
             categories=["file-io", "texture"],
@@ -608,8 +608,8 @@ def config_data(
         dict(
             name="OpenEXR", colorspace=ROLES["scene_linear"], pattern="*", extension="[eE][xX][rR]"
         ),
-        dict(name="PNG", colorspace="sRGB - Texture", pattern="*", extension="[pP][nN][gG]"),
-        dict(name="JPEG", colorspace="sRGB - Texture", pattern="*", extension="[jJ][pP][gG]"),
+        dict(name="PNG", colorspace=registry.TEXTURE_SPACE, pattern="*", extension="[pP][nN][gG]"),
+        dict(name="JPEG", colorspace=registry.TEXTURE_SPACE, pattern="*", extension="[jJ][pP][gG]"),
         dict(name="Default", colorspace=ROLES["default"]),
     ]
     return ConfigData(

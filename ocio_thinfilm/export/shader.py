@@ -79,7 +79,7 @@ __all__ = [
 #: The languages :func:`shader_source` writes.
 LANGUAGES = ("glsl", "dctl")
 #: The views it writes (the others are LUT-free already or pass data through).
-SHADER_VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress")
+SHADER_VIEWS = ("Constant-Lightness Clip", registry.COMPRESS_VIEW)
 #: The input colour spaces it decodes analytically: the reference, the scene-linear
 #: spaces and the encoded ones (the thin-film inputs are spectral tables: use
 #: ``export view``).
@@ -87,11 +87,11 @@ SHADER_SOURCES = (
     (registry.REFERENCE,)
     + registry.SCENE_LINEAR_SPACES
     + registry.ENCODED_SPACES
-    + ("sRGB - Texture",)
+    + (registry.TEXTURE_SPACE,)
 )
 #: The config's sRGB-encoded texture space: the sRGB display's encoding over Rec.709
 #: primaries (its colour space decodes with the display's curve, then the matrix).
-_TEXTURE = ("sRGB - Texture", "Rec.709", "sRGB")
+_TEXTURE = (registry.TEXTURE_SPACE, "Rec.709", "sRGB")
 #: The largest limit the shaders accept from a host (a larger uniform gives the defaults).
 KNOB_LIMIT_MAX = 100.0
 #: DCTL slider ranges (min, max, step); widened to hold the exported default.
@@ -700,7 +700,7 @@ def shader_source(
         )
     as_choice("source", source, SHADER_SOURCES)
     t, lim = check_knobs(threshold, limit)
-    soft = view == "Constant-Lightness Compress"
+    soft = view == registry.COMPRESS_VIEW
     L = _LANGUAGE[lang]
     entry = registry.as_display(display)
     parts = [

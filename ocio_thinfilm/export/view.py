@@ -86,6 +86,7 @@ from ocio_thinfilm import cache, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
+from ocio_thinfilm.config.data import KNOB_NAMES
 from ocio_thinfilm.export import view_fit
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable, write_text
 from ocio_thinfilm.lut import ocio_ops, storage
@@ -120,8 +121,6 @@ SHAPER_SPACE = "ocio-thinfilm export shaper"
 #: lattice regression) rather than samples of the view, for the SDR displays (the HDR
 #: displays' tables stay samples; see :func:`_fitted_table`).
 FITTED_FORMATS = ("cube", "csp")
-#: The compression's knobs as the parameters of :func:`export_view` and :func:`view_config`.
-_KNOB_NAMES = ("compress_threshold", "compress_limit")
 
 
 # --------------------------------------------------------------------------- #
@@ -461,7 +460,7 @@ def _fitted_nodes(source, display, view, size, shaper, knobs):
     compression's (threshold, limit) for the Constant-Lightness Compress view, ``None``
     for the other views (which do not depend on them: one fit serves every knob).
     """
-    compress = {} if knobs is None else dict(zip(_KNOB_NAMES, knobs, strict=True))
+    compress = {} if knobs is None else dict(zip(KNOB_NAMES, knobs, strict=True))
     cfg, shaper_space = view_config(source, size, display, **compress)
     if shaper and shaper_space:
         return view_fit.fit_view_table(
@@ -629,7 +628,7 @@ def export_view(
     """
     import PyOpenColorIO as ocio
 
-    knob_values = compress_map.check_knobs(compress_threshold, compress_limit, names=_KNOB_NAMES)
+    knob_values = compress_map.check_knobs(compress_threshold, compress_limit, names=KNOB_NAMES)
     display = registry.display_name(display)
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
@@ -653,7 +652,7 @@ def export_view(
     check_writable(out.parent if str(out.parent) else Path("."))
 
     knobs = knob_values if view == registry.COMPRESS_VIEW else None
-    compress = dict(zip(_KNOB_NAMES, knob_values, strict=True))
+    compress = dict(zip(KNOB_NAMES, knob_values, strict=True))
     cfg, shaper_space = view_config(source, size, display, **compress)
     meta = _metadata(source, display, view)
     if source in _THIN_FILM:
