@@ -47,7 +47,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import registry
+from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import colorimetry
 
@@ -128,7 +128,7 @@ def luminance_weights(display: registry.DisplayLike) -> np.ndarray:
     >>> luminance_weights("sRGB").round(4).tolist()
     [0.2126, 0.7152, 0.0722]
     """
-    return np.linalg.inv(_display_matrix(display))[1]
+    return reproducible.inv3(_display_matrix(display))[1]
 
 
 #: Pixels per block: the working set stays in cache, and results do not depend on
@@ -251,7 +251,7 @@ def clip_XYZ(XYZ: npt.ArrayLike, display: registry.DisplayLike = "sRGB") -> np.n
        intersection furthest from X (smallest remaining fraction t) is the result.
     """
     M = _display_matrix(display)
-    white = np.linalg.inv(M) @ np.ones(3)
+    white = reproducible.matmul(reproducible.inv3(M), np.ones(3))
 
     def kernel(xyz):
         Y = xyz[1].copy()
@@ -349,7 +349,7 @@ def clip_black_faces_RGB(RGB: npt.ArrayLike, display: registry.DisplayLike) -> n
     """
     rgb = np.asarray(RGB, dtype=np.float64)
     with np.errstate(all="ignore"):  # non-finite inputs give non-finite rows, no warning
-        Y = rgb @ luminance_weights(display)
+        Y = reproducible.matmul(rgb, luminance_weights(display))
         lo = rgb.min(axis=-1)
         t = np.where(lo < 0.0, Y / (Y - lo), 1.0)
         out = Y[..., None] + t[..., None] * (rgb - Y[..., None])
@@ -435,7 +435,7 @@ def clip_white_faces_continued_RGB(RGB: npt.ArrayLike, display: registry.Display
     True
     """
     rgb = np.asarray(RGB, dtype=np.float64)
-    Y = rgb @ luminance_weights(display)
+    Y = reproducible.matmul(rgb, luminance_weights(display))
     top = rgb.max(axis=-1)
     # a neutral colour (max c - Y at rounding level) has every channel as its largest,
     # and the largest always goes to 1: past white a grey goes to white, not to 0 / 0

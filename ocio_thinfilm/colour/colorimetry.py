@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import cache, registry
+from ocio_thinfilm import cache, registry, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.physics import sampling, spectra
 
@@ -78,8 +78,10 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
     # end values constant outside the tabulated range.
     # (a single wavelength still needs a shape with end > start)
     shape = colour.SpectralShape(wl.min(), max(wl.max(), wl.min() + 1.0), 1)
-    cmf = np.asarray(cmfs.copy().extrapolate(shape)[wl]).reshape(-1, 3)
-    s = np.asarray(sd.copy().extrapolate(shape)[wl]).reshape(-1)
+    # colour-science interpolates with BLAS: its samples rounded to multiples of 2^-32
+    # are the same on every CPU (ocio_thinfilm.reproducible)
+    cmf = reproducible.canonical(np.asarray(cmfs.copy().extrapolate(shape)[wl]).reshape(-1, 3))
+    s = reproducible.canonical(np.asarray(sd.copy().extrapolate(shape)[wl]).reshape(-1))
     lower, upper = sampling.bin_edges(wl)
     # bin widths: the trapezoid rule; one sample is a point evaluation (width 1)
     width = (upper - lower) if wl.size > 1 else np.ones(1)
@@ -189,7 +191,7 @@ def reflectance_to_XYZ(
     >>> reflectance_to_XYZ(np.ones(wl.size), wl).round(4).tolist()
     [0.9505, 1.0, 1.089]
     """
-    return np.asarray(reflectance) @ spectral_weights(wavelengths, observer, illuminant)
+    return reproducible.matmul(reflectance, spectral_weights(wavelengths, observer, illuminant))
 
 
 def _chunked_XYZ(model, values, wavelengths, observer, illuminant, chunk=4096):
@@ -199,7 +201,7 @@ def _chunked_XYZ(model, values, wavelengths, observer, illuminant, chunk=4096):
     w = spectral_weights(wavelengths, observer, illuminant)
     out = np.empty((flat.size, 3))
     for start in range(0, flat.size, chunk):
-        out[start : start + chunk] = model(flat[start : start + chunk]) @ w
+        out[start : start + chunk] = reproducible.matmul(model(flat[start : start + chunk]), w)
     return out.reshape(values.shape + (3,))
 
 
@@ -333,8 +335,10 @@ def _matrix_cached(space: str) -> np.ndarray:
         cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
             colour.xy_to_XYZ(d65), colour.xy_to_XYZ(cs.whitepoint), transform="Bradford"
         )
-        return np.linalg.inv(rgb_to_xyz) @ cat
-    return np.linalg.inv(rgb_to_xyz)
+        # colour-science computes with BLAS and LAPACK: rounded to the canonical matrix,
+        # the same bits on every CPU (ocio_thinfilm.reproducible)
+        return reproducible.canonical(reproducible.matmul(reproducible.inv3(rgb_to_xyz), cat))
+    return reproducible.canonical(reproducible.inv3(rgb_to_xyz))
 
 
 def matrix_XYZ_to_RGB(space: str = "sRGB") -> np.ndarray:
@@ -417,7 +421,7 @@ def XYZ_to_RGB(XYZ: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
     >>> XYZ_to_RGB([0.95047, 1.0, 1.08883], "ACEScg").round(3).tolist()
     [1.0, 1.0, 1.0]
     """
-    return np.asarray(XYZ) @ _matrix_cached(space).T
+    return reproducible.matmul(XYZ, _matrix_cached(space).T)
 
 
 def RGB_to_XYZ(RGB: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
@@ -448,7 +452,7 @@ def RGB_to_XYZ(RGB: npt.ArrayLike, space: str = "sRGB") -> np.ndarray:
     >>> RGB_to_XYZ(np.eye(3), "sRGB")[:, 1].round(4).tolist()
     [0.2126, 0.7152, 0.0722]
     """
-    return np.asarray(RGB) @ np.linalg.inv(_matrix_cached(space)).T
+    return reproducible.matmul(RGB, reproducible.inv3(_matrix_cached(space)).T)
 
 
 def white_XYZ(space: str = "sRGB") -> np.ndarray:
@@ -539,7 +543,9 @@ def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
         raise ParameterError(
             "observer", f" must be one of colour.MSDS_CMFS, got {observer!r}"
         ) from None
-    return np.asarray(cmfs[np.asarray(wl_key)])
+    # colour-science interpolates with BLAS: multiples of 2^-32 are the same on every
+    # CPU (ocio_thinfilm.reproducible)
+    return reproducible.canonical(np.asarray(cmfs[np.asarray(wl_key)]))
 
 
 def cmfs_at(wavelengths: npt.ArrayLike, observer: str = DEFAULT_OBSERVER) -> np.ndarray:

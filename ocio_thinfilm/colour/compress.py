@@ -45,7 +45,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import registry
+from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.checks import ParameterError, as_real
 from ocio_thinfilm.colour import clip, colorimetry
 
@@ -249,7 +249,7 @@ def boundary_distance(RGB: npt.ArrayLike, display: registry.DisplayLike = "sRGB"
     if a.ndim == 0 or a.shape[-1] != 3:
         raise ValueError(f"RGB must have a last axis of length 3, got shape {a.shape}")
     flat = a.reshape(-1, 3).T
-    Y = w @ flat
+    Y = reproducible.matmul(w, flat)
     with np.errstate(invalid="ignore"):
         d = _distance(flat, Y)
     d[~((Y > 0.0) & (Y < 1.0))] = np.nan
@@ -402,7 +402,9 @@ def compress_XYZ(
     dtype = a.dtype if a.dtype in (np.float32, np.float64) else np.float64
     limited = np.clip(np.asarray(a, dtype=np.float64), -clip.LIMIT, clip.LIMIT)  # NaN stays
     rgb = colorimetry.XYZ_to_RGB(limited, display)
-    out = compress_RGB(rgb, display, threshold, limit, power) @ np.linalg.inv(M).T
+    out = reproducible.matmul(
+        compress_RGB(rgb, display, threshold, limit, power), reproducible.inv3(M).T
+    )
     return out.astype(dtype)
 
 
@@ -444,7 +446,7 @@ def soft_black_RGB(
     (0.931, 0.931)
     """
     rgb = np.asarray(RGB, dtype=np.float64)
-    Y = rgb @ clip.luminance_weights(display)
+    Y = reproducible.matmul(rgb, clip.luminance_weights(display))
     with np.errstate(all="ignore"):
         d = np.where(Y > 0.0, (Y - rgb.min(axis=-1)) / Y, 0.0)
     k = _sigma(d, threshold, limit, power)
@@ -478,7 +480,7 @@ def soft_white_RGB(
     [[0.5, 0.4, 0.3]]
     """
     rgb = np.asarray(RGB, dtype=np.float64)
-    Y = rgb @ clip.luminance_weights(display)
+    Y = reproducible.matmul(rgb, clip.luminance_weights(display))
     top = (rgb - Y[..., None]).max(axis=-1)
     asymptote = compression_curve(np.inf, threshold, limit, power, clipped=False)
     with np.errstate(all="ignore"):

@@ -20,9 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
-from ocio_thinfilm import registry
+from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.factories import file_transform
@@ -319,7 +317,9 @@ def _matrix_to_reference(space):
     repair at OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6.
     """
     M = colorimetry.matrix_XYZ_to_RGB(space)
-    return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
+    return ocio_ops.group(
+        [ocio_ops.finite_limit_transform(), ocio_ops.matrix(reproducible.inv3(M))]
+    )
 
 
 def _linear_parts(gamut, view, lut, luts, inline, compress=None):

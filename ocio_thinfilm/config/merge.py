@@ -51,7 +51,7 @@ from typing import Any
 
 import numpy as np
 
-from ocio_thinfilm import config, registry
+from ocio_thinfilm import config, registry, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.colour import compress as compress_map
@@ -317,10 +317,12 @@ def _match_gamut(cfg, xyz_to_display, cs):
     )
     rgb = ramp[index]
     for display in clip.DISPLAYS:
-        to_rgb = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display)).T
+        to_rgb = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(display)).T
         try:
-            grey = _apply(cfg, transform, np.repeat(ramp[:, None], 3, 1) @ to_rgb)
-            codes = _apply(cfg, transform, rgb @ to_rgb)
+            grey = _apply(
+                cfg, transform, reproducible.matmul(np.repeat(ramp[:, None], 3, 1), to_rgb)
+            )
+            codes = _apply(cfg, transform, reproducible.matmul(rgb, to_rgb))
         except Exception:  # noqa: BLE001 -- a colour space that cannot process: no match
             return None
         curve = grey[:, 1]
@@ -374,15 +376,17 @@ def _match_hdr(cfg, xyz_to_display, cs):
         ]
     )
     for entry in registry.HDR_DISPLAY_LIST:
-        to_xyz = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)).T
+        to_xyz = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)).T
         try:
-            white = _apply(cfg, transform, np.ones((1, 3)) @ to_xyz)
+            white = _apply(cfg, transform, reproducible.matmul(np.ones((1, 3)), to_xyz))
             # to 1e-3 cd/m2: float32 round-off of the base's ops (100 -> 99.99997)
             unit = round(float(_hdr_nits(entry.transfer, white)[0, 1]), 3)
             if not (np.isfinite(unit) and 1.0 <= unit <= entry.peak):
                 continue
             scale = entry.peak / unit  # test colours up to the peak
-            nits = _hdr_nits(entry.transfer, _apply(cfg, transform, rgb * scale @ to_xyz))
+            nits = _hdr_nits(
+                entry.transfer, _apply(cfg, transform, reproducible.matmul(rgb * scale, to_xyz))
+            )
         except Exception:  # noqa: BLE001 -- a colour space that cannot process: no match
             return None
         if np.allclose(nits / unit, rgb * scale, rtol=2e-3, atol=5e-4 * scale):

@@ -57,7 +57,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ocio_thinfilm import __version__, registry
+from ocio_thinfilm import __version__, registry, reproducible
 from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import StrPath, check_output_file, write_text
@@ -315,7 +315,7 @@ def _input(L: _Language, source: str) -> str:
             )
     for ch in "rgb":
         lines.append(f"    {ch} = ocio_thinfilm_finite({ch});")
-    M = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(colorimetry_name))
+    M = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(colorimetry_name))
     X, Y, Z = _matrix_rows(L, M, ("r", "g", "b"))
     lines += [
         f"    float X = ocio_thinfilm_finite({X});",
@@ -545,7 +545,7 @@ def _unmap(L: _Language, gamut: str, soft: bool) -> str:
 def _undisplay(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
     """Code values -> CIE-XYZ-D65: the decoding, the map's inverse, the HDR scale."""
     gamut = entry.gamut.name
-    Minv = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(gamut))
+    Minv = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(gamut))
     knobs, args = (", float t, float l", ", t, l") if soft else ("", "")
     lines = [
         f"{L.qualifier}{L.vec3} ocio_thinfilm_undisplay(float r, float g, float b{knobs})",

@@ -82,7 +82,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ocio_thinfilm import cache, registry
+from ocio_thinfilm import cache, registry, reproducible
 from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
@@ -181,7 +181,7 @@ def shaper_domain(
     """
     wl = np.arange(360.0, 781.0, 1.0)
     W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
-    w = W @ colorimetry.matrix_XYZ_to_RGB(_colorimetry(linear_space)).T
+    w = reproducible.matmul(W, colorimetry.matrix_XYZ_to_RGB(_colorimetry(linear_space)).T)
     lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
     if _shaper_from_zero(linear_space):
         lo = 0.0

@@ -108,7 +108,9 @@ def training_colours(
     # mixtures of up to three spectral lines at random luminance
     locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(380.0, 701.0, 2.0))
     mix = rng.dirichlet(np.full(3, 0.5), n_mix)
-    lines = np.einsum("nk,nkc->nc", mix, locus[rng.integers(0, len(locus), (n_mix, 3))])
+    picked = locus[rng.integers(0, len(locus), (n_mix, 3))]
+    lines = mix[:, 0, None] * picked[:, 0] + mix[:, 1, None] * picked[:, 1]
+    lines = lines + mix[:, 2, None] * picked[:, 2]
     lines = lines / lines[:, 1:2] * rng.uniform(0.0, 1.0, n_mix)[:, None] ** 0.5
     XYZ = np.concatenate([inside, objects, lines])
     family = np.repeat([0, 1, 2], [n_in, n_obj, n_mix])

@@ -59,7 +59,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ocio_thinfilm import cache, registry
+from ocio_thinfilm import cache, registry, reproducible
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import grid, node_fit, ocio_ops, storage
 from ocio_thinfilm.lut.display_transforms import (
@@ -336,7 +336,9 @@ class ClipLUT:
         CLF-writable cores (e.g. by FileTransforms in the config).
         """
         M = colorimetry.matrix_XYZ_to_RGB(self.display)
-        to_white = np.diag(1.0 / self.tops) @ M @ np.linalg.inv(self.chart)
+        to_white = reproducible.matmul(
+            reproducible.matmul(np.diag(1.0 / self.tops), M), reproducible.inv3(self.chart)
+        )
         return [
             xyz_limit_transform(),
             ocio_ops.matrix(self.chart),

@@ -48,7 +48,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ocio_thinfilm import cache, registry
+from ocio_thinfilm import cache, registry, reproducible
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as soft
 from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage
@@ -337,7 +337,7 @@ class CompressLUT:
         """
         ops = self.clip.transforms(clip_black, clip_white)
         # the clip's chain: limit, chart, xyY, pre-clip, L, xyY^-1, matrix, U
-        to_clip_chart = self.clip.chart @ np.linalg.inv(self.chart)
+        to_clip_chart = reproducible.matmul(self.clip.chart, reproducible.inv3(self.chart))
         return (
             [
                 ops[0],
@@ -390,8 +390,9 @@ def _compress_lut(display, size, white_edge, parameters, clip_size):
     g = np.linspace(0.0, 1.0, size)
     ua, ub = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     with np.errstate(all="ignore"):
-        squeezed = soft.soft_black_RGB(chart_to_XYZ(P, ua, ub) @ M.T, display, *parameters)
-        chart = squeezed @ np.linalg.inv(M).T @ P.T
+        rgb = reproducible.matmul(chart_to_XYZ(P, ua, ub), M.T)
+        squeezed = soft.soft_black_RGB(rgb, display, *parameters)
+        chart = reproducible.matmul(reproducible.matmul(squeezed, reproducible.inv3(M).T), P.T)
         uv = chart[:, :2] / chart.sum(axis=1, keepdims=True)
     uv = np.where(np.isfinite(uv), uv, np.c_[ua, ub])
     black = np.empty((size, size, size, 3))

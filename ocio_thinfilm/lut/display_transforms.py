@@ -15,9 +15,7 @@
 
 from __future__ import annotations
 
-import numpy as np
-
-from ocio_thinfilm import registry
+from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import ocio_ops
@@ -72,7 +70,7 @@ def display_matrix_transform(
     """
     entry = registry.as_display(display, hdr=False)
     M = colorimetry.matrix_XYZ_to_RGB(entry.colorimetry)
-    return ocio_ops.matrix(np.linalg.inv(M) if inverse else M)
+    return ocio_ops.matrix(reproducible.inv3(M) if inverse else M)
 
 
 def display_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
@@ -198,7 +196,7 @@ def hdr_encoding_transform(display: registry.DisplayLike) -> ocio_ops.Transform:
     return ocio_ops.group(
         clamp
         + [
-            ocio_ops.matrix(np.linalg.inv(M)),
+            ocio_ops.matrix(reproducible.inv3(M)),
             ocio.BuiltinTransform(entry.builtin),
             ocio_ops.range_(0.0, 1.0),
         ]

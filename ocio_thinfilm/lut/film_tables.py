@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from ocio_thinfilm import cache
+from ocio_thinfilm import cache, reproducible
 from ocio_thinfilm.checks import as_count
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.lut.tables import Table1D
@@ -91,7 +91,9 @@ def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
     rows = max(1, _BLOCK_SAMPLES // wl.size)
     for start in range(0, flat.size, rows):
         block = flat[start : start + rows]
-        out[start : start + rows] = films_module.film_reflectance(film, block, wl) @ w
+        out[start : start + rows] = reproducible.matmul(
+            films_module.film_reflectance(film, block, wl), w
+        )
     return out.reshape(t_nm.shape + (3,))
 
 

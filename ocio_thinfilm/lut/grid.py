@@ -28,7 +28,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import cache
+from ocio_thinfilm import cache, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour.clip import luminance_weights
@@ -106,7 +106,7 @@ def chart_cover() -> np.ndarray:
     approximate.)
     """
     locus = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0))
-    ap0 = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T  # rows: primaries
+    ap0 = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB("ACES2065-1")).T  # rows: primaries
     cut = [ap0[a] + ap0[a, 1] / (ap0[a, 1] - ap0[2, 1]) * (ap0[2] - ap0[a]) for a in (0, 1)]
     points = np.concatenate([locus, ap0[:2], np.array(cut), [[0.0, 0.0, 1.0]]])
     return points / np.abs(points).sum(axis=1, keepdims=True)
@@ -147,14 +147,14 @@ def black_plan(display: str, size: int) -> tuple[np.ndarray, int]:
                     lam = cells / n1  # u_b = 1/lam = n1/cells where c_j = 0's opposite edge
                     mu = w[j] * cells / n0 - lam * w[j]  # u_b = n0/cells on c_j = 0
                     S_row = lam * np.array([0.0, 1.0, 0.0]) + mu * M[j]
-                    S = cover @ S_row
+                    S = reproducible.matmul(cover, S_row)
                     if np.any(S <= 1e-9):
                         continue
                     u_b = cover[:, 1] / S
                     if u_b.max() > 1.0 or u_b.min() < 0.0:
                         continue
                     s = np.sign((lam * w[j] + mu) * lam / mu) * (n1 - n0) / cells
-                    u_a = s * lam * w[i] * (cover @ M[i]) / S
+                    u_a = s * lam * w[i] * reproducible.matmul(cover, M[i]) / S
                     beta = np.ceil(-u_a.min() * cells - 1e-9) / cells
                     if u_a.max() + beta > 1.0 + 1e-12:
                         continue
@@ -298,7 +298,7 @@ def chart_coordinates(P: np.ndarray, XYZ: np.ndarray) -> tuple[np.ndarray, np.nd
     The coordinates under the chart matrix ``P`` (``XYZ_TO_xyY`` of ``P XYZ``); the
     normaliser S is (N,).
     """
-    c = XYZ @ P.T
+    c = reproducible.matmul(XYZ, P.T)
     with np.errstate(all="ignore"):
         s = c.sum(axis=1)
         return c[:, :2] / s[:, None], s
@@ -330,7 +330,7 @@ def soft_plan(display: str, size: int) -> np.ndarray:
     cells = size - 1
     M = colorimetry.matrix_XYZ_to_RGB(display)
     cover = chart_cover()
-    primaries = np.linalg.inv(M).T
+    primaries = reproducible.inv3(M).T
     best = None
     mus = np.geomspace(1e-2, 3.0, PLAN_STEPS)
     for perm in ((0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)):

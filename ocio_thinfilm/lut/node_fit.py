@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from ocio_thinfilm import reproducible
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour.clip import clip_black_faces_RGB
 
@@ -57,7 +58,9 @@ def chart_to_XYZ(P: np.ndarray, ua: np.ndarray, ub: np.ndarray) -> np.ndarray:
     u_b = Y / S -> 0: ever larger chroma.
     """
     S = 1.0 / np.maximum(ub, 1e-9)
-    return np.c_[ua * S, np.ones_like(S), S - ua * S - 1.0] @ np.linalg.inv(P).T
+    return reproducible.matmul(
+        np.c_[ua * S, np.ones_like(S), S - ua * S - 1.0], reproducible.inv3(P).T
+    )
 
 
 def black_map(
@@ -69,8 +72,9 @@ def black_map(
     """
     M = colorimetry.matrix_XYZ_to_RGB(display)
     with np.errstate(all="ignore"):
-        rgb = chart_to_XYZ(P, ua, ub) @ M.T
-        chart = clip_black_faces_RGB(rgb, display) @ np.linalg.inv(M).T @ P.T
+        rgb = reproducible.matmul(chart_to_XYZ(P, ua, ub), M.T)
+        to_chart = reproducible.matmul(reproducible.inv3(M).T, P.T)
+        chart = reproducible.matmul(clip_black_faces_RGB(rgb, display), to_chart)
         uv = chart[:, :2] / chart.sum(axis=1, keepdims=True)
     # nodes on the triangle's edges count as inside (float64 round-off of their zero)
     return uv, rgb.min(axis=1) >= -1e-9 * np.abs(rgb).max(axis=1)
@@ -84,7 +88,9 @@ def cross(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
 
 def chart_triangle(display: str, P: np.ndarray) -> np.ndarray:
     """Return the display's primaries in the chart of ``P``: the triangle's vertices (3, 2)."""
-    primaries = np.linalg.inv(colorimetry.matrix_XYZ_to_RGB(display)).T @ P.T
+    primaries = reproducible.matmul(
+        reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(display)).T, P.T
+    )
     return primaries[:, :2] / primaries.sum(axis=1, keepdims=True)
 
 
@@ -118,12 +124,16 @@ def inside_convex(points: np.ndarray, hull: np.ndarray) -> np.ndarray:
 
 def project_triangle(p: np.ndarray, V: np.ndarray) -> np.ndarray:
     """Return the nearest points of the triangle V (3, 2) to the points ``p`` (N, 2)."""
-    lam = np.linalg.solve(np.array([V[1] - V[0], V[2] - V[0]]).T, (p - V[0]).T).T
+    # barycentric coordinates by Cramer's rule (elementwise: the same bits on every CPU)
+    e1, e2, d = V[1] - V[0], V[2] - V[0], p - V[0]
+    det = e1[0] * e2[1] - e1[1] * e2[0]
+    lam = np.c_[d[:, 0] * e2[1] - d[:, 1] * e2[0], e1[0] * d[:, 1] - e1[1] * d[:, 0]] / det
     inside = (lam >= 0.0).all(axis=1) & (lam.sum(axis=1) <= 1.0)
     best, dist = None, None
     for a, b in ((0, 1), (1, 2), (2, 0)):
         e = V[b] - V[a]
-        q = V[a] + np.clip((p - V[a]) @ e / (e @ e), 0.0, 1.0)[:, None] * e
+        along = reproducible.matmul(p - V[a], e) / reproducible.matmul(e, e)
+        q = V[a] + np.clip(along, 0.0, 1.0)[:, None] * e
         d = ((p - q) ** 2).sum(axis=1)
         if best is None:
             best, dist = q, d
@@ -164,7 +174,7 @@ def fit_outside_nodes(
     V = chart_triangle(display, P)
     # real colours only: inside the spectral locus (imaginary ones, e.g. AP0's corners,
     # would pull the nodes away from the monochromatic colours on the locus)
-    real = colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0)) @ P.T
+    real = reproducible.matmul(colorimetry.spectral_locus_XYZ(1.0, np.arange(360.0, 781.0)), P.T)
     hull = convex_hull(real[:, :2] / real.sum(axis=1, keepdims=True))
     m = (n - 1) * FIT_DENSITY
     s = (np.arange(m) + 0.5) / m
@@ -188,13 +198,16 @@ def fit_outside_nodes(
     h = 1e-6
     a, b = target[:, 0], target[:, 1]
     J = np.stack([uv(a + h, b) - uv(a - h, b), uv(a, b + h) - uv(a, b - h)], axis=-1) / (2 * h)
-    metric = np.einsum("nki,nkj->nij", J, J)
+    # J^T J, written out (no einsum or BLAS: the same bits on every CPU)
+    metric = J[:, 0, :, None] * J[:, 0, None, :] + J[:, 1, :, None] * J[:, 1, None, :]
     metric /= np.median(np.trace(metric, axis1=1, axis2=2))
     free = ~inside
     values = exact.copy()
 
     def interpolate(v):
-        return np.einsum("nk,nkc->nc", weight, v[corner])
+        corners = v[corner]
+        out = weight[:, 0, None] * corners[:, 0] + weight[:, 1, None] * corners[:, 1]
+        return out + weight[:, 2, None] * corners[:, 2]
 
     def adjoint(r):
         out = np.zeros((n * n, 2))
@@ -205,12 +218,13 @@ def fit_outside_nodes(
 
     # step 1 / L: L bounds the gradient's Lipschitz constant (each sample's weights sum
     # to 1 and a node holds at most 6 cells of FIT_DENSITY^2 samples)
-    lipschitz = 6 * FIT_DENSITY**2 * np.linalg.eigvalsh(metric).max() + FIT_DAMPING
+    lipschitz = 6 * FIT_DENSITY**2 * _largest_eigenvalue(metric).max() + FIT_DAMPING
     x_k = z = exact[free]
     t = 1.0
     for _ in range(FIT_ITERATIONS):
         values[free] = z
-        r = np.einsum("nij,nj->ni", metric, interpolate(values) - target)
+        e = interpolate(values) - target
+        r = metric[:, :, 0] * e[:, 0, None] + metric[:, :, 1] * e[:, 1, None]
         grad = adjoint(r)[free] + FIT_DAMPING * (z - exact[free])
         x_next = project_triangle(z - grad / lipschitz, V)
         t_next = 0.5 * (1.0 + np.sqrt(1.0 + 4.0 * t * t))
@@ -218,6 +232,13 @@ def fit_outside_nodes(
         x_k, t = x_next, t_next
     values[free] = x_k
     return values
+
+
+def _largest_eigenvalue(S: np.ndarray) -> np.ndarray:
+    """Return the larger eigenvalue of each symmetric 2x2 matrix of ``S`` (N, 2, 2)."""
+    half_trace = 0.5 * (S[:, 0, 0] + S[:, 1, 1])
+    half_gap = 0.5 * (S[:, 0, 0] - S[:, 1, 1])
+    return half_trace + np.sqrt(half_gap * half_gap + S[:, 0, 1] * S[:, 1, 0])
 
 
 def uv_1976(XYZ: np.ndarray) -> np.ndarray:

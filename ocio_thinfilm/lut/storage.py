@@ -23,6 +23,8 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from ocio_thinfilm import reproducible
+
 __all__ = [
     "LUT_CODE_MAX",
     "q16",
@@ -48,7 +50,10 @@ def q16(values: npt.ArrayLike) -> np.ndarray:
     [32768.0, 65535.0, 0.0]
     """
     # + 0.0: no negative zero, whose sign (and so the file's text) depends on the CPU
-    return np.round(np.clip(values, 0.0, 1.0) * LUT_CODE_MAX) / LUT_CODE_MAX + 0.0
+    # snapped first: a value on a code's rounding boundary in exact arithmetic (0.5 is
+    # 32767.5) rounds the same way whatever last bits the CPU left (ocio_thinfilm.reproducible)
+    snapped = reproducible.snap(np.clip(values, 0.0, 1.0))
+    return np.round(snapped * LUT_CODE_MAX) / LUT_CODE_MAX + 0.0
 
 
 def half16(values: npt.ArrayLike) -> np.ndarray:
@@ -64,7 +69,7 @@ def half16(values: npt.ArrayLike) -> np.ndarray:
     >>> float(half16(1.0 / 3.0) * LUT_CODE_MAX)
     21840.0
     """
-    return q16(np.asarray(values).astype(np.float16).astype(np.float64))
+    return q16(reproducible.snap(values).astype(np.float16).astype(np.float64))
 
 
 def grid_scale(size: int) -> float:
@@ -152,8 +157,8 @@ def halves_inside(
         e = Vz[b] - Vz[a]
         if abs(e[0]) > 1e-12 and abs(e[1]) > 1e-12:
             normal = np.array([-e[1], e[0]]) / np.hypot(*e)
-            normal *= np.sign(normal @ (Vz[c] - Vz[a]))
-            ok &= (cand - Vz[a]) @ normal >= margin
+            normal *= np.sign(reproducible.matmul(normal, Vz[c] - Vz[a]))
+            ok &= reproducible.matmul(cand - Vz[a], normal) >= margin
     dist = ((cand - z[:, None]) ** 2).sum(axis=-1)
     dist[~ok] = np.inf
     best = cand[np.arange(len(z)), dist.argmin(axis=1)]

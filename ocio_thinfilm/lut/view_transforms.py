@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm import registry
+from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.clip_lut import (
@@ -105,7 +105,7 @@ def _hlg_scene_ops(entry: registry.HDRDisplay, inverse: bool = False) -> list:
             finite_limit_transform(),
             ocio_ops.matrix(N),
             ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_REC2100_SURROUND, [1.0 / HLG_GAMMA]),
-            ocio_ops.matrix(np.linalg.inv(N) * a / HLG_E_MAX),
+            ocio_ops.matrix(reproducible.inv3(N) * a / HLG_E_MAX),
         ]
     return [
         ocio_ops.matrix(np.eye(3) * HLG_E_MAX),

@@ -1,0 +1,190 @@
+"""Arithmetic that gives the same bits on every CPU, so every written file does too.
+
+What the package writes (the config's LUTs, ``luts/``, the shaders, the knob page) must be
+the same bytes whatever machine computes it. Elementwise IEEE 754 operations (+, -, *, /,
+sqrt) are correctly rounded, so numpy gives their bits on every CPU and SIMD level. Three
+things do not:
+
+- BLAS (``a @ b``, ``np.dot``, ``np.einsum`` with ``optimize``): OpenBLAS picks a kernel
+  per CPU (``OPENBLAS_CORETYPE`` forces one), and kernels sum in other orders or fuse
+  multiply-adds, so the last bits move;
+- LAPACK (``np.linalg.inv``, ``solve``, ``eigvalsh``) and the libraries that use them
+  (colour-science's normalised primary matrices and chromatic adaptation);
+- transcendental functions whose SIMD versions differ in the last bit.
+
+A last-bit difference is harmless by itself, but it decides a stored value wherever
+that value lies on a rounding boundary: a 16-bit code of exactly 0.5 (32767.5) rounds
+either way, a matrix coefficient that is zero in exact arithmetic prints as
+``-3.9e-17`` or ``-3.8e-17``, and an iterative fit turns it into differences of 1e-11.
+So the package
+
+- multiplies matrices with :func:`matmul` (a fixed order of elementwise operations, no
+  BLAS) and inverts 3x3 matrices with :func:`inv3` (the adjugate: no LAPACK);
+- rounds every matrix and table of order 1 that comes from colour-science or LAPACK
+  (primary matrices, chromatic adaptation, the interpolated colour matching functions
+  and illuminants) to :func:`canonical`: multiples of 2^-32, about 2.3e-10, far below
+  float32's 6e-8 (the precision OCIO and the GPU apply matrices with) and far above the
+  1e-15 that CPUs disagree by; values that are zero in exact arithmetic become exactly 0;
+- rounds values to :func:`snap` (36 significant bits) before it quantises them, so a
+  value that lies on a rounding boundary in exact arithmetic rounds the same way
+  everywhere.
+
+A value moved by 2e-15 (colour-science's interpolated colour matching functions
+differ by that between OpenBLAS kernels) crosses a boundary of :func:`canonical` with
+probability about 2e-5, and one of :func:`snap` at a place that changes a 16-bit code
+with probability below 1e-9: ``tests/test_reproducible.py`` regenerates the files under other BLAS kernels
+and SIMD levels and compares their bytes.
+
+- :func:`matmul` -- ``a @ b`` in a fixed order, no BLAS;
+- :func:`inv3` -- the inverse of 3x3 matrices by the adjugate, no LAPACK;
+- :func:`canonical` -- values of order 1 rounded to multiples of 2^-32;
+- :func:`snap` -- values rounded to 36 significant bits.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["MATRIX_QUANTUM_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap"]
+
+#: Matrices are rounded to multiples of 2^-MATRIX_QUANTUM_BITS (:func:`canonical`).
+MATRIX_QUANTUM_BITS = 32
+#: Values are rounded to this many significant bits before quantisation (:func:`snap`).
+SNAP_BITS = 36
+
+
+def matmul(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
+    """Return ``a @ b`` summed in a fixed order, float64, without BLAS.
+
+    ``sum_k a[..., k] * b[k, ...]`` accumulated from k = 0 upwards with elementwise
+    numpy operations, which are correctly rounded: the same bits on every CPU. Shapes
+    as numpy's ``@`` for a stack of row vectors or one matrix ``a`` (..., K) and a
+    matrix (K, M) or vector (K,) ``b``.
+
+    Parameters
+    ----------
+    a : array_like
+        (..., K).
+    b : array_like
+        (K, M) or (K,).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, (..., M) or (...).
+
+    Examples
+    --------
+    >>> matmul([[1.0, 2.0], [3.0, 4.0]], [[1.0, 0.0], [1.0, 1.0]]).tolist()
+    [[3.0, 2.0], [7.0, 4.0]]
+    >>> float(matmul([0.2126, 0.7152, 0.0722], [1.0, 1.0, 1.0]))
+    1.0
+    """
+    A = np.asarray(a, dtype=np.float64)
+    B = np.asarray(b, dtype=np.float64)
+    if A.ndim == 0 or B.ndim not in (1, 2) or A.shape[-1] != B.shape[0]:
+        raise ValueError(f"matmul: shapes {A.shape} and {B.shape} do not chain")
+    column = B.ndim == 1
+    if column:
+        B = B[:, None]
+    out = A[..., 0, None] * B[0]
+    for k in range(1, B.shape[0]):
+        out = out + A[..., k, None] * B[k]
+    return out[..., 0] if column else out
+
+
+def inv3(M: npt.ArrayLike) -> np.ndarray:
+    """Return the inverse of a 3x3 matrix (or a stack of them) by the adjugate.
+
+    Elementwise operations only (no LAPACK), so the same bits on every CPU.
+
+    Parameters
+    ----------
+    M : array_like
+        (..., 3, 3), invertible.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, (..., 3, 3).
+
+    Examples
+    --------
+    >>> inv3([[2.0, 0.0, 0.0], [0.0, 4.0, 0.0], [1.0, 0.0, 1.0]]).tolist()
+    [[0.5, 0.0, 0.0], [0.0, 0.25, 0.0], [-0.5, 0.0, 1.0]]
+    """
+    m = np.asarray(M, dtype=np.float64)
+    if m.shape[-2:] != (3, 3):
+        raise ValueError(f"inv3: M must be (..., 3, 3), got shape {m.shape}")
+    cof = np.empty_like(m)
+    for i in range(3):
+        i1, i2 = (i + 1) % 3, (i + 2) % 3
+        for j in range(3):
+            j1, j2 = (j + 1) % 3, (j + 2) % 3
+            # cofactor C[i, j]; the cyclic indices carry the sign
+            cof[..., i, j] = m[..., i1, j1] * m[..., i2, j2] - m[..., i1, j2] * m[..., i2, j1]
+    det = m[..., 0, 0] * cof[..., 0, 0] + m[..., 0, 1] * cof[..., 0, 1]
+    det = det + m[..., 0, 2] * cof[..., 0, 2]
+    return np.swapaxes(cof, -1, -2) / det[..., None, None]
+
+
+def canonical(M: npt.ArrayLike) -> np.ndarray:
+    """Round values of order 1 to multiples of 2^-32 (:data:`MATRIX_QUANTUM_BITS`).
+
+    For matrices and tables computed with BLAS or LAPACK (colour-science's primary
+    matrices, chromatic adaptation and interpolation): the last-bit differences between
+    CPUs vanish, values that are zero in exact arithmetic become exactly 0, and what is
+    left (2.3e-10) lies far below the float32 precision they are applied with.
+
+    Parameters
+    ----------
+    M : array_like
+        Finite values of magnitude below 2^20.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, same shape; never a negative zero.
+
+    Examples
+    --------
+    >>> canonical([[1.0 + 1e-15, -3.9e-17], [0.1, 2.0]]).tolist()
+    [[1.0, 0.0], [0.10000000009313226, 2.0]]
+    """
+    scale = 2.0**MATRIX_QUANTUM_BITS
+    return np.round(np.asarray(M, dtype=np.float64) * scale) / scale + 0.0
+
+
+def snap(values: npt.ArrayLike, bits: int = SNAP_BITS) -> np.ndarray:
+    """Round values to ``bits`` significant bits (default 36), float64 out.
+
+    Before a value is quantised (16-bit codes, half floats, printed digits): a value
+    that lies on a rounding boundary in exact arithmetic (0.5 of a 16-bit code is
+    32767.5) but carries a CPU's last-bit error lands on that boundary exactly, and then
+    rounds the same way on every CPU. Zero, infinities and NaN pass unchanged.
+
+    Parameters
+    ----------
+    values : array_like
+    bits : int, optional
+        Significant bits kept, 1 to 52.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, same shape.
+
+    Examples
+    --------
+    >>> v = snap([0.5 - 2.0**-50, 0.5 + 2.0**-50, 1.0 / 3.0])
+    >>> v[:2].tolist(), bool(abs(v[2] - 1.0 / 3.0) < 2.0**-36)
+    ([0.5, 0.5], True)
+    """
+    a = np.asarray(values, dtype=np.float64)
+    if not 1 <= bits <= 52:
+        raise ValueError(f"snap: bits must be in 1..52, got {bits!r}")
+    mantissa, exponent = np.frexp(a)
+    with np.errstate(invalid="ignore"):
+        rounded = np.ldexp(np.round(np.ldexp(mantissa, bits)), exponent - bits)
+    return np.where(np.isfinite(a), rounded, a) + 0.0
