@@ -587,6 +587,17 @@ def _wait_for_handlers(pid, timeout=20.0):
     return False
 
 
+def _default_signals():
+    """In the child: default SIGINT and SIGTERM handling, as a shell gives a foreground job.
+
+    A suite started in the background (``nohup``, ``&``) inherits SIGINT ignored, and an
+    ignored signal stays ignored in children; the tests send signals the way a user at a
+    terminal does.
+    """
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def _bake_process(out, *extra):
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     env.pop("OCIO_THINFILM_FAULT", None)
@@ -607,6 +618,7 @@ def _bake_process(out, *extra):
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
+        preexec_fn=_default_signals,
     )
 
 
