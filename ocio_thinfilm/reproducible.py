@@ -32,8 +32,8 @@ So the package
 A value moved by 2e-15 (colour-science's interpolated colour matching functions
 differ by that between OpenBLAS kernels) crosses a boundary of :func:`canonical` with
 probability about 2e-5, and one of :func:`snap` at a place that changes a 16-bit code
-with probability below 1e-9: ``tests/test_reproducible.py`` regenerates the files under other BLAS kernels
-and SIMD levels and compares their bytes.
+with probability below 1e-9. ``tests/test_reproducible.py`` regenerates the files
+under other BLAS kernels and SIMD levels and compares their bytes.
 
 - :func:`matmul` -- ``a @ b`` in a fixed order, no BLAS;
 - :func:`inv3` -- the inverse of 3x3 matrices by the adjugate, no LAPACK;

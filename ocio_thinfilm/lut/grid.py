@@ -28,14 +28,11 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import cache, reproducible
+from ocio_thinfilm import cache, registry, reproducible
 from ocio_thinfilm.checks import ParameterError
-from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.colour import colorimetry, encodings
 from ocio_thinfilm.colour.clip import luminance_weights
-from ocio_thinfilm.lut import ocio_ops
-from ocio_thinfilm.lut.display_transforms import display_encoding_transform
 from ocio_thinfilm.lut.node_fit import cross
-from ocio_thinfilm.lut.ocio_ops import apply
 
 __all__ = [
     "CHART_COVERS",
@@ -185,11 +182,12 @@ def shaper_values(
 
 
 def encode(values: npt.ArrayLike, display: str) -> np.ndarray:
-    """Display encoding (the OCIO op the config uses), float64 out."""
-    a = np.asarray(values, dtype=np.float64)
-    flat = np.repeat(a.reshape(-1, 1), 3, axis=1)
-    encoded = apply(display_encoding_transform(display), flat)[:, 0]
-    return encoded.astype(np.float64).reshape(a.shape)
+    """Display encoding (the curve of the OCIO op the config uses), in float64.
+
+    By :func:`ocio_thinfilm.colour.encodings.encode`, not by OCIO's float32 CPU path:
+    these values are quantised into the LUTs (:mod:`ocio_thinfilm.reproducible`).
+    """
+    return encodings.encode(values, registry.as_display(display, hdr=False).encoding)
 
 
 def white_nodes(
@@ -243,10 +241,7 @@ def white_nodes(
         gap[first:inside_cells] = gap[first] * ratio ** np.arange(graded)
         gap[inside_cells] = 0.0
     code = 1.0 - gap
-    below = apply(
-        ocio_ops.inverse([display_encoding_transform(WORKING_ENCODING)]),
-        np.repeat(code[:, None], 3, axis=1),
-    )[:, 0].astype(np.float64)
+    below = encodings.decode(code, registry.as_display(WORKING_ENCODING).encoding)
     below[0], below[-1] = 0.0, 1.0
     # a little above 1 / w_i: float32 round-off of the matrix in front stays inside
     tops = 1.001 / luminance_weights(display)
