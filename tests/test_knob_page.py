@@ -9,37 +9,22 @@ view (:func:`evaluation.shaders.analytic_view`) of the XYZ values the page embed
 from __future__ import annotations
 
 import base64
-import html
 import json
 import re
-import shutil
-import subprocess
-import time
 import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from evaluation import browser
 from evaluation.shaders import analytic_view
 from ocio_thinfilm import registry
 from ocio_thinfilm.export import knob_page, shader
 
 PAGE = Path(__file__).resolve().parents[1] / "docs" / "knobs.html"
-CHROMIUM = "/usr/bin/chromium"
 #: 8-bit canvas codes against the analytic view's code values.
 TOLERANCE = 2.0 / 255.0
-#: WebGL2 without a GPU: ANGLE on SwiftShader (Chromium 120+ wants the unsafe flag for it).
-FLAGS = [
-    "--headless",
-    "--disable-gpu",
-    "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader",
-    "--no-sandbox",
-    "--no-first-run",
-    "--disable-extensions",
-    "--virtual-time-budget=10000",
-]
 
 
 def test_the_committed_page_is_what_the_generator_writes(tmp_path):
@@ -69,33 +54,12 @@ def _data(text):
     return json.loads(block.group(1))
 
 
-@pytest.fixture(scope="module")
-def chromium():
-    path = shutil.which("chromium") or (CHROMIUM if Path(CHROMIUM).exists() else None)
-    if path is None:
-        pytest.skip("no chromium (Debian's chromium package) to open docs/knobs.html with")
-    return path
-
-
 def _readback(chromium, tmp_path, query):
     """Open the page with ``query`` and return its readback JSON and the seconds it took."""
-    start = time.perf_counter()
-    done = subprocess.run(
-        [
-            chromium,
-            *FLAGS,
-            f"--user-data-dir={tmp_path / 'profile'}",
-            "--dump-dom",
-            f"{PAGE.as_uri()}?{query}&readback=1",
-        ],
-        capture_output=True,
-        text=True,
-        timeout=120,
+    dom, stderr, seconds = browser.dump_dom(
+        chromium, f"{PAGE.as_uri()}?{query}&readback=1", tmp_path / "profile"
     )
-    seconds = time.perf_counter() - start
-    match = re.search(r'<pre id="readback">(.*?)</pre>', done.stdout, re.S)
-    assert match and match.group(1), f"no readback from the page: {done.stderr[-2000:]}"
-    return json.loads(html.unescape(match.group(1))), seconds
+    return browser.page_readback(dom, stderr), seconds
 
 
 @pytest.mark.parametrize(
