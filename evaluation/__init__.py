@@ -14,6 +14,8 @@ Not part of the shipped package: a top-level package of the repository, beside
 - :mod:`.report`: the ``report`` sub-command (a package: driver, sections, peers,
   measurement helpers, headline).
 - :mod:`.gpu`: the headless GPU renderer used by tests/test_gpu.py.
+- :mod:`.browser`: headless Chromium, a localhost server and three.js from npm, for the
+  tests of the browser pages (docs/knobs.html, docs/glsl.md's three.js page).
 - :mod:`.views`: the committed config's views applied the way a host does (OCIO's CPU
   processor), the extreme inputs, colour-science's decoding of display code values.
 """

@@ -3,7 +3,7 @@
 Everything here is a *reference*: written from the textbook formulas (or taken from
 colour-science), never copied from the code under test. Shared fixtures: ``cfg`` (the
 committed config), ``colour`` (colour-science), ``gl`` (a headless OpenGL context),
-``cxx`` (a C++ compiler), ``load_benchmark``, ``marked``. What
+``cxx`` (a C++ compiler), ``chromium`` (headless Chromium), ``load_benchmark``, ``marked``. What
 tests and benchmarks share as importable code (the test-colour sets, applying a view as
 a host does, decoding display code values) is the repository's ``evaluation`` package:
 :mod:`evaluation.colours`, :mod:`evaluation.views`.
@@ -89,6 +89,17 @@ def cxx():
     if name is None:
         pytest.skip("no C++ compiler (g++) to build the DCTL with")
     return name
+
+
+@pytest.fixture(scope="session")
+def chromium():
+    """Headless Chromium (:mod:`evaluation.browser`); skips where there is none."""
+    from evaluation.browser import chromium as find
+
+    path = find()
+    if path is None:
+        pytest.skip("no chromium (Debian's chromium package) to open the page with")
+    return path
 
 
 @pytest.fixture(scope="session")

@@ -1,9 +1,12 @@
 """The knob page (docs/knobs.html): committed as generated, and drawing the views right.
 
 The page is opened from disk in headless Chromium (SwiftShader's WebGL2), its URL query
-sets the display and the knobs through the page's own controls, and the canvas it reads
-back (``<pre id="readback">``) is held, pixel by pixel, to the double-precision analytic
-view (:func:`evaluation.shaders.analytic_view`) of the XYZ values the page embeds.
+sets the display, the knobs and the DCTL's input space through the page's own controls,
+and the canvas it reads back (``<pre id="readback">``) is held, pixel by pixel, to the
+double-precision analytic view (:func:`evaluation.shaders.analytic_view`) of the XYZ
+values the page embeds. The readback's commands are run, the ramps' marks are held to
+where colour-science's RGB of the display leaves [0, 1], and the strips' position is
+the same whatever the display's note.
 """
 
 from __future__ import annotations
@@ -12,34 +15,22 @@ import base64
 import html
 import json
 import re
-import shutil
-import subprocess
-import time
+import shlex
 import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from evaluation import browser
 from evaluation.shaders import analytic_view
 from ocio_thinfilm import registry
+from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.export import knob_page, shader
 
 PAGE = Path(__file__).resolve().parents[1] / "docs" / "knobs.html"
-CHROMIUM = "/usr/bin/chromium"
 #: 8-bit canvas codes against the analytic view's code values.
 TOLERANCE = 2.0 / 255.0
-#: WebGL2 without a GPU: ANGLE on SwiftShader (Chromium 120+ wants the unsafe flag for it).
-FLAGS = [
-    "--headless",
-    "--disable-gpu",
-    "--use-angle=swiftshader",
-    "--enable-unsafe-swiftshader",
-    "--no-sandbox",
-    "--no-first-run",
-    "--disable-extensions",
-    "--virtual-time-budget=10000",
-]
 
 
 def test_the_committed_page_is_what_the_generator_writes(tmp_path):
@@ -69,33 +60,12 @@ def _data(text):
     return json.loads(block.group(1))
 
 
-@pytest.fixture(scope="module")
-def chromium():
-    path = shutil.which("chromium") or (CHROMIUM if Path(CHROMIUM).exists() else None)
-    if path is None:
-        pytest.skip("no chromium (Debian's chromium package) to open docs/knobs.html with")
-    return path
-
-
 def _readback(chromium, tmp_path, query):
     """Open the page with ``query`` and return its readback JSON and the seconds it took."""
-    start = time.perf_counter()
-    done = subprocess.run(
-        [
-            chromium,
-            *FLAGS,
-            f"--user-data-dir={tmp_path / 'profile'}",
-            "--dump-dom",
-            f"{PAGE.as_uri()}?{query}&readback=1",
-        ],
-        capture_output=True,
-        text=True,
-        timeout=120,
+    dom, stderr, seconds = browser.dump_dom(
+        chromium, f"{PAGE.as_uri()}?{query}&readback=1", tmp_path / "profile"
     )
-    seconds = time.perf_counter() - start
-    match = re.search(r'<pre id="readback">(.*?)</pre>', done.stdout, re.S)
-    assert match and match.group(1), f"no readback from the page: {done.stderr[-2000:]}"
-    return json.loads(html.unescape(match.group(1))), seconds
+    return browser.page_readback(dom, stderr), seconds
 
 
 @pytest.mark.parametrize(
@@ -147,3 +117,90 @@ def test_the_page_draws_the_analytic_view(chromium, tmp_path, display, threshold
         assert moved > 10 * TOLERANCE
     assert np.all(canvas[~drawn, :, 3] == 1.0)
     assert np.ptp(canvas[~drawn, :, :3]) == 0.0  # the gaps: one background colour
+
+
+def test_the_page_offers_the_input_spaces_export_shader_takes():
+    """Every encoded space of the registry (the grading timelines' log spaces) and every
+    scene-linear one, ACEScct selected; each one a source ``export shader`` writes."""
+    text = PAGE.read_text(encoding="utf-8")
+    select = re.search(r'<select id="source">(.*?)</select>', text, re.S).group(1)
+    options = re.findall(r'<option value="([^"]*)"( selected)?>', select)
+    names = [html_name for html_name, _ in options]
+    assert set(registry.ENCODED_SPACES) <= set(names) and "ACEScg" in names
+    assert [n for n, selected in options if selected] == ["ACEScct"]
+    for name in names:
+        shader.shader_source("dctl", "sRGB", registry.COMPRESS_VIEW, html.unescape(name))
+
+
+def test_the_strips_are_large_enough_to_compare():
+    assert knob_page.BAND_HEIGHT >= 48
+
+
+def _ramp_columns(XYZ, display):
+    """The fractional column where a ramp leaves the display's gamut: colour-science's
+    RGB of the display's primaries leaving [0, 1] (linear between two columns)."""
+    import colour
+
+    space = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[display]]
+    rgb = XYZ @ np.asarray(space.matrix_XYZ_to_RGB).T
+    inside = np.minimum(rgb.min(axis=1), 1.0 - rgb.max(axis=1))
+    c = int(np.argmax(inside < 0))
+    assert c > 0
+    return c - 1 + inside[c - 1] / (inside[c - 1] - inside[c])
+
+
+@pytest.mark.parametrize(
+    "display, threshold, limit, source",
+    [
+        ("sRGB", 0.8, 1.3, None),
+        ("Display P3", 0.6, 1.5, "ACEScg"),
+        ("Rec.2020", 0.9, 2.5, "Linear Rec.709 (sRGB)"),
+    ],
+)
+def test_the_commands_marks_and_axes_follow_the_controls(
+    chromium, tmp_path, display, threshold, limit, source
+):
+    query = f"display={display}&threshold={threshold}&limit={limit}"
+    if source is not None:
+        query += f"&source={source}"
+    out, _ = _readback(chromium, tmp_path, query)
+    # the DCTL command: --from the selected space (ACEScct unless chosen), and it runs
+    expected = "ACEScct" if source is None else source
+    assert out["source"] == expected
+    line = next(x for x in out["commands"].splitlines() if "--lang dctl" in x)
+    args = shlex.split(line)
+    assert args[args.index("--from") + 1] == expected
+    assert args[args.index("--display") + 1] == display
+    dctl = tmp_path / "compress.dctl"
+    args[args.index("--out") + 1] = str(dctl)
+    assert cli.main(args[1:]) == 0
+    assert dctl.read_text().startswith("// ") and expected in dctl.read_text()
+    # the ramps: the axis names the display's boundary; the marks where d = t, 1, limit
+    data = _data(PAGE.read_text(encoding="utf-8"))
+    ramps = [r for r, row in enumerate(data["rows"]) if row["reach"] is not None]
+    assert len(ramps) == len(knob_page.RAMP_WAVELENGTHS)
+    worst = 0.0
+    for r in ramps:
+        assert f"the {display} boundary" in out["axes"][r]
+        XYZ = np.asarray(data["rows"][r]["xyz"]).reshape(-1, 3)
+        boundary = _ramp_columns(XYZ, display)
+        for name, d in (("threshold", threshold), ("boundary", 1.0), ("limit", limit)):
+            column = d * boundary
+            got = out["marks"][str(r)][name]
+            if column > knob_page.WIDTH - 1:
+                assert got is None, (r, name)
+                continue
+            assert got is not None, (r, name)
+            worst = max(worst, abs(got - (column + 0.5)))
+    print(f"\n{display}: the ramps' marks within {worst:.3f} px of colour-science's columns")
+    assert worst <= 0.25
+
+
+def test_the_strips_stay_put_when_the_display_changes(chromium, tmp_path):
+    """The display's note has its space kept: the canvas's top is the same for each."""
+    tops = {}
+    for i, display in enumerate(knob_page.DISPLAYS):
+        out, _ = _readback(chromium, tmp_path / str(i), f"display={display}")
+        tops[display] = out["canvasTop"]
+    print(f"\nthe canvas's top by display (CSS px): {tops}")
+    assert len(set(tops.values())) == 1

@@ -8,7 +8,8 @@ objects).
 - :mod:`.shader` -- the clip and compression views as GLSL and DCTL code, no LUT
   (``export shader``);
 - :mod:`.knob_page` -- ``docs/knobs.html``, a WebGL2 page that draws test colours
-  through the exported GLSL, to choose the compression's knobs;
+  through the exported GLSL, to choose the compression's knobs (its style sheet and
+  script: :mod:`.knob_page_script`);
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.

@@ -8,7 +8,9 @@ CIE-XYZ-D65 test colours uploaded as an RGBA32F texture and read with ``texelFet
 the view's code values written to the canvas). Sliders set the compression's uniforms
 ``ocio_thinfilm_threshold`` and ``ocio_thinfilm_limit``, a select the display, and the
 page prints the knobs ready to paste: the ``ocio-thinfilm bake`` and ``export shader``
-options and the DCTL sliders' values.
+options (the DCTL's input space from a second select: :data:`SOURCES`, ACEScct unless
+chosen) and the DCTL sliders' values. On the ramps, marks show where the threshold, the
+selected display's gamut boundary (boundary distance d = 1) and the limit fall.
 
 The test colours (:func:`sample_rows`) are computed here, by the package:
 
@@ -23,8 +25,10 @@ The page takes settings from its URL query, ``?display=sRGB&threshold=0.6&limit=
 its script sets the select and the sliders and dispatches their ``change`` and ``input``
 events, as a user's hand would. ``&readback=1`` then writes the canvas read back with
 ``gl.readPixels`` (and the knobs and display it drew with) as JSON into the
-``<pre id="readback">`` element (``tests/test_knob_page.py`` reads it from headless
-Chromium's ``--dump-dom``).
+``<pre id="readback">`` element, with the commands, the ramps' axis labels, the marks'
+positions and the canvas's top (``tests/test_knob_page.py`` reads it from headless
+Chromium's ``--dump-dom``); ``&source=ACEScg`` sets the input space. The style sheet and
+the script are :mod:`.knob_page_script`'s.
 
 Display P3 draws into a canvas whose ``drawingBufferColorSpace`` is ``"display-p3"``
 where the browser has it; Rec.2020 codes are shown as they are (no browser shows a
@@ -43,10 +47,13 @@ import numpy as np
 from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.colour import colorimetry, compress
 from ocio_thinfilm.export import shader
+from ocio_thinfilm.export.knob_page_script import SCRIPT, STYLE
 from ocio_thinfilm.io import StrPath, check_output_file, write_text
 
 __all__ = [
     "DISPLAYS",
+    "SOURCES",
+    "DEFAULT_SOURCE",
     "WIDTH",
     "BAND_HEIGHT",
     "INNER_GAP",
@@ -63,13 +70,21 @@ __all__ = [
 
 #: The displays the page offers (the SDR ones: a browser canvas holds 8-bit SDR codes).
 DISPLAYS = registry.DISPLAYS
+#: The input spaces the page's DCTL command offers: the encoded and scene-linear spaces
+#: ``export shader --from`` takes, encoded first (what a grading timeline holds).
+SOURCES = tuple(
+    s for s in registry.ENCODED_SPACES + registry.SCENE_LINEAR_SPACES if s in shader.SHADER_SOURCES
+)
+#: The one selected when the page opens (Resolve's ACES timelines grade in ACEScct).
+DEFAULT_SOURCE = "ACEScct"
 #: Samples per test row, and the canvas's width in pixels (one column per sample).
 WIDTH = 640
 #: Height of one strip (one test row through one view), pixels.
-BAND_HEIGHT = 20
-#: Background pixels between a test row's two strips, and between two test rows.
+BAND_HEIGHT = 56
+#: Background pixels between a test row's two strips, and between two test rows (room
+#: for the ramps' marks' letters).
 INNER_GAP = 2
-GROUP_GAP = 10
+GROUP_GAP = 20
 #: The ``id`` of the page's ``<script type="application/json">`` with its data.
 DATA_ID = "ocio-thinfilm-data"
 #: Significant digits of the embedded XYZ values (the texture is float32).
@@ -96,16 +111,20 @@ class Row:
     ----------
     label : str
         What the row holds, as the page shows it.
-    axis : str
-        What varies from left to right.
+    axis : dict
+        What varies from left to right, by display name (:data:`DISPLAYS`).
     XYZ : numpy.ndarray
         float64 (WIDTH, 3), rounded to :data:`DIGITS` significant digits (the values the
         page embeds).
+    reach : dict or None
+        A ramp's boundary distance at its last column, by display name (it grows
+        linearly from 0 at the grey); None for the other rows.
     """
 
     label: str
-    axis: str
+    axis: dict[str, str]
     XYZ: np.ndarray
+    reach: dict[str, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -157,7 +176,7 @@ def sample_rows() -> list[Row]:
         rows.append(
             Row(
                 f"Spectrum, Y = {Y:g}",
-                "380 nm to 700 nm",
+                dict.fromkeys(DISPLAYS, "380 nm to 700 nm"),
                 _rounded(colorimetry.spectral_locus_XYZ(Y, wl)),
             )
         )
@@ -166,7 +185,7 @@ def sample_rows() -> list[Row]:
     rows.append(
         Row(
             "Soap film (phase change)",
-            f"optical thickness {lo:g} nm to {hi:g} nm",
+            dict.fromkeys(DISPLAYS, f"optical thickness {lo:g} nm to {hi:g} nm"),
             _rounded(colorimetry.film_XYZ(t, "phase-change")),
         )
     )
@@ -177,13 +196,13 @@ def sample_rows() -> list[Row]:
         d = float(compress.boundary_distance(colorimetry.XYZ_to_RGB(spectral, "sRGB"), "sRGB"))
         reach = min(1.0, RAMP_REACH / d)
         end = " (spectral)" if reach == 1.0 else ""
-        rows.append(
-            Row(
-                f"Ramp to {w:g} nm, Y = {RAMP_Y:g}",
-                f"grey to {reach * d:.2g}x the sRGB boundary{end}",
-                _rounded(grey + s * reach * (spectral - grey)),
-            )
-        )
+        XYZ = _rounded(grey + s * reach * (spectral - grey))
+        last = {
+            g: float(compress.boundary_distance(colorimetry.XYZ_to_RGB(XYZ[-1], g), g))
+            for g in DISPLAYS
+        }
+        axis = {g: f"grey to {last[g]:.2g}x the {g} boundary{end}" for g in DISPLAYS}
+        rows.append(Row(f"Ramp to {w:g} nm, Y = {RAMP_Y:g}", axis, XYZ, last))
     return rows
 
 
@@ -204,7 +223,7 @@ def bands(n_rows: int | None = None) -> list[Band]:
     Examples
     --------
     >>> [(b.row, b.view, b.top) for b in bands(2)]
-    [(0, 'clip', 0), (0, 'compress', 22), (1, 'clip', 52), (1, 'compress', 74)]
+    [(0, 'clip', 0), (0, 'compress', 58), (1, 'clip', 134), (1, 'compress', 192)]
     """
     n = len(sample_rows()) if n_rows is None else n_rows
     out, top = [], 0
@@ -232,7 +251,7 @@ def canvas_height(n_rows: int | None = None) -> int:
     Examples
     --------
     >>> canvas_height(2)
-    94
+    248
     """
     last = bands(n_rows)[-1]
     return last.top + last.height
@@ -242,233 +261,6 @@ def _json_script(data: object) -> str:
     """Return JSON safe inside ``<script>``: no ``</`` can end the element."""
     return json.dumps(data, separators=(",", ":"), ensure_ascii=True).replace("</", "<\\/")
 
-
-_STYLE = """
-body { font: 15px/1.45 system-ui, sans-serif; margin: 1.5em auto; max-width: 70em;
-       padding: 0 1em; color: #ddd; background: #222; }
-a { color: #9cf; }
-code, pre { font: 13px/1.4 ui-monospace, monospace; }
-pre { background: #111; padding: 0.7em; overflow-x: auto; white-space: pre-wrap; }
-#controls { display: flex; flex-wrap: wrap; gap: 0.6em 2em; align-items: center;
-            margin: 1em 0; }
-#controls input[type=range] { width: 14em; vertical-align: middle; }
-#controls output { display: inline-block; min-width: 2.6em; font-weight: bold; }
-#figure { display: flex; gap: 0.8em; align-items: flex-start; }
-#labels { position: relative; width: 22em; flex: none; }
-#labels div { position: absolute; right: 0; font-size: 12px; line-height: 1.2;
-              text-align: right; white-space: nowrap; }
-#labels .group { right: 5.5em; }
-#labels .axis { color: #999; }
-#view { image-rendering: pixelated; flex: none; }
-#note { color: #fc6; }
-#status:empty, #note:empty { display: none; }
-#readback { display: none; }
-"""
-
-_SCRIPT = r"""
-"use strict";
-(function () {
-  const DATA = JSON.parse(document.getElementById("__DATA_ID__").textContent);
-  const $ = (id) => document.getElementById(id);
-  const canvas = $("view"), select = $("display");
-  const sliders = { threshold: $("threshold"), limit: $("limit") };
-  const status = $("status"), note = $("note");
-  const gl = canvas.getContext("webgl2", {
-    alpha: false, antialias: false, depth: false, stencil: false,
-    premultipliedAlpha: false, preserveDrawingBuffer: true,
-  });
-  let error = gl ? null : "this browser gives no WebGL2 context";
-
-  const VERTEX = "#version 300 es\n" +
-    "void main()\n{\n" +
-    "    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));\n" +
-    "    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n";
-  const HEAD = "#version 300 es\nprecision highp float;\nprecision highp int;\n" +
-    "precision highp sampler2D;\nuniform sampler2D ocio_thinfilm_xyz;\n" +
-    "uniform int ocio_thinfilm_row;\nout vec4 ocio_thinfilm_colour;\n";
-  const MAIN = "\nvoid main()\n{\n" +
-    "    ivec2 at = ivec2(int(gl_FragCoord.x), ocio_thinfilm_row);\n" +
-    "    vec3 xyz = texelFetch(ocio_thinfilm_xyz, at, 0).rgb;\n" +
-    "    ocio_thinfilm_colour = vec4(ocio_thinfilm_view(xyz), 1.0);\n}\n";
-
-  function compile(type, source) {
-    const s = gl.createShader(type);
-    gl.shaderSource(s, source);
-    gl.compileShader(s);
-    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      throw new Error("shader does not compile: " + gl.getShaderInfoLog(s));
-    }
-    return s;
-  }
-
-  function link(fragment) {
-    const p = gl.createProgram();
-    gl.attachShader(p, compile(gl.VERTEX_SHADER, VERTEX));
-    gl.attachShader(p, compile(gl.FRAGMENT_SHADER, HEAD + fragment + MAIN));
-    gl.linkProgram(p);
-    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) {
-      throw new Error("program does not link: " + gl.getProgramInfoLog(p));
-    }
-    return p;
-  }
-
-  const programs = {};
-  function programsOf(display) {
-    if (!programs[display]) {
-      const code = DATA.shaders[display];
-      programs[display] = { clip: link(code.clip), compress: link(code.compress) };
-    }
-    return programs[display];
-  }
-
-  if (gl) {
-    try {
-      const rows = DATA.rows.length, width = DATA.width;
-      const texels = new Float32Array(width * rows * 4);
-      DATA.rows.forEach((row, r) => {
-        for (let i = 0; i < width; i++) {
-          for (let c = 0; c < 3; c++) texels[4 * (r * width + i) + c] = row.xyz[3 * i + c];
-          texels[4 * (r * width + i) + 3] = 1.0;
-        }
-      });
-      const texture = gl.createTexture();
-      gl.activeTexture(gl.TEXTURE0);
-      gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, rows, 0, gl.RGBA, gl.FLOAT, texels);
-      gl.bindVertexArray(gl.createVertexArray());
-    } catch (e) {
-      error = String(e.message || e);
-    }
-  }
-
-  // the knobs as the sliders hold them, to their step (0.01)
-  function knob(name) {
-    return Number(Number(sliders[name].value).toFixed(2));
-  }
-
-  function draw() {
-    if (!gl || error) return;
-    const display = select.value;
-    let p;
-    try {
-      p = programsOf(display);
-    } catch (e) {
-      error = String(e.message || e);
-      status.textContent = "Cannot draw: " + error;
-      return;
-    }
-    const h = canvas.height;
-    gl.viewport(0, 0, canvas.width, h);
-    gl.disable(gl.SCISSOR_TEST);
-    gl.clearColor(0.13, 0.13, 0.13, 1.0);
-    gl.clear(gl.COLOR_BUFFER_BIT);
-    gl.enable(gl.SCISSOR_TEST);
-    for (const band of DATA.bands) {
-      const program = p[band.view];
-      gl.useProgram(program);
-      gl.uniform1i(gl.getUniformLocation(program, "ocio_thinfilm_xyz"), 0);
-      gl.uniform1i(gl.getUniformLocation(program, "ocio_thinfilm_row"), band.row);
-      const t = gl.getUniformLocation(program, "ocio_thinfilm_threshold");
-      const l = gl.getUniformLocation(program, "ocio_thinfilm_limit");
-      if (t !== null) gl.uniform1f(t, knob("threshold"));
-      if (l !== null) gl.uniform1f(l, knob("limit"));
-      gl.scissor(0, h - band.top - band.height, canvas.width, band.height);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
-    }
-    gl.disable(gl.SCISSOR_TEST);
-  }
-
-  function q(text) {
-    return /^[\w.+-]+$/.test(text) ? text : '"' + text + '"';
-  }
-
-  function update() {
-    const t = knob("threshold"), l = knob("limit"), display = select.value;
-    $("threshold-value").textContent = t.toFixed(2);
-    $("limit-value").textContent = l.toFixed(2);
-    const knobs = "--compress-threshold " + t + " --compress-limit " + l;
-    $("commands").textContent = [
-      "# the config's Constant-Lightness Compress views, baked with these knobs",
-      "ocio-thinfilm bake " + knobs,
-      "# DaVinci Resolve DCTL with these knobs as its sliders' defaults",
-      "ocio-thinfilm export shader --lang dctl --display " + q(display) +
-        " --view " + q(DATA.views.compress) + " " + knobs + " --out compress.dctl",
-      "# ... or the sliders of any exported Compress DCTL (ResolveFX DCTL)",
-      "Threshold " + t.toFixed(2) + "    Limit " + l.toFixed(2),
-      "# GLSL (three.js, a game engine, Matchbox): the uniforms",
-      "ocio_thinfilm_threshold = " + t.toFixed(2) + ";  ocio_thinfilm_limit = " +
-        l.toFixed(2) + ";",
-    ].join("\n");
-    draw();
-  }
-
-  function changeDisplay() {
-    const display = select.value;
-    let text = DATA.notes[display] || "";
-    if (gl && display === "Display P3" && !("drawingBufferColorSpace" in gl)) {
-      text = DATA.noP3;
-    }
-    note.textContent = text;
-    if (gl && "drawingBufferColorSpace" in gl) {
-      gl.drawingBufferColorSpace = display === "Display P3" ? "display-p3" : "srgb";
-    }
-    update();
-  }
-
-  select.addEventListener("change", changeDisplay);
-  sliders.threshold.addEventListener("input", update);
-  sliders.limit.addEventListener("input", update);
-  $("defaults").addEventListener("click", () => {
-    sliders.threshold.value = DATA.defaults.threshold;
-    sliders.limit.value = DATA.defaults.limit;
-    sliders.threshold.dispatchEvent(new Event("input"));
-    sliders.limit.dispatchEvent(new Event("input"));
-  });
-  changeDisplay();
-  if (error) status.textContent = "Cannot draw: " + error;
-
-  // settings from the URL query, through the same events as a user's
-  const query = new URLSearchParams(window.location.search);
-  if (query.has("display")) {
-    select.value = query.get("display");
-    select.dispatchEvent(new Event("change"));
-  }
-  for (const name of ["threshold", "limit"]) {
-    if (query.has(name)) {
-      sliders[name].value = query.get(name);
-      sliders[name].dispatchEvent(new Event("input"));
-    }
-  }
-  if (query.get("readback") === "1") {
-    const out = {
-      display: select.value,
-      threshold: knob("threshold"),
-      limit: knob("limit"),
-      width: canvas.width,
-      height: canvas.height,
-      origin: "bottom-left",
-      drawingBufferColorSpace: gl && gl.drawingBufferColorSpace ? gl.drawingBufferColorSpace : null,
-      error: error,
-      rgba: null,
-    };
-    if (gl && !error) {
-      const px = new Uint8Array(canvas.width * canvas.height * 4);
-      gl.readPixels(0, 0, canvas.width, canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, px);
-      let bytes = "";
-      for (let i = 0; i < px.length; i += 0x8000) {
-        bytes += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
-      }
-      out.rgba = btoa(bytes);
-    }
-    $("readback").textContent = JSON.stringify(out);
-  }
-})();
-"""
 
 _NOTES = {
     "sRGB": "",
@@ -488,22 +280,45 @@ _NO_P3 = (
 )
 
 
+#: The ramps' marks: id suffix, letter, tooltip; and the letters' room above a ramp, px.
+_MARKS = (
+    ("threshold", "T", "threshold"),
+    ("boundary", "1", "the display's gamut boundary, d = 1"),
+    ("limit", "L", "limit"),
+)
+_MARK_LABEL = 13
+
+
 def _body(rows: list[Row], layout: list[Band], height: int) -> str:
     """Return the page's visible HTML: controls, the labelled canvas, commands, notes."""
     e = html.escape
     t_lo, t_hi, t_step = shader.THRESHOLD_SLIDER
     l_lo, l_hi, l_step = shader.LIMIT_SLIDER
     options = "".join(f'<option value="{e(d)}">{e(d)}</option>' for d in DISPLAYS)
-    labels = []
+    sources = "".join(
+        f'<option value="{e(s)}"{" selected" if s == DEFAULT_SOURCE else ""}>{e(s)}</option>'
+        for s in SOURCES
+    )
+    labels, marks = [], []
     for band in layout:
         row = rows[band.row]
         mid = band.top + band.height / 2
         labels.append(f'<div style="top:{mid - 7:g}px">{e(VIEW_KEYS[band.view].split()[-1])}</div>')
-        if band.view == "clip":
-            labels.append(
-                f'<div class="group" style="top:{band.top + band.height + INNER_GAP / 2 - 15:g}px">'
-                f'{e(row.label)}<br><span class="axis">{e(row.axis)}</span></div>'
-            )
+        if band.view != "clip":
+            continue
+        labels.append(
+            f'<div class="group" style="top:{band.top + band.height + INNER_GAP / 2 - 15:g}px">'
+            f'{e(row.label)}<br><span class="axis" id="axis-{band.row}">'
+            f"{e(row.axis[DISPLAYS[0]])}</span></div>"
+        )
+        if row.reach is not None:  # the script places them
+            span = 2 * band.height + INNER_GAP + _MARK_LABEL
+            marks += [
+                f'<div id="mark-{band.row}-{name}" title="{title}" '
+                f'style="top:{band.top - _MARK_LABEL}px;height:{span}px">'
+                f"<span>{letter}</span></div>"
+                for name, letter, title in _MARKS
+            ]
     return f"""<h1>Constant-Lightness Compress: choose the knobs</h1>
 <p>Smits &amp; Meyer's constant-lightness gamut clip (<i>Newton's Colors</i>, 1990,
 Section 3.2) moves colours outside the display's gamut towards the grey of the same
@@ -528,10 +343,20 @@ browser's WebGL2.</p>
 <div id="labels" style="height:{height}px">
 {chr(10).join(labels)}
 </div>
+<div id="plot">
 <canvas id="view" width="{WIDTH}" height="{height}"
  style="width:{WIDTH}px;height:{height}px"></canvas>
+<div id="marks">
+{chr(10).join(marks)}
 </div>
+</div>
+</div>
+<p>On the ramps, <b>T</b> marks the threshold, <b>1</b> the selected display's gamut
+boundary (boundary distance d = 1: where the clip starts) and <b>L</b> the limit (a mark
+beyond a ramp's end is not shown).</p>
 <h2>Paste</h2>
+<p><label>The DCTL's input space (the timeline's colour space)
+<select id="source">{sources}</select></label></p>
 <pre id="commands"></pre>
 <h2>Reading the strips</h2>
 <ul>
@@ -578,7 +403,12 @@ def knob_page_html() -> str:
         "views": VIEW_KEYS,
         "defaults": {"threshold": compress.THRESHOLD, "limit": compress.LIMIT},
         "rows": [
-            {"label": r.label, "axis": r.axis, "xyz": [float(v) for v in r.XYZ.ravel()]}
+            {
+                "label": r.label,
+                "axis": r.axis,
+                "reach": r.reach,
+                "xyz": [float(v) for v in r.XYZ.ravel()],
+            }
             for r in rows
         ],
         "bands": [{"row": b.row, "view": b.view, "top": b.top, "height": b.height} for b in layout],
@@ -589,13 +419,13 @@ def knob_page_html() -> str:
         "notes": _NOTES,
         "noP3": _NO_P3,
     }
-    script = _SCRIPT.replace("__DATA_ID__", DATA_ID).strip("\n")
+    script = SCRIPT.replace("__DATA_ID__", DATA_ID).strip("\n")
     return (
         "<!DOCTYPE html>\n"
         '<html lang="en">\n<head>\n<meta charset="utf-8">\n'
         '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
         "<title>Constant-Lightness Compress: choose the knobs (ocio-thinfilm)</title>\n"
-        f"<style>{_STYLE}</style>\n</head>\n<body>\n"
+        f"<style>{STYLE}</style>\n</head>\n<body>\n"
         + _body(rows, layout, height)
         + f'<script type="application/json" id="{DATA_ID}">{_json_script(data)}</script>\n'
         + f"<script>\n{script}\n</script>\n</body>\n</html>\n"
