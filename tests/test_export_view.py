@@ -625,9 +625,9 @@ BAD_VIEW = [  # (argv, what the one-line error says)
 )
 def test_bad_view_arguments(argv, says, tmp_path, capsys):
     out = tmp_path / "out" / ("x" if "--format" in argv else "x.cube")
-    assert cli.main(argv + ["--out", str(out), "--quiet"]) == 2
+    assert cli.main(argv + ["--out", str(out)]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and err.startswith("ocio-thinfilm export: error: "), err
+    assert len(err.splitlines()) == 1 and err.startswith("ocio-thinfilm export view: error: "), err
     assert says in err, err
     assert list(tmp_path.rglob("*")) == []
 
@@ -690,7 +690,6 @@ def test_cli_export_view_writes_file(tmp_path, capsys):
                 "9",
                 "--out",
                 str(out),
-                "--quiet",
             ]
         )
         == 0

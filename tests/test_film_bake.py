@@ -163,7 +163,7 @@ def test_bad_film_files_exit_2_with_one_line_and_write_nothing(tmp_path, capsys,
     assert message in err and not out.exists()
     assert cli.main(["export", "film", "--films", str(path), "--out", str(tmp_path / "x")]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("ocio-thinfilm export: error: --films ") and message in err
+    assert err.startswith("ocio-thinfilm export film: error: --films ") and message in err
     assert not (tmp_path / "x").exists()
 
 

@@ -670,9 +670,13 @@ def test_signal_gives_one_line_and_128_plus_n(tmp_path, baked, signum, code):
     "argv,needles",
     [
         (["demo", "--thickness", "abc"], ["ocio-thinfilm demo:", "--thickness", "number"]),
-        (["export", "film", "--range", "0"], ["ocio-thinfilm export:", "--range", "MIN MAX"]),
+        (["export", "film", "--range", "0"], ["ocio-thinfilm export film:", "--range", "MIN MAX"]),
         (["export"], ["ocio-thinfilm export:", "TABLE", "film"]),
-        (["export", "film", "--no-such-option"], ["ocio-thinfilm export:", "--no-such-option"]),
+        (
+            ["export", "film", "--no-such-option"],
+            ["ocio-thinfilm export film:", "--no-such-option"],
+        ),
+        (["export", "nothing"], ["ocio-thinfilm export:", "nothing", "film, morpho, clip"]),
         (["bake", "--frobnicate"], ["ocio-thinfilm bake:", "--frobnicate"]),
         (["nosuch"], ["ocio-thinfilm:", "nosuch", "bake"]),
         ([], ["ocio-thinfilm:", "no command", "export"]),
