@@ -148,7 +148,7 @@ def test_table_matches_colour_science_in_delta_E2000(films, reference_weights, k
     weights, white = reference_weights
     t_um = _thicknesses(film, 256)
     reference = colour_R(film, t_um * 1000.0) @ weights
-    table = film_tables.film_table(film)
+    table = film_tables.user_film_table(film)
     dE = _delta_E(table.lookup(t_um), reference, white)
     p99, worst = float(np.percentile(dE, 99)), float(dE.max())
     MEASURED[key] = (p99, worst)
@@ -173,7 +173,7 @@ def test_table_matches_tmm_in_delta_E2000(films, key):
     white = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     t_um = _thicknesses(film, 16, seed=2)
     R = np.array([tmm_RTA(film, t * 1000.0, wl)[:, 0] for t in t_um])
-    dE = _delta_E(film_tables.film_table(film).lookup(t_um), R @ w, white)
+    dE = _delta_E(film_tables.user_film_table(film).lookup(t_um), R @ w, white)
     p99, worst = float(np.percentile(dE, 99)), float(dE.max())
     assert p99 <= 0.5 and worst <= 1.0, (key, p99, worst)
 
@@ -228,7 +228,7 @@ n = 1.9
     ):
         film = films[key]
         cos_t = np.sqrt(1 - (np.sin(np.deg2rad(film.angle_deg)) / 1.33) ** 2)
-        table = film_tables.film_table(film)
+        table = film_tables.user_film_table(film)
         t = table.nodes  # our nodes; the built-in table (8192 log nodes) interpolates
         builtin = tables.film_table(kind).lookup(1.33 * t * cos_t)
         ours = table.values
@@ -386,7 +386,7 @@ def test_normalise_scales_the_table_to_a_brightest_Y_of_1():
     text = '[films.A]\nstack = ["air", "soap film", "air"]\n[films.B]\n'
     text += 'stack = ["air", "soap film", "air"]\nnormalise = true'
     films = films_module.parse_films(text, "n.toml")
-    a, b = (film_tables.film_table(films[k]) for k in "AB")
+    a, b = (film_tables.user_film_table(films[k]) for k in "AB")
     assert b.values[:, 1].max() == pytest.approx(1.0, abs=1e-15)
     np.testing.assert_allclose(b.values * a.values[:, 1].max(), a.values, rtol=1e-12)
     with pytest.raises(ParameterError, match="film 'A': normalise: must be true or false"):

@@ -859,7 +859,7 @@ def film_parts(
     Each :class:`~ocio_thinfilm.physics.films.Film` gives an input colour space named
     ``film.name`` (pixel value = physical thickness of its varying layer in um, all
     channels equal -> CIE-XYZ-D65 through its table,
-    :func:`ocio_thinfilm.lut.film_tables.film_table`), the named transform
+    :func:`ocio_thinfilm.lut.film_tables.user_film_table`), the named transform
     ``TABLE_NAMED_TRANSFORM`` of it and its CLF file.
 
     Parameters
@@ -890,7 +890,7 @@ def film_parts(
         raise ValueError(f"films: keys give clashing LUT file names: {stems}")
     spaces, named, luts = [], [], {}
     for film, stem in zip(films, stems, strict=True):
-        table = film_tables.film_table(film)
+        table = film_tables.user_film_table(film)
         filename = named_lut(stem)
         luts[filename] = table.transform()
         lo, hi = film.range_um

@@ -311,7 +311,7 @@ def bake(
         from ocio_thinfilm.lut import film_tables
 
         for film in film_list:
-            film_tables.film_table(film)
+            film_tables.user_film_table(film)
     claim = claim_directory(out, parameter="out", last=("config.ocio",))
     luts_claim = None
     if luts is not None:
