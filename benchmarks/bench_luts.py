@@ -195,12 +195,14 @@ def clf_size(transform):
     CLF-writable around it)."""
     import PyOpenColorIO as ocio
 
+    from ocio_thinfilm.export.files import CLF_WRITER
+
     writable = ocio_ops.group(
         [t for t in _flatten(transform) if not isinstance(t, ocio.FixedFunctionTransform)]
     )
     with tempfile.TemporaryDirectory() as d:
         path = Path(d) / "x.clf"
-        writable.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+        writable.write(CLF_WRITER, str(path), ocio.Config.CreateRaw())
         return path.stat().st_size
 
 

@@ -88,6 +88,7 @@ from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.data import KNOB_NAMES
 from ocio_thinfilm.export import view_fit
+from ocio_thinfilm.export.files import LUT_FORMATS
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable, write_text
 from ocio_thinfilm.lut import ocio_ops, storage
 
@@ -100,15 +101,9 @@ __all__ = [
     "export_view",
 ]
 
-#: Format -> OCIO writer name. ``.spi1d`` only for the 1D (thin-film) inputs.
-VIEW_FORMATS = {
-    "clf": "Academy/ASC Common LUT Format",
-    "ctf": "Color Transform Format",
-    "cube": "resolve_cube",
-    "csp": "cinespace",
-    "spi3d": "spi3d",
-    "spi1d": "spi1d",
-}
+#: Format -> OCIO writer name: every format of :data:`~ocio_thinfilm.export.files.LUT_FORMATS`
+#: (``.spi1d`` only for the 1D, thin-film, inputs).
+VIEW_FORMATS = {name: spec[0] for name, spec in LUT_FORMATS.items()}
 DEFAULT_VIEW_SIZE = 65
 MAX_VIEW_SIZE = 129
 #: Entries of the shaper (.cube 1D part, .csp prelut knots, companion .spi1d).
