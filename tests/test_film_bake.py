@@ -148,6 +148,7 @@ def test_exported_files_applied_by_ocio_and_colour_science(
     "toml, message",
     [
         ('[films.A]\nstack = ["air", "Nope", "air"]', "film 'A': stack: unknown material 'Nope'"),
+        ("[films.A]\nrange_um = [0, 1]", "film 'A': stack: the key is missing"),
         ('[films.A]\nstack = ["air", "water"', "films.toml:2: TOML syntax error"),
         ('[films.A]\nstack = ["air", "water", "air"]\nname = "ACEScg"', "name: 'ACEScg'"),
         ('[films.A]\nstack = ["air", "water", "air"]\nrange_um = [-1, 2]', "range_um"),
@@ -165,6 +166,29 @@ def test_bad_film_files_exit_2_with_one_line_and_write_nothing(tmp_path, capsys,
     err = capsys.readouterr().err
     assert err.startswith("ocio-thinfilm export film: error: --films ") and message in err
     assert not (tmp_path / "x").exists()
+
+
+def test_keys_that_give_one_file_name_are_named_with_the_file(tmp_path, capsys):
+    """``"Oil Slick"`` and ``Oil_Slick`` would write one LUT file: one line naming both
+    keys and the file, exit 2, nothing written."""
+    path = tmp_path / "films.toml"
+    stack = 'stack = ["air", "oil", "water"]'
+    path.write_text(f'[films."Oil Slick"]\n{stack}\n[films.Oil_Slick]\n{stack}\n')
+    out = tmp_path / "cfg"
+    assert cli.main(["bake", "--out", str(out), "--films", str(path), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("ocio-thinfilm bake: error: --films "), err
+    assert "'Oil Slick' and 'Oil_Slick'" in err and "ThinFilm_User_Oil_Slick.clf" in err, err
+    assert not out.exists()
+
+
+def test_a_film_key_without_its_film_file_says_films_is_missing(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["export", "film", "--film", "AR"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1, err
+    assert err.startswith("ocio-thinfilm export film: error: --films FILE is missing"), err
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_render_oil_and_soap_with_a_users_film(tmp_path, film_file, baked, capsys):

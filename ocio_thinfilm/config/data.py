@@ -881,13 +881,22 @@ def film_parts(
     luts : dict
         CLF file name -> GroupTransform.
     """
+    from ocio_thinfilm.checks import ParameterError
     from ocio_thinfilm.physics.films import check_names
 
     films = list(films)
     check_names(films, taken)
     stems = [film_lut_stem(f) for f in films]
-    if len(set(s.casefold() for s in stems)) != len(stems):
-        raise ValueError(f"films: keys give clashing LUT file names: {stems}")
+    first: dict[str, Any] = {}
+    for film, stem in zip(films, stems, strict=True):
+        other = first.setdefault(stem.casefold(), film)
+        if other is not film:
+            raise ParameterError(
+                "films",
+                f" {film.source}: the films {other.key!r} and {film.key!r} would share the "
+                f"LUT file {named_lut(stem)} (every character of a key but letters, digits and "
+                "_ becomes _): rename one",
+            )
     spaces, named, luts = [], [], {}
     for film, stem in zip(films, stems, strict=True):
         table = film_tables.user_film_table(film)
