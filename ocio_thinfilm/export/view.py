@@ -68,9 +68,6 @@ shadows and leaves cells near white about 0.27 stops wide. Measured for ACEScct 
 sRGB, Constant-Lightness Clip, 65^3, on object colours inside AP1 (ΔE2000
 p99 / max, tetrahedral): plain ACEScct grid 4.1 / 8.8; an affine sub-range of ACEScct
 2.1 / 5.2; the square-root shaper 0.6 / 2.0 (see ``tests/test_export_view.py``).
-
-Public functions: :func:`export_view`, :func:`view_config`, :func:`shaper_domain`,
-:data:`VIEW_FORMATS`.
 """
 
 from __future__ import annotations
