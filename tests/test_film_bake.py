@@ -11,6 +11,7 @@ import pytest
 
 from evaluation.films import COLOUR_VALID, FILMS_TOML, WL, colour_R, tmm_RTA
 from evaluation.films import delta_E as _delta_E
+from evaluation.views import apply_processor
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.physics import films as films_module
 
@@ -71,10 +72,9 @@ def reference(films):
 WHITE = (0.3127, 0.329)
 
 
-def _apply(processor, t):
-    rgb = np.repeat(np.asarray(t, np.float32)[:, None], 3, axis=1).copy()
-    processor.getDefaultCPUProcessor().applyRGB(rgb)
-    return rgb.astype(np.float64)
+def _grey(t):
+    """Thickness values as the (N, 3) pixels of a film's colour space (all channels)."""
+    return np.repeat(np.asarray(t)[:, None], 3, axis=1)
 
 
 def _check(XYZ, ref):
@@ -90,10 +90,10 @@ def test_baked_colour_spaces_match_the_independent_tmm(baked, films, reference, 
     film = films[key]
     assert film.name == f"Thin Film {key}"
     t, ref = reference[key]
-    _check(_apply(cfg.getProcessor(film.name, "CIE-XYZ-D65"), t), ref)
+    _check(apply_processor(cfg.getProcessor(film.name, "CIE-XYZ-D65"), _grey(t)), ref)
     # and its named transform is the same table
     named = cfg.getProcessor(f"{film.name} to CIE-XYZ-D65", ocio.TRANSFORM_DIR_FORWARD)
-    _check(_apply(named, t), ref)
+    _check(apply_processor(named, _grey(t)), ref)
 
 
 def test_a_film_name_sets_its_colour_space_and_the_rest_of_the_config_is_the_default(baked):
@@ -126,7 +126,7 @@ def test_exported_files_applied_by_ocio_and_colour_science(
         path = out / f"{stem}.{ext}"
         ft = ocio.FileTransform(str(path), interpolation=ocio.INTERP_LINEAR)
         proc = ocio.Config.CreateRaw().getProcessor(ft)
-        _check(_apply(proc, t), ref)
+        _check(apply_processor(proc, _grey(t)), ref)
         if ext in ("cube", "spi1d"):
             lut = colour.read_LUT(str(path))
             _check(lut.apply(np.repeat(t[:, None], 3, axis=1)), ref)
