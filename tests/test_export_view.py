@@ -173,7 +173,7 @@ def test_acescct_srgb_resolve_cube_meets_target_in_colour_science(acescct_luts, 
     assert _quoted(
         r"applied by colour-science,\s+is within ΔE2000 p99 ([\d.]+) / max ([\d.]+)"
     ) == pytest.approx((p99, worst), abs=0.006)
-    # grey ramp: neutral in, neutral out (the old files took 0.18 to black)
+    # grey ramp: neutral in, neutral out (0.18 stays 0.18, not black)
     g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 0.9, 1.0])
     grey = _colour_apply([path], np.repeat(colour_acescct(g)[:, None], 3, axis=1))
     white = colorimetry.RGB_to_XYZ(np.ones(3), "sRGB")
@@ -363,7 +363,7 @@ DEFAULT_HOSTS = {
     "colour": lambda path, values: _colour_apply([path], values),
 }
 
-#: The plain ACEScct -> sRGB .cube with its nodes sampled from the view (before the
+#: The plain ACEScct -> sRGB .cube with its nodes sampled from the view (no
 #: lattice-regression fit), object colours inside AP1 and outside sRGB, p99 / max by
 #: host: what the fitted table must not exceed out of gamut.
 SAMPLED_OUTSIDE = {"ffmpeg": (5.61, 8.25), "ocio": (6.50, 9.55), "colour": (6.50, 9.55)}

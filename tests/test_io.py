@@ -233,7 +233,7 @@ def test_stale_temporaries_of_dead_processes_are_removed(tmp_path):
 def device_node(tmp_path, name, minor):
     """A private character device node (1, minor) -- the null (3) or full (7) device --
     in ``tmp_path``. The tests never write to the real /dev: code that replaced a
-    device node (as the old one did, run as root) would break the machine."""
+    device node (run as root) would break the machine."""
     path = tmp_path / name
     try:
         os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, minor))
