@@ -32,7 +32,9 @@ OPTIMIZATION_LEVELS = {
     "DEFAULT": "OPTIMIZATION_DEFAULT",
 }
 
-#: colour-science's name of each display gamut (``colour.RGB_COLOURSPACES``).
+#: colour-science's name of each display gamut (``colour.RGB_COLOURSPACES``), typed here
+#: apart from the package's ``registry.RGB_COLORIMETRY``: a reference that looked the
+#: names up there would agree with a wrong entry of it.
 COLOUR_SCIENCE_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
 
 _F32_MAX = float(np.finfo(np.float32).max)
