@@ -26,7 +26,13 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.checks import UsageError
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import bake as bake_module
-from ocio_thinfilm.export.files import DEFAULT_RANGE, DEFAULT_SIZE, FORMATS, export_lut
+from ocio_thinfilm.export.files import (
+    DEFAULT_RANGE,
+    DEFAULT_SIZE,
+    FORMATS,
+    LUT_FORMATS,
+    export_lut,
+)
 from ocio_thinfilm.io import is_stdout
 from ocio_thinfilm.lut import clip_lut
 
@@ -373,14 +379,14 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         "view",
         help="a display/view of the config as one LUT (display code values)",
         description="Write a display/view of the config, from one of its colour spaces, "
-        "as one LUT: display code values out (cube, csp, clf, ctf, spi3d, or spi1d for "
-        "thin-film inputs).",
+        "as one LUT: display code values out.",
     )
     _add_view_options(v)
     v.add_argument(
         "--format",
         default=None,
-        help="cube, csp, clf, ctf, spi3d or spi1d (default: from --out's extension)",
+        help=f"{', '.join(LUT_FORMATS)}; spi1d only for thin-film inputs (default: from "
+        "--out's extension)",
     )
     v.add_argument("--size", type=int, default=None, help="entries (1D) or grid edge (3D)")
     v.add_argument(
