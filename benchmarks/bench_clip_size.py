@@ -46,13 +46,14 @@ def chain_from_files(lut, directory):
     (as the config references them); returns (transform, bytes of the two files)."""
     import PyOpenColorIO as ocio
 
+    from ocio_thinfilm.export.files import CLF_WRITER
     from ocio_thinfilm.lut import clip_lut as CL
     from ocio_thinfilm.lut import ocio_ops
 
     paths = []
     for kind, core in (("black", lut.black_core()), ("white", lut.white_core())):
         path = Path(directory) / f"{kind}.clf"
-        core.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+        core.write(CLF_WRITER, str(path), ocio.Config.CreateRaw())
         paths.append(path)
     cores = [ocio.FileTransform(str(p), interpolation=ocio.INTERP_BEST) for p in paths]
     chain = ocio_ops.group(lut.transforms(*cores) + [CL.working_decoding_transform()])
@@ -123,6 +124,8 @@ def parse_cost():
 
     import PyOpenColorIO as ocio
 
+    from ocio_thinfilm.export.files import CLF_WRITER
+
     values = np.random.default_rng(0).integers(0, 256, (65, 65, 65, 3)) / 255.0
     out = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -138,7 +141,7 @@ def parse_cost():
             group = ocio.GroupTransform()
             group.appendTransform(lut)
             path = Path(tmp) / f"{name}.clf"
-            group.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+            group.write(CLF_WRITER, str(path), ocio.Config.CreateRaw())
             code = (
                 "import time, PyOpenColorIO as o; t = time.perf_counter(); "
                 f"o.Config.CreateRaw().getProcessor(o.FileTransform({str(path)!r})); "

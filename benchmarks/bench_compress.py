@@ -98,10 +98,12 @@ def _chain(soft):
 def _clf_bytes(soft, directory):
     import PyOpenColorIO as ocio
 
+    from ocio_thinfilm.export.files import CLF_WRITER
+
     total = 0
     for kind, core in (("black", soft.black_core()), ("white", soft.white_core())):
         path = Path(directory) / f"{kind}.clf"
-        core.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+        core.write(CLF_WRITER, str(path), ocio.Config.CreateRaw())
         total += path.stat().st_size
     return total
 

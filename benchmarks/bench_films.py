@@ -113,7 +113,7 @@ def main() -> None:
     print(f"{'film':<14} {'size':>6} {'table s':>8} {'reference':>12} {'dE p99':>7} {'max':>6}")
     for key, film in films_module.parse_films(TEN_FILMS, "films.toml").items():
         start = time.perf_counter()
-        table = film_tables.film_table(film)
+        table = film_tables.user_film_table(film)
         seconds = time.perf_counter() - start
         t = np.linspace(*film.range_um, 97)
         oblique = film.angle_deg > 0

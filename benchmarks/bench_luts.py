@@ -14,7 +14,7 @@ interference colours); on spectral colours at Y <= 0.6 the luminance error and
 whether the output is in gamut; bake time (vertex values + OCIO processor) and the
 size of the CLF the config would ship.
 
-The shipped design and the rejected ones: see :func:`options` and docs/gamut_map.md;
+The shipped design and why it is laid out so: see :func:`options` and docs/gamut_map.md;
 this script prints its own measurements (no numbers are typed here).
 """
 
@@ -167,16 +167,8 @@ def uvY_uniform(display, size):
 def options(quick):
     """The shipped two-pass design at several sizes, and two single-LUT baselines.
 
-    Rejected designs measured while choosing it, with prototypes not kept here (sRGB,
-    65^3 unless noted; dE2000 p99 / max on object colours, then on monochromatic
-    stimuli; indicative; see docs/gamut_map.md):
-    one Lut3D over RGB_TO_HSV of display RGB 4.2 / 16.7, 39 / 42 (OCIO's extended HSV
-    is singular where max = -min); one Lut3D over an xy chart with Y 1.1 / 5.5, 0.7 /
-    2.4 (the faces through white cut the cells); one Lut3D over (R, B, Y) 7.3 / 15.7
-    (the G faces are oblique); the previous factored design (two 38^3 LUTs, chart
-    coordinates out, matrices after) 0.42 / 1.6, 9-27 / -, and 15/255 on half-float
-    GPU textures; a Lut1D shaper in front of the first pass 0.16 / 0.98 but 7.4/255 on
-    half-float textures (the shaper's outputs place colours only to 1/30 of a cell).
+    Why the design has two passes and no shapers or gains around its first LUT:
+    docs/gamut_map.md, *Why this layout*.
     """
     sizes = (33, 49, 65) if quick else (33, 41, 49, 57, 65)
     return [
@@ -195,12 +187,14 @@ def clf_size(transform):
     CLF-writable around it)."""
     import PyOpenColorIO as ocio
 
+    from ocio_thinfilm.export.files import CLF_WRITER
+
     writable = ocio_ops.group(
         [t for t in _flatten(transform) if not isinstance(t, ocio.FixedFunctionTransform)]
     )
     with tempfile.TemporaryDirectory() as d:
         path = Path(d) / "x.clf"
-        writable.write("Academy/ASC Common LUT Format", str(path), ocio.Config.CreateRaw())
+        writable.write(CLF_WRITER, str(path), ocio.Config.CreateRaw())
         return path.stat().st_size
 
 

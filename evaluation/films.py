@@ -237,7 +237,7 @@ def error_against_time(films=None, sizes=(32, 64, 128, 256, 512, 1024, 2048), sa
         rows = []
         for size in sizes:
             start = time.perf_counter()
-            table = film_tables.film_table(film, size)
+            table = film_tables.user_film_table(film, size)
             seconds = time.perf_counter() - start
             rows.append(
                 {

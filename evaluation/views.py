@@ -1,8 +1,10 @@
 """Applying the committed config's views the way a host does, for the tests and benchmarks.
 
 One definition of each: the committed config's path, OCIO's optimisation levels, a
-view applied to CIE-XYZ-D65 by OCIO's CPU processor (float32, as hosts run it), the
-extreme inputs every view must survive, and display code values decoded back to
+processor and a view applied to CIE-XYZ-D65 by OCIO's CPU processor (float32, as hosts
+run it), a view's code values on every test-colour set, the error statistics the view
+tests compare with their targets, the extreme inputs every view must survive,
+colour-science's names of the display gamuts, and display code values decoded back to
 display-linear light with colour-science's transfer functions (independent of the
 package's own encodings).
 """
@@ -29,6 +31,11 @@ OPTIMIZATION_LEVELS = {
     "LOSSLESS": "OPTIMIZATION_LOSSLESS",
     "DEFAULT": "OPTIMIZATION_DEFAULT",
 }
+
+#: colour-science's name of each display gamut (``colour.RGB_COLOURSPACES``), typed here
+#: apart from the package's ``registry.RGB_COLORIMETRY``: a reference that looked the
+#: names up there would agree with a wrong entry of it.
+COLOUR_SCIENCE_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
 
 _F32_MAX = float(np.finfo(np.float32).max)
 #: CIE-XYZ-D65 inputs at and beyond every edge: black, denormals, negatives, above
@@ -72,14 +79,48 @@ def apply_view(
     import PyOpenColorIO as ocio
 
     proc = cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+    return apply_processor(proc, np.asarray(XYZ).reshape(-1, 3), optimization)
+
+
+def apply_processor(processor, values: npt.ArrayLike, optimization=None) -> np.ndarray:
+    """An OCIO ``Processor`` applied by its CPU processor to RGB ``values`` (..., 3):
+    a float32 array of their shape out, ``values`` untouched; ``optimization`` as in
+    :func:`apply_view`."""
+    import PyOpenColorIO as ocio
+
     cpu = (
-        proc.getDefaultCPUProcessor()
+        processor.getDefaultCPUProcessor()
         if optimization is None
-        else proc.getOptimizedCPUProcessor(ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, optimization)
+        else processor.getOptimizedCPUProcessor(
+            ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, optimization
+        )
     )
-    px = np.ascontiguousarray(np.asarray(XYZ, dtype=np.float32).reshape(-1, 3)).copy()
+    px = np.array(values, dtype=np.float32, order="C", copy=True)
     cpu.applyRGB(px)
     return px
+
+
+def view_codes(cfg, display: str, view: str, scale: float = 1.0):
+    """Yield ``(set name, XYZ, code values)`` of ``view`` on every set of
+    :func:`evaluation.colours.gamut_map_sets`, each scaled by ``scale`` (HDR: the
+    reference white's multiple)."""
+    from evaluation.colours import gamut_map_sets
+
+    for name, XYZ in gamut_map_sets().items():
+        XYZ = XYZ * scale
+        yield name, XYZ, apply_view(cfg, display, XYZ, view=view)
+
+
+def error_stats(truth: npt.ArrayLike, got: npt.ArrayLike, inside=None) -> dict[str, float]:
+    """dE2000 of ``got`` against ``truth`` (XYZ, Y = 1 white): its 99th percentile and
+    maximum, and with ``inside`` (a mask) the maximum over those colours."""
+    from ocio_thinfilm.colour import colorimetry
+
+    de = colorimetry.delta_E2000(truth, got)
+    stats = {"p99": float(np.percentile(de, 99)), "max": float(de.max())}
+    if inside is not None:
+        stats["inside_max"] = float(de[inside].max()) if np.any(inside) else 0.0
+    return stats
 
 
 def decode_display(code: npt.ArrayLike, display: str) -> np.ndarray:
@@ -115,6 +156,5 @@ def apply_lut_files(paths, values: npt.ArrayLike) -> np.ndarray:
         t = ocio.FileTransform(str(path))
         t.setInterpolation(ocio.INTERP_TETRAHEDRAL)
         group.appendTransform(t)
-    px = np.ascontiguousarray(np.asarray(values, dtype=np.float32).reshape(-1, 3)).copy()
-    ocio.Config.CreateRaw().getProcessor(group).getDefaultCPUProcessor().applyRGB(px)
-    return px.astype(np.float64)
+    px = np.asarray(values).reshape(-1, 3)
+    return apply_processor(ocio.Config.CreateRaw().getProcessor(group), px).astype(np.float64)

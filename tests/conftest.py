@@ -109,6 +109,18 @@ def colour():
     return colour_module
 
 
+def fresnel_R(n0, n2, theta_deg):
+    """Unpolarised reflectance of one bare interface, n0 -> n2 (complex n2 allowed),
+    at ``theta_deg`` in n0: ``(|r_s|^2 + |r_p|^2) / 2`` with Born & Wolf's amplitudes
+    (Principles of Optics, 1.5 (21)), written out here."""
+    s = n0 * np.sin(np.deg2rad(theta_deg))
+    c0 = np.cos(np.deg2rad(theta_deg))
+    c2 = np.sqrt(1 - (s / n2) ** 2 + 0j)
+    rs = (n0 * c0 - n2 * c2) / (n0 * c0 + n2 * c2)
+    rp = (n2 * c0 - n0 * c2) / (n2 * c0 + n0 * c2)
+    return (abs(rs) ** 2 + abs(rp) ** 2) / 2
+
+
 def colour_thin_film_R(n_stack, thickness, wavelengths, theta):
     """colour-science's TMM single film, unpolarised, reshaped to ours.
 

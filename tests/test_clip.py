@@ -16,17 +16,17 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from evaluation.views import COLOUR_SCIENCE_NAMES
 from ocio_thinfilm.colour import clip, colorimetry
 
 DISPLAYS = ("sRGB", "Display P3", "Rec.2020")
-NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
 
 
 def reference_matrices(display):
     """(XYZ->RGB, RGB->XYZ, white XYZ) from colour-science's primaries, computed here."""
     import colour
 
-    cs = colour.RGB_COLOURSPACES[NAMES[display]]
+    cs = colour.RGB_COLOURSPACES[COLOUR_SCIENCE_NAMES[display]]
     rgb_to_xyz = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
     return np.linalg.inv(rgb_to_xyz), rgb_to_xyz, rgb_to_xyz @ np.ones(3)
 

@@ -20,12 +20,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from evaluation.colours import ap0_below_white, gamut_map_sets
+from evaluation.colours import ap0_below_white
 from evaluation.views import (
     EXTREME_XYZ,
     OPTIMIZATION_LEVELS,
     apply_view,
     decode_display,
+    error_stats,
+    view_codes,
 )
 from ocio_thinfilm.colour import clip, colorimetry
 
@@ -44,17 +46,12 @@ def measured(cfg):
     out = {}
     for display in DISPLAYS:
         M = colorimetry.matrix_XYZ_to_RGB(display)
-        for name, XYZ in gamut_map_sets().items():
-            code = apply_view(cfg, display, XYZ)
-            rgb = decode_display(code, display)
+        for name, XYZ, code in view_codes(cfg, display, VIEW):
+            got = colorimetry.RGB_to_XYZ(decode_display(code, display), display)
             truth = clip.clip_XYZ(XYZ, display)
-            de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
-            inside = clip.in_gamut(XYZ @ M.T)
             out[display, name] = dict(
-                p99=float(np.percentile(de, 99)),
-                max=float(de.max()),
-                dY=float(np.abs(colorimetry.RGB_to_XYZ(rgb, display)[:, 1] - truth[:, 1]).max()),
-                inside_max=float(de[inside].max()) if inside.any() else 0.0,
+                error_stats(truth, got, clip.in_gamut(XYZ @ M.T)),
+                dY=float(np.abs(got[:, 1] - truth[:, 1]).max()),
                 in_gamut=bool(np.all((code >= 0.0) & (code <= 1.0 + TOL))),
             )
     return out

@@ -14,8 +14,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from evaluation.colours import gamut_map_sets, half_way_colours, object_colours
-from evaluation.views import OPTIMIZATION_LEVELS, apply_view, decode_display
+from evaluation.colours import half_way_colours, object_colours
+from evaluation.views import (
+    COLOUR_SCIENCE_NAMES,
+    OPTIMIZATION_LEVELS,
+    apply_view,
+    decode_display,
+    error_stats,
+    view_codes,
+)
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.lut import compress_lut
@@ -24,7 +31,6 @@ ocio = pytest.importorskip("PyOpenColorIO")
 
 DISPLAYS = clip.DISPLAYS
 VIEW = "Constant-Lightness Compress"
-_COLOUR_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
 
 
 def _weights(display):
@@ -32,7 +38,7 @@ def _weights(display):
     (independent of our matrices)."""
     import colour
 
-    space = colour.RGB_COLOURSPACES[_COLOUR_NAMES[display]]
+    space = colour.RGB_COLOURSPACES[COLOUR_SCIENCE_NAMES[display]]
     return colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
 
 
@@ -197,13 +203,11 @@ def measured(cfg):
     out = {}
     for display in DISPLAYS:
         w = _weights(display)
-        for name, XYZ in gamut_map_sets().items():
-            rgb = decode_display(_apply(cfg, display, XYZ), display)
+        for name, XYZ, code in view_codes(cfg, display, VIEW):
+            rgb = decode_display(code, display)
             truth = compress.compress_XYZ(XYZ, display)
-            de = colorimetry.delta_E2000(truth, colorimetry.RGB_to_XYZ(rgb, display))
             out[display, name] = dict(
-                p99=float(np.percentile(de, 99)),
-                max=float(de.max()),
+                error_stats(truth, colorimetry.RGB_to_XYZ(rgb, display)),
                 dY=float(np.abs(rgb @ w - truth[:, 1]).max()),
             )
     return out

@@ -383,7 +383,6 @@ def test_bad_arguments_one_line_exit_2_nothing_written(argv, tmp_path, capsys, m
 # The library names its Python parameters; the command line names its options for them.
 NAMED = [
     (dict(table="film", index=0.5), "index", "--index"),
-    (dict(table="morpho", index=1.3), "index", "--index"),
     (dict(table="film", size=1), "size", "--size"),
     (dict(table="film", value_range=(-1.0, 2.0)), "value_range", "--range"),
     (dict(table="film", value_range=(2.0, 1.0)), "value_range", "--range"),
@@ -416,10 +415,63 @@ def test_library_errors_name_the_parameter_and_the_cli_its_option(
     assert message.startswith(parameter) and "--" not in message, message
     assert cli.main(_argv(kwargs) + ["--quiet"]) == 2
     err = capsys.readouterr().err.strip()
-    assert err.startswith(f"ocio-thinfilm export: error: {option}"), err
+    assert err.startswith(f"ocio-thinfilm export {kwargs['table']}: error: {option}"), err
     assert parameter == option.lstrip("-") or parameter not in err, err
     assert err.endswith(message[len(parameter) :]), (err, message)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_library_refuses_an_index_for_the_morpho_table(tmp_path):
+    with pytest.raises(ValueError, match=r"^index applies to film tables only"):
+        export.export_lut("morpho", tmp_path / "x.clf", index=1.3)
+    assert list(tmp_path.iterdir()) == []
+
+
+#: ``export`` sub-command -> the options its ``--help`` lists (argparse's own -h too).
+EXPORT_OPTIONS = {
+    "film": {"--kind", "--index", "--display", "--range", "--size", "--format", "--out"}
+    | {"--quiet", "--films", "--film"},
+    "morpho": {"--display", "--range", "--size", "--format", "--out", "--quiet"},
+    "clip": {"--display", "--range", "--size", "--format", "--out", "--quiet"},
+    "view": {"--from", "--display", "--view", "--out", "--format", "--size", "--range"}
+    | {"--resolve-shaper", "--compress-threshold", "--compress-limit"},
+    "shader": {"--lang", "--from", "--display", "--view", "--out"}
+    | {"--compress-threshold", "--compress-limit"},
+}
+#: An option of one sub-command and a value for it (None: a flag).
+_VALUES = {"--range": ["0", "1"], "--resolve-shaper": [], "--quiet": []}
+
+
+@pytest.mark.parametrize("what", sorted(EXPORT_OPTIONS))
+def test_each_export_subcommand_has_its_own_options_and_help(what, tmp_path, capsys):
+    """``export WHAT --help`` lists that sub-command's options, no other's; an option of
+    another sub-command is one line naming it, exit 2, nothing written."""
+    with pytest.raises(SystemExit) as done:
+        cli.main(["export", what, "--help"])
+    assert done.value.code == 0
+    text = capsys.readouterr().out
+    assert text.startswith(f"usage: ocio-thinfilm export {what} ")
+    listed = set(re.findall(r"^  (--[a-z-]+)", text, flags=re.M)) - {"--help"}
+    assert listed == EXPORT_OPTIONS[what]
+    others = set().union(*EXPORT_OPTIONS.values()) - EXPORT_OPTIONS[what]
+    for option in sorted(others):
+        argv = ["export", what, option, *_VALUES.get(option, ["1"])]
+        assert cli.main(argv + ["--out", str(tmp_path / "x.cube")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1, err
+        assert err.startswith(
+            f"ocio-thinfilm export {what}: error: unrecognized arguments: {option}"
+        )
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_export_lists_its_subcommands(capsys):
+    with pytest.raises(SystemExit):
+        cli.main(["export", "--help"])
+    text = capsys.readouterr().out
+    assert [w for w in EXPORT_OPTIONS if re.search(rf"^    {w} ", text, flags=re.M)] == list(
+        EXPORT_OPTIONS
+    )
 
 
 def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
@@ -566,5 +618,5 @@ def test_progress_bar_on_a_terminal_only(tmp_path):
     )
     assert full.returncode == 2
     assert full.stderr.splitlines() == [
-        "ocio-thinfilm export: error: cannot write /dev/full: No space left on device"
+        "ocio-thinfilm export film: error: cannot write /dev/full: No space left on device"
     ]

@@ -173,7 +173,7 @@ def test_acescct_srgb_resolve_cube_meets_target_in_colour_science(acescct_luts, 
     assert _quoted(
         r"applied by colour-science,\s+is within ΔE2000 p99 ([\d.]+) / max ([\d.]+)"
     ) == pytest.approx((p99, worst), abs=0.006)
-    # grey ramp: neutral in, neutral out (the old files took 0.18 to black)
+    # grey ramp: neutral in, neutral out (0.18 stays 0.18, not black)
     g = np.array([0.002, 0.01, 0.05, 0.18, 0.5, 0.9, 1.0])
     grey = _colour_apply([path], np.repeat(colour_acescct(g)[:, None], 3, axis=1))
     white = colorimetry.RGB_to_XYZ(np.ones(3), "sRGB")
@@ -363,7 +363,7 @@ DEFAULT_HOSTS = {
     "colour": lambda path, values: _colour_apply([path], values),
 }
 
-#: The plain ACEScct -> sRGB .cube with its nodes sampled from the view (before the
+#: The plain ACEScct -> sRGB .cube with its nodes sampled from the view (no
 #: lattice-regression fit), object colours inside AP1 and outside sRGB, p99 / max by
 #: host: what the fitted table must not exceed out of gamut.
 SAMPLED_OUTSIDE = {"ffmpeg": (5.61, 8.25), "ocio": (6.50, 9.55), "colour": (6.50, 9.55)}
@@ -625,9 +625,9 @@ BAD_VIEW = [  # (argv, what the one-line error says)
 )
 def test_bad_view_arguments(argv, says, tmp_path, capsys):
     out = tmp_path / "out" / ("x" if "--format" in argv else "x.cube")
-    assert cli.main(argv + ["--out", str(out), "--quiet"]) == 2
+    assert cli.main(argv + ["--out", str(out)]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and err.startswith("ocio-thinfilm export: error: "), err
+    assert len(err.splitlines()) == 1 and err.startswith("ocio-thinfilm export view: error: "), err
     assert says in err, err
     assert list(tmp_path.rglob("*")) == []
 
@@ -690,7 +690,6 @@ def test_cli_export_view_writes_file(tmp_path, capsys):
                 "9",
                 "--out",
                 str(out),
-                "--quiet",
             ]
         )
         == 0

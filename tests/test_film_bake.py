@@ -11,6 +11,7 @@ import pytest
 
 from evaluation.films import COLOUR_VALID, FILMS_TOML, WL, colour_R, tmm_RTA
 from evaluation.films import delta_E as _delta_E
+from evaluation.views import apply_processor
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.physics import films as films_module
 
@@ -71,10 +72,9 @@ def reference(films):
 WHITE = (0.3127, 0.329)
 
 
-def _apply(processor, t):
-    rgb = np.repeat(np.asarray(t, np.float32)[:, None], 3, axis=1).copy()
-    processor.getDefaultCPUProcessor().applyRGB(rgb)
-    return rgb.astype(np.float64)
+def _grey(t):
+    """Thickness values as the (N, 3) pixels of a film's colour space (all channels)."""
+    return np.repeat(np.asarray(t)[:, None], 3, axis=1)
 
 
 def _check(XYZ, ref):
@@ -90,10 +90,10 @@ def test_baked_colour_spaces_match_the_independent_tmm(baked, films, reference, 
     film = films[key]
     assert film.name == f"Thin Film {key}"
     t, ref = reference[key]
-    _check(_apply(cfg.getProcessor(film.name, "CIE-XYZ-D65"), t), ref)
+    _check(apply_processor(cfg.getProcessor(film.name, "CIE-XYZ-D65"), _grey(t)), ref)
     # and its named transform is the same table
     named = cfg.getProcessor(f"{film.name} to CIE-XYZ-D65", ocio.TRANSFORM_DIR_FORWARD)
-    _check(_apply(named, t), ref)
+    _check(apply_processor(named, _grey(t)), ref)
 
 
 def test_a_film_name_sets_its_colour_space_and_the_rest_of_the_config_is_the_default(baked):
@@ -126,7 +126,7 @@ def test_exported_files_applied_by_ocio_and_colour_science(
         path = out / f"{stem}.{ext}"
         ft = ocio.FileTransform(str(path), interpolation=ocio.INTERP_LINEAR)
         proc = ocio.Config.CreateRaw().getProcessor(ft)
-        _check(_apply(proc, t), ref)
+        _check(apply_processor(proc, _grey(t)), ref)
         if ext in ("cube", "spi1d"):
             lut = colour.read_LUT(str(path))
             _check(lut.apply(np.repeat(t[:, None], 3, axis=1)), ref)
@@ -148,6 +148,7 @@ def test_exported_files_applied_by_ocio_and_colour_science(
     "toml, message",
     [
         ('[films.A]\nstack = ["air", "Nope", "air"]', "film 'A': stack: unknown material 'Nope'"),
+        ("[films.A]\nrange_um = [0, 1]", "film 'A': stack: the key is missing"),
         ('[films.A]\nstack = ["air", "water"', "films.toml:2: TOML syntax error"),
         ('[films.A]\nstack = ["air", "water", "air"]\nname = "ACEScg"', "name: 'ACEScg'"),
         ('[films.A]\nstack = ["air", "water", "air"]\nrange_um = [-1, 2]', "range_um"),
@@ -163,8 +164,31 @@ def test_bad_film_files_exit_2_with_one_line_and_write_nothing(tmp_path, capsys,
     assert message in err and not out.exists()
     assert cli.main(["export", "film", "--films", str(path), "--out", str(tmp_path / "x")]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("ocio-thinfilm export: error: --films ") and message in err
+    assert err.startswith("ocio-thinfilm export film: error: --films ") and message in err
     assert not (tmp_path / "x").exists()
+
+
+def test_keys_that_give_one_file_name_are_named_with_the_file(tmp_path, capsys):
+    """``"Oil Slick"`` and ``Oil_Slick`` would write one LUT file: one line naming both
+    keys and the file, exit 2, nothing written."""
+    path = tmp_path / "films.toml"
+    stack = 'stack = ["air", "oil", "water"]'
+    path.write_text(f'[films."Oil Slick"]\n{stack}\n[films.Oil_Slick]\n{stack}\n')
+    out = tmp_path / "cfg"
+    assert cli.main(["bake", "--out", str(out), "--films", str(path), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("ocio-thinfilm bake: error: --films "), err
+    assert "'Oil Slick' and 'Oil_Slick'" in err and "ThinFilm_User_Oil_Slick.clf" in err, err
+    assert not out.exists()
+
+
+def test_a_film_key_without_its_film_file_says_films_is_missing(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["export", "film", "--film", "AR"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1, err
+    assert err.startswith("ocio-thinfilm export film: error: --films FILE is missing"), err
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_render_oil_and_soap_with_a_users_film(tmp_path, film_file, baked, capsys):

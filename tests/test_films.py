@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from conftest import fresnel_R
 from evaluation import films as evaluation_films
 from evaluation.films import COLOUR_VALID, FILMS_TOML, colour_R, tmm_RTA
 from evaluation.films import delta_E as _delta_E
@@ -81,7 +82,7 @@ def test_colour_science_047_deviates_on_absorbing_media_at_oblique_incidence():
 
     n = np.array([1.0, 1.0, materials.builtin("Fe").index(550.0)])
     R, _ = colour.phenomena.multilayer_tmm(n, [100.0], [550.0], 45.0)
-    textbook = _fresnel_R(1.0, n[2], 45.0)
+    textbook = fresnel_R(1.0, n[2], 45.0)
     by_tmm = np.mean(
         [tmm.coh_tmm(p, list(n), [np.inf, 100, np.inf], np.pi / 4, 550.0)["R"] for p in "sp"]
     )
@@ -101,16 +102,6 @@ def test_energy_is_conserved_R_plus_T_plus_A(films, key):
         np.testing.assert_allclose(ours + rta[:, 1] + rta[:, 2], 1.0, atol=1e-9)
 
 
-def _fresnel_R(n0, n2, theta_deg):
-    """Bare interface, unpolarised (Born & Wolf 1.5 (21)), complex n2 allowed."""
-    s = n0 * np.sin(np.deg2rad(theta_deg))
-    c0 = np.cos(np.deg2rad(theta_deg))
-    c2 = np.sqrt(1 - (s / n2) ** 2 + 0j)
-    rs = (n0 * c0 - n2 * c2) / (n0 * c0 + n2 * c2)
-    rp = (n2 * c0 - n0 * c2) / (n2 * c0 + n0 * c2)
-    return (abs(rs) ** 2 + abs(rp) ** 2) / 2
-
-
 @pytest.mark.parametrize("key", ["OilOnWater", "Temper", "AnodisedTi", "SilicaOnGold", "TIR"])
 def test_zero_thickness_is_the_bare_interface(films, key):
     film = films[key]
@@ -118,7 +109,7 @@ def test_zero_thickness_is_the_bare_interface(films, key):
     ours = films_module.film_reflectance(film, [0.0], wl)[0]
     n0 = film.stack[0].index(wl).real
     n2 = film.stack[-1].index(wl)
-    np.testing.assert_allclose(ours, _fresnel_R(n0, n2, film.angle_deg), atol=1e-12)
+    np.testing.assert_allclose(ours, fresnel_R(n0, n2, film.angle_deg), atol=1e-12)
 
 
 def test_quarter_wave_mgf2_on_glass_has_its_minimum_at_the_design_wavelength(films):
@@ -148,7 +139,7 @@ def test_table_matches_colour_science_in_delta_E2000(films, reference_weights, k
     weights, white = reference_weights
     t_um = _thicknesses(film, 256)
     reference = colour_R(film, t_um * 1000.0) @ weights
-    table = film_tables.film_table(film)
+    table = film_tables.user_film_table(film)
     dE = _delta_E(table.lookup(t_um), reference, white)
     p99, worst = float(np.percentile(dE, 99)), float(dE.max())
     MEASURED[key] = (p99, worst)
@@ -173,7 +164,7 @@ def test_table_matches_tmm_in_delta_E2000(films, key):
     white = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     t_um = _thicknesses(film, 16, seed=2)
     R = np.array([tmm_RTA(film, t * 1000.0, wl)[:, 0] for t in t_um])
-    dE = _delta_E(film_tables.film_table(film).lookup(t_um), R @ w, white)
+    dE = _delta_E(film_tables.user_film_table(film).lookup(t_um), R @ w, white)
     p99, worst = float(np.percentile(dE, 99)), float(dE.max())
     assert p99 <= 0.5 and worst <= 1.0, (key, p99, worst)
 
@@ -228,7 +219,7 @@ n = 1.9
     ):
         film = films[key]
         cos_t = np.sqrt(1 - (np.sin(np.deg2rad(film.angle_deg)) / 1.33) ** 2)
-        table = film_tables.film_table(film)
+        table = film_tables.user_film_table(film)
         t = table.nodes  # our nodes; the built-in table (8192 log nodes) interpolates
         builtin = tables.film_table(kind).lookup(1.33 * t * cos_t)
         ours = table.values
@@ -386,7 +377,7 @@ def test_normalise_scales_the_table_to_a_brightest_Y_of_1():
     text = '[films.A]\nstack = ["air", "soap film", "air"]\n[films.B]\n'
     text += 'stack = ["air", "soap film", "air"]\nnormalise = true'
     films = films_module.parse_films(text, "n.toml")
-    a, b = (film_tables.film_table(films[k]) for k in "AB")
+    a, b = (film_tables.user_film_table(films[k]) for k in "AB")
     assert b.values[:, 1].max() == pytest.approx(1.0, abs=1e-15)
     np.testing.assert_allclose(b.values * a.values[:, 1].max(), a.values, rtol=1e-12)
     with pytest.raises(ParameterError, match="film 'A': normalise: must be true or false"):

@@ -16,8 +16,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from evaluation.colours import gamut_map_sets
-from evaluation.views import EXTREME_XYZ, OPTIMIZATION_LEVELS, apply_view
+from evaluation.views import (
+    EXTREME_XYZ,
+    OPTIMIZATION_LEVELS,
+    apply_view,
+    error_stats,
+    view_codes,
+)
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 
@@ -87,22 +92,17 @@ def _measured(cfg):
     for view, display in [(v, d) for v in MAPPED for d in HDR]:
         gamut = registry.as_display(display).gamut.name
         M = colorimetry.matrix_XYZ_to_RGB(gamut)
-        for name, XYZ in gamut_map_sets().items():
-            XYZ = XYZ * K
-            code = _apply(cfg, display, view, XYZ)
+        for name, XYZ, code in view_codes(cfg, display, view, scale=K):
             got = _decoded_XYZ(display, code)
             truth, inside = _truth(display, XYZ, view)
-            # dE2000 relative to the peak white (the HDR volume scaled back into SDR
-            # units, as the SDR tests compare relative to their white)
-            de = colorimetry.delta_E2000(truth / K, got / K)
             L, L_true = got[:, 1] * WHITE, XYZ[:, 1] * WHITE  # cd/m2
             rel = np.abs(L - L_true) / np.maximum(L_true, FLOOR)
             out[view, display, name] = dict(
-                p99=float(np.percentile(de, 99)),
-                max=float(de.max()),
+                # dE2000 relative to the peak white (the HDR volume scaled back into SDR
+                # units, as the SDR tests compare relative to their white)
+                error_stats(truth / K, got / K, inside),
                 rel_inside=float(rel[inside].max()) if inside.any() else 0.0,
                 rel_outside=float(rel[~inside].max()) if (~inside).any() else 0.0,
-                inside_max=float(de[inside].max()) if inside.any() else 0.0,
                 in_range=bool(np.all((code >= 0.0) & (code <= 1.0 + TOL))),
                 in_volume=bool(
                     np.all(got @ M.T <= K * (1 + 1e-3) + 1e-6) and np.all(got @ M.T >= -1e-6)

@@ -233,7 +233,7 @@ def test_stale_temporaries_of_dead_processes_are_removed(tmp_path):
 def device_node(tmp_path, name, minor):
     """A private character device node (1, minor) -- the null (3) or full (7) device --
     in ``tmp_path``. The tests never write to the real /dev: code that replaced a
-    device node (as the old one did, run as root) would break the machine."""
+    device node (run as root) would break the machine."""
     path = tmp_path / name
     try:
         os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, minor))
@@ -682,9 +682,13 @@ def test_signal_gives_one_line_and_128_plus_n(tmp_path, baked, signum, code):
     "argv,needles",
     [
         (["demo", "--thickness", "abc"], ["ocio-thinfilm demo:", "--thickness", "number"]),
-        (["export", "film", "--range", "0"], ["ocio-thinfilm export:", "--range", "MIN MAX"]),
+        (["export", "film", "--range", "0"], ["ocio-thinfilm export film:", "--range", "MIN MAX"]),
         (["export"], ["ocio-thinfilm export:", "TABLE", "film"]),
-        (["export", "film", "--no-such-option"], ["ocio-thinfilm export:", "--no-such-option"]),
+        (
+            ["export", "film", "--no-such-option"],
+            ["ocio-thinfilm export film:", "--no-such-option"],
+        ),
+        (["export", "nothing"], ["ocio-thinfilm export:", "nothing", "film, morpho, clip"]),
         (["bake", "--frobnicate"], ["ocio-thinfilm bake:", "--frobnicate"]),
         (["nosuch"], ["ocio-thinfilm:", "nosuch", "bake"]),
         ([], ["ocio-thinfilm:", "no command", "export"]),

@@ -283,3 +283,23 @@ def test_a_stage_package_names_every_module_it_holds(package):
     assert sorted(names) == sorted(modules)
     doc = ast.get_docstring(tree) or ""
     assert [m for m in sorted(modules) if f":mod:`.{m}`" not in doc] == []
+
+
+#: The most lines a package module may have: a longer one holds more than one topic.
+MAX_LINES = 700
+
+
+def _too_long(root: Path, limit: int = MAX_LINES) -> dict[str, int]:
+    """Modules below ``root`` with more than ``limit`` lines: relative path -> lines."""
+    lengths = {
+        str(p.relative_to(root)): len(p.read_text().splitlines()) for p in root.rglob("*.py")
+    }
+    return {name: n for name, n in sorted(lengths.items()) if n > limit}
+
+
+def test_no_package_module_is_over_700_lines(tmp_path):
+    """One topic per module: no module of the package has more than ``MAX_LINES`` lines."""
+    assert _too_long(PACKAGE) == {}
+    (tmp_path / "long.py").write_text("x = 1\n" * (MAX_LINES + 1))
+    (tmp_path / "short.py").write_text("x = 1\n" * MAX_LINES)
+    assert _too_long(tmp_path) == {"long.py": MAX_LINES + 1}

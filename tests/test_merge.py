@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours, spectral_colours
+from evaluation.views import apply_processor
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.colour import clip, colorimetry, compress
@@ -82,12 +83,6 @@ def merged(request, tmp_path_factory):
     PRINTED[request.param] = printed.getvalue()
     path = out / "config.ocio"
     return request.param, path, ocio.Config.CreateFromFile(str(path))
-
-
-def _apply(proc, px):
-    out = np.ascontiguousarray(px, np.float32).copy()
-    proc.getDefaultCPUProcessor().applyRGB(out)
-    return out
 
 
 def test_merged_validates_and_keeps_profile(merged):
@@ -216,7 +211,7 @@ def _oiiotool(cfg_path, src, space, display, view, out):
         # view with PyOpenColorIO's CPU processor, which is what oiiotool runs
         cfg = ocio.Config.CreateFromFile(str(cfg_path))
         proc = cfg.getProcessor(space, display, view, ocio.TRANSFORM_DIR_FORWARD)
-        return _apply(proc, _read_exr(src)).astype(np.float64)
+        return apply_processor(proc, _read_exr(src)).astype(np.float64)
     assert result.returncode == 0, result.stdout + result.stderr
     return _read_exr(out)
 
@@ -265,12 +260,16 @@ def test_base_views_and_spaces_unchanged(merged):
     src = dict(base.getRoles())["aces_interchange"]
     for display in base.getDisplays():
         for view in base.getViews(display):
-            a = _apply(base.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD), px)
-            b = _apply(cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD), px)
+            a = apply_processor(
+                base.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD), px
+            )
+            b = apply_processor(
+                cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD), px
+            )
             assert a.tobytes() == b.tobytes(), (display, view)
     for name in base.getColorSpaceNames():
-        a = _apply(base.getProcessor(src, name), px)
-        b = _apply(cfg.getProcessor(src, name), px)
+        a = apply_processor(base.getProcessor(src, name), px)
+        b = apply_processor(cfg.getProcessor(src, name), px)
         assert a.tobytes() == b.tobytes(), name
 
 
@@ -284,15 +283,15 @@ def _check_clip_named_transform(cfg, display, kind="Clip"):
     proc = cfg.getProcessor(nt, ocio.TRANSFORM_DIR_FORWARD)
     analytic = clip.clip_RGB if kind == "Clip" else compress.compress_RGB
     if kind == "Clip":  # in-gamut colours unchanged
-        np.testing.assert_allclose(_apply(proc, inside), inside, atol=2e-3)
+        np.testing.assert_allclose(apply_processor(proc, inside), inside, atol=2e-3)
     else:  # the compression moves those near the boundary: within its accuracy target
-        got = _apply(proc, inside).astype(np.float64)
+        got = apply_processor(proc, inside).astype(np.float64)
         dE = colorimetry.delta_E2000(
             colorimetry.RGB_to_XYZ(got, display),
             colorimetry.RGB_to_XYZ(analytic(inside, display), display),
         )
         assert dE.max() <= 1.5, dE.max()
-    out = _apply(proc, rgb).astype(np.float64)
+    out = apply_processor(proc, rgb).astype(np.float64)
     assert out.min() >= -1e-6 and out.max() <= 1.0 + 1e-4
     ref = analytic(rgb, display)
     Y = np.linalg.inv(M)[1]
@@ -304,7 +303,7 @@ def _check_clip_named_transform(cfg, display, kind="Clip"):
 def _check_table_named_transforms(cfg):
     t = np.linspace(0.0, 3.0, 601)
     px = np.repeat(t[:, None], 3, 1)
-    out = _apply(
+    out = apply_processor(
         cfg.getProcessor(
             "Thin Film Phase-Change Thickness to CIE-XYZ-D65", ocio.TRANSFORM_DIR_FORWARD
         ),
@@ -313,7 +312,7 @@ def _check_table_named_transforms(cfg):
     direct = colorimetry.film_XYZ(t * 1000.0, "phase-change")
     assert colorimetry.delta_E2000(out.astype(np.float64), direct).max() <= 0.05
     cos = np.linspace(0.0, 1.0, 101)
-    out = _apply(
+    out = apply_processor(
         cfg.getProcessor("Thin Film Morpho Iridescence to CIE-XYZ-D65", ocio.TRANSFORM_DIR_FORWARD),
         np.repeat(cos[:, None], 3, 1),
     )
@@ -340,7 +339,7 @@ def test_named_transforms_in_project_config():
 def test_thin_film_space_in_merged_config_reaches_xyz(merged):
     uri, _, cfg = merged
     t = np.linspace(0.0, 2.0, 201)
-    out = _apply(
+    out = apply_processor(
         cfg.getProcessor("Thin Film Phase-Change Thickness", "cie_xyz_d65_interchange"),
         np.repeat(t[:, None], 3, 1),
     )
@@ -373,16 +372,16 @@ def test_ocioz_gives_the_folders_output(tmp_path):
         for view in a.getViews(display):
             pa = a.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
             pb = b.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-            assert _apply(pa, px).tobytes() == _apply(pb, px).tobytes()
+            assert apply_processor(pa, px).tobytes() == apply_processor(pb, px).tobytes()
     for name in a.getNamedTransformNames():
         assert (
-            _apply(a.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
-            == _apply(b.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
+            apply_processor(a.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
+            == apply_processor(b.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD), px).tobytes()
         )
     for name in registry.THIN_FILM_SPACES:
         assert (
-            _apply(a.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
-            == _apply(b.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
+            apply_processor(a.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
+            == apply_processor(b.getProcessor(name, "CIE-XYZ-D65"), px).tobytes()
         )
 
 

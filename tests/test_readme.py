@@ -37,3 +37,40 @@ def test_readme_first_look_is_what_the_demo_prints(tmp_path, capsys):
     printed = capsys.readouterr().out.splitlines()
     assert printed[:-1] == block[:-1]
     assert printed[-1].replace(str(tmp_path / "strip.png"), "docs/soap_strip.png") == block[-1]
+
+
+def _command_lines(text: str) -> list[str]:
+    """The ``ocio-thinfilm`` command lines of the shell blocks of ``text``, joined where
+    they continue with a backslash, without comments."""
+    lines = []
+    for block in re.findall(r"```(?:sh|bash|shell)\n(.*?)```", text, flags=re.S):
+        for line in block.replace("\\\n", " ").splitlines():
+            line = re.sub(r"\s+#\s.*$", "", line).strip()
+            # a synopsis ({a,b}, [--x]) or a farm template's placeholders is not a command
+            if line.startswith("ocio-thinfilm ") and not re.search(r"[{<\[]|#\w+#", line):
+                lines.append(line)
+    return lines
+
+
+def test_the_documented_command_lines_parse():
+    """Every ``ocio-thinfilm`` command line in the README's and the docs' shell blocks is
+    one the parser takes: a known command and sub-command, only their options (running
+    them is the other tests' work)."""
+    import shlex
+
+    from ocio_thinfilm.cli import main as cli
+
+    parser = cli.build_parser()
+    pages = [README, *sorted((README.parent / "docs").glob("*.md"))]
+    commands = [c for page in pages for c in _command_lines(page.read_text())]
+    assert len(commands) > 20 and any(c.startswith("ocio-thinfilm export film") for c in commands)
+    refused = {}
+    for command in commands:
+        try:
+            _, extra = parser.parse_known_args(shlex.split(command)[1:])
+        except Exception as error:  # noqa: BLE001 -- the parser's one-line error
+            refused[command] = str(error)
+            continue
+        if extra:
+            refused[command] = f"unrecognized {extra}"
+    assert refused == {}

@@ -1,9 +1,20 @@
 """``ocio-thinfilm bake`` and ``ocio-thinfilm export``: their options and what they run.
 
+``export`` has one sub-command per thing it writes, each with only its options and its
+own ``--help``:
+
+- ``export film`` -- the thickness table of a built-in film kind, or a film of a film
+  file (``--films FILE --film KEY``);
+- ``export morpho`` -- the Morpho angle table;
+- ``export clip`` -- the constant-lightness clip of a display, a 3D LUT;
+- ``export view`` -- a display/view of the config, from one of its colour spaces;
+- ``export shader`` -- the same view as GLSL or DCTL code.
+
 Options are parsed and typed by argparse here; the library functions
 (:func:`ocio_thinfilm.export.bake.bake`, :func:`ocio_thinfilm.export.merged.bake_into`,
 :func:`ocio_thinfilm.export.files.export_lut`,
-:func:`ocio_thinfilm.export.view.export_view`) check what the values allow.
+:func:`ocio_thinfilm.export.view.export_view`,
+:func:`ocio_thinfilm.export.shader.export_shader`) check what the values allow.
 """
 
 from __future__ import annotations
@@ -15,7 +26,13 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.checks import UsageError
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import bake as bake_module
-from ocio_thinfilm.export.files import FORMATS, export_lut
+from ocio_thinfilm.export.files import (
+    DEFAULT_RANGE,
+    DEFAULT_SIZE,
+    FORMATS,
+    LUT_FORMATS,
+    export_lut,
+)
 from ocio_thinfilm.io import is_stdout
 from ocio_thinfilm.lut import clip_lut
 
@@ -28,7 +45,7 @@ _KNOB_OPTIONS = {
 }
 
 
-def _compress_knobs(args) -> dict[str, float]:
+def _compress_knobs(args: argparse.Namespace) -> dict[str, float]:
     """Return the knobs as the library's keyword arguments, checked, and warn if untested.
 
     A knob out of range is a ParameterError naming the library parameter (the command
@@ -46,14 +63,22 @@ def _compress_knobs(args) -> dict[str, float]:
     threshold, limit = compress_map.check_knobs(*given, names=(names[0], names[1]))
     note = compress_lut.untested_knobs_note(threshold, limit)
     if note is not None:
-        print(f"ocio-thinfilm {args.command}: warning: {note}", file=sys.stderr)
+        command = " ".join(w for w in (args.command, getattr(args, "subcommand", None)) if w)
+        print(f"ocio-thinfilm {command}: warning: {note}", file=sys.stderr)
     return dict(zip(names, (threshold, limit), strict=True))
 
 
-def _knobs_given(args) -> list[str]:
-    return [
-        option for option, (dest, _) in _KNOB_OPTIONS.items() if getattr(args, dest) is not None
-    ]
+def _view_knobs(args: argparse.Namespace) -> dict[str, float]:
+    """Return the knobs of ``export view|shader``, refused for views other than the compression."""
+    given = [o for o, (dest, _) in _KNOB_OPTIONS.items() if getattr(args, dest) is not None]
+    if not given:
+        return {}
+    if args.view != registry.COMPRESS_VIEW:
+        raise UsageError(
+            f"{given[0]} applies to 'export view|shader --view \"{registry.COMPRESS_VIEW}\"', "
+            f"not --view {args.view!r}"
+        )
+    return _compress_knobs(args)
 
 
 def _add_knob_options(parser: argparse.ArgumentParser, what: str) -> None:
@@ -76,7 +101,7 @@ def _add_knob_options(parser: argparse.ArgumentParser, what: str) -> None:
     )
 
 
-def _run_bake(args) -> int:
+def _run_bake(args: argparse.Namespace) -> int:
     knobs = _compress_knobs(args)
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
         # --into CONFIG (merge into a studio config) and/or an .ocioz archive
@@ -111,32 +136,79 @@ def _run_bake(args) -> int:
     return 0
 
 
-def _run_shader(args) -> int:
+def _run_table(args: argparse.Namespace) -> int:
+    """``export film``, ``export morpho``, ``export clip``: one LUT of a table or the clip."""
+    path = export_lut(
+        args.subcommand,
+        args.out,
+        fmt=args.format,
+        kind=getattr(args, "kind", None) or "phase-change",
+        display=args.display,
+        index=getattr(args, "index", None),
+        value_range=args.range,
+        size=args.size,
+        show_progress=not args.quiet,
+    )
+    print(f"wrote {path}", file=sys.stderr if is_stdout(path) else sys.stdout)
+    return 0
+
+
+def _run_film(args: argparse.Namespace) -> int:
+    """``export film``: a built-in kind's table, or with ``--films`` a film of that file."""
+    if args.films is None:
+        if args.film is not None:
+            raise UsageError(
+                f"--films FILE is missing: --film {args.film} names a film of a film file "
+                "(see docs/films.md)"
+            )
+        return _run_table(args)
+    for option, given in (
+        ("--kind", args.kind is not None),
+        ("--index", args.index is not None),
+        ("--range", args.range is not None),
+        ("--display", args.display is not None),
+    ):
+        if given:
+            raise UsageError(f"{option} does not apply to a film of --films (its file says)")
+    from ocio_thinfilm.export.film_files import export_film
+
+    for path in export_film(args.films, args.film, args.out, fmt=args.format, size=args.size):
+        print(f"wrote {path}")
+    return 0
+
+
+def _run_view(args: argparse.Namespace) -> int:
+    """``export view``: a display/view of the config as one LUT file."""
+    from ocio_thinfilm.export.view import export_view
+
+    paths = export_view(
+        args.source,
+        args.display,
+        args.view,
+        args.out,
+        fmt=args.format,
+        size=args.size,
+        value_range=args.range,
+        shaper=True if args.resolve_shaper else None,
+        **_view_knobs(args),
+    )
+    for path in paths:
+        print(f"wrote {path}")
+    return 0
+
+
+def _run_shader(args: argparse.Namespace) -> int:
     """``export shader``: the view's map as GLSL or DCTL."""
     from ocio_thinfilm.export import shader, view
 
-    for option, given in (
-        ("--kind", args.kind != "phase-change"),
-        ("--index", args.index is not None),
-        ("--range", args.range is not None),
-        ("--size", args.size is not None),
-        ("--format", args.format is not None),
-        ("--resolve-shaper", args.resolve_shaper),
-        ("--films", args.films is not None),
-        ("--film", args.film is not None),
-    ):
-        if given:
-            raise UsageError(f"{option} does not apply to 'export shader' (code, not a LUT)")
     if args.lang is None:
         raise UsageError(f"--lang is needed for 'export shader': {' or '.join(shader.LANGUAGES)}")
+    knobs = _view_knobs(args)
     source = registry.REFERENCE if args.source is None else args.source
     out = args.out
     if out is None and args.display is not None and args.view is not None:
         out = f"{view.set_name(source, args.display, args.view)}.{args.lang}"
-    threshold, limit = (
-        default if getattr(args, dest) is None else getattr(args, dest)
-        for dest, default in _KNOB_OPTIONS.values()
-    )
+    threshold, limit = (knobs.get(dest, default) for dest, default in _KNOB_OPTIONS.values())
     path = shader.export_shader(
         # without --display or --view the library refuses before it writes anything
         out if out is not None else "ocio_thinfilm_view",
@@ -151,82 +223,7 @@ def _run_shader(args) -> int:
     return 0
 
 
-def _run_export(args) -> int:
-    given = _knobs_given(args)
-    if given and (args.table not in ("view", "shader") or args.view != registry.COMPRESS_VIEW):
-        what = (
-            f"'export {args.table}'"
-            if args.table not in ("view", "shader")
-            else f"--view {args.view!r}"
-        )
-        raise UsageError(
-            f"{given[0]} applies to 'export view|shader --view \"{registry.COMPRESS_VIEW}\"', "
-            f"not {what}"
-        )
-    if args.table == "shader":
-        return _run_shader(args)
-    if args.lang is not None:
-        raise UsageError(f"--lang applies to 'export shader', not {args.table!r}")
-    if args.table == "view":
-        from ocio_thinfilm.export.view import export_view
-
-        knobs = _compress_knobs(args) if given else {}
-
-        paths = export_view(
-            args.source,
-            args.display,
-            args.view,
-            args.out,
-            fmt=args.format,
-            size=args.size,
-            value_range=args.range,
-            shaper=True if args.resolve_shaper else None,
-            **knobs,
-        )
-        for path in paths:
-            print(f"wrote {path}")
-        return 0
-    if args.resolve_shaper:
-        raise UsageError(f"--resolve-shaper applies to 'export view', not {args.table!r}")
-    if args.films is not None or args.film is not None:
-        if args.table != "film" or args.films is None:
-            raise UsageError("--films FILE (with --film KEY) goes with 'export film'")
-        for option, value in (
-            ("--kind", args.kind != "phase-change"),
-            ("--index", args.index),
-            ("--range", args.range),
-            ("--display", args.display),
-        ):
-            if value:
-                raise UsageError(f"{option} does not apply to a film of --films (its file says)")
-        from ocio_thinfilm.export.film_files import export_film
-
-        for path in export_film(args.films, args.film, args.out, fmt=args.format, size=args.size):
-            print(f"wrote {path}")
-        return 0
-    path = export_lut(
-        args.table,
-        args.out,
-        fmt=args.format,
-        kind=args.kind,
-        display=args.display,
-        index=args.index,
-        value_range=args.range,
-        size=args.size,
-        show_progress=not args.quiet,
-    )
-    print(f"wrote {path}", file=sys.stderr if is_stdout(path) else sys.stdout)
-    return 0
-
-
-def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
-    """Add the ``bake`` and ``export`` commands to the ``sub`` parsers.
-
-    Parameters
-    ----------
-    sub : argparse._SubParsersAction
-        The sub-parsers of the ``ocio-thinfilm`` parser.
-    """
+def _add_bake(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p = sub.add_parser(
         "bake",
         help="write the OpenColorIO config folder (config.ocio + luts/*.clf)",
@@ -271,106 +268,200 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_run_bake)
 
+
+def _add_lut_options(p: argparse.ArgumentParser, table: str, range_help: str) -> None:
+    """Add the options every LUT of ``export film|morpho|clip`` takes to ``p``."""
+    low, high = DEFAULT_RANGE[table]
+    p.add_argument(
+        "--range",
+        nargs=2,
+        type=float,
+        metavar=("MIN", "MAX"),
+        default=None,
+        help=f"input range: {range_help} (default {low:g} {high:g})",
+    )
+    p.add_argument(
+        "--size",
+        type=int,
+        default=None,
+        help=f"{'grid edge' if table == 'clip' else 'entries'} (default {DEFAULT_SIZE[table]})",
+    )
+    dims = 3 if table == "clip" else 1
+    p.add_argument(
+        "--format",
+        default=None,
+        help=f"{', '.join(f for f in FORMATS if dims in FORMATS[f][2])} (default: from "
+        "--out's extension, else clf)",
+    )
+    p.add_argument(
+        "--out",
+        "-o",
+        default=None,
+        help="file to write (default: a name from the options, in the current directory)",
+    )
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     e = sub.add_parser(
         "export",
-        help="write one table or clip LUT as a standalone file (CLF, .cube, .spi1d/.spi3d, .csp)",
-        description="Write one LUT with OpenColorIO's writers. Film/Morpho "
-        "tables are 1D (clf, cube, spi1d); the clip is 3D (clf, "
-        "cube, csp; spi3d only over --range 0 1). Every file "
-        "takes the value itself: its domain is in the file.",
+        help="write one table, clip LUT, view LUT or view shader as a standalone file",
+        description="Write one LUT with OpenColorIO's writers, or a view as shader code. "
+        "Every LUT takes the value itself: its domain is in the file. "
+        "'ocio-thinfilm export TABLE --help' shows each one's options.",
     )
-    e.add_argument(
-        "table",
+    kinds = e.add_subparsers(
+        dest="subcommand",
         metavar="TABLE",
-        help="film (thickness table), morpho (angle table), clip (the "
-        "constant-lightness clip), view (a display/view of the config "
-        "from --from SPACE: display code values; cube, csp, clf, ctf, "
-        "spi3d, or spi1d for thin-film inputs) or shader (the same view as "
-        "code, --lang glsl or dctl: the Constant-Lightness Clip and Compress "
-        "views computed per pixel, no LUT)",
+        required=True,
+        help="film, morpho, clip, view or shader",
     )
-    e.add_argument(
+    table_display = (
+        f"display gamut ({', '.join(registry.DISPLAYS)}): clipped display-linear RGB instead of XYZ"
+    )
+
+    f = kinds.add_parser(
+        "film",
+        help="a thin-film thickness table (1D), a built-in kind or a film of a film file",
+        description="Write the thickness table of a film kind (input: thickness in um), "
+        "or with --films FILE --film KEY a film of a film file in every 1D format and "
+        "as an EXR ramp.",
+    )
+    f.add_argument(
         "--kind",
-        default="phase-change",
-        help="film kind: phase-change (soap film) or no-phase-change",
-    )
-    e.add_argument(
-        "--display",
         default=None,
-        help=f"display gamut ({', '.join(registry.DISPLAYS)}): clip into it "
-        "(required for clip; for tables gives clipped display-linear RGB "
-        "instead of XYZ); for view any display of the config "
-        f"({', '.join(registry.HDR_DISPLAYS)} too)",
+        help="film kind: phase-change (soap film, the default) or no-phase-change",
     )
-    e.add_argument(
+    f.add_argument(
         "--index",
         type=float,
         default=None,
         help="film refractive index n: input becomes physical thickness t "
         "(t' = n t, normal incidence)",
     )
-    e.add_argument(
+    f.add_argument("--display", default=None, help=table_display)
+    _add_lut_options(f, "film", "thickness in um")
+    f.add_argument(
+        "--films",
+        default=None,
+        metavar="FILE",
+        help="a film file (TOML, see docs/films.md); with --film KEY writes that "
+        "film's table in every 1D format (clf, cube, spi1d) and as an EXR ramp "
+        "(thickness along x) into --out DIR, or one of them to --out FILE",
+    )
+    f.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
+    f.set_defaults(func=_run_film)
+
+    m = kinds.add_parser(
+        "morpho",
+        help="the Morpho angle table (1D, input cos theta)",
+        description="Write the Morpho butterfly's angle table (input: cos theta).",
+    )
+    m.add_argument("--display", default=None, help=table_display)
+    _add_lut_options(m, "morpho", "cos(theta)")
+    m.set_defaults(func=_run_table)
+
+    c = kinds.add_parser(
+        "clip",
+        help="the constant-lightness clip into a display gamut (3D)",
+        description="Write the constant-lightness clip of display-linear RGB into a "
+        "display's gamut as a 3D LUT (clf, cube, csp; spi3d only over --range 0 1).",
+    )
+    c.add_argument(
+        "--display",
+        default=None,
+        help=f"display gamut to clip into ({', '.join(registry.DISPLAYS)}); required",
+    )
+    _add_lut_options(c, "clip", "display-linear RGB per channel")
+    c.set_defaults(func=_run_table)
+
+    v = kinds.add_parser(
+        "view",
+        help="a display/view of the config as one LUT (display code values)",
+        description="Write a display/view of the config, from one of its colour spaces, "
+        "as one LUT: display code values out.",
+    )
+    _add_view_options(v)
+    v.add_argument(
+        "--format",
+        default=None,
+        help=f"{', '.join(LUT_FORMATS)}; spi1d only for thin-film inputs (default: from "
+        "--out's extension)",
+    )
+    v.add_argument("--size", type=int, default=None, help="entries (1D) or grid edge (3D)")
+    v.add_argument(
         "--range",
         nargs=2,
         type=float,
         metavar=("MIN", "MAX"),
         default=None,
-        help="input range: thickness in um (film, default 0 1.5), cos(theta) "
-        "(morpho, default 0 1), display-linear RGB per channel (clip, "
-        "default -0.5 1.5)",
+        help="thin-film inputs: the input range (thickness in um, cos(theta))",
     )
-    e.add_argument(
-        "--size",
-        type=int,
+    v.add_argument(
+        "--resolve-shaper",
+        action="store_true",
+        help=".cube: DaVinci Resolve's form, a 1D shaper and the 3D LUT in "
+        "one file (most other readers ignore the shaper); the default for "
+        "ACEScct input is a plain 3D LUT over 0..1 that every reader applies "
+        "alike",
+    )
+    _add_knob_options(v, "the view")
+    v.set_defaults(func=_run_view)
+
+    s = kinds.add_parser(
+        "shader",
+        help="a display/view as GLSL or DCTL code (the Clip and Compress views, no LUT)",
+        description="Write the Constant-Lightness Clip or Compress view (input decoding, "
+        "the map, the display encoding) as GLSL or a DaVinci Resolve DCTL, computed per "
+        "pixel: no LUT.",
+    )
+    s.add_argument(
+        "--lang",
         default=None,
-        help="entries (1D) or grid edge (3D); defaults 4096 / 1024 / 33",
+        metavar="LANG",
+        help="glsl (a function vec3 ocio_thinfilm_view(vec3), GLSL 3.30 / ES "
+        "3.00) or dctl (a DaVinci Resolve transform DCTL)",
     )
-    e.add_argument(
-        "--format",
+    _add_view_options(s, default_source=registry.REFERENCE)
+    _add_knob_options(s, "the code's defaults (GLSL uniforms, DCTL sliders)")
+    s.set_defaults(func=_run_shader)
+
+
+def _add_view_options(p: argparse.ArgumentParser, default_source: str | None = None) -> None:
+    """Add ``--from``, ``--display``, ``--view`` and ``--out`` of ``export view|shader``."""
+    p.add_argument(
+        "--from",
+        dest="source",
         default=None,
-        help=f"{', '.join(FORMATS)} (default: from --out's extension, else clf)",
+        metavar="SPACE",
+        help="input colour space of the config (e.g. ACEScct, ACEScg, "
+        "'Linear Rec.709 (sRGB)', a thin-film space)"
+        + (f"; default {default_source}" if default_source else ""),
     )
-    e.add_argument(
+    p.add_argument(
+        "--display",
+        default=None,
+        help=f"any display of the config ({', '.join(registry.DISPLAYS)}, "
+        f"{', '.join(registry.HDR_DISPLAYS)})",
+    )
+    p.add_argument(
+        "--view", default=None, help="the display's view (e.g. 'Constant-Lightness Clip')"
+    )
+    p.add_argument(
         "--out",
         "-o",
         default=None,
         help="file to write (default: a name from the options, in the current directory)",
     )
-    e.add_argument(
-        "--from",
-        dest="source",
-        default=None,
-        metavar="SPACE",
-        help="view: input colour space of the config (e.g. ACEScct, ACEScg, "
-        "'Linear Rec.709 (sRGB)', a thin-film space)",
-    )
-    e.add_argument(
-        "--view", default=None, help="view: the display's view (e.g. 'Constant-Lightness Clip')"
-    )
-    e.add_argument(
-        "--resolve-shaper",
-        action="store_true",
-        help="view, .cube: DaVinci Resolve's form, a 1D shaper and the 3D LUT in "
-        "one file (most other readers ignore the shaper); the default for "
-        "ACEScct input is a plain 3D LUT over 0..1 that every reader applies "
-        "alike",
-    )
-    e.add_argument(
-        "--films",
-        default=None,
-        metavar="FILE",
-        help="film: a film file (TOML, see docs/films.md); with --film KEY writes that "
-        "film's table in every 1D format (clf, cube, spi1d) and as an EXR ramp "
-        "(thickness along x) into --out DIR, or one of them to --out FILE",
-    )
-    e.add_argument("--film", default=None, metavar="KEY", help="film: the film of --films")
-    e.add_argument(
-        "--lang",
-        default=None,
-        metavar="LANG",
-        help="shader: glsl (a function vec3 ocio_thinfilm_view(vec3), GLSL 3.30 / ES "
-        "3.00) or dctl (a DaVinci Resolve transform DCTL)",
-    )
-    _add_knob_options(e, "view and shader (there: the knobs' defaults)")
-    e.add_argument("--quiet", action="store_true", help="no progress bar")
-    e.set_defaults(func=_run_export)
+
+
+def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Add the ``bake`` and ``export`` commands to the ``sub`` parsers.
+
+    Parameters
+    ----------
+    sub : argparse._SubParsersAction
+        The sub-parsers of the ``ocio-thinfilm`` parser.
+    """
+    _add_bake(sub)
+    _add_export(sub)

@@ -6,7 +6,10 @@ command keeps:
 
 - **Errors** are one line on stderr, ``ocio-thinfilm <command>: error: <message>``,
   naming the option and what it allows, and exit code 2 (argparse's usage block is
-  folded into that line: the message ends with where to find ``--help``).
+  folded into that line: the message ends with where to find ``--help``). A command
+  with sub-commands is named by both words (``ocio-thinfilm export view: error: ...``),
+  its sub-parsers raise the same one-line errors, and an option the sub-command does
+  not take is ``unrecognized arguments: --option ...``.
 - **Signals.** SIGINT (Ctrl-C), SIGTERM and SIGHUP, at any moment, print
   ``ocio-thinfilm <command>: interrupted`` (``... interrupted by SIGTERM``) and exit
   with 128 + the signal number (130, 143, 129); every output is then either the old
@@ -116,6 +119,7 @@ def _parser_class():
 
 def _explain(parser, message: str) -> str:
     """Return argparse's message, made to say what is allowed and where the help is."""
+    import argparse
     import re
 
     m = re.match(r"argument (\S+?)(?:/\S+)?: invalid (float|int) value: (.*)", message)
@@ -130,6 +134,12 @@ def _explain(parser, message: str) -> str:
     m = re.match(r"argument (\S+): invalid choice: (\S+) \(choose from (.*)\)", message)
     if m and m.group(1) in ("COMMAND", "command"):
         message = f"unknown command {m.group(2)}; choose from {m.group(3).replace(chr(39), '')}"
+    elif m and any(  # a command's own sub-command (export TABLE)
+        a.metavar == m.group(1) and a.nargs == argparse.PARSER for a in parser._actions
+    ):
+        message = (
+            f"unknown {m.group(1)} {m.group(2)}; choose from {m.group(3).replace(chr(39), '')}"
+        )
     m = re.match(r"the following arguments are required: (.*)", message)
     if m:
         for action in parser._actions:
@@ -187,8 +197,13 @@ def _option_message(parser, command, error) -> str:
     The option of ``command`` for the parameter (``value_range`` -> ``--range``); the
     parameter's own name when the command has no such option.
     """
-    sub = parser._subparsers._group_actions[0].choices.get(command) if command else None
-    dest = PARAMETER_DEST.get(command, {}).get(error.parameter) or PARAMETER_DEST[None].get(
+    sub = parser
+    for word in command.split() if command else ():
+        sub = sub._subparsers._group_actions[0].choices.get(word) if sub._subparsers else None
+        if sub is None:
+            break
+    first = command.split()[0] if command else None
+    dest = PARAMETER_DEST.get(first, {}).get(error.parameter) or PARAMETER_DEST[None].get(
         error.parameter, error.parameter
     )
     for action in sub._actions if sub is not None else ():
@@ -283,7 +298,9 @@ def _main(argv, set_command) -> int:
     parser = build_parser()
     try:
         args, extra = parser.parse_known_args(argv)
-        command = getattr(args, "command", None)
+        # a command with sub-commands (export view) is named by both words
+        words = (getattr(args, "command", None), getattr(args, "subcommand", None))
+        command = " ".join(w for w in words if w) or None
         set_command(command)
         if extra:
             prog = PROG if command is None else f"{PROG} {command}"

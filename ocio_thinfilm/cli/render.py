@@ -227,7 +227,7 @@ def _user_film(args, names):
     from ocio_thinfilm.lut import film_tables
 
     chosen = pick_film(films_file, key)
-    table = film_tables.film_table(chosen)
+    table = film_tables.user_film_table(chosen)
     spec = scene_module.TableSpec("user", chosen.range_um, table.size, chosen.name)
     return spec, {chosen.name: table.transform()}
 

@@ -859,7 +859,7 @@ def film_parts(
     Each :class:`~ocio_thinfilm.physics.films.Film` gives an input colour space named
     ``film.name`` (pixel value = physical thickness of its varying layer in um, all
     channels equal -> CIE-XYZ-D65 through its table,
-    :func:`ocio_thinfilm.lut.film_tables.film_table`), the named transform
+    :func:`ocio_thinfilm.lut.film_tables.user_film_table`), the named transform
     ``TABLE_NAMED_TRANSFORM`` of it and its CLF file.
 
     Parameters
@@ -881,16 +881,25 @@ def film_parts(
     luts : dict
         CLF file name -> GroupTransform.
     """
+    from ocio_thinfilm.checks import ParameterError
     from ocio_thinfilm.physics.films import check_names
 
     films = list(films)
     check_names(films, taken)
     stems = [film_lut_stem(f) for f in films]
-    if len(set(s.casefold() for s in stems)) != len(stems):
-        raise ValueError(f"films: keys give clashing LUT file names: {stems}")
+    first: dict[str, Any] = {}
+    for film, stem in zip(films, stems, strict=True):
+        other = first.setdefault(stem.casefold(), film)
+        if other is not film:
+            raise ParameterError(
+                "films",
+                f" {film.source}: the films {other.key!r} and {film.key!r} would share the "
+                f"LUT file {named_lut(stem)} (every character of a key but letters, digits and "
+                "_ becomes _): rename one",
+            )
     spaces, named, luts = [], [], {}
     for film, stem in zip(films, stems, strict=True):
-        table = film_tables.film_table(film)
+        table = film_tables.user_film_table(film)
         filename = named_lut(stem)
         luts[filename] = table.transform()
         lo, hi = film.range_um

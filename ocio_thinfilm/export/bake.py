@@ -9,7 +9,7 @@ directories it owns
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -18,15 +18,16 @@ from ocio_thinfilm.checks import ParameterError, as_count
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import view as export_view
-from ocio_thinfilm.export.files import FORMATS, lut_contents, progress_bar, write_lut
+from ocio_thinfilm.export.files import CLF_WRITER, FORMATS, lut_contents, progress_bar, write_lut
 from ocio_thinfilm.io import StrPath, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut, tables
 
 __all__ = [
     "DEFAULT_CONFIG_DIR",
-    "DEFAULT_LUTS_DIR",
     "CLIP_SIZES",
     "check_clip_size",
+    "write_luts",
+    "write_checked_config",
     "write_config",
     "export_set",
     "EXPORT_SET_VIEWS",
@@ -35,7 +36,6 @@ __all__ = [
 ]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
-DEFAULT_LUTS_DIR = "luts"
 #: Edge lengths the clip LUTs may have.
 CLIP_SIZES = (9, 129)
 
@@ -76,6 +76,66 @@ def check_clip_size(clip_size: int) -> int:
 def _check_staged_clfs(directory, final):
     for path in sorted(Path(directory).rglob("*.clf")):
         check_xml(path, Path(final) / path.relative_to(directory))
+
+
+def write_luts(
+    directory: StrPath,
+    luts: Mapping[str, Any],
+    progress: Callable[[str], object] | None = None,
+) -> None:
+    """Write a config's LUTs as CLF files into its LUT folder.
+
+    Parameters
+    ----------
+    directory : str or os.PathLike
+        The config's directory; the files go to its :data:`ocio_thinfilm.config.LUT_DIRECTORY`
+        (made if missing).
+    luts : mapping
+        File name -> the OpenColorIO transform (a ``GroupTransform``) the file holds.
+    progress : callable, optional
+        ``progress(file_name)``, called once per file written.
+    """
+    import PyOpenColorIO as ocio
+
+    folder = Path(directory) / config.LUT_DIRECTORY
+    folder.mkdir(parents=True, exist_ok=True)
+    raw = ocio.Config.CreateRaw()
+    for filename, transform in sorted(luts.items()):
+        transform.write(CLF_WRITER, str(folder / filename), raw)
+        if progress:
+            progress(filename)
+
+
+def write_checked_config(cfg: Any, directory: StrPath, processors: Iterable[Sequence[Any]]) -> Path:
+    """Validate ``cfg``, build its ``processors`` and write it as ``directory/config.ocio``.
+
+    Parameters
+    ----------
+    cfg : PyOpenColorIO.Config
+        The config; its LUTs already written (:func:`write_luts`).
+    directory : str or os.PathLike
+        The config's directory.
+    processors : iterable of sequences
+        Arguments of ``cfg.getProcessor`` to build before anything is written: each
+        builds only if its FileTransforms resolve.
+
+    Returns
+    -------
+    pathlib.Path
+        ``directory / "config.ocio"``, ending with a newline.
+
+    Raises
+    ------
+    PyOpenColorIO.Exception
+        If the config does not validate or a processor cannot be built.
+    """
+    cfg.validate()
+    for arguments in processors:
+        cfg.getProcessor(*arguments)
+    path = Path(directory) / "config.ocio"
+    text = cfg.serialize()
+    path.write_text(text if text.endswith("\n") else text + "\n")
+    return path
 
 
 def write_config(
@@ -145,25 +205,16 @@ def write_config(
         compress_threshold=compress_threshold,
         compress_limit=compress_limit,
     )
-    (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
-    raw = ocio.Config.CreateRaw()
-    for filename, transform in sorted(data.luts.items()):
-        transform.write(
-            "Academy/ASC Common LUT Format", str(directory / config.LUT_DIRECTORY / filename), raw
-        )
-        if progress:
-            progress(filename)
+    write_luts(directory, data.luts, progress)
     cfg = config.generate_config(data, validate=False, working_dir=directory)
-    cfg.validate()
-    # Check that every FileTransform resolves and every processor builds.
-    for display in cfg.getDisplays():
-        for view in cfg.getViews(display):
-            cfg.getProcessor("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
-    for name in cfg.getColorSpaceNames():
-        cfg.getProcessor(name, "CIE-XYZ-D65")
-    path = directory / "config.ocio"
-    text = cfg.serialize()
-    path.write_text(text if text.endswith("\n") else text + "\n")
+    # every FileTransform resolves and every processor builds
+    views = [
+        ("CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD)
+        for display in cfg.getDisplays()
+        for view in cfg.getViews(display)
+    ]
+    spaces = [(name, "CIE-XYZ-D65") for name in cfg.getColorSpaceNames()]
+    path = write_checked_config(cfg, directory, [*views, *spaces])
     if progress:
         progress("config.ocio")
     return path
@@ -311,7 +362,7 @@ def bake(
         from ocio_thinfilm.lut import film_tables
 
         for film in film_list:
-            film_tables.film_table(film)
+            film_tables.user_film_table(film)
     claim = claim_directory(out, parameter="out", last=("config.ocio",))
     luts_claim = None
     if luts is not None:

@@ -52,6 +52,8 @@ if TYPE_CHECKING:
     from tqdm import tqdm
 
 __all__ = [
+    "CLF_WRITER",
+    "LUT_FORMATS",
     "FORMATS",
     "TABLES",
     "DEFAULT_SIZE",
@@ -62,14 +64,21 @@ __all__ = [
     "progress_bar",
 ]
 
-#: Format name -> (OCIO writer format, file extension, LUT dimensions it can hold).
-FORMATS = {
-    "clf": ("Academy/ASC Common LUT Format", "clf", (1, 3)),
+#: OpenColorIO's name of its CLF writer (``GroupTransform.write``, ``Baker.setFormat``).
+CLF_WRITER = "Academy/ASC Common LUT Format"
+#: Every LUT file format the package writes: name (= extension) -> (OCIO writer format,
+#: file extension, LUT dimensions it can hold).
+LUT_FORMATS = {
+    "clf": (CLF_WRITER, "clf", (1, 3)),
+    "ctf": ("Color Transform Format", "ctf", (1, 3)),
     "cube": ("resolve_cube", "cube", (1, 3)),
     "spi1d": ("spi1d", "spi1d", (1,)),
     "spi3d": ("spi3d", "spi3d", (3,)),
     "csp": ("cinespace", "csp", (3,)),
 }
+#: The formats of the tables and the clip (``export film|morpho|clip``, ``bake --luts``):
+#: all but CTF, OpenColorIO's own superset of CLF, which only whole views are written in.
+FORMATS = {name: spec for name, spec in LUT_FORMATS.items() if name != "ctf"}
 TABLES = ("film", "morpho", "clip")
 #: Formats with no way to state their input domain: only usable over exactly [0, 1].
 NO_DOMAIN = ("spi3d",)

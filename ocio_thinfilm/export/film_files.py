@@ -1,6 +1,6 @@
 """``ocio-thinfilm export film --films FILE --film KEY``: a user's film as standalone files.
 
-:func:`export_film` writes a film's table (:func:`ocio_thinfilm.lut.film_tables.film_table`,
+:func:`export_film` writes a film's table (:func:`ocio_thinfilm.lut.film_tables.user_film_table`,
 pixel value = physical thickness of its varying layer in micrometres) in every 1D LUT
 format with its domain in the file (CLF: a range matrix before the Lut1D; ``.cube``:
 ``LUT_1D_INPUT_RANGE``; ``.spi1d``: ``From lo hi``; OCIO's writers,
@@ -90,7 +90,7 @@ def film_contents(film: Any, size: int | None = None) -> tuple[np.ndarray, Any, 
     meta : dict
         Name, input and output descriptions, range, size and CLF id.
     """
-    table = film_tables.film_table(film, size)
+    table = film_tables.user_film_table(film, size)
     lo, hi = film.range_um
     stem = film_lut_stem(film)
     meta = dict(

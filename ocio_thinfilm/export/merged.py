@@ -22,7 +22,7 @@ from ocio_thinfilm import config
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config import merge
-from ocio_thinfilm.export.bake import load_films, write_config
+from ocio_thinfilm.export.bake import load_films, write_checked_config, write_config, write_luts
 from ocio_thinfilm.io import StrPath, atomic_directory, atomic_file, check_writable
 from ocio_thinfilm.lut import clip_lut, ocio_ops
 
@@ -109,28 +109,16 @@ def write_merged(
     )
     directory = Path(directory)
     _copy_base_files(base, source, directory)
-    (directory / config.LUT_DIRECTORY).mkdir(parents=True, exist_ok=True)
-    raw = ocio.Config.CreateRaw()
-    for filename, transform in sorted(luts.items()):
-        transform.write(
-            "Academy/ASC Common LUT Format", str(directory / config.LUT_DIRECTORY / filename), raw
-        )
+    write_luts(directory, luts)
     cfg.setWorkingDir(str(directory))
-    cfg.validate()
-    for display in matches:
-        for view in cfg.getViews(display):
-            cfg.getProcessor(
-                dict(cfg.getRoles())["cie_xyz_d65_interchange"],
-                display,
-                view,
-                ocio.TRANSFORM_DIR_FORWARD,
-            )
-    for name in cfg.getNamedTransformNames():
-        cfg.getProcessor(name, ocio.TRANSFORM_DIR_FORWARD)
-    path = directory / "config.ocio"
-    text = cfg.serialize()
-    path.write_text(text if text.endswith("\n") else text + "\n")
-    return path, matches
+    interchange = dict(cfg.getRoles())["cie_xyz_d65_interchange"]
+    views = [
+        (interchange, display, view, ocio.TRANSFORM_DIR_FORWARD)
+        for display in matches
+        for view in cfg.getViews(display)
+    ]
+    named = [(name, ocio.TRANSFORM_DIR_FORWARD) for name in cfg.getNamedTransformNames()]
+    return write_checked_config(cfg, directory, [*views, *named]), matches
 
 
 def write_archive(config_path: StrPath, out: StrPath) -> Path:

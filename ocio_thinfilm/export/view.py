@@ -68,9 +68,6 @@ shadows and leaves cells near white about 0.27 stops wide. Measured for ACEScct 
 sRGB, Constant-Lightness Clip, 65^3, on object colours inside AP1 (ΔE2000
 p99 / max, tetrahedral): plain ACEScct grid 4.1 / 8.8; an affine sub-range of ACEScct
 2.1 / 5.2; the square-root shaper 0.6 / 2.0 (see ``tests/test_export_view.py``).
-
-Public functions: :func:`export_view`, :func:`view_config`, :func:`shaper_domain`,
-:data:`VIEW_FORMATS`.
 """
 
 from __future__ import annotations
@@ -88,6 +85,7 @@ from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.data import KNOB_NAMES
 from ocio_thinfilm.export import view_fit
+from ocio_thinfilm.export.files import LUT_FORMATS
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable, write_text
 from ocio_thinfilm.lut import ocio_ops, storage
 
@@ -100,15 +98,9 @@ __all__ = [
     "export_view",
 ]
 
-#: Format -> OCIO writer name. ``.spi1d`` only for the 1D (thin-film) inputs.
-VIEW_FORMATS = {
-    "clf": "Academy/ASC Common LUT Format",
-    "ctf": "Color Transform Format",
-    "cube": "resolve_cube",
-    "csp": "cinespace",
-    "spi3d": "spi3d",
-    "spi1d": "spi1d",
-}
+#: Format -> OCIO writer name: every format of :data:`~ocio_thinfilm.export.files.LUT_FORMATS`
+#: (``.spi1d`` only for the 1D, thin-film, inputs).
+VIEW_FORMATS = {name: spec[0] for name, spec in LUT_FORMATS.items()}
 DEFAULT_VIEW_SIZE = 65
 MAX_VIEW_SIZE = 129
 #: Entries of the shaper (.cube 1D part, .csp prelut knots, companion .spi1d).

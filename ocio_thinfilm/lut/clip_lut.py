@@ -48,7 +48,7 @@ This module holds the LUTs and their OCIO transforms; where the nodes go is
   :func:`xyY_inverse_transform`, :func:`working_decoding_transform` -- the chain's
   analytic ops.
 
-Accuracy against the analytic clip, size, load time, speed and the rejected designs:
+Accuracy against the analytic clip, size, load time, speed and why the layout is so:
 ``benchmarks/bench_gamut_map.py``, ``benchmarks/bench_clip_size.py``,
 ``benchmarks/bench_load.py`` and docs/gamut_map.md.
 """

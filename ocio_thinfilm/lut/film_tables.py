@@ -1,6 +1,6 @@
 """Tables of the films a user describes (:mod:`ocio_thinfilm.physics.films`).
 
-:func:`film_table` turns a :class:`~ocio_thinfilm.physics.films.Film` into a
+:func:`user_film_table` turns a :class:`~ocio_thinfilm.physics.films.Film` into a
 :class:`~ocio_thinfilm.lut.tables.Table1D`: pixel value = physical thickness of the
 film's varying layer in micrometres (all channels equal), nodes uniform over the film's
 ``range_um`` (the LUT's clamp holds the end colours outside it), values CIE XYZ (D65,
@@ -22,7 +22,14 @@ from ocio_thinfilm.lut.tables import Table1D
 from ocio_thinfilm.physics import films as films_module
 from ocio_thinfilm.physics.films import Film
 
-__all__ = ["MIN_SIZE", "MAX_SIZE", "NODES_PER_FRINGE", "default_size", "film_XYZ", "film_table"]
+__all__ = [
+    "MIN_SIZE",
+    "MAX_SIZE",
+    "NODES_PER_FRINGE",
+    "default_size",
+    "film_XYZ",
+    "user_film_table",
+]
 
 #: Bounds of the default table size, and nodes per shortest interference fringe.
 MIN_SIZE = 1024
@@ -98,7 +105,7 @@ def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
 
 
 @cache.memoize(maxsize=32)
-def _film_table(film: Film, size: int) -> Table1D:
+def _user_film_table(film: Film, size: int) -> Table1D:
     lo, hi = film.range_um
     nodes = np.linspace(lo, hi, size)
     values = film_XYZ(film, nodes)
@@ -135,7 +142,7 @@ def _film_table(film: Film, size: int) -> Table1D:
     )
 
 
-def film_table(film: Film, size: int | None = None) -> Table1D:
+def user_film_table(film: Film, size: int | None = None) -> Table1D:
     r"""Return the 1D table of a user's film: physical thickness (um) -> CIE XYZ.
 
     Parameters
@@ -164,9 +171,9 @@ def film_table(film: Film, size: int | None = None) -> Table1D:
 
     >>> from ocio_thinfilm.physics.films import parse_films
     >>> soap = parse_films('[films.S]\nstack = ["air", "soap film", "air"]')["S"]
-    >>> table = film_table(soap)
+    >>> table = user_film_table(soap)
     >>> table.lookup(0.0).round(6).tolist()
     [0.0, 0.0, 0.0]
     """
     size = default_size(film) if size is None else as_count("size", size, 2, 1 << 20)
-    return _film_table(film, size)
+    return _user_film_table(film, size)

@@ -5,5 +5,8 @@
 - :mod:`.exact` -- exact optics used as references: the Airy sum with Fresnel
   amplitudes, transfer matrices;
 - :mod:`.sampling` -- wavelength grids, argument checks and the band-limited
-  integration every model shares.
+  integration every model shares;
+- :mod:`.materials` -- optical constants n + ik of real materials (a package: the model,
+  its readers and the built-in library, one module each);
+- :mod:`.films` -- users' film files (TOML): stacks of those materials.
 """

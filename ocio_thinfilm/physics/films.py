@@ -297,6 +297,10 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     unknown = sorted(set(table) - set(_FILM_KEYS))
     if unknown:
         raise where.error(unknown[0], f"unknown key; allowed: {', '.join(_FILM_KEYS)}")
+    if "stack" not in table:
+        raise where.error(
+            "stack", "the key is missing: list the incident medium, layer(s) and substrate"
+        )
     stack_names = table.get("stack")
     if (
         not isinstance(stack_names, list)

@@ -40,7 +40,6 @@ __all__ = [
     "ConfigProcessors",
     "make_lookup",
     "display_image",
-    "build_table",
 ]
 
 #: The baked config a wheel carries as package data (setup.py copies the checkout's
@@ -69,7 +68,6 @@ def _checkout_config() -> Path | None:
 #: (baked with ``ocio-thinfilm bake`` first when it is missing), else
 #: :data:`PACKAGE_CONFIG`. Nothing is ever written beside the installed code.
 DEFAULT_CONFIG = _checkout_config() or PACKAGE_CONFIG
-#: The config's reference, the EXR's colour space: tables go to it, views start at it.
 
 
 def table_colorspace(spec: TableSpec) -> str:
@@ -354,41 +352,6 @@ def _apply(cpu, pixels) -> np.ndarray:
     if flat.size:
         cpu.applyRGB(flat)
     return flat.reshape(out.shape)
-
-
-def build_table(spec: TableSpec) -> tables.Table1D:
-    """Return the tables-module table for a scene's :class:`~.scenes.TableSpec`.
-
-    Computed here, not read from a config: for comparisons with what the config holds.
-
-    Parameters
-    ----------
-    spec : ocio_thinfilm.render.scenes.TableSpec
-        The table a scene declares.
-
-    Returns
-    -------
-    ocio_thinfilm.lut.tables.Table1D
-        :func:`~ocio_thinfilm.lut.tables.morpho_table` or
-        :func:`~ocio_thinfilm.lut.tables.film_table` with the spec's entries (and, for
-        a film, its upper thickness).
-
-    Raises
-    ------
-    ValueError
-        If a Morpho spec's range is not [0, 1] or a thickness spec's does not start
-        at 0 (or the tables module refuses the entries or range).
-    """
-    lo, hi = spec.range
-    if spec.kind == "user":
-        raise ValueError(f"a user's film ({spec.space!r}): its table is the film file's")
-    if spec.kind == "morpho":
-        if (lo, hi) != (0.0, 1.0):
-            raise ValueError(f"the Morpho table covers cos(theta) in [0, 1], got {spec.range}")
-        return tables.morpho_table(spec.entries)
-    if lo != 0.0:
-        raise ValueError(f"thickness tables start at t' = 0, got {spec.range}")
-    return tables.film_table(spec.kind, spec.entries, max_thickness_um=hi)
 
 
 def _as_rgb(values: np.ndarray) -> np.ndarray:
