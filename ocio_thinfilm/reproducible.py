@@ -19,25 +19,26 @@ either way, a matrix coefficient that is zero in exact arithmetic prints as
 So the package
 
 - multiplies matrices with :func:`matmul` (a fixed order of elementwise operations, no
-  BLAS) and inverts 3x3 matrices with :func:`inv3` (the adjugate: no LAPACK);
-- rounds every matrix and table of order 1 that comes from colour-science or LAPACK
-  (primary matrices, chromatic adaptation, the interpolated colour matching functions
-  and illuminants) to :func:`canonical`: multiples of 2^-32, about 2.3e-10, far below
-  float32's 6e-8 (the precision OCIO and the GPU apply matrices with) and far above the
-  1e-15 that CPUs disagree by; values that are zero in exact arithmetic become exactly 0;
+  BLAS) and inverts 3x3 matrices with :func:`inv3` (the adjugate: no LAPACK); the
+  colour spaces' matrices are computed that way from colour-science's primaries and
+  whites (:mod:`ocio_thinfilm.colour.colorimetry`), not by its BLAS-based functions;
+- rounds the tables of order 1 that colour-science interpolates with BLAS (the colour
+  matching functions and illuminants at the package's wavelengths) to
+  :func:`canonical`: 32 significant bits, a relative 2.3e-10, far below what colorimetry
+  resolves and far above the 2e-15 that CPUs disagree by there; values that are zero
+  in exact arithmetic become exactly 0;
 - rounds values to :func:`snap` (36 significant bits) before it quantises them, so a
   value that lies on a rounding boundary in exact arithmetic rounds the same way
   everywhere.
 
-A value moved by 2e-15 (colour-science's interpolated colour matching functions
-differ by that between OpenBLAS kernels) crosses a boundary of :func:`canonical` with
-probability about 2e-5, and one of :func:`snap` at a place that changes a 16-bit code
-with probability below 1e-9. ``tests/test_reproducible.py`` regenerates the files
-under other BLAS kernels and SIMD levels and compares their bytes.
+A value moved by 2e-15 crosses a boundary of :func:`canonical` with probability about
+2e-5, and one of :func:`snap` at a place that changes a 16-bit code with probability
+below 1e-9. ``tests/test_reproducible.py`` regenerates the files under other BLAS kernels
+and SIMD levels and compares their bytes.
 
 - :func:`matmul` -- ``a @ b`` in a fixed order, no BLAS;
 - :func:`inv3` -- the inverse of 3x3 matrices by the adjugate, no LAPACK;
-- :func:`canonical` -- values of order 1 rounded to multiples of 2^-32;
+- :func:`canonical` -- a table rounded to 32 significant bits, tiny values to 0;
 - :func:`snap` -- values rounded to 36 significant bits.
 """
 
@@ -46,10 +47,10 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["MATRIX_QUANTUM_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap"]
+__all__ = ["TABLE_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap"]
 
-#: Matrices are rounded to multiples of 2^-MATRIX_QUANTUM_BITS (:func:`canonical`).
-MATRIX_QUANTUM_BITS = 32
+#: Tables are rounded to this many significant bits (:func:`canonical`).
+TABLE_BITS = 32
 #: Values are rounded to this many significant bits before quantisation (:func:`snap`).
 SNAP_BITS = 36
 
@@ -129,18 +130,17 @@ def inv3(M: npt.ArrayLike) -> np.ndarray:
     return np.swapaxes(cof, -1, -2) / det[..., None, None]
 
 
-def canonical(M: npt.ArrayLike) -> np.ndarray:
-    """Round values of order 1 to multiples of 2^-32 (:data:`MATRIX_QUANTUM_BITS`).
+def canonical(values: npt.ArrayLike) -> np.ndarray:
+    """Round a table computed with BLAS to 32 significant bits, and tiny values to 0.
 
-    For matrices and tables computed with BLAS or LAPACK (colour-science's primary
-    matrices, chromatic adaptation and interpolation): the last-bit differences between
-    CPUs vanish, values that are zero in exact arithmetic become exactly 0, and what is
-    left (2.3e-10) lies far below the float32 precision they are applied with.
+    For colour-science's interpolated colour matching functions and illuminants: the
+    last-bit differences between CPUs (2e-15 there) vanish, values below 2^-40 (1e-12:
+    interpolation noise around exact zeros, 1e-22 and either sign) become exactly 0,
+    and what is left (a relative 2.3e-10) lies far below what colorimetry resolves.
 
     Parameters
     ----------
-    M : array_like
-        Finite values of magnitude below 2^20.
+    values : array_like
 
     Returns
     -------
@@ -149,11 +149,11 @@ def canonical(M: npt.ArrayLike) -> np.ndarray:
 
     Examples
     --------
-    >>> canonical([[1.0 + 1e-15, -3.9e-17], [0.1, 2.0]]).tolist()
-    [[1.0, 0.0], [0.10000000009313226, 2.0]]
+    >>> canonical([1.0524667000000003, 1.0524666999999983, -8.5e-22]).tolist()
+    [1.0524667000000003, 1.0524667000000003, 0.0]
     """
-    scale = 2.0**MATRIX_QUANTUM_BITS
-    return np.round(np.asarray(M, dtype=np.float64) * scale) / scale + 0.0
+    a = snap(values, TABLE_BITS)
+    return np.where(np.abs(a) < 2.0**-40, 0.0, a) + 0.0
 
 
 def snap(values: npt.ArrayLike, bits: int = SNAP_BITS) -> np.ndarray:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.physics import exact, sampling, spectra
 
@@ -331,3 +332,20 @@ def test_morpho_colour_is_blue_and_matches_colour(colour):
         np.testing.assert_allclose(got[i], colour_XYZ(colour, R, wl), atol=2e-5)
     xy = colour.XYZ_to_xy(got[0])
     assert xy[0] < 0.2 and xy[1] < 0.15
+
+
+@pytest.mark.parametrize("space", sorted(registry.RGB_COLORIMETRY))
+def test_matrices_are_colour_sciences(space):
+    # computed without BLAS or LAPACK (the same bits on every CPU): colour-science's
+    # normalised primary matrix and Bradford adaptation, to rounding
+    import colour
+
+    cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[space]]
+    reference = np.linalg.inv(colour.normalised_primary_matrix(cs.primaries, cs.whitepoint))
+    d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+    if not np.allclose(cs.whitepoint, d65, atol=1e-4):
+        reference = reference @ colour.adaptation.matrix_chromatic_adaptation_VonKries(
+            colour.xy_to_XYZ(d65), colour.xy_to_XYZ(cs.whitepoint), transform="Bradford"
+        )
+    M = colorimetry.matrix_XYZ_to_RGB(space)
+    np.testing.assert_allclose(M, reference, rtol=0, atol=1e-14)

@@ -1,13 +1,14 @@
 """The package's layout is its pipeline: no module imports from a later stage.
 
-Stages in order (README, *How it is built*): the shared leaves ``checks``, ``cache``, ``io`` and
-``registry`` (plain data: the displays, views and thin-film spaces every stage reads,
-importing none of them); ``physics``; ``colour``; ``lut``; ``config``; ``export``;
-``render``; ``cli``. Every import is checked, lazy ones inside functions included. The
-evaluation code (the report, the stability cases, the GPU harness, the test colour sets) is
-the top-level ``evaluation`` package beside ``benchmarks/``, outside the shipped package:
-nothing in ``ocio_thinfilm`` imports it (``cli/report.py`` loads it from a checkout), and it
-imports ``ocio_thinfilm``, never the other way round.
+Stages in order (README, *How it is built*): the shared leaves ``checks``, ``cache``,
+``io``, ``reproducible`` (arithmetic with the same bits on every CPU) and ``registry``
+(plain data: the displays, views and thin-film spaces every stage reads, importing none of
+them); ``physics``; ``colour``; ``lut``; ``config``; ``export``; ``render``; ``cli``. Every
+import is checked, lazy ones inside functions included. The evaluation code (the report, the
+stability cases, the GPU harness, the test colour sets) is the top-level ``evaluation``
+package beside ``benchmarks/``, outside the shipped package: nothing in ``ocio_thinfilm``
+imports it (``cli/report.py`` loads it from a checkout), and it imports ``ocio_thinfilm``,
+never the other way round.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ STAGES = [
     "checks",
     "cache",
     "io",
+    "reproducible",
     "registry",
     "physics",
     "colour",
@@ -32,7 +34,7 @@ STAGES = [
     "cli",
 ]
 RANK = {name: rank for rank, name in enumerate(STAGES)}
-RANK.update(checks=0, cache=0, io=0, registry=0)  # the shared leaves
+RANK.update(checks=0, cache=0, io=0, reproducible=0, registry=0)  # the shared leaves
 
 
 def _stage(dotted: str) -> str:

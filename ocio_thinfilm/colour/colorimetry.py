@@ -78,7 +78,7 @@ def _weights_cached(wl_key: tuple, observer: str, illuminant: str) -> np.ndarray
     # end values constant outside the tabulated range.
     # (a single wavelength still needs a shape with end > start)
     shape = colour.SpectralShape(wl.min(), max(wl.max(), wl.min() + 1.0), 1)
-    # colour-science interpolates with BLAS: its samples rounded to multiples of 2^-32
+    # colour-science interpolates with BLAS: its samples rounded to 32 significant bits
     # are the same on every CPU (ocio_thinfilm.reproducible)
     cmf = reproducible.canonical(np.asarray(cmfs.copy().extrapolate(shape)[wl]).reshape(-1, 3))
     s = reproducible.canonical(np.asarray(sd.copy().extrapolate(shape)[wl]).reshape(-1))
@@ -317,6 +317,42 @@ def morpho_XYZ(
     return _chunked_XYZ(model, theta_degrees, wl, observer, illuminant)
 
 
+def _xy_to_XYZ(xy: np.ndarray) -> np.ndarray:
+    """XYZ with Y = 1 of chromaticities ``xy`` (..., 2)."""
+    x, y = xy[..., 0], xy[..., 1]
+    return np.stack([x / y, np.ones_like(x), (1.0 - x - y) / y], axis=-1)
+
+
+def _normalised_primary_matrix(primaries: np.ndarray, whitepoint: np.ndarray) -> np.ndarray:
+    """Return RGB -> XYZ of primaries (3, 2) and a white (2,) (SMPTE RP 177).
+
+    ``colour.normalised_primary_matrix`` computes it with LAPACK and BLAS, whose
+    kernels differ between CPUs in the last bits (:mod:`ocio_thinfilm.reproducible`);
+    here with the same formula in elementwise arithmetic (``tests/test_colorimetry.py``
+    holds it to colour-science's within 1e-14).
+    """
+    xy = np.asarray(primaries, dtype=np.float64).reshape(3, 2)
+    P = np.stack([xy[:, 0], xy[:, 1], 1.0 - xy[:, 0] - xy[:, 1]])  # columns: R, G, B
+    S = reproducible.matmul(reproducible.inv3(P), _xy_to_XYZ(np.asarray(whitepoint, float)))
+    return P * S
+
+
+def _bradford(source_xy: np.ndarray, target_xy: np.ndarray) -> np.ndarray:
+    """Return the von Kries adaptation in Bradford's cone space from one white to another.
+
+    ``colour.adaptation.matrix_chromatic_adaptation_VonKries(..., transform="Bradford")``
+    in elementwise arithmetic (the same bits on every CPU), with colour-science's
+    Bradford matrix.
+    """
+    import colour
+
+    M = np.asarray(colour.adaptation.CAT_BRADFORD, dtype=np.float64)
+    gain = reproducible.matmul(M, _xy_to_XYZ(target_xy)) / reproducible.matmul(
+        M, _xy_to_XYZ(source_xy)
+    )
+    return reproducible.matmul(reproducible.inv3(M) * gain, M)
+
+
 @cache.persistent
 def _matrix_cached(space: str) -> np.ndarray:
     import colour
@@ -329,16 +365,12 @@ def _matrix_cached(space: str) -> np.ndarray:
         )
     cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[space]]
     # Normalised primary matrix from the primaries and white: RGB = 1 is the white.
-    rgb_to_xyz = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
-    d65 = colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"]
+    rgb_to_xyz = _normalised_primary_matrix(cs.primaries, cs.whitepoint)
+    d65 = np.asarray(colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"], dtype=np.float64)
     if not np.allclose(cs.whitepoint, d65, atol=1e-4):
-        cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
-            colour.xy_to_XYZ(d65), colour.xy_to_XYZ(cs.whitepoint), transform="Bradford"
-        )
-        # colour-science computes with BLAS and LAPACK: rounded to the canonical matrix,
-        # the same bits on every CPU (ocio_thinfilm.reproducible)
-        return reproducible.canonical(reproducible.matmul(reproducible.inv3(rgb_to_xyz), cat))
-    return reproducible.canonical(reproducible.inv3(rgb_to_xyz))
+        cat = _bradford(d65, np.asarray(cs.whitepoint, dtype=np.float64))
+        return reproducible.matmul(reproducible.inv3(rgb_to_xyz), cat)
+    return reproducible.inv3(rgb_to_xyz)
 
 
 def matrix_XYZ_to_RGB(space: str = "sRGB") -> np.ndarray:
@@ -543,7 +575,7 @@ def _cmfs_cached(wl_key: tuple, observer: str) -> np.ndarray:
         raise ParameterError(
             "observer", f" must be one of colour.MSDS_CMFS, got {observer!r}"
         ) from None
-    # colour-science interpolates with BLAS: multiples of 2^-32 are the same on every
+    # colour-science interpolates with BLAS: 32 significant bits are the same on every
     # CPU (ocio_thinfilm.reproducible)
     return reproducible.canonical(np.asarray(cmfs[np.asarray(wl_key)]))
 
