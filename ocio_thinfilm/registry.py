@@ -42,11 +42,19 @@ __all__ = [
     "ENCODED_LIST",
     "ENCODED_SPACES",
     "linear_space_of",
+    "find_encoded",
+    "SCENE_LINEAR_BY_NAME",
     "DISPLAY_LIST",
     "HDR_DISPLAY_LIST",
     "VIEW_LIST",
     "COMPRESS_VIEW",
-    "compress_view_description",
+    "VIEW_KINDS",
+    "view_of_kind",
+    "as_view",
+    "CLIP_VIEW",
+    "LogCurve",
+    "LOG_CURVE_LIST",
+    "LOG_CURVES",
     "THIN_FILM_LIST",
     "DISPLAYS",
     "HDR_DISPLAYS",
@@ -279,6 +287,12 @@ class HDRDisplay:
         return self.gamut.compress_lut_stem(white)
 
 
+#: The kinds of view: what a view does, which each stage maps to its own code (the
+#: config's transforms, the analytic maps, the shaders); a view is one :class:`View`
+#: entry of a kind.
+VIEW_KINDS = ("clip", "compress", "clamp", "aces", "raw")
+
+
 @dataclass(frozen=True)
 class View:
     """A view of every display.
@@ -287,15 +301,46 @@ class View:
     ----------
     name : str
         The OCIO view name.
+    kind : str
+        What it does, one of :data:`VIEW_KINDS`: ``"clip"`` the constant-lightness clip
+        (Smits & Meyer 1990, Section 3.2), ``"compress"`` the soft constant-lightness
+        compression, ``"clamp"`` a per-channel clamp, ``"aces"`` OCIO's ACES 1.3 gamut
+        compression, ``"raw"`` no view transform (the data passes through).
     description : str, optional
-        The description of its view transforms; empty (the default) for ``Raw``.
-    raw : bool, optional
-        Whether the view passes data through (no view transform); default ``False``.
+        The description of its view transforms; empty (the default) for the raw view.
+        The compression's holds the fields ``{threshold}`` and ``{limit}``
+        (:meth:`describe`).
     """
 
     name: str
+    kind: str
     description: str = ""
-    raw: bool = False
+
+    @property
+    def raw(self) -> bool:
+        """Whether the view passes data through (no view transform)."""
+        return self.kind == "raw"
+
+    def describe(self, threshold: str, limit: str) -> str:
+        """Return the description with the compression's knobs filled in.
+
+        Parameters
+        ----------
+        threshold, limit : str
+            The knobs as the description states them
+            (:func:`ocio_thinfilm.colour.compress.knob_text`); only the compression's
+            description uses them.
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> "beyond 0.6 of the distance" in view_of_kind("compress").describe("0.6", "1.5")
+        True
+        """
+        return self.description.format(threshold=threshold, limit=limit)
 
 
 @dataclass(frozen=True)
@@ -414,56 +459,70 @@ HDR_DISPLAY_LIST = (
     ),
 )
 
-#: The view whose knobs (threshold, limit) a bake may set.
-COMPRESS_VIEW = "Constant-Lightness Compress"
-
-
-def compress_view_description(threshold: str = "0.8", limit: str = "1.3") -> str:
-    """Return the description of the Constant-Lightness Compress view for its knobs.
-
-    Parameters
-    ----------
-    threshold, limit : str, optional
-        The knobs as the description states them
-        (:func:`ocio_thinfilm.colour.compress.knob_text`); the defaults are
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> "beyond 0.6 of the distance" in compress_view_description("0.6", "1.5")
-    True
-    """
-    return (
-        "Soft constant-lightness gamut compression: along the same ray as the clip "
-        "(towards the grey of the same luminance Y, which it keeps exactly), colours "
-        f"beyond {threshold} of the distance to the gamut boundary are compressed by the "
-        f"ACES 1.3 power curve so that {limit} boundary distances reach the boundary; "
-        "further out, the clip. Smooth where the clip is flat (four 3D LUTs, two of them "
-        "the clip's)."
-    )
+_COMPRESS_DESCRIPTION = (
+    "Soft constant-lightness gamut compression: along the same ray as the clip "
+    "(towards the grey of the same luminance Y, which it keeps exactly), colours "
+    "beyond {threshold} of the distance to the gamut boundary are compressed by the "
+    "ACES 1.3 power curve so that {limit} boundary distances reach the boundary; "
+    "further out, the clip. Smooth where the clip is flat (four 3D LUTs, two of them "
+    "the clip's)."
+)
 
 
 VIEW_LIST = (
     View(
         "Constant-Lightness Clip",
+        "clip",
         "Smits & Meyer 1990 Section 3.2: display-linear RGB clipped at constant luminance "
         "Y towards the display's neutral axis (two 3D LUTs, faces through black then "
         "through white); scene-linear 1.0 is display white, above white gives white, no "
         "tone mapping.",
     ),
-    View(COMPRESS_VIEW, compress_view_description()),
-    View("Channel Clamp", "Baseline: display-linear RGB clamped per channel to [0, 1]."),
+    View("Constant-Lightness Compress", "compress", _COMPRESS_DESCRIPTION),
+    View("Channel Clamp", "clamp", "Baseline: display-linear RGB clamped per channel to [0, 1]."),
     View(
         "ACES Gamut Compression",
+        "aces",
         "Baseline: OCIO's ACES 1.3 reference gamut compression (ACES_GamutComp13) in "
         "display-linear RGB, then a clamp to [0, 1].",
     ),
-    View("Raw", raw=True),
+    View("Raw", "raw"),
 )
+
+
+def view_of_kind(kind: str) -> View:
+    """Return the view of ``kind`` (one of :data:`VIEW_KINDS`).
+
+    Parameters
+    ----------
+    kind : str
+        A view kind.
+
+    Returns
+    -------
+    View
+
+    Raises
+    ------
+    ValueError
+        If no view is of that kind.
+
+    Examples
+    --------
+    >>> view_of_kind("clip").name
+    'Constant-Lightness Clip'
+    """
+    for view in VIEW_LIST:
+        if view.kind == kind:
+            return view
+    raise ValueError(f"no view of kind {kind!r}")
+
+
+#: The constant-lightness clip's view and the compression's (whose knobs, threshold and
+#: limit, a bake may set).
+CLIP_VIEW = view_of_kind("clip").name
+COMPRESS_VIEW = view_of_kind("compress").name
+
 
 THIN_FILM_LIST = (
     ThinFilmSpace(
@@ -524,19 +583,40 @@ class SceneSpace:
 
 
 @dataclass(frozen=True)
+class LogCurve:
+    """A logarithmic encoding of scene-linear values (a camera's or a grading space's).
+
+    The curve's numbers live with its model
+    (:data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`); each stage maps the name to
+    its own code (the config's OCIO transforms, the shaders' decoding, the evaluation's
+    colour-science function).
+
+    Parameters
+    ----------
+    name : str
+        The curve's name.
+    reference : str
+        The document that defines it.
+    """
+
+    name: str
+    reference: str
+
+
+@dataclass(frozen=True)
 class EncodedSpace:
-    """A colour space of the config that encodes a scene-linear one.
+    """A colour space of the config that encodes a scene-linear one with a log curve.
 
     Parameters
     ----------
     name : str
         The config's colour space name.
     linear : str
-        The name of the :class:`SceneSpace` it encodes; OCIO must have a built-in
-        ``<linear>_to_ACES2065-1`` (the config goes from the encoded space to the
-        linear one through ACES2065-1 with the two built-ins).
-    builtin : str
-        OCIO's built-in transform from it to ACES2065-1.
+        The name of the :class:`SceneSpace` it encodes (its gamut: primaries and white).
+    curve : str
+        The name of its :class:`LogCurve`.
+    family : str
+        The config's family of the colour space (the maker of the encoding).
     description : str
         The colour space's description.
     plain : bool, optional
@@ -546,9 +626,29 @@ class EncodedSpace:
 
     name: str
     linear: str
-    builtin: str
+    curve: str
+    family: str
     description: str
     plain: bool = False
+
+    @property
+    def gamut(self) -> SceneSpace:
+        """The scene-linear space it encodes."""
+        return SCENE_LINEAR_BY_NAME[self.linear]
+
+
+LOG_CURVE_LIST = (
+    LogCurve("ACEScct", "Academy S-2016-001, ACEScct (2016)"),
+    LogCurve(
+        "DaVinci Intermediate",
+        "Blackmagic Design, DaVinci Resolve 17 Wide Gamut Intermediate (2020)",
+    ),
+    LogCurve("ARRI LogC4", "ARRI, LogC4 Logarithmic Color Space Specification (2022)"),
+    LogCurve(
+        "S-Log3",
+        "Sony, Technical Summary for S-Gamut3.Cine/S-Log3 and S-Gamut3/S-Log3 (2016)",
+    ),
+)
 
 
 #: The reference space of the scene and of the displays (CIE XYZ, D65 white, Y = 1 for
@@ -567,6 +667,9 @@ RGB_COLORIMETRY = {
     "Rec.2020": "ITU-R BT.2020",
     "ACEScg": "ACEScg",
     "ACES2065-1": "ACES2065-1",
+    "DaVinci Wide Gamut": "DaVinci Wide Gamut",
+    "ARRI Wide Gamut 4": "ARRI Wide Gamut 4",
+    "S-Gamut3.Cine": "S-Gamut3.Cine",
 }
 
 SCENE_LINEAR_LIST = (
@@ -596,14 +699,60 @@ SCENE_LINEAR_LIST = (
         colorimetry="Rec.2020",
         description="Scene-linear Rec.2020 primaries, D65",
     ),
+    SceneSpace(
+        name="Linear DaVinci Wide Gamut",
+        colorimetry="DaVinci Wide Gamut",
+        description="Scene-linear DaVinci Wide Gamut primaries, D65 (DaVinci Resolve's "
+        "linear wide-gamut working space)",
+    ),
+    SceneSpace(
+        name="Linear ARRI Wide Gamut 4",
+        colorimetry="ARRI Wide Gamut 4",
+        description="Scene-linear ARRI Wide Gamut 4 primaries, D65",
+    ),
+    SceneSpace(
+        name="Linear S-Gamut3.Cine",
+        colorimetry="S-Gamut3.Cine",
+        description="Scene-linear Sony S-Gamut3.Cine primaries, D65",
+    ),
 )
+SCENE_LINEAR_BY_NAME = {s.name: s for s in SCENE_LINEAR_LIST}
 
 ENCODED_LIST = (
     EncodedSpace(
         name="ACEScct",
         linear="ACEScg",
-        builtin="ACEScct_to_ACES2065-1",
+        curve="ACEScct",
+        family="ACES",
         description="ACEScct: ACEScg with the ACEScct log encoding (S-2016-001)",
+        plain=True,
+    ),
+    EncodedSpace(
+        name="DaVinci Intermediate WideGamut",
+        linear="Linear DaVinci Wide Gamut",
+        curve="DaVinci Intermediate",
+        family="DaVinci",
+        description="DaVinci Wide Gamut with the DaVinci Intermediate log encoding "
+        "(Blackmagic Design 2020): DaVinci Resolve's wide-gamut timeline; code 1.0 is "
+        "linear 100",
+        plain=True,
+    ),
+    EncodedSpace(
+        name="ARRI LogC4",
+        linear="Linear ARRI Wide Gamut 4",
+        curve="ARRI LogC4",
+        family="ARRI",
+        description="ARRI Wide Gamut 4 with the LogC4 log encoding (ARRI 2022); code 1.0 "
+        "is linear 469.8",
+        plain=True,
+    ),
+    EncodedSpace(
+        name="S-Log3 S-Gamut3.Cine",
+        linear="Linear S-Gamut3.Cine",
+        curve="S-Log3",
+        family="Sony",
+        description="Sony S-Gamut3.Cine with the S-Log3 log encoding (Sony 2016); code "
+        "1.0 is linear 38.4",
         plain=True,
     ),
 )
@@ -619,6 +768,7 @@ VIEWS = tuple(v.name for v in VIEW_LIST)
 THIN_FILM_SPACES = tuple(s.name for s in THIN_FILM_LIST)
 SCENE_LINEAR_SPACES = tuple(s.name for s in SCENE_LINEAR_LIST)
 ENCODED_SPACES = tuple(s.name for s in ENCODED_LIST)
+LOG_CURVES = tuple(c.name for c in LOG_CURVE_LIST)
 
 #: A display of the registry, SDR or HDR.
 AnyDisplay: TypeAlias = "Display | HDRDisplay"
@@ -753,6 +903,47 @@ def display_name(display: DisplayLike | None, *, parameter: str = "display") -> 
     return as_display(display, parameter=parameter).name
 
 
+_VIEW_BY_NAME = {v.name: v for v in VIEW_LIST}
+
+
+def as_view(view: str | View, *, parameter: str = "view", raw: bool = True) -> View:
+    """Return the registry's view for ``view``, a view object or its name.
+
+    The one look-up of a view by name, at a public function's door; what follows reads
+    its :attr:`View.kind`.
+
+    Parameters
+    ----------
+    view : str or View
+        A name of :data:`VIEWS` or one of the registry's views.
+    parameter : str, optional
+        The caller's parameter name, for the error messages (default ``"view"``).
+    raw : bool, optional
+        Whether the raw view is allowed (default ``True``).
+
+    Returns
+    -------
+    View
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (a ValueError) for an unknown view, or the raw one where ``raw=False``.
+
+    Examples
+    --------
+    >>> as_view("Channel Clamp").kind
+    'clamp'
+    """
+    entry = _VIEW_BY_NAME.get(view.name if isinstance(view, View) else view)  # type: ignore[arg-type]
+    if isinstance(view, View) and entry != view:
+        entry = None
+    if entry is None or (entry.raw and not raw):
+        choices = VIEWS if raw else tuple(v.name for v in VIEW_LIST if not v.raw)
+        raise ParameterError(parameter, f" must be one of {choices}, got {view!r}")
+    return entry
+
+
 def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
     """Return the thin-film input space holding the table of ``kind``.
 
@@ -801,12 +992,32 @@ def linear_space_of(name: str) -> SceneSpace | None:
     >>> linear_space_of("ACEScct").name, linear_space_of("CIE-XYZ-D65")
     ('ACEScg', None)
     """
-    by_name = {s.name: s for s in SCENE_LINEAR_LIST}
-    if name in by_name:
-        return by_name[name]
-    for e in ENCODED_LIST:
-        if e.name == name:
-            return by_name[e.linear]
+    if name in SCENE_LINEAR_BY_NAME:
+        return SCENE_LINEAR_BY_NAME[name]
+    encoded = find_encoded(name)
+    return None if encoded is None else encoded.gamut
+
+
+def find_encoded(name: str) -> EncodedSpace | None:
+    """Return the encoded space called ``name``, if the registry has one.
+
+    Parameters
+    ----------
+    name : str
+        A colour space name of the config.
+
+    Returns
+    -------
+    EncodedSpace or None
+
+    Examples
+    --------
+    >>> find_encoded("S-Log3 S-Gamut3.Cine").curve, find_encoded("ACEScg")
+    ('S-Log3', None)
+    """
+    for encoded in ENCODED_LIST:
+        if encoded.name == name:
+            return encoded
     return None
 
 
@@ -873,6 +1084,11 @@ def validate() -> None:
             or not h.png_colorspace
         ):
             raise ValueError(f"registry: HDR display {h.name!r}: bad entry {h!r}")
+    if sorted(v.kind for v in VIEW_LIST) != sorted(VIEW_KINDS):
+        raise ValueError(f"registry: one view of each kind {VIEW_KINDS}")
+    for kind, names in (("encoded space", ENCODED_SPACES), ("log curve", LOG_CURVES)):
+        if len(set(names)) != len(names) or not all(names):
+            raise ValueError(f"registry: {kind} names must be unique and non-empty: {names}")
     if [v.name for v in VIEW_LIST if v.raw] != [VIEW_LIST[-1].name]:
         raise ValueError("registry: exactly one raw view, listed last")
     if any(not v.description for v in VIEW_LIST if not v.raw):
@@ -897,6 +1113,8 @@ def validate() -> None:
             raise ValueError(
                 f"registry: {encoded.name!r} encodes an unknown space {encoded.linear!r}"
             )
+        if encoded.curve not in LOG_CURVES or not encoded.family:
+            raise ValueError(f"registry: {encoded.name!r}: bad curve or family {encoded!r}")
     kinds = [s.kind for s in THIN_FILM_LIST]
     if len(set(kinds)) != len(kinds):
         raise ValueError(f"registry: one thin-film space per table kind: {kinds}")

@@ -20,11 +20,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
+from ocio_thinfilm.config import spaces
 from ocio_thinfilm.config.factories import file_transform
 from ocio_thinfilm.lut import (
     clip_lut,
@@ -48,7 +46,11 @@ __all__ = [
     "compress_luts",
     "lut_files",
     "view_parts",
+    "LUT_FILE_VIEWS",
     "config_data",
+    "thin_film_colorspaces",
+    "display_views",
+    "file_rules",
     "CLIP_NAMED_TRANSFORM",
     "TABLE_NAMED_TRANSFORM",
     "clip_named_transform",
@@ -63,9 +65,6 @@ __all__ = [
 CONFIG_NAME = "ocio-thinfilm"
 PROFILE_VERSION = (2, 1)
 LUT_DIRECTORY = "luts"
-
-#: Views that show the data unchanged (the config's Raw colour space).
-_RAW_VIEWS = tuple(v.name for v in registry.VIEW_LIST if v.raw)
 
 ROLES = {
     "scene_linear": "Linear Rec.709 (sRGB)",
@@ -311,15 +310,28 @@ def _compress_passes(soft, luts, inline):
     return soft.transforms(*cores)
 
 
-def _matrix_to_reference(space):
-    """Return linear RGB of ``space`` -> CIE-XYZ-D65, the components limited first.
+def _clip_chain(lut, soft, luts, inline):
+    # the second LUT ends in sRGB code values: back to display-linear here, the display
+    # colour space encodes again (OCIO's optimiser removes the pair for the sRGB-encoded
+    # displays)
+    return _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
 
-    The limit is +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes
-    above ~7.9) would overflow the matrix to Inf - Inf = NaN, which no later op can
-    repair at OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6.
-    """
-    M = colorimetry.matrix_XYZ_to_RGB(space)
-    return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
+
+def _compress_chain(lut, soft, luts, inline):
+    return _compress_passes(soft, luts, inline) + [clip_lut.working_decoding_transform()]
+
+
+#: View kind -> its chain in the config, CIE-XYZ-D65 -> display-linear RGB of an SDR
+#: display, from the config's LUT files: ``f(clip LUT, compression LUT, luts, inline)``;
+#: ``None`` where the view is its linear transform
+#: (:data:`ocio_thinfilm.lut.view_transforms.LINEAR_VIEWS`) or has none (raw).
+LUT_FILE_VIEWS = {
+    "clip": _clip_chain,
+    "compress": _compress_chain,
+    "clamp": None,
+    "aces": None,
+    "raw": None,
+}
 
 
 def _linear_parts(gamut, view, lut, luts, inline, compress=None):
@@ -328,14 +340,10 @@ def _linear_parts(gamut, view, lut, luts, inline, compress=None):
     A list of transforms, for the SDR display ``gamut`` (the config's LUT files for
     the clip and the compression).
     """
-    if view == "Constant-Lightness Compress":
-        return _compress_passes(compress, luts, inline) + [clip_lut.working_decoding_transform()]
-    if view == "Constant-Lightness Clip":
-        # the second LUT ends in sRGB code values: back to display-linear here, the
-        # display colour space encodes again (OCIO's optimiser removes the pair for
-        # the sRGB-encoded displays)
-        return _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
-    return [view_transforms.view_linear_transform(gamut, view)]
+    chain = LUT_FILE_VIEWS[view.kind]
+    if chain is not None:
+        return chain(lut, compress, luts, inline)
+    return [view_transforms.view_linear_transform(gamut, view.name)]
 
 
 def view_parts(
@@ -358,8 +366,9 @@ def view_parts(
     ----------
     display : str, Display or HDRDisplay
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS` or its name.
-    view : str
-        A view of :data:`ocio_thinfilm.registry.VIEWS` other than ``Raw``.
+    view : str or View
+        A view of :data:`ocio_thinfilm.registry.VIEWS` (or its name) other than the raw
+        one.
     lut : ClipLUT, optional
         The ClipLUT of the display's gamut; required for the Constant-Lightness Clip
         and the Constant-Lightness Compress.
@@ -387,7 +396,8 @@ def view_parts(
         For an unknown view (``Raw`` included).
     """
     entry = registry.as_display(display)
-    linear = _linear_parts(entry.gamut, view, lut, luts, inline, compress)
+    view_entry = registry.as_view(view, raw=False)
+    linear = _linear_parts(entry.gamut, view_entry, lut, luts, inline, compress)
     if entry.hdr:
         linear = view_transforms.hdr_scaled(entry, linear)
     return ocio_ops.group(
@@ -455,68 +465,66 @@ def config_data(
     by_display = clip_luts(clip_size)
     soft_by_display = compress_luts(clip_size, compress_threshold=threshold, compress_limit=limit)
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
-    ref = registry.REFERENCE
-    cs: list[dict[str, Any]] = []
-    cs.append(
-        dict(
-            name=ref,
-            family="Utility",
-            encoding="scene-linear",
-            categories=["file-io", "working-space"],
-            aliases=["cie_xyz_d65"],
-            description="CIE XYZ, D65-relative: the perfect reflector under D65 has "
-            "Y = 1 (CIE 1931 2 degree observer). The reference space.",
-        )
+    cs = spaces.scene_colorspaces() + thin_film_colorspaces(
+        luts, inline=inline, film_size=film_size, morpho_size=morpho_size
     )
-    for linear in registry.SCENE_LINEAR_LIST:
-        cs.append(
-            dict(
-                name=linear.name,
-                family="Scene-Linear",
-                encoding="scene-linear",
-                categories=["file-io", "working-space"],
-                description=linear.description,
-                to_reference=_matrix_to_reference(linear.colorimetry),
-            )
-        )
-    for encoded in registry.ENCODED_LIST:
-        cs.append(
-            dict(
-                name=encoded.name,
-                family="ACES",
-                encoding="log",
-                categories=["file-io", "working-space"],
-                description=encoded.description,
-                to_reference=_builtin_to_reference(encoded),
-            )
-        )
-    cs.append(
-        dict(
-            name=registry.TEXTURE_SPACE,
-            family="Texture",
-            encoding="sdr-video",
-            categories=["file-io", "texture"],
-            aliases=["srgb_tx"],
-            description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour picking)",
-            to_reference=ocio_ops.group(
-                [
-                    ocio_ops.inverse([display_transforms.display_encoding_transform("sRGB")]),
-                    _matrix_to_reference("Rec.709"),
-                ]
-            ),
-        )
+    film_spaces, film_named, film_luts = film_parts(
+        films, inline=inline, taken=[c["name"] for c in cs]
     )
-    cs.append(
-        dict(
-            name="Raw",
-            family="Utility",
-            encoding="data",
-            is_data=True,
-            categories=["file-io"],
-            aliases=["Utility - Raw"],
-            description="Non-colour data: passed through unchanged",
-        )
+    cs += film_spaces + spaces.display_colorspaces()
+    luts.update(film_luts)
+    views, displays = display_views(
+        by_display,
+        soft_by_display,
+        luts,
+        inline=inline,
+        knobs=(compress_map.knob_text(threshold), compress_map.knob_text(limit)),
     )
+    return ConfigData(
+        name=CONFIG_NAME,
+        description=(
+            "Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
+            "Colors\") with the paper's constant-lightness gamut clip. Reference: "
+            "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
+            "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."
+        ),
+        roles=dict(ROLES),
+        colorspaces=cs,
+        view_transforms=views,
+        displays=displays,
+        file_rules=file_rules(),
+        luts=luts,
+        named_transforms=named_transforms(
+            by_display, inline=inline, luts=luts, compress_by_display=soft_by_display
+        )
+        + film_named,
+    )
+
+
+def thin_film_colorspaces(
+    luts: dict[str, ocio_ops.Transform],
+    *,
+    inline: bool = False,
+    film_size: int = tables.FILM_SIZE,
+    morpho_size: int = tables.MORPHO_SIZE,
+) -> list[dict[str, Any]]:
+    """Return the thin-film input colour spaces of the registry as data.
+
+    Parameters
+    ----------
+    luts : dict
+        The LUT files (:func:`lut_files`).
+    inline : bool, optional
+        Put the tables into the transforms (``True``) or refer to their files.
+    film_size, morpho_size : int, optional
+        Entries of the thickness and angle tables (their descriptions state them).
+
+    Returns
+    -------
+    list of dict
+        Keyword arguments of :func:`ocio_thinfilm.config.factories.colorspace_factory`.
+    """
+    cs = []
     for space in registry.THIN_FILM_LIST:
         table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
         if space.table == "film":
@@ -541,28 +549,47 @@ def config_data(
                 to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline),
             )
         )
-    film_spaces, film_named, film_luts = film_parts(
-        films, inline=inline, taken=[c["name"] for c in cs]
-    )
-    cs += film_spaces
-    luts.update(film_luts)
-    for entry in registry.ALL_DISPLAY_LIST:
-        cs.append(
-            dict(
-                name=entry.colorspace,
-                family="Display",
-                encoding="hdr-video" if entry.hdr else "sdr-video",
-                categories=["file-io"],
-                reference_space="display",
-                description=entry.description,
-                from_reference=display_transforms.display_colorspace_transform(entry),
-            )
-        )
+    return cs
 
-    # The default view transform links the two reference spaces when a conversion
-    # crosses them without a view (e.g. display space -> scene space): an identity,
-    # as "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless).
-    view_transforms = [
+
+def display_views(
+    luts_by_display: dict,
+    compress_by_display: dict,
+    luts: dict[str, ocio_ops.Transform],
+    *,
+    inline: bool = False,
+    knobs: tuple[str, str] = ("", ""),
+) -> tuple[list[dict[str, Any]], dict[str, list[dict[str, Any]]]]:
+    """Return the view transforms and each display's views as data.
+
+    The default view transform links the two reference spaces when a conversion crosses
+    them without a view (e.g. display space -> scene space): an identity, as
+    "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless). Then one
+    view transform per display and view of the registry (:func:`view_parts`); the raw
+    view shows the ``Raw`` colour space.
+
+    Parameters
+    ----------
+    luts_by_display, compress_by_display : dict
+        SDR display name -> its ClipLUT (:func:`clip_luts`) and CompressLUT
+        (:func:`compress_luts`).
+    luts : dict
+        The LUT files (:func:`lut_files`).
+    inline : bool, optional
+        Put the LUTs into the transforms (``True``) or refer to their files.
+    knobs : tuple of str, optional
+        The compression's threshold and limit as its description states them
+        (:meth:`ocio_thinfilm.registry.View.describe`).
+
+    Returns
+    -------
+    view_transforms : list of dict
+        For :func:`ocio_thinfilm.config.factories.view_transform_factory`.
+    displays : dict
+        Display name -> its views (dicts of ``name`` and ``view_transform`` and
+        ``display_colorspace``, or ``name`` and ``colorspace``).
+    """
+    vts: list[dict[str, Any]] = [
         dict(
             name="Un-tone-mapped",
             family="Utility",
@@ -574,37 +601,45 @@ def config_data(
         )
     ]
     displays = {}
-    descriptions = {v.name: v.description for v in registry.VIEW_LIST}
-    descriptions[registry.COMPRESS_VIEW] = registry.compress_view_description(
-        compress_map.knob_text(threshold), compress_map.knob_text(limit)
-    )
     for entry in registry.ALL_DISPLAY_LIST:
-        display = entry.name
         views = []
-        for view in registry.VIEWS:
-            if view in _RAW_VIEWS:
-                views.append(dict(name=view, colorspace="Raw"))
+        for view in registry.VIEW_LIST:
+            if view.raw:
+                views.append(dict(name=view.name, colorspace="Raw"))
                 continue
-            vt = f"{view} - {display}"
-            view_transforms.append(
+            vt = f"{view.name} - {entry.name}"
+            vts.append(
                 dict(
                     name=vt,
                     family="Thin Film",
-                    description=f"{descriptions[view]} Display: {display}.",
+                    description=f"{view.describe(*knobs)} Display: {entry.name}.",
                     from_reference=view_parts(
                         entry,
                         view,
-                        lut=by_display[entry.gamut.name],
+                        lut=luts_by_display[entry.gamut.name],
                         luts=luts,
                         inline=inline,
-                        compress=soft_by_display[entry.gamut.name],
+                        compress=compress_by_display[entry.gamut.name],
                     ),
                 )
             )
-            views.append(dict(name=view, view_transform=vt, display_colorspace=entry.colorspace))
-        displays[display] = views
+            views.append(
+                dict(name=view.name, view_transform=vt, display_colorspace=entry.colorspace)
+            )
+        displays[entry.name] = views
+    return vts, displays
 
-    file_rules = [
+
+def file_rules() -> list[dict[str, str]]:
+    """Return the file rules: EXR scene-linear, PNG and JPEG the texture space.
+
+    Returns
+    -------
+    list of dict
+        ``name``, ``colorspace``, ``pattern``, ``extension``; the ``Default`` rule only
+        its colour space.
+    """
+    return [
         dict(
             name="OpenEXR", colorspace=ROLES["scene_linear"], pattern="*", extension="[eE][xX][rR]"
         ),
@@ -612,25 +647,6 @@ def config_data(
         dict(name="JPEG", colorspace=registry.TEXTURE_SPACE, pattern="*", extension="[jJ][pP][gG]"),
         dict(name="Default", colorspace=ROLES["default"]),
     ]
-    return ConfigData(
-        name=CONFIG_NAME,
-        description=(
-            "Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
-            "Colors\") with the paper's constant-lightness gamut clip. Reference: "
-            "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
-            "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."
-        ),
-        roles=dict(ROLES),
-        colorspaces=cs,
-        view_transforms=view_transforms,
-        displays=displays,
-        file_rules=file_rules,
-        luts=luts,
-        named_transforms=named_transforms(
-            by_display, inline=inline, luts=luts, compress_by_display=soft_by_display
-        )
-        + film_named,
-    )
 
 
 #: Named transform of the clip alone, per display (display-linear RGB in and out).
@@ -792,38 +808,6 @@ def named_transforms(
             )
         )
     return out
-
-
-def _builtin_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
-    """Return an encoded ACES space -> CIE-XYZ-D65, through its linear space.
-
-    OCIO's built-in transform to ACES2065-1 (``ACEScct_to_ACES2065-1``: the ACEScct
-    curve of Academy S-2016-001 and AP1 -> AP0), back to AP1 with the inverse of the
-    built-in ``ACEScg_to_ACES2065-1`` (the two matrices cancel when OCIO optimises), then
-    the linear space's own transform to the reference: so the path from the encoded
-    space to its linear space is per channel, as OCIO's Baker requires of a shaper. The
-    code values are limited first to those of linear +-:data:`ocio_ops.LIMIT` (found
-    with the built-in's own inverse), so the curve's exponential never overflows to Inf
-    (and Inf - Inf to NaN in a matrix) at any optimisation level.
-    """
-    import PyOpenColorIO as ocio
-
-    curve = ocio.BuiltinTransform(encoded.builtin)
-    inverse = ocio.BuiltinTransform(encoded.builtin)
-    inverse.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    lo, hi = ocio_ops.apply(inverse, [[-ocio_ops.LIMIT] * 3, [ocio_ops.LIMIT] * 3])[:, 0]
-    to_linear = ocio.BuiltinTransform(f"{encoded.linear}_to_ACES2065-1")
-    to_linear.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    linear = registry.linear_space_of(encoded.name)
-    assert linear is not None  # the registry checks an encoded space's linear space
-    return ocio_ops.group(
-        [
-            ocio_ops.range_(float(lo), float(hi)),
-            curve,
-            to_linear,
-            _matrix_to_reference(linear.colorimetry),
-        ]
-    )
 
 
 #: LUT file stem of a user's film: this prefix and its key (file-name safe).
