@@ -462,11 +462,18 @@ def _fitted_nodes(source, display, view, size, shaper, knobs):
     """
     compress = {} if knobs is None else dict(zip(KNOB_NAMES, knobs, strict=True))
     cfg, shaper_space = view_config(source, size, display, **compress)
+    fit = {} if knobs is None else dict(knobs=knobs)
     if shaper and shaper_space:
         return view_fit.fit_view_table(
-            cfg, shaper_space, display, view, size, object_weight=view_fit.SHAPER_OBJECT_WEIGHT
+            cfg,
+            shaper_space,
+            display,
+            view,
+            size,
+            object_weight=view_fit.SHAPER_OBJECT_WEIGHT,
+            **fit,
         )
-    return view_fit.fit_view_table(cfg, source, display, view, size)
+    return view_fit.fit_view_table(cfg, source, display, view, size, **fit)
 
 
 def _fitted_table(source, fmt, shaper, display):
