@@ -621,7 +621,12 @@ class EncodedSpace:
         The colour space's description.
     plain : bool, optional
         Whether its code values in [0, 1] cover every value the views need (then a
-        display LUT from it is a plain 3D LUT over [0, 1]); default ``False``.
+        display LUT from it is a plain 3D LUT over [0, 1]); default ``False``. ACEScct
+        does (1.0 is linear 222.9, and the views clamp AP1's negative values to the
+        gamut); the camera logs do not: code 0 is linear 0 (DaVinci Intermediate),
+        -0.018 (LogC4), -0.014 (S-Log3), but saturated object colours reach -0.05 to
+        -0.11 in those wide gamuts, so their display LUTs carry a shaper over the linear
+        values (the Resolve form of ``.cube``).
     """
 
     name: str
@@ -735,7 +740,7 @@ ENCODED_LIST = (
         description="DaVinci Wide Gamut with the DaVinci Intermediate log encoding "
         "(Blackmagic Design 2020): DaVinci Resolve's wide-gamut timeline; code 1.0 is "
         "linear 100",
-        plain=True,
+
     ),
     EncodedSpace(
         name="ARRI LogC4",
@@ -744,7 +749,7 @@ ENCODED_LIST = (
         family="ARRI",
         description="ARRI Wide Gamut 4 with the LogC4 log encoding (ARRI 2022); code 1.0 "
         "is linear 469.8",
-        plain=True,
+
     ),
     EncodedSpace(
         name="S-Log3 S-Gamut3.Cine",
@@ -753,7 +758,7 @@ ENCODED_LIST = (
         family="Sony",
         description="Sony S-Gamut3.Cine with the S-Log3 log encoding (Sony 2016); code "
         "1.0 is linear 38.4",
-        plain=True,
+
     ),
 )
 
