@@ -740,7 +740,6 @@ ENCODED_LIST = (
         description="DaVinci Wide Gamut with the DaVinci Intermediate log encoding "
         "(Blackmagic Design 2020): DaVinci Resolve's wide-gamut timeline; code 1.0 is "
         "linear 100",
-
     ),
     EncodedSpace(
         name="ARRI LogC4",
@@ -749,7 +748,6 @@ ENCODED_LIST = (
         family="ARRI",
         description="ARRI Wide Gamut 4 with the LogC4 log encoding (ARRI 2022); code 1.0 "
         "is linear 469.8",
-
     ),
     EncodedSpace(
         name="S-Log3 S-Gamut3.Cine",
@@ -758,7 +756,6 @@ ENCODED_LIST = (
         family="Sony",
         description="Sony S-Gamut3.Cine with the S-Log3 log encoding (Sony 2016); code "
         "1.0 is linear 38.4",
-
     ),
 )
 
@@ -940,7 +937,7 @@ def as_view(view: str | View, *, parameter: str = "view", raw: bool = True) -> V
     >>> as_view("Channel Clamp").kind
     'clamp'
     """
-    entry = _VIEW_BY_NAME.get(view.name if isinstance(view, View) else view)  # type: ignore[arg-type]
+    entry = _VIEW_BY_NAME.get(view.name if isinstance(view, View) else view)
     if isinstance(view, View) and entry != view:
         entry = None
     if entry is None or (entry.raw and not raw):

@@ -348,7 +348,7 @@ def _linear_parts(gamut, view, lut, luts, inline, compress=None):
 
 def view_parts(
     display: registry.DisplayLike,
-    view: str,
+    view: str | registry.View,
     *,
     lut: clip_lut.ClipLUT | None = None,
     luts: dict | None = None,

@@ -224,7 +224,7 @@ LUT_VIEWS: dict[str, Callable[[registry.Display, int], Any] | None] = {
 
 
 def view_linear_transform(
-    display: registry.DisplayLike, view: str, size: int = CLIP_SIZE
+    display: registry.DisplayLike, view: str | registry.View, size: int = CLIP_SIZE
 ) -> ocio_ops.Transform:
     """CIE-XYZ-D65 -> display-linear RGB in [0, 1] for ``view`` (not for Raw).
 
@@ -241,9 +241,9 @@ def view_linear_transform(
     ----------
     display : str or registry display
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
-    view : str
-        ``"Constant-Lightness Clip"``, ``"Channel Clamp"`` or
-        ``"ACES Gamut Compression"``.
+    view : str or View
+        A view of :data:`ocio_thinfilm.registry.VIEWS` (or its name) other than the raw
+        one: its kind picks the transform (:data:`LINEAR_VIEWS`).
     size : int, optional
         Edge length of the clip's Lut3Ds, in [9, 129] (default 65).
 
@@ -286,11 +286,11 @@ def view_linear_transform(
         return group(hdr_scaled(entry, [view_linear_transform(entry.gamut, view, size)]))
     linear = LINEAR_VIEWS[kind]
     assert linear is not None  # as_view refused the raw view
-    return linear(entry, size)
+    return linear(entry.gamut, size)
 
 
 def view_transform(
-    display: registry.DisplayLike, view: str, size: int = CLIP_SIZE
+    display: registry.DisplayLike, view: str | registry.View, size: int = CLIP_SIZE
 ) -> ocio_ops.Transform:
     """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
 
@@ -307,8 +307,8 @@ def view_transform(
     ----------
     display : str or registry display
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
-    view : str
-        A view of :data:`ocio_thinfilm.registry.VIEWS`.
+    view : str or View
+        A view of :data:`ocio_thinfilm.registry.VIEWS` (or its name).
     size : int, optional
         Edge length of the clip's Lut3Ds, in [9, 129] (default 65).
 
@@ -358,7 +358,7 @@ def view_transform(
     make_lut = LUT_VIEWS[kind]
     if make_lut is not None:
         # the LUT chain ends in sRGB code values: decoded, then the display's encoding
-        lut = make_lut(entry, size)
+        lut = make_lut(entry.gamut, size)
         return group(
             lut.transforms() + [working_decoding_transform(), display_encoding_transform(entry)],
             name=lut.name,
