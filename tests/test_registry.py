@@ -312,3 +312,10 @@ def test_no_view_or_encoded_space_is_picked_by_its_name_outside_the_registry(tmp
     bad = tmp_path / "bad.py"
     bad.write_text('def f(view):\n    return view == "Channel Clamp" or {"Raw": 1}\n')
     assert sorted(_named_literals(bad, names)) == ["2: Channel Clamp", "2: Raw"]
+
+
+def test_the_config_page_lists_the_registrys_views_and_spaces():
+    """docs/config.md names every view, scene-linear space and log space of the registry."""
+    text = (ROOT / "docs" / "config.md").read_text()
+    names = registry.VIEWS + registry.SCENE_LINEAR_SPACES + registry.ENCODED_SPACES
+    assert [n for n in names if f"`{n}`" not in text] == []
