@@ -23,7 +23,17 @@ from typing import Any
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config import spaces
-from ocio_thinfilm.config.factories import file_transform
+from ocio_thinfilm.config.luts import (
+    KNOB_NAMES,
+    clip_luts,
+    clip_passes,
+    compress_luts,
+    compress_passes,
+    lut_files,
+    lut_reference,
+    named_lut,
+)
+from ocio_thinfilm.config.named import TABLE_NAMED_TRANSFORM, named_transforms
 from ocio_thinfilm.lut import (
     clip_lut,
     compress_lut,
@@ -40,23 +50,12 @@ __all__ = [
     "LUT_DIRECTORY",
     "ROLES",
     "ConfigData",
-    "named_lut",
-    "clip_luts",
-    "KNOB_NAMES",
-    "compress_luts",
-    "lut_files",
     "view_parts",
     "LUT_FILE_VIEWS",
     "config_data",
     "thin_film_colorspaces",
     "display_views",
     "file_rules",
-    "CLIP_NAMED_TRANSFORM",
-    "TABLE_NAMED_TRANSFORM",
-    "clip_named_transform",
-    "COMPRESS_NAMED_TRANSFORM",
-    "compress_named_transform",
-    "named_transforms",
     "FILM_LUT_PREFIX",
     "film_lut_stem",
     "film_parts",
@@ -133,192 +132,15 @@ class ConfigData:
     profile_version: tuple = PROFILE_VERSION
 
 
-def named_lut(stem: str) -> str:
-    """Return the config's file name of the LUT ``stem`` (CLF, in :data:`LUT_DIRECTORY`).
-
-    Parameters
-    ----------
-    stem : str
-        The LUT's file stem (e.g. a :class:`~ocio_thinfilm.registry.ThinFilmSpace`'s
-        ``lut_stem``).
-
-    Returns
-    -------
-    str
-        ``stem + ".clf"``.
-
-    Examples
-    --------
-    >>> named_lut("ThinFilm_Morpho_Iridescence")
-    'ThinFilm_Morpho_Iridescence.clf'
-    """
-    return f"{stem}.clf"
-
-
-def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
-    """Return the clip LUTs of every SDR display of the registry.
-
-    Parameters
-    ----------
-    clip_size : int, optional
-        Edge length of the clip's black pass, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-
-    Returns
-    -------
-    dict
-        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
-        :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` (each computed once, then cached).
-
-    Raises
-    ------
-    ValueError
-        For a ``clip_size`` outside [9, 129].
-    """
-    return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
-
-
-#: The names of the compression's knobs in the functions that bake the config.
-KNOB_NAMES = ("compress_threshold", "compress_limit")
-
-
-def compress_luts(
-    clip_size: int = clip_lut.CLIP_SIZE,
-    *,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
-) -> dict:
-    """Return the compression LUTs of every SDR display of the registry.
-
-    Parameters
-    ----------
-    clip_size : int, optional
-        Edge length of the clip LUTs they run with, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-    compress_threshold : float, optional
-        The compression's threshold, in (0, 1) (default
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD`).
-    compress_limit : float, optional
-        The compression's limit, above 1 (default
-        :data:`ocio_thinfilm.colour.compress.LIMIT`).
-
-    Returns
-    -------
-    dict
-        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
-        :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT`.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range
-        (:func:`ocio_thinfilm.colour.compress.check_knobs`).
-    ValueError
-        For a ``clip_size`` outside [9, 129].
-    """
-    threshold, limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=KNOB_NAMES
-    )
-    return {
-        display: compress_lut.compress_lut(
-            display, threshold=threshold, limit=limit, clip_size=clip_size
-        )
-        for display in registry.DISPLAYS
-    }
-
-
-def lut_files(
-    luts_by_display: dict,
-    film_size: int = tables.FILM_SIZE,
-    morpho_size: int = tables.MORPHO_SIZE,
-    compress_by_display: dict | None = None,
-) -> dict:
-    """Return every LUT file the config uses.
-
-    The thin-film tables and, per display, the two passes of its clip LUT and the two
-    squeezes of its compression.
-
-    Parameters
-    ----------
-    luts_by_display : dict
-        SDR display (name or registry display) -> its ClipLUT (:func:`clip_luts`).
-    film_size : int, optional
-        Entries of the thickness tables (default
-        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
-    morpho_size : int, optional
-        Entries of the Morpho angle table (default
-        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
-    compress_by_display : dict, optional
-        SDR display -> its CompressLUT (:func:`compress_luts`); ``None`` (default) for
-        no compression files.
-
-    Returns
-    -------
-    dict
-        LUT file name (:func:`named_lut`) -> GroupTransform (CLF-writable).
-
-    Raises
-    ------
-    ParameterError
-        Naming ``luts_by_display`` or ``compress_by_display``, for a key that is not an
-        SDR display of the registry.
-    """
-    files = {}
-    for space in registry.THIN_FILM_LIST:
-        table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
-        files[named_lut(space.lut_stem)] = table.transform()
-    for display, lut in luts_by_display.items():
-        entry = registry.as_display(display, hdr=False, parameter="luts_by_display")
-        files[named_lut(entry.clip_lut_stem())] = lut.black_core()
-        files[named_lut(entry.clip_lut_stem(True))] = lut.white_core()
-    for display, soft in (compress_by_display or {}).items():
-        entry = registry.as_display(display, hdr=False, parameter="compress_by_display")
-        files[named_lut(entry.compress_lut_stem())] = soft.black_core()
-        files[named_lut(entry.compress_lut_stem(True))] = soft.white_core()
-    return files
-
-
-def _lut_reference(name, luts, inline):
-    """Return the LUT file ``name``: its transform (``inline``) or a FileTransform to it."""
-    return luts[name] if inline else file_transform(name)
-
-
-def _clip_passes(lut, luts, inline):
-    """Return the clip chain of ``lut`` with its two passes as in the config.
-
-    CIE-XYZ-D65 -> sRGB code values of the clipped display RGB.
-    """
-    entry = registry.as_display(lut.display)
-    cores = [
-        _lut_reference(named_lut(entry.clip_lut_stem(white)), luts, inline)
-        for white in (False, True)
-    ]
-    return lut.transforms(*cores)
-
-
-def _compress_passes(soft, luts, inline):
-    """Return the compression chain of ``soft`` (a CompressLUT) as in the config.
-
-    Its two squeezes and the clip's two passes: CIE-XYZ-D65 -> sRGB code values.
-    """
-    entry = registry.as_display(soft.display)
-    cores = [
-        _lut_reference(named_lut(stem(white)), luts, inline)
-        for stem in (entry.compress_lut_stem, entry.clip_lut_stem)
-        for white in (False, True)
-    ]
-    return soft.transforms(*cores)
-
-
 def _clip_chain(lut, soft, luts, inline):
     # the second LUT ends in sRGB code values: back to display-linear here, the display
     # colour space encodes again (OCIO's optimiser removes the pair for the sRGB-encoded
     # displays)
-    return _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
+    return clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
 
 
 def _compress_chain(lut, soft, luts, inline):
-    return _compress_passes(soft, luts, inline) + [clip_lut.working_decoding_transform()]
+    return compress_passes(soft, luts, inline) + [clip_lut.working_decoding_transform()]
 
 
 #: View kind -> its chain in the config, CIE-XYZ-D65 -> display-linear RGB of an SDR
@@ -546,7 +368,7 @@ def thin_film_colorspaces(
                 encoding="scene-linear",
                 categories=["file-io"],
                 description=f"{table.description} {encoding}",
-                to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline),
+                to_reference=lut_reference(named_lut(space.lut_stem), luts, inline),
             )
         )
     return cs
@@ -649,167 +471,6 @@ def file_rules() -> list[dict[str, str]]:
     ]
 
 
-#: Named transform of the clip alone, per display (display-linear RGB in and out).
-CLIP_NAMED_TRANSFORM = "Constant-Lightness Clip - {display} (display-linear)"
-#: Named transform of the compression alone, per display.
-COMPRESS_NAMED_TRANSFORM = "Constant-Lightness Compress - {display} (display-linear)"
-#: Named transform of a thin-film table (pixel value in, CIE XYZ out).
-TABLE_NAMED_TRANSFORM = "{space} to CIE-XYZ-D65"
-
-
-def clip_named_transform(
-    lut: clip_lut.ClipLUT,
-    *,
-    inline: bool = False,
-    luts: dict[str, ocio_ops.Transform] | None = None,
-) -> ocio_ops.Transform:
-    """Return the constant-lightness clip of ``lut``'s display on its own.
-
-    Display-linear RGB in, display-linear RGB in [0, 1] out (XYZ -> the two LUT passes
-    -> decoded), for hosts that apply a named transform as a node (Nuke
-    OCIONamedTransform, Houdini).
-
-    Parameters
-    ----------
-    lut : ClipLUT
-        The display's clip LUT.
-    inline : bool, optional
-        Put the LUTs into the transform (``True``) or refer to the LUT files by
-        FileTransform (``False``, the default).
-    luts : dict, optional
-        The LUT files (:func:`lut_files`); required with ``inline=True``.
-
-    Returns
-    -------
-    PyOpenColorIO.GroupTransform
-        The named transform's transform.
-    """
-    return ocio_ops.group(
-        [display_transforms.display_matrix_transform(lut.display, inverse=True)]
-        + _clip_passes(lut, luts, inline)
-        + [clip_lut.working_decoding_transform()]
-    )
-
-
-def compress_named_transform(
-    soft: compress_lut.CompressLUT,
-    *,
-    inline: bool = False,
-    luts: dict[str, ocio_ops.Transform] | None = None,
-) -> ocio_ops.Transform:
-    """Return the soft constant-lightness compression of ``soft``'s display on its own.
-
-    Display-linear RGB in and out (as :func:`clip_named_transform`).
-
-    Parameters
-    ----------
-    soft : CompressLUT
-        The display's compression LUT.
-    inline : bool, optional
-        Put the LUTs into the transform (``True``) or refer to the LUT files by
-        FileTransform (``False``, the default).
-    luts : dict, optional
-        The LUT files (:func:`lut_files`); required with ``inline=True``.
-
-    Returns
-    -------
-    PyOpenColorIO.GroupTransform
-        The named transform's transform.
-    """
-    return ocio_ops.group(
-        [display_transforms.display_matrix_transform(soft.display, inverse=True)]
-        + _compress_passes(soft, luts, inline)
-        + [clip_lut.working_decoding_transform()]
-    )
-
-
-def named_transforms(
-    luts_by_display: dict,
-    *,
-    inline: bool = False,
-    luts: dict[str, ocio_ops.Transform] | None = None,
-    compress_by_display: dict | None = None,
-) -> list:
-    """Return the named transforms (OCIO >= 2.0) as data.
-
-    The clip and the compression per display, and the three thin-film tables (pixel
-    value in, CIE-XYZ-D65 out, whatever the config's reference space: merged configs
-    add the same ones).
-
-    Parameters
-    ----------
-    luts_by_display : dict
-        Display name -> ClipLUT: one clip named transform each
-        (:data:`CLIP_NAMED_TRANSFORM`).
-    inline : bool, optional
-        Put the LUTs into the transforms (``True``) or refer to the LUT files by
-        FileTransform (``False``, the default).
-    luts : dict, optional
-        The LUT files (:func:`lut_files`); required with ``inline=True``.
-    compress_by_display : dict, optional
-        Display name -> CompressLUT: one compression named transform each
-        (:data:`COMPRESS_NAMED_TRANSFORM`); ``None`` (default) for none.
-
-    Returns
-    -------
-    list of dict
-        Keyword arguments of
-        :func:`~ocio_thinfilm.config.factories.named_transform_factory`.
-    """
-
-    def gamut_map(name, display, what, transform):
-        return dict(
-            name=name.format(display=display),
-            family="Thin Film",
-            categories=["gamut-mapping"],
-            encoding="display-linear",
-            description=(
-                f"{what}: {display} display-linear RGB in (any values), "
-                "display-linear RGB in [0, 1] out, luminance kept. Apply it "
-                "as a node, then encode for the display."
-            ),
-            transform=transform,
-        )
-
-    out = [
-        gamut_map(
-            CLIP_NAMED_TRANSFORM,
-            display,
-            f"Smits & Meyer 1990 constant-lightness clip into {display} on its own",
-            clip_named_transform(lut, inline=inline, luts=luts),
-        )
-        for display, lut in luts_by_display.items()
-    ]
-    for display, squeeze in (compress_by_display or {}).items():
-        t, lim = (compress_map.knob_text(v) for v in squeeze.parameters[:2])
-        out.append(
-            gamut_map(
-                COMPRESS_NAMED_TRANSFORM,
-                display,
-                f"Soft constant-lightness compression into {display} on its own "
-                f"(threshold {t}, limit {lim})",
-                compress_named_transform(squeeze, inline=inline, luts=luts),
-            )
-        )
-    for space in registry.THIN_FILM_LIST:
-        table = named_lut(space.lut_stem)
-        out.append(
-            dict(
-                name=TABLE_NAMED_TRANSFORM.format(space=space.name),
-                family="Thin Film",
-                categories=["thin-film"],
-                encoding="scene-linear",
-                description=(
-                    f"The {space.name} table on its own: pixel value in (all channels "
-                    "equal, as for the colour space of that name), unclipped CIE XYZ "
-                    "(D65, perfect reflector Y = 1) out."
-                ),
-                transform=_lut_reference(table, luts, inline),
-            )
-        )
-    return out
-
-
 #: LUT file stem of a user's film: this prefix and its key (file-name safe).
 FILM_LUT_PREFIX = "ThinFilm_User_"
 
@@ -897,7 +558,7 @@ def film_parts(
                     f"micrometres, clamped to [{lo:g}, {hi:g}]. Output: {output}, CIE "
                     f"XYZ D65. From {Path(film.source).name}."
                 ),
-                to_reference=_lut_reference(filename, luts, inline),
+                to_reference=lut_reference(filename, luts, inline),
             )
         )
         named.append(
@@ -911,7 +572,7 @@ def film_parts(
                     f"{film.varying.name} layer in um in (all channels equal), CIE XYZ "
                     "(D65, perfect reflector Y = 1) out."
                 ),
-                transform=_lut_reference(filename, luts, inline),
+                transform=lut_reference(filename, luts, inline),
             )
         )
     return spaces, named, luts
