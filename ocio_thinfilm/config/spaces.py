@@ -55,7 +55,7 @@ def matrix_to_reference(colorimetry_name: str) -> ocio_ops.Transform:
     return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(np.linalg.inv(M))])
 
 
-def _acescct_decoding() -> ocio_ops.Transform:
+def _acescct_decoding() -> list[ocio_ops.Transform]:
     """ACEScct codes -> ACEScg: OCIO's built-in to ACES2065-1, then AP0 -> AP1 undone.
 
     The two matrices cancel when OCIO optimises, so the path is per channel, as OCIO's
@@ -65,13 +65,13 @@ def _acescct_decoding() -> ocio_ops.Transform:
 
     to_linear = ocio.BuiltinTransform("ACEScg_to_ACES2065-1")
     to_linear.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return ocio_ops.group([ocio.BuiltinTransform("ACEScct_to_ACES2065-1"), to_linear])
+    return [ocio.BuiltinTransform("ACEScct_to_ACES2065-1"), to_linear]
 
 
-def _log_camera_decoding(curve: str) -> Callable[[], ocio_ops.Transform]:
+def _log_camera_decoding(curve: str) -> Callable[[], list[ocio_ops.Transform]]:
     """Return a factory of the inverse ``LogCameraTransform`` of ``curve`` (OCIO >= 2.0)."""
 
-    def decoding() -> ocio_ops.Transform:
+    def decoding() -> list[ocio_ops.Transform]:
         import PyOpenColorIO as ocio
 
         c = LOG_CURVES[curve]
@@ -85,14 +85,14 @@ def _log_camera_decoding(curve: str) -> Callable[[], ocio_ops.Transform]:
             direction=ocio.TRANSFORM_DIR_INVERSE,
         )
         t.setLinearSlopeValue([c.linear_slope] * 3)
-        return t
+        return [t]
 
     return decoding
 
 
 #: Log curve (:data:`ocio_thinfilm.registry.LOG_CURVES`) -> a factory of its OCIO 2.1
-#: transform, code values -> scene-linear values of the same gamut, per channel.
-CURVE_DECODINGS: dict[str, Callable[[], ocio_ops.Transform]] = {
+#: transforms, code values -> scene-linear values of the same gamut, per channel.
+CURVE_DECODINGS: dict[str, Callable[[], list[ocio_ops.Transform]]] = {
     "ACEScct": _acescct_decoding,
     "DaVinci Intermediate": _log_camera_decoding("DaVinci Intermediate"),
     "ARRI LogC4": _log_camera_decoding("ARRI LogC4"),
@@ -120,11 +120,9 @@ def encoded_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
     curve = LOG_CURVES[encoded.curve]
     lo, hi = (float(f"{curve.encode_one(v):.7g}") for v in (-ocio_ops.LIMIT, ocio_ops.LIMIT))
     return ocio_ops.group(
-        [
-            ocio_ops.range_(lo, hi),
-            CURVE_DECODINGS[encoded.curve](),
-            matrix_to_reference(encoded.gamut.colorimetry),
-        ]
+        [ocio_ops.range_(lo, hi)]
+        + CURVE_DECODINGS[encoded.curve]()
+        + [matrix_to_reference(encoded.gamut.colorimetry)]
     )
 
 
