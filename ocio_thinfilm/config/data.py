@@ -69,7 +69,7 @@ ROLES = {
     "scene_linear": "Linear Rec.709 (sRGB)",
     "rendering": "Linear Rec.709 (sRGB)",
     "default": "Linear Rec.709 (sRGB)",
-    "data": "Raw",
+    "data": registry.RAW_SPACE,
     "reference": "CIE-XYZ-D65",
     "color_picking": registry.TEXTURE_SPACE,
     "texture_paint": "Linear Rec.709 (sRGB)",
@@ -427,7 +427,7 @@ def display_views(
         views = []
         for view in registry.VIEW_LIST:
             if view.raw:
-                views.append(dict(name=view.name, colorspace="Raw"))
+                views.append(dict(name=view.name, colorspace=registry.RAW_SPACE))
                 continue
             vt = f"{view.name} - {entry.name}"
             vts.append(

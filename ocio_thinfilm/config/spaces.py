@@ -185,7 +185,7 @@ def scene_colorspaces() -> list[dict[str, Any]]:
     )
     cs.append(
         dict(
-            name="Raw",
+            name=registry.RAW_SPACE,
             family="Utility",
             encoding="data",
             is_data=True,

@@ -40,6 +40,7 @@ from ocio_thinfilm.registry.displays import (
 from ocio_thinfilm.registry.spaces import (
     ENCODED_LIST,
     LOG_CURVE_LIST,
+    RAW_SPACE,
     REFERENCE,
     RGB_COLORIMETRY,
     SCENE_LINEAR_BY_NAME,
@@ -70,6 +71,7 @@ __all__ = [
     "EncodedSpace",
     "REFERENCE",
     "TEXTURE_SPACE",
+    "RAW_SPACE",
     "RGB_COLORIMETRY",
     "SCENE_LINEAR_LIST",
     "SCENE_LINEAR_SPACES",
@@ -440,7 +442,7 @@ def validate() -> None:
     if any(not v.description for v in VIEW_LIST if not v.raw):
         raise ValueError("registry: every view but the raw one needs a description")
     spaces_all = (
-        [REFERENCE]
+        [REFERENCE, TEXTURE_SPACE, RAW_SPACE]
         + list(SCENE_LINEAR_SPACES)
         + list(ENCODED_SPACES)
         + list(THIN_FILM_SPACES)

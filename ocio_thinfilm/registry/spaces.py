@@ -19,6 +19,7 @@ __all__ = [
     "LOG_CURVE_LIST",
     "REFERENCE",
     "TEXTURE_SPACE",
+    "RAW_SPACE",
     "RGB_COLORIMETRY",
     "SCENE_LINEAR_LIST",
     "SCENE_LINEAR_BY_NAME",
@@ -202,6 +203,8 @@ LOG_CURVE_LIST = (
 #: The reference space of the scene and of the displays (CIE XYZ, D65 white, Y = 1 for
 #: the perfect reflector).
 REFERENCE = "CIE-XYZ-D65"
+#: The non-colour data space (the data role; the raw view shows it): values pass unchanged.
+RAW_SPACE = "Raw"
 #: The sRGB-encoded texture space (8-bit images, colour picking): the sRGB display's
 #: encoding over Rec.709 primaries.
 TEXTURE_SPACE = "sRGB - Texture"
