@@ -283,8 +283,8 @@ def _cube_shaper(source, fmt, shaper):
     if not shaper and source not in _PLAIN_INPUTS:
         raise ParameterError(
             "shaper",
-            f"=False (a plain .cube) needs an input whose values "
-            f"lie in [0, 1] ({', '.join(_PLAIN_INPUTS)}); {source} "
+            f"=False (a plain .cube) needs an input whose code values 0..1 cover "
+            f"the views' colours ({', '.join(_PLAIN_INPUTS)}); {source} "
             "takes the Resolve form",
         )
     return bool(shaper)
