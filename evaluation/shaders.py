@@ -1,7 +1,8 @@
 """Running the exported shaders where no host is installed, and the truth they are held to.
 
 - :func:`analytic_view` -- the double-precision view: the input decoded with
-  colour-science (ACEScct) and the package's colorimetry matrices, components limited to
+  colour-science's own function of its log curve (:data:`LOG_DECODINGS`) and the
+  package's colorimetry matrices, components limited to
   +-1e6 as the config does, the analytic map (``colour.clip.clip_XYZ``,
   ``colour.compress.compress_XYZ``) in the display's gamut (for HDR scaled into its
   volume, HLG in scene light through the BT.2100 OOTF written out here), and the display
@@ -27,10 +28,16 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry, compress
+from ocio_thinfilm.colour import colorimetry, compress
+from ocio_thinfilm.colour.views import analytic_map
+from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
 
 __all__ = [
     "LIMIT",
+    "LOG_DECODINGS",
+    "log_encoding",
+    "log_decoding",
     "PEAK",
     "WHITE",
     "analytic_display_XYZ",
@@ -45,12 +52,37 @@ __all__ = [
 ]
 
 #: The config's limit of every component (+-1e6; NaN and -Inf to the lowest).
-LIMIT = 1e6
+LIMIT = ocio_ops.LIMIT
 #: The HDR displays' reference white and peak, cd/m2 (ITU-R BT.2408; the registry's).
 WHITE = registry.HDR_REFERENCE_WHITE
 PEAK = 1000.0
-#: BT.2100's HLG system gamma at a 1000 cd/m2 peak (Table 5).
-HLG_GAMMA = 1.2
+#: Log curve (:data:`ocio_thinfilm.registry.LOG_CURVES`) -> colour-science's names of
+#: its encoding and decoding (``colour.models``): the truth the config's colour spaces
+#: and the shaders are held to.
+LOG_DECODINGS = {
+    "ACEScct": ("log_encoding_ACEScct", "log_decoding_ACEScct"),
+    "DaVinci Intermediate": ("oetf_DaVinciIntermediate", "oetf_inverse_DaVinciIntermediate"),
+    "ARRI LogC4": ("log_encoding_ARRILogC4", "log_decoding_ARRILogC4"),
+    "S-Log3": ("log_encoding_SLog3", "log_decoding_SLog3"),
+}
+
+
+def log_encoding(linear: npt.ArrayLike, curve: str) -> np.ndarray:
+    """Scene-linear values -> codes of the log ``curve``, by colour-science."""
+    import colour
+
+    with np.errstate(divide="ignore", invalid="ignore"):  # log of the masked negatives
+        return np.asarray(getattr(colour.models, LOG_DECODINGS[curve][0])(linear))
+
+
+def log_decoding(codes: npt.ArrayLike, curve: str) -> np.ndarray:
+    """Codes of the log ``curve`` -> scene-linear values, by colour-science."""
+    import colour
+
+    with np.errstate(over="ignore"):
+        return np.asarray(getattr(colour.models, LOG_DECODINGS[curve][1])(codes))
+
+
 #: The config's sRGB-encoded texture space (sRGB curve, Rec.709 primaries).
 TEXTURE = registry.TEXTURE_SPACE
 
@@ -76,11 +108,10 @@ def _to_XYZ(values, source):
         return _limited(colorimetry.RGB_to_XYZ(rgb, "Rec.709"))
     space = registry.linear_space_of(source)
     assert space is not None, source
-    if source != space.name:  # ACEScct, decoded by colour-science (S-2016-001)
-        with np.errstate(invalid="ignore"):  # log2 of -LIMIT, in the masked branch
-            lo = colour.models.log_encoding_ACEScct(-LIMIT)
-        hi = colour.models.log_encoding_ACEScct(LIMIT)
-        v = colour.models.log_decoding_ACEScct(np.clip(np.where(np.isnan(v), lo, v), lo, hi))
+    encoded = registry.find_encoded(source)
+    if encoded is not None:  # decoded by colour-science's function of the curve
+        lo, hi = log_encoding([-LIMIT, LIMIT], encoded.curve)
+        v = log_decoding(np.clip(np.where(np.isnan(v), lo, v), lo, hi), encoded.curve)
     rgb = _limited(v)
     return _limited(colorimetry.RGB_to_XYZ(rgb, space.colorimetry))
 
@@ -111,14 +142,11 @@ def analytic_display_XYZ(
     gamma); the map works on E (the signal's volume is the gamut's parallelepiped)."""
     entry = registry.as_display(display)
     gamut = entry.gamut.name
-    if view == "Constant-Lightness Clip":
+    form = analytic_map(view)
+    assert form is not None, view
 
-        def mapping(x):
-            return clip.clip_XYZ(x, gamut)
-    else:
-
-        def mapping(x):
-            return compress.compress_XYZ(x, gamut, threshold, limit)
+    def mapping(x):
+        return form.xyz(x, gamut, threshold, limit)
 
     XYZ = np.asarray(XYZ, dtype=np.float64).reshape(-1, 3)
     if not entry.hdr:
@@ -184,7 +212,7 @@ def analytic_inverse_view(
     else:
         rgb = colour.models.oetf_inverse_BT2100_HLG(code)
     rgb = np.clip(rgb, 0.0, 1.0)
-    if view == "Constant-Lightness Compress":
+    if registry.as_view(view).kind == "compress":  # the clip's preimage is the colour itself
         rgb = compress.compress_RGB_inverse(rgb, gamut, threshold, limit)
     XYZ = colorimetry.RGB_to_XYZ(rgb, gamut)
     if entry.hdr and entry.transfer == "PQ":
@@ -195,8 +223,8 @@ def analytic_inverse_view(
 
 
 def source_values(XYZ: npt.ArrayLike, source: str) -> np.ndarray:
-    """CIE-XYZ-D65 -> values of the input space ``source`` (float64, (N, 3)); ACEScct
-    encoded by colour-science."""
+    """CIE-XYZ-D65 -> values of the input space ``source`` (float64, (N, 3)); a log
+    space encoded by colour-science's function of its curve."""
     import colour
 
     XYZ = np.asarray(XYZ, dtype=np.float64).reshape(-1, 3)
@@ -207,10 +235,8 @@ def source_values(XYZ: npt.ArrayLike, source: str) -> np.ndarray:
     space = registry.linear_space_of(source)
     assert space is not None, source
     rgb = colorimetry.XYZ_to_RGB(XYZ, space.colorimetry)
-    if source != space.name:
-        with np.errstate(divide="ignore", invalid="ignore"):  # log2 of the masked negatives
-            return colour.models.log_encoding_ACEScct(rgb)
-    return rgb
+    encoded = registry.find_encoded(source)
+    return rgb if encoded is None else log_encoding(rgb, encoded.curve)
 
 
 # --------------------------------------------------------------------------- #

@@ -290,3 +290,117 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
         for view in registry.VIEWS:
             assert f"SET {display} / {view}" in text, text
     assert "IMAGE Thin Film Phase-Change Thickness" in text, text
+
+
+# --------------------------------------------------------------------------- #
+# The encoded (log) input spaces against colour-science's own decodings and gamuts
+# --------------------------------------------------------------------------- #
+#: colour-science's decoding of each log curve (``colour.models``), and the relative
+#: tolerance of OCIO's float32 CPU processor against it (its log/exp are approximations
+#: good to ~1e-5; measured max 1.9e-5 S-Log3 .. 6.7e-5 DaVinci Intermediate, LogC4).
+DECODINGS = {
+    "ACEScct": "log_decoding_ACEScct",
+    "DaVinci Intermediate": "oetf_inverse_DaVinciIntermediate",
+    "ARRI LogC4": "log_decoding_ARRILogC4",
+    "S-Log3": "log_decoding_SLog3",
+}
+ENCODED_RTOL = 1.5e-4
+
+
+def _colour_science_XYZ(codes, encoded):
+    """Code values of ``encoded`` -> CIE-XYZ-D65 by colour-science: the curve's decoding,
+    then the gamut's RGB -> XYZ (Bradford to D65 where its white differs)."""
+    import colour
+
+    space = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[encoded.gamut.colorimetry]]
+    linear = getattr(colour.models, DECODINGS[encoded.curve])(codes)
+    d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+    return colour.RGB_to_XYZ(
+        linear, space, illuminant=d65, chromatic_adaptation_transform="Bradford"
+    )
+
+
+@pytest.fixture(scope="module")
+def fresh_cfg():
+    """The config as ``bake`` makes it (its LUTs inline, small: the encoded spaces need none)."""
+    data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
+    return config.generate_config(data)
+
+
+@pytest.mark.parametrize("encoded", registry.ENCODED_LIST, ids=lambda e: e.name)
+def test_encoded_spaces_are_colour_sciences_curves_and_gamuts(fresh_cfg, encoded):
+    """The config's colour space (CPU processor to CIE-XYZ-D65) of every encoded space is
+    colour-science's decoding of its curve and its gamut's matrix, codes 0..1."""
+    cfg = fresh_cfg
+    assert cfg.getColorSpace(encoded.name).getFamily() == encoded.family
+    rng = np.random.default_rng(5)
+    codes = np.concatenate([rng.uniform(0.0, 1.0, (20000, 3)), np.eye(3), np.zeros((1, 3))])
+    px = codes.astype(np.float32)
+    cfg.getProcessor(encoded.name, registry.REFERENCE).getDefaultCPUProcessor().applyRGB(px)
+    truth = _colour_science_XYZ(codes.astype(np.float32).astype(np.float64), encoded)
+    err = np.abs(px - truth) / np.maximum(1.0, np.abs(truth))
+    print(f"{encoded.name}: max relative error {err.max():.3g}")
+    assert err.max() <= ENCODED_RTOL
+
+
+OCIO_2_1_BAKER = Path("/usr/bin/ociobakelut")
+
+
+@pytest.mark.skipif(not OCIO_2_1_BAKER.exists(), reason="Debian's OCIO 2.1 tools not installed")
+def test_encoded_spaces_load_and_decode_in_ocio_2_1(tmp_path):
+    """The encoded spaces as the config writes them, read by OCIO 2.1 (Debian's
+    opencolorio-tools, the OCIO of Blender 3.4): a 9^3 table of each space to
+    CIE-XYZ-D65 baked by its ociobakelut is colour-science's decoding."""
+    import PyOpenColorIO as ocio
+
+    from ocio_thinfilm.config import spaces
+
+    cfg = ocio.Config.CreateRaw()
+    cfg.setMajorVersion(2)
+    cfg.setMinorVersion(1)
+    for data in spaces.scene_colorspaces():
+        if data["name"] != "Raw":
+            cfg.addColorSpace(config.colorspace_factory(**data))
+    cfg.setRole("reference", registry.REFERENCE)
+    cfg.setRole("scene_linear", registry.REFERENCE)
+    path = tmp_path / "config.ocio"
+    path.write_text(cfg.serialize())
+    check = subprocess.run(
+        [str(OCIO_2_1_BAKER.with_name("ociocheck")), "--iconfig", str(path)],
+        capture_output=True,
+        text=True,
+    )
+    if "Library Version: 2.1." not in check.stdout:
+        pytest.skip("the OCIO tools in /usr/bin are not OCIO 2.1")
+    assert check.returncode == 0 and "passed" in check.stdout, check.stdout + check.stderr
+    size = 9
+    u = np.linspace(0.0, 1.0, size)
+    codes = np.stack(np.meshgrid(u, u, u, indexing="ij"), axis=-1).transpose(2, 1, 0, 3)
+    codes = codes.reshape(-1, 3)  # red fastest, as a .cube lists its nodes
+    for encoded in registry.ENCODED_LIST:
+        out = tmp_path / "table.cube"
+        result = subprocess.run(
+            [
+                str(OCIO_2_1_BAKER),
+                "--iconfig",
+                str(path),
+                "--inputspace",
+                encoded.name,
+                "--outputspace",
+                registry.REFERENCE,
+                "--format",
+                "resolve_cube",
+                "--cubesize",
+                str(size),
+                str(out),
+            ],
+            capture_output=True,
+            text=True,
+        )
+        assert result.returncode == 0, result.stderr
+        rows = [line.split() for line in out.read_text().splitlines()]
+        table = np.array([[float(v) for v in r] for r in rows if len(r) == 3 and "_" not in r[0]])
+        truth = _colour_science_XYZ(codes, encoded)
+        err = np.abs(table - truth) / np.maximum(1.0, np.abs(truth))
+        print(f"{encoded.name} (OCIO 2.1): max relative error {err.max():.3g}")
+        assert err.max() <= ENCODED_RTOL

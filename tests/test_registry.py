@@ -186,7 +186,7 @@ def test_adding_a_display_is_one_entry(tmp_path):
     generates a config with that display, its views, clip LUT files and PNG tag."""
     package = tmp_path / "ocio_thinfilm"
     shutil.copytree(ROOT / "ocio_thinfilm", package, ignore=shutil.ignore_patterns("__pycache__"))
-    source = (package / "registry.py").read_text()
+    source = (package / "registry" / "displays.py").read_text()
     anchor = "\nDISPLAY_LIST = (\n"
     assert source.count(anchor) == 1
     entry = (
@@ -196,7 +196,7 @@ def test_adding_a_display_is_one_entry(tmp_path):
         'encoding=Encoding("BT.1886 gamma 2.4", gamma=2.4), lut_stem="Rec709", '
         'png_colorspace="g24_rec709_display"),\n'
     )
-    (package / "registry.py").write_text(source.replace(anchor, anchor + entry))
+    (package / "registry" / "displays.py").write_text(source.replace(anchor, anchor + entry))
     code = (
         "import json; from ocio_thinfilm import config\n"
         "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
@@ -230,3 +230,92 @@ def test_adding_a_display_is_one_entry(tmp_path):
         "ConstantLightnessCompress_Rec709_WhiteFaces.clf",
     ]
     assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"
+
+
+def test_every_stage_maps_every_view_kind_and_log_curve():
+    """Each stage's one mapping keyed by view kind or log curve has an entry for every
+    kind and curve of the registry (a new kind or curve fails here until each stage says
+    what it does with it)."""
+    from evaluation.shaders import LOG_DECODINGS
+    from ocio_thinfilm.colour.log_curves import LOG_CURVES
+    from ocio_thinfilm.colour.views import ANALYTIC_MAPS
+    from ocio_thinfilm.config.data import LUT_FILE_VIEWS
+    from ocio_thinfilm.config.spaces import CURVE_DECODINGS
+    from ocio_thinfilm.export.shader import SHADER_MAPS
+    from ocio_thinfilm.lut.view_transforms import LINEAR_VIEWS, LUT_VIEWS
+
+    by_kind = dict(
+        ANALYTIC_MAPS=ANALYTIC_MAPS,
+        LINEAR_VIEWS=LINEAR_VIEWS,
+        LUT_VIEWS=LUT_VIEWS,
+        LUT_FILE_VIEWS=LUT_FILE_VIEWS,
+        SHADER_MAPS=SHADER_MAPS,
+    )
+    kinds = {v.kind for v in registry.VIEW_LIST}
+    assert kinds == set(registry.VIEW_KINDS)
+    assert {name: sorted(m) for name, m in by_kind.items()} == {
+        name: sorted(kinds) for name in by_kind
+    }
+    by_curve = dict(
+        LOG_CURVES=LOG_CURVES, CURVE_DECODINGS=CURVE_DECODINGS, LOG_DECODINGS=LOG_DECODINGS
+    )
+    curves = {e.curve for e in registry.ENCODED_LIST}
+    assert curves == set(registry.LOG_CURVES)
+    assert {name: sorted(m) for name, m in by_curve.items()} == {
+        name: sorted(curves) for name in by_curve
+    }
+    # the raw view has no transform anywhere; every other view has a config chain
+    assert all(m["raw"] is None for m in by_kind.values())
+    assert all(LINEAR_VIEWS[k] is not None for k in kinds - {"raw"})
+
+
+def _named_literals(path: Path, names: set[str]) -> list[str]:
+    """``line: name`` of each comparison with, or dict key of, a string in ``names``."""
+    import ast
+
+    curves = set(registry.LOG_CURVES)
+
+    found = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        operands: list[ast.expr] = []
+        if isinstance(node, ast.Compare):
+            operands = [node.left, *node.comparators]
+            operands += [
+                e for o in operands if isinstance(o, (ast.Tuple, ast.List, ast.Set)) for e in o.elts
+            ]
+        elif isinstance(node, ast.Dict):  # curve names key the stages' curve mappings
+            operands = [
+                k
+                for k in node.keys
+                if k is not None and not (isinstance(k, ast.Constant) and k.value in curves)
+            ]
+        found += [
+            f"{o.lineno}: {o.value}"
+            for o in operands
+            if isinstance(o, ast.Constant) and isinstance(o.value, str) and o.value in names
+        ]
+    return found
+
+
+def test_no_view_or_encoded_space_is_picked_by_its_name_outside_the_registry(tmp_path):
+    """Behaviour comes from a view's kind and an encoded space's curve: no module of the
+    package compares a view's or an encoded space's name with a string literal, or keys a
+    dict by one (the check can fail: a copy of the old comparison is found)."""
+    names = set(registry.VIEWS) | set(registry.ENCODED_SPACES)
+    package = ROOT / "ocio_thinfilm"
+    found = {
+        str(p.relative_to(package)): hits
+        for p in sorted(package.rglob("*.py"))
+        if p.relative_to(package).parts[0] != "registry" and (hits := _named_literals(p, names))
+    }
+    assert found == {}
+    bad = tmp_path / "bad.py"
+    bad.write_text('def f(view):\n    return view == "Channel Clamp" or {"Raw": 1}\n')
+    assert sorted(_named_literals(bad, names)) == ["2: Channel Clamp", "2: Raw"]
+
+
+def test_the_config_page_lists_the_registrys_views_and_spaces():
+    """docs/config.md names every view, scene-linear space and log space of the registry."""
+    text = (ROOT / "docs" / "config.md").read_text()
+    names = registry.VIEWS + registry.SCENE_LINEAR_SPACES + registry.ENCODED_SPACES
+    assert [n for n in names if f"`{n}`" not in text] == []

@@ -5,7 +5,11 @@
 - :mod:`.clip` -- the constant-lightness parallelepiped clip of Smits & Meyer (1990),
   Section 3.2, its two factors (the faces through black, through white) and baselines;
 - :mod:`.compress` -- the soft constant-lightness compression on the same ray, and its
-  two squeezes.
+  two squeezes;
+- :mod:`.views` -- each view kind's map in closed form (the clip, the compression, the
+  clamp);
+- :mod:`.log_curves` -- the log curves of the encoded input spaces (ACEScct, DaVinci
+  Intermediate, ARRI LogC4, S-Log3).
 """
 
-__all__ = ["colorimetry", "encodings", "clip", "compress"]
+__all__ = ["colorimetry", "encodings", "clip", "compress", "views", "log_curves"]

@@ -53,6 +53,7 @@ __all__ = [
     "THRESHOLD",
     "LIMIT",
     "POWER",
+    "LIMIT_MAX",
     "check_knobs",
     "knob_text",
     "compression_curve",
@@ -71,10 +72,16 @@ THRESHOLD = 0.8
 LIMIT = 1.3
 #: Exponent of the ACES 1.3 compression curve (S-2020-001).
 POWER = 1.2
+#: The largest limit a shader accepts from a host (its fallback refuses larger uniforms).
+LIMIT_MAX = 100.0
 
 
 def check_knobs(
-    threshold: object, limit: object, *, names: tuple[str, str] = ("threshold", "limit")
+    threshold: object,
+    limit: object,
+    *,
+    names: tuple[str, str] = ("threshold", "limit"),
+    limit_max: float | None = None,
 ) -> tuple[float, float]:
     """Return the compression's knobs ``(threshold, limit)`` as floats, checked.
 
@@ -89,6 +96,9 @@ def check_knobs(
     names : tuple of str, optional
         The parameters' names in the error messages (e.g. ``("compress_threshold",
         "compress_limit")`` for the functions that bake the view).
+    limit_max : float, optional
+        The largest limit allowed (:data:`LIMIT_MAX` for the shaders); ``None``
+        (default) for no bound.
 
     Returns
     -------
@@ -127,6 +137,8 @@ def check_knobs(
             " must be a finite number > 1 (the distance mapped onto the gamut boundary), "
             f"got {lim:g}",
         )
+    if limit_max is not None and lim > limit_max:
+        raise ParameterError(l_name, f" must be at most {limit_max:g} here, got {lim:g}")
     if t >= lim:  # implied by the two ranges; kept for a clear message if they change
         raise ParameterError(t_name, f" must be below {l_name} ({lim:g}), got {t:g}")
     return t, lim

@@ -20,10 +20,20 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ocio_thinfilm import registry, reproducible
-from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import compress as compress_map
-from ocio_thinfilm.config.factories import file_transform
+from ocio_thinfilm.config import spaces
+from ocio_thinfilm.config.luts import (
+    KNOB_NAMES,
+    clip_luts,
+    clip_passes,
+    compress_luts,
+    compress_passes,
+    lut_files,
+    lut_reference,
+    named_lut,
+)
+from ocio_thinfilm.config.named import TABLE_NAMED_TRANSFORM, named_transforms
 from ocio_thinfilm.lut import (
     clip_lut,
     compress_lut,
@@ -40,19 +50,12 @@ __all__ = [
     "LUT_DIRECTORY",
     "ROLES",
     "ConfigData",
-    "named_lut",
-    "clip_luts",
-    "KNOB_NAMES",
-    "compress_luts",
-    "lut_files",
     "view_parts",
+    "LUT_FILE_VIEWS",
     "config_data",
-    "CLIP_NAMED_TRANSFORM",
-    "TABLE_NAMED_TRANSFORM",
-    "clip_named_transform",
-    "COMPRESS_NAMED_TRANSFORM",
-    "compress_named_transform",
-    "named_transforms",
+    "thin_film_colorspaces",
+    "display_views",
+    "file_rules",
     "FILM_LUT_PREFIX",
     "film_lut_stem",
     "film_parts",
@@ -62,14 +65,11 @@ CONFIG_NAME = "ocio-thinfilm"
 PROFILE_VERSION = (2, 1)
 LUT_DIRECTORY = "luts"
 
-#: Views that show the data unchanged (the config's Raw colour space).
-_RAW_VIEWS = tuple(v.name for v in registry.VIEW_LIST if v.raw)
-
 ROLES = {
     "scene_linear": "Linear Rec.709 (sRGB)",
     "rendering": "Linear Rec.709 (sRGB)",
     "default": "Linear Rec.709 (sRGB)",
-    "data": "Raw",
+    "data": registry.RAW_SPACE,
     "reference": "CIE-XYZ-D65",
     "color_picking": registry.TEXTURE_SPACE,
     "texture_paint": "Linear Rec.709 (sRGB)",
@@ -132,194 +132,28 @@ class ConfigData:
     profile_version: tuple = PROFILE_VERSION
 
 
-def named_lut(stem: str) -> str:
-    """Return the config's file name of the LUT ``stem`` (CLF, in :data:`LUT_DIRECTORY`).
-
-    Parameters
-    ----------
-    stem : str
-        The LUT's file stem (e.g. a :class:`~ocio_thinfilm.registry.ThinFilmSpace`'s
-        ``lut_stem``).
-
-    Returns
-    -------
-    str
-        ``stem + ".clf"``.
-
-    Examples
-    --------
-    >>> named_lut("ThinFilm_Morpho_Iridescence")
-    'ThinFilm_Morpho_Iridescence.clf'
-    """
-    return f"{stem}.clf"
+def _clip_chain(lut, soft, luts, inline):
+    # the second LUT ends in sRGB code values: back to display-linear here, the display
+    # colour space encodes again (OCIO's optimiser removes the pair for the sRGB-encoded
+    # displays)
+    return clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
 
 
-def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
-    """Return the clip LUTs of every SDR display of the registry.
-
-    Parameters
-    ----------
-    clip_size : int, optional
-        Edge length of the clip's black pass, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-
-    Returns
-    -------
-    dict
-        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
-        :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` (each computed once, then cached).
-
-    Raises
-    ------
-    ValueError
-        For a ``clip_size`` outside [9, 129].
-    """
-    return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
+def _compress_chain(lut, soft, luts, inline):
+    return compress_passes(soft, luts, inline) + [clip_lut.working_decoding_transform()]
 
 
-#: The names of the compression's knobs in the functions that bake the config.
-KNOB_NAMES = ("compress_threshold", "compress_limit")
-
-
-def compress_luts(
-    clip_size: int = clip_lut.CLIP_SIZE,
-    *,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
-) -> dict:
-    """Return the compression LUTs of every SDR display of the registry.
-
-    Parameters
-    ----------
-    clip_size : int, optional
-        Edge length of the clip LUTs they run with, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-    compress_threshold : float, optional
-        The compression's threshold, in (0, 1) (default
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD`).
-    compress_limit : float, optional
-        The compression's limit, above 1 (default
-        :data:`ocio_thinfilm.colour.compress.LIMIT`).
-
-    Returns
-    -------
-    dict
-        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
-        :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT`.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range
-        (:func:`ocio_thinfilm.colour.compress.check_knobs`).
-    ValueError
-        For a ``clip_size`` outside [9, 129].
-    """
-    threshold, limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=KNOB_NAMES
-    )
-    return {
-        display: compress_lut.compress_lut(
-            display, threshold=threshold, limit=limit, clip_size=clip_size
-        )
-        for display in registry.DISPLAYS
-    }
-
-
-def lut_files(
-    luts_by_display: dict,
-    film_size: int = tables.FILM_SIZE,
-    morpho_size: int = tables.MORPHO_SIZE,
-    compress_by_display: dict | None = None,
-) -> dict:
-    """Return every LUT file the config uses.
-
-    The thin-film tables and, per display, the two passes of its clip LUT and the two
-    squeezes of its compression.
-
-    Parameters
-    ----------
-    luts_by_display : dict
-        SDR display (name or registry display) -> its ClipLUT (:func:`clip_luts`).
-    film_size : int, optional
-        Entries of the thickness tables (default
-        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
-    morpho_size : int, optional
-        Entries of the Morpho angle table (default
-        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
-    compress_by_display : dict, optional
-        SDR display -> its CompressLUT (:func:`compress_luts`); ``None`` (default) for
-        no compression files.
-
-    Returns
-    -------
-    dict
-        LUT file name (:func:`named_lut`) -> GroupTransform (CLF-writable).
-
-    Raises
-    ------
-    ParameterError
-        Naming ``luts_by_display`` or ``compress_by_display``, for a key that is not an
-        SDR display of the registry.
-    """
-    files = {}
-    for space in registry.THIN_FILM_LIST:
-        table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
-        files[named_lut(space.lut_stem)] = table.transform()
-    for display, lut in luts_by_display.items():
-        entry = registry.as_display(display, hdr=False, parameter="luts_by_display")
-        files[named_lut(entry.clip_lut_stem())] = lut.black_core()
-        files[named_lut(entry.clip_lut_stem(True))] = lut.white_core()
-    for display, soft in (compress_by_display or {}).items():
-        entry = registry.as_display(display, hdr=False, parameter="compress_by_display")
-        files[named_lut(entry.compress_lut_stem())] = soft.black_core()
-        files[named_lut(entry.compress_lut_stem(True))] = soft.white_core()
-    return files
-
-
-def _lut_reference(name, luts, inline):
-    """Return the LUT file ``name``: its transform (``inline``) or a FileTransform to it."""
-    return luts[name] if inline else file_transform(name)
-
-
-def _clip_passes(lut, luts, inline):
-    """Return the clip chain of ``lut`` with its two passes as in the config.
-
-    CIE-XYZ-D65 -> sRGB code values of the clipped display RGB.
-    """
-    entry = registry.as_display(lut.display)
-    cores = [
-        _lut_reference(named_lut(entry.clip_lut_stem(white)), luts, inline)
-        for white in (False, True)
-    ]
-    return lut.transforms(*cores)
-
-
-def _compress_passes(soft, luts, inline):
-    """Return the compression chain of ``soft`` (a CompressLUT) as in the config.
-
-    Its two squeezes and the clip's two passes: CIE-XYZ-D65 -> sRGB code values.
-    """
-    entry = registry.as_display(soft.display)
-    cores = [
-        _lut_reference(named_lut(stem(white)), luts, inline)
-        for stem in (entry.compress_lut_stem, entry.clip_lut_stem)
-        for white in (False, True)
-    ]
-    return soft.transforms(*cores)
-
-
-def _matrix_to_reference(space):
-    """Return linear RGB of ``space`` -> CIE-XYZ-D65, the components limited first.
-
-    The limit is +-ocio_ops.LIMIT: float32-max or infinite values (e.g. ACEScct codes
-    above ~7.9) would overflow the matrix to Inf - Inf = NaN, which no later op can
-    repair at OPTIMIZATION_NONE (ops not composed); no real pixel comes near 1e6.
-    """
-    M = colorimetry.matrix_XYZ_to_RGB(space)
-    return ocio_ops.group(
-        [ocio_ops.finite_limit_transform(), ocio_ops.matrix(reproducible.inv3(M))]
-    )
+#: View kind -> its chain in the config, CIE-XYZ-D65 -> display-linear RGB of an SDR
+#: display, from the config's LUT files: ``f(clip LUT, compression LUT, luts, inline)``;
+#: ``None`` where the view is its linear transform
+#: (:data:`ocio_thinfilm.lut.view_transforms.LINEAR_VIEWS`) or has none (raw).
+LUT_FILE_VIEWS = {
+    "clip": _clip_chain,
+    "compress": _compress_chain,
+    "clamp": None,
+    "aces": None,
+    "raw": None,
+}
 
 
 def _linear_parts(gamut, view, lut, luts, inline, compress=None):
@@ -328,19 +162,15 @@ def _linear_parts(gamut, view, lut, luts, inline, compress=None):
     A list of transforms, for the SDR display ``gamut`` (the config's LUT files for
     the clip and the compression).
     """
-    if view == "Constant-Lightness Compress":
-        return _compress_passes(compress, luts, inline) + [clip_lut.working_decoding_transform()]
-    if view == "Constant-Lightness Clip":
-        # the second LUT ends in sRGB code values: back to display-linear here, the
-        # display colour space encodes again (OCIO's optimiser removes the pair for
-        # the sRGB-encoded displays)
-        return _clip_passes(lut, luts, inline) + [clip_lut.working_decoding_transform()]
-    return [view_transforms.view_linear_transform(gamut, view)]
+    chain = LUT_FILE_VIEWS[view.kind]
+    if chain is not None:
+        return chain(lut, compress, luts, inline)
+    return [view_transforms.view_linear_transform(gamut, view.name)]
 
 
 def view_parts(
     display: registry.DisplayLike,
-    view: str,
+    view: str | registry.View,
     *,
     lut: clip_lut.ClipLUT | None = None,
     luts: dict | None = None,
@@ -358,8 +188,9 @@ def view_parts(
     ----------
     display : str, Display or HDRDisplay
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS` or its name.
-    view : str
-        A view of :data:`ocio_thinfilm.registry.VIEWS` other than ``Raw``.
+    view : str or View
+        A view of :data:`ocio_thinfilm.registry.VIEWS` (or its name) other than the raw
+        one.
     lut : ClipLUT, optional
         The ClipLUT of the display's gamut; required for the Constant-Lightness Clip
         and the Constant-Lightness Compress.
@@ -387,7 +218,8 @@ def view_parts(
         For an unknown view (``Raw`` included).
     """
     entry = registry.as_display(display)
-    linear = _linear_parts(entry.gamut, view, lut, luts, inline, compress)
+    view_entry = registry.as_view(view, raw=False)
+    linear = _linear_parts(entry.gamut, view_entry, lut, luts, inline, compress)
     if entry.hdr:
         linear = view_transforms.hdr_scaled(entry, linear)
     return ocio_ops.group(
@@ -455,68 +287,66 @@ def config_data(
     by_display = clip_luts(clip_size)
     soft_by_display = compress_luts(clip_size, compress_threshold=threshold, compress_limit=limit)
     luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
-    ref = registry.REFERENCE
-    cs: list[dict[str, Any]] = []
-    cs.append(
-        dict(
-            name=ref,
-            family="Utility",
-            encoding="scene-linear",
-            categories=["file-io", "working-space"],
-            aliases=["cie_xyz_d65"],
-            description="CIE XYZ, D65-relative: the perfect reflector under D65 has "
-            "Y = 1 (CIE 1931 2 degree observer). The reference space.",
-        )
+    cs = spaces.scene_colorspaces() + thin_film_colorspaces(
+        luts, inline=inline, film_size=film_size, morpho_size=morpho_size
     )
-    for linear in registry.SCENE_LINEAR_LIST:
-        cs.append(
-            dict(
-                name=linear.name,
-                family="Scene-Linear",
-                encoding="scene-linear",
-                categories=["file-io", "working-space"],
-                description=linear.description,
-                to_reference=_matrix_to_reference(linear.colorimetry),
-            )
-        )
-    for encoded in registry.ENCODED_LIST:
-        cs.append(
-            dict(
-                name=encoded.name,
-                family="ACES",
-                encoding="log",
-                categories=["file-io", "working-space"],
-                description=encoded.description,
-                to_reference=_builtin_to_reference(encoded),
-            )
-        )
-    cs.append(
-        dict(
-            name=registry.TEXTURE_SPACE,
-            family="Texture",
-            encoding="sdr-video",
-            categories=["file-io", "texture"],
-            aliases=["srgb_tx"],
-            description="sRGB-encoded Rec.709 primaries, D65 (8-bit textures, colour picking)",
-            to_reference=ocio_ops.group(
-                [
-                    ocio_ops.inverse([display_transforms.display_encoding_transform("sRGB")]),
-                    _matrix_to_reference("Rec.709"),
-                ]
-            ),
-        )
+    film_spaces, film_named, film_luts = film_parts(
+        films, inline=inline, taken=[c["name"] for c in cs]
     )
-    cs.append(
-        dict(
-            name="Raw",
-            family="Utility",
-            encoding="data",
-            is_data=True,
-            categories=["file-io"],
-            aliases=["Utility - Raw"],
-            description="Non-colour data: passed through unchanged",
-        )
+    cs += film_spaces + spaces.display_colorspaces()
+    luts.update(film_luts)
+    views, displays = display_views(
+        by_display,
+        soft_by_display,
+        luts,
+        inline=inline,
+        knobs=(compress_map.knob_text(threshold), compress_map.knob_text(limit)),
     )
+    return ConfigData(
+        name=CONFIG_NAME,
+        description=(
+            "Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
+            "Colors\") with the paper's constant-lightness gamut clip. Reference: "
+            "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
+            "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."
+        ),
+        roles=dict(ROLES),
+        colorspaces=cs,
+        view_transforms=views,
+        displays=displays,
+        file_rules=file_rules(),
+        luts=luts,
+        named_transforms=named_transforms(
+            by_display, inline=inline, luts=luts, compress_by_display=soft_by_display
+        )
+        + film_named,
+    )
+
+
+def thin_film_colorspaces(
+    luts: dict[str, ocio_ops.Transform],
+    *,
+    inline: bool = False,
+    film_size: int = tables.FILM_SIZE,
+    morpho_size: int = tables.MORPHO_SIZE,
+) -> list[dict[str, Any]]:
+    """Return the thin-film input colour spaces of the registry as data.
+
+    Parameters
+    ----------
+    luts : dict
+        The LUT files (:func:`lut_files`).
+    inline : bool, optional
+        Put the tables into the transforms (``True``) or refer to their files.
+    film_size, morpho_size : int, optional
+        Entries of the thickness and angle tables (their descriptions state them).
+
+    Returns
+    -------
+    list of dict
+        Keyword arguments of :func:`ocio_thinfilm.config.factories.colorspace_factory`.
+    """
+    cs = []
     for space in registry.THIN_FILM_LIST:
         table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
         if space.table == "film":
@@ -538,31 +368,50 @@ def config_data(
                 encoding="scene-linear",
                 categories=["file-io"],
                 description=f"{table.description} {encoding}",
-                to_reference=_lut_reference(named_lut(space.lut_stem), luts, inline),
+                to_reference=lut_reference(named_lut(space.lut_stem), luts, inline),
             )
         )
-    film_spaces, film_named, film_luts = film_parts(
-        films, inline=inline, taken=[c["name"] for c in cs]
-    )
-    cs += film_spaces
-    luts.update(film_luts)
-    for entry in registry.ALL_DISPLAY_LIST:
-        cs.append(
-            dict(
-                name=entry.colorspace,
-                family="Display",
-                encoding="hdr-video" if entry.hdr else "sdr-video",
-                categories=["file-io"],
-                reference_space="display",
-                description=entry.description,
-                from_reference=display_transforms.display_colorspace_transform(entry),
-            )
-        )
+    return cs
 
-    # The default view transform links the two reference spaces when a conversion
-    # crosses them without a view (e.g. display space -> scene space): an identity,
-    # as "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless).
-    view_transforms = [
+
+def display_views(
+    luts_by_display: dict,
+    compress_by_display: dict,
+    luts: dict[str, ocio_ops.Transform],
+    *,
+    inline: bool = False,
+    knobs: tuple[str, str] = ("", ""),
+) -> tuple[list[dict[str, Any]], dict[str, list[dict[str, Any]]]]:
+    """Return the view transforms and each display's views as data.
+
+    The default view transform links the two reference spaces when a conversion crosses
+    them without a view (e.g. display space -> scene space): an identity, as
+    "Un-tone-mapped" in the ACES configs (inverting the clip is meaningless). Then one
+    view transform per display and view of the registry (:func:`view_parts`); the raw
+    view shows the ``Raw`` colour space.
+
+    Parameters
+    ----------
+    luts_by_display, compress_by_display : dict
+        SDR display name -> its ClipLUT (:func:`clip_luts`) and CompressLUT
+        (:func:`compress_luts`).
+    luts : dict
+        The LUT files (:func:`lut_files`).
+    inline : bool, optional
+        Put the LUTs into the transforms (``True``) or refer to their files.
+    knobs : tuple of str, optional
+        The compression's threshold and limit as its description states them
+        (:meth:`ocio_thinfilm.registry.View.describe`).
+
+    Returns
+    -------
+    view_transforms : list of dict
+        For :func:`ocio_thinfilm.config.factories.view_transform_factory`.
+    displays : dict
+        Display name -> its views (dicts of ``name`` and ``view_transform`` and
+        ``display_colorspace``, or ``name`` and ``colorspace``).
+    """
+    vts: list[dict[str, Any]] = [
         dict(
             name="Un-tone-mapped",
             family="Utility",
@@ -574,37 +423,45 @@ def config_data(
         )
     ]
     displays = {}
-    descriptions = {v.name: v.description for v in registry.VIEW_LIST}
-    descriptions[registry.COMPRESS_VIEW] = registry.compress_view_description(
-        compress_map.knob_text(threshold), compress_map.knob_text(limit)
-    )
     for entry in registry.ALL_DISPLAY_LIST:
-        display = entry.name
         views = []
-        for view in registry.VIEWS:
-            if view in _RAW_VIEWS:
-                views.append(dict(name=view, colorspace="Raw"))
+        for view in registry.VIEW_LIST:
+            if view.raw:
+                views.append(dict(name=view.name, colorspace=registry.RAW_SPACE))
                 continue
-            vt = f"{view} - {display}"
-            view_transforms.append(
+            vt = f"{view.name} - {entry.name}"
+            vts.append(
                 dict(
                     name=vt,
                     family="Thin Film",
-                    description=f"{descriptions[view]} Display: {display}.",
+                    description=f"{view.describe(*knobs)} Display: {entry.name}.",
                     from_reference=view_parts(
                         entry,
                         view,
-                        lut=by_display[entry.gamut.name],
+                        lut=luts_by_display[entry.gamut.name],
                         luts=luts,
                         inline=inline,
-                        compress=soft_by_display[entry.gamut.name],
+                        compress=compress_by_display[entry.gamut.name],
                     ),
                 )
             )
-            views.append(dict(name=view, view_transform=vt, display_colorspace=entry.colorspace))
-        displays[display] = views
+            views.append(
+                dict(name=view.name, view_transform=vt, display_colorspace=entry.colorspace)
+            )
+        displays[entry.name] = views
+    return vts, displays
 
-    file_rules = [
+
+def file_rules() -> list[dict[str, str]]:
+    """Return the file rules: EXR scene-linear, PNG and JPEG the texture space.
+
+    Returns
+    -------
+    list of dict
+        ``name``, ``colorspace``, ``pattern``, ``extension``; the ``Default`` rule only
+        its colour space.
+    """
+    return [
         dict(
             name="OpenEXR", colorspace=ROLES["scene_linear"], pattern="*", extension="[eE][xX][rR]"
         ),
@@ -612,218 +469,6 @@ def config_data(
         dict(name="JPEG", colorspace=registry.TEXTURE_SPACE, pattern="*", extension="[jJ][pP][gG]"),
         dict(name="Default", colorspace=ROLES["default"]),
     ]
-    return ConfigData(
-        name=CONFIG_NAME,
-        description=(
-            "Thin-film interference colours (Smits & Meyer 1990, \"Newton's "
-            "Colors\") with the paper's constant-lightness gamut clip. Reference: "
-            "CIE-XYZ-D65; scene-linear: Linear Rec.709 (sRGB). Generated by "
-            "ocio-thinfilm (`ocio-thinfilm bake`); do not edit by hand."
-        ),
-        roles=dict(ROLES),
-        colorspaces=cs,
-        view_transforms=view_transforms,
-        displays=displays,
-        file_rules=file_rules,
-        luts=luts,
-        named_transforms=named_transforms(
-            by_display, inline=inline, luts=luts, compress_by_display=soft_by_display
-        )
-        + film_named,
-    )
-
-
-#: Named transform of the clip alone, per display (display-linear RGB in and out).
-CLIP_NAMED_TRANSFORM = "Constant-Lightness Clip - {display} (display-linear)"
-#: Named transform of the compression alone, per display.
-COMPRESS_NAMED_TRANSFORM = "Constant-Lightness Compress - {display} (display-linear)"
-#: Named transform of a thin-film table (pixel value in, CIE XYZ out).
-TABLE_NAMED_TRANSFORM = "{space} to CIE-XYZ-D65"
-
-
-def clip_named_transform(
-    lut: clip_lut.ClipLUT,
-    *,
-    inline: bool = False,
-    luts: dict[str, ocio_ops.Transform] | None = None,
-) -> ocio_ops.Transform:
-    """Return the constant-lightness clip of ``lut``'s display on its own.
-
-    Display-linear RGB in, display-linear RGB in [0, 1] out (XYZ -> the two LUT passes
-    -> decoded), for hosts that apply a named transform as a node (Nuke
-    OCIONamedTransform, Houdini).
-
-    Parameters
-    ----------
-    lut : ClipLUT
-        The display's clip LUT.
-    inline : bool, optional
-        Put the LUTs into the transform (``True``) or refer to the LUT files by
-        FileTransform (``False``, the default).
-    luts : dict, optional
-        The LUT files (:func:`lut_files`); required with ``inline=True``.
-
-    Returns
-    -------
-    PyOpenColorIO.GroupTransform
-        The named transform's transform.
-    """
-    return ocio_ops.group(
-        [display_transforms.display_matrix_transform(lut.display, inverse=True)]
-        + _clip_passes(lut, luts, inline)
-        + [clip_lut.working_decoding_transform()]
-    )
-
-
-def compress_named_transform(
-    soft: compress_lut.CompressLUT,
-    *,
-    inline: bool = False,
-    luts: dict[str, ocio_ops.Transform] | None = None,
-) -> ocio_ops.Transform:
-    """Return the soft constant-lightness compression of ``soft``'s display on its own.
-
-    Display-linear RGB in and out (as :func:`clip_named_transform`).
-
-    Parameters
-    ----------
-    soft : CompressLUT
-        The display's compression LUT.
-    inline : bool, optional
-        Put the LUTs into the transform (``True``) or refer to the LUT files by
-        FileTransform (``False``, the default).
-    luts : dict, optional
-        The LUT files (:func:`lut_files`); required with ``inline=True``.
-
-    Returns
-    -------
-    PyOpenColorIO.GroupTransform
-        The named transform's transform.
-    """
-    return ocio_ops.group(
-        [display_transforms.display_matrix_transform(soft.display, inverse=True)]
-        + _compress_passes(soft, luts, inline)
-        + [clip_lut.working_decoding_transform()]
-    )
-
-
-def named_transforms(
-    luts_by_display: dict,
-    *,
-    inline: bool = False,
-    luts: dict[str, ocio_ops.Transform] | None = None,
-    compress_by_display: dict | None = None,
-) -> list:
-    """Return the named transforms (OCIO >= 2.0) as data.
-
-    The clip and the compression per display, and the three thin-film tables (pixel
-    value in, CIE-XYZ-D65 out, whatever the config's reference space: merged configs
-    add the same ones).
-
-    Parameters
-    ----------
-    luts_by_display : dict
-        Display name -> ClipLUT: one clip named transform each
-        (:data:`CLIP_NAMED_TRANSFORM`).
-    inline : bool, optional
-        Put the LUTs into the transforms (``True``) or refer to the LUT files by
-        FileTransform (``False``, the default).
-    luts : dict, optional
-        The LUT files (:func:`lut_files`); required with ``inline=True``.
-    compress_by_display : dict, optional
-        Display name -> CompressLUT: one compression named transform each
-        (:data:`COMPRESS_NAMED_TRANSFORM`); ``None`` (default) for none.
-
-    Returns
-    -------
-    list of dict
-        Keyword arguments of
-        :func:`~ocio_thinfilm.config.factories.named_transform_factory`.
-    """
-
-    def gamut_map(name, display, what, transform):
-        return dict(
-            name=name.format(display=display),
-            family="Thin Film",
-            categories=["gamut-mapping"],
-            encoding="display-linear",
-            description=(
-                f"{what}: {display} display-linear RGB in (any values), "
-                "display-linear RGB in [0, 1] out, luminance kept. Apply it "
-                "as a node, then encode for the display."
-            ),
-            transform=transform,
-        )
-
-    out = [
-        gamut_map(
-            CLIP_NAMED_TRANSFORM,
-            display,
-            f"Smits & Meyer 1990 constant-lightness clip into {display} on its own",
-            clip_named_transform(lut, inline=inline, luts=luts),
-        )
-        for display, lut in luts_by_display.items()
-    ]
-    for display, squeeze in (compress_by_display or {}).items():
-        t, lim = (compress_map.knob_text(v) for v in squeeze.parameters[:2])
-        out.append(
-            gamut_map(
-                COMPRESS_NAMED_TRANSFORM,
-                display,
-                f"Soft constant-lightness compression into {display} on its own "
-                f"(threshold {t}, limit {lim})",
-                compress_named_transform(squeeze, inline=inline, luts=luts),
-            )
-        )
-    for space in registry.THIN_FILM_LIST:
-        table = named_lut(space.lut_stem)
-        out.append(
-            dict(
-                name=TABLE_NAMED_TRANSFORM.format(space=space.name),
-                family="Thin Film",
-                categories=["thin-film"],
-                encoding="scene-linear",
-                description=(
-                    f"The {space.name} table on its own: pixel value in (all channels "
-                    "equal, as for the colour space of that name), unclipped CIE XYZ "
-                    "(D65, perfect reflector Y = 1) out."
-                ),
-                transform=_lut_reference(table, luts, inline),
-            )
-        )
-    return out
-
-
-def _builtin_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
-    """Return an encoded ACES space -> CIE-XYZ-D65, through its linear space.
-
-    OCIO's built-in transform to ACES2065-1 (``ACEScct_to_ACES2065-1``: the ACEScct
-    curve of Academy S-2016-001 and AP1 -> AP0), back to AP1 with the inverse of the
-    built-in ``ACEScg_to_ACES2065-1`` (the two matrices cancel when OCIO optimises), then
-    the linear space's own transform to the reference: so the path from the encoded
-    space to its linear space is per channel, as OCIO's Baker requires of a shaper. The
-    code values are limited first to those of linear +-:data:`ocio_ops.LIMIT` (found
-    with the built-in's own inverse), so the curve's exponential never overflows to Inf
-    (and Inf - Inf to NaN in a matrix) at any optimisation level.
-    """
-    import PyOpenColorIO as ocio
-
-    curve = ocio.BuiltinTransform(encoded.builtin)
-    inverse = ocio.BuiltinTransform(encoded.builtin)
-    inverse.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    lo, hi = ocio_ops.apply(inverse, [[-ocio_ops.LIMIT] * 3, [ocio_ops.LIMIT] * 3])[:, 0]
-    to_linear = ocio.BuiltinTransform(f"{encoded.linear}_to_ACES2065-1")
-    to_linear.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    linear = registry.linear_space_of(encoded.name)
-    assert linear is not None  # the registry checks an encoded space's linear space
-    return ocio_ops.group(
-        [
-            ocio_ops.range_(float(lo), float(hi)),
-            curve,
-            to_linear,
-            _matrix_to_reference(linear.colorimetry),
-        ]
-    )
 
 
 #: LUT file stem of a user's film: this prefix and its key (file-name safe).
@@ -922,7 +567,7 @@ def film_parts(
                     f"micrometres, clamped to [{lo:g}, {hi:g}]. Output: {output}, CIE "
                     f"XYZ D65. From {Path(film.source).name}."
                 ),
-                to_reference=_lut_reference(filename, luts, inline),
+                to_reference=lut_reference(filename, luts, inline),
             )
         )
         named.append(
@@ -936,7 +581,7 @@ def film_parts(
                     f"{film.varying.name} layer in um in (all channels equal), CIE XYZ "
                     "(D65, perfect reflector Y = 1) out."
                 ),
-                transform=_lut_reference(filename, luts, inline),
+                transform=lut_reference(filename, luts, inline),
             )
         )
     return spaces, named, luts

@@ -111,13 +111,11 @@ def profile_readers(cfg: ocio_ops.Config) -> str:
     )
 
 
-#: Views added to every matched display (Channel Clamp only where no Un-tone-mapped).
-MERGED_VIEWS = (
-    "Constant-Lightness Clip",
-    "Constant-Lightness Compress",
-    "ACES Gamut Compression",
-    "Channel Clamp",
-)
+#: View kinds added to every matched display, in order (the clamp only where the base has
+#: no Un-tone-mapped view).
+MERGED_KINDS = ("clip", "compress", "aces", "clamp")
+#: Views added to every matched display.
+MERGED_VIEWS = tuple(registry.view_of_kind(kind).name for kind in MERGED_KINDS)
 #: Minimum profile version: ACES_GamutComp13 and the LUT ops need 2.1.
 MIN_PROFILE = (2, 1)
 #: Tolerance of the display match, in code values for the white and the grey ramp and in
@@ -596,10 +594,10 @@ def merge_config(
             )
     for display, (cs_name, gamut) in matches.items():
         views = list(base.getViews(display))
-        for view in MERGED_VIEWS:
+        for kind, view in zip(MERGED_KINDS, MERGED_VIEWS, strict=True):
             if view in views:
                 raise ValueError(f"display {display!r} already has a view {view!r}")
-            if view == "Channel Clamp" and "Un-tone-mapped" in views:
+            if kind == "clamp" and "Un-tone-mapped" in views:
                 continue  # the base's colorimetric view is that baseline already
             cfg.addDisplayView(display, view, f"{view} - {gamut}", cs_name, "", "", "")
             if view not in added_views:

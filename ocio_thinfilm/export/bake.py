@@ -221,7 +221,7 @@ def write_config(
 
 
 #: Display LUTs in the shipped set: (input space, view, formats), for every display.
-EXPORT_SET_VIEWS = (("ACEScct", "Constant-Lightness Clip", ("cube",)),)
+EXPORT_SET_VIEWS = (("ACEScct", registry.CLIP_VIEW, ("cube",)),)
 
 
 def export_set(directory: StrPath, *, show_progress: bool = False) -> list[Path]:

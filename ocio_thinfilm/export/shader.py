@@ -60,26 +60,38 @@ import numpy as np
 from ocio_thinfilm import __version__, registry, reproducible
 from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import clip, colorimetry, compress
+from ocio_thinfilm.colour.log_curves import LOG_CURVES
 from ocio_thinfilm.io import StrPath, check_output_file, write_text
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
 
 __all__ = [
     "LANGUAGES",
+    "SHADER_MAPS",
     "SHADER_VIEWS",
     "SHADER_SOURCES",
     "KNOB_LIMIT_MAX",
     "THRESHOLD_SLIDER",
     "LIMIT_SLIDER",
-    "check_knobs",
     "shader_source",
     "export_shader",
 ]
 
 #: The languages :func:`shader_source` writes.
 LANGUAGES = ("glsl", "dctl")
-#: The views it writes (the others are LUT-free already or pass data through).
-SHADER_VIEWS = ("Constant-Lightness Clip", registry.COMPRESS_VIEW)
+#: View kind (:data:`ocio_thinfilm.registry.VIEW_KINDS`) -> whether its map is the soft
+#: compression (``True``) or the clip (``False``); ``None`` for the kinds the shaders do
+#: not write (the baselines are LUT-free in the config already, the raw view passes data
+#: through).
+SHADER_MAPS: dict[str, bool | None] = {
+    "clip": False,
+    "compress": True,
+    "clamp": None,
+    "aces": None,
+    "raw": None,
+}
+#: The views it writes.
+SHADER_VIEWS = tuple(v.name for v in registry.VIEW_LIST if SHADER_MAPS[v.kind] is not None)
 #: The input colour spaces it decodes analytically: the reference, the scene-linear
 #: spaces and the encoded ones (the thin-film inputs are spectral tables: use
 #: ``export view``).
@@ -93,28 +105,24 @@ SHADER_SOURCES = (
 #: primaries (its colour space decodes with the display's curve, then the matrix).
 _TEXTURE = (registry.TEXTURE_SPACE, "Rec.709", "sRGB")
 #: The largest limit the shaders accept from a host (a larger uniform gives the defaults).
-KNOB_LIMIT_MAX = 100.0
+KNOB_LIMIT_MAX = compress.LIMIT_MAX
 #: DCTL slider ranges (min, max, step); widened to hold the exported default.
 THRESHOLD_SLIDER = (0.05, 0.99, 0.01)
 LIMIT_SLIDER = (1.01, 3.0, 0.01)
 
-#: ACEScct (Academy S-2016-001): the linear segment's slope and offset, the log part's
-#: scale and offset, and the code value where they meet.
-_ACESCCT_A = 10.5402377416545
-_ACESCCT_B = 0.0729055341958355
-_ACESCCT_SCALE = 17.52
-_ACESCCT_OFFSET = 9.72
-_ACESCCT_BREAK = 0.155251141552511
-#: SMPTE ST 2084 constants.
-_PQ_M1 = 2610.0 / 16384.0
-_PQ_M2 = 2523.0 / 4096.0 * 128.0
-_PQ_C1 = 3424.0 / 4096.0
-_PQ_C2 = 2413.0 / 4096.0 * 32.0
-_PQ_C3 = 2392.0 / 4096.0 * 32.0
-#: ITU-R BT.2100 HLG OETF constants (the OOTF's system gamma: the config's, HLG_GAMMA).
-_HLG_A = 0.17883277
-_HLG_B = 1.0 - 4.0 * _HLG_A
-_HLG_C = 0.5 - _HLG_A * math.log(4.0 * _HLG_A)
+
+def _pq() -> dict[str, float]:
+    """SMPTE ST 2084's constants m_1, m_2, c_1, c_2, c_3 in that order, colour-science's."""
+    from colour.models.rgb.transfer_functions.st_2084 import CONSTANTS_ST2084
+
+    return {k: float(v) for k, v in CONSTANTS_ST2084.items()}
+
+
+def _hlg() -> dict[str, float]:
+    """ITU-R BT.2100 HLG OETF's constants a, b, c in that order, colour-science's."""
+    from colour.models.rgb.transfer_functions.arib_std_b67 import CONSTANTS_ARIBSTDB67
+
+    return {k: float(v) for k, v in CONSTANTS_ARIBSTDB67.items()}
 
 
 @dataclass(frozen=True)
@@ -171,43 +179,6 @@ _DCTL = _Language(
     saturate="_saturatef",
 )
 _LANGUAGE = {"glsl": _GLSL, "dctl": _DCTL}
-
-
-def check_knobs(threshold: float, limit: float) -> tuple[float, float]:
-    """Return the compression's knobs as floats, or refuse them.
-
-    :func:`ocio_thinfilm.colour.compress.check_knobs`, and a limit of at most
-    :data:`KNOB_LIMIT_MAX` (the shaders' fallback refuses larger uniforms).
-
-    Parameters
-    ----------
-    threshold : float
-        The normalised boundary distance up to which colours stay: ``0 < threshold < 1``.
-    limit : float
-        The distance mapped onto the boundary: ``1 < limit <= KNOB_LIMIT_MAX``.
-
-    Returns
-    -------
-    tuple of float
-
-    Raises
-    ------
-    ValueError
-        (:class:`~ocio_thinfilm.checks.ParameterError`) naming ``threshold`` or ``limit``.
-
-    Examples
-    --------
-    >>> check_knobs(0.6, 1.5)
-    (0.6, 1.5)
-    >>> check_knobs(0.8, 200.0)
-    Traceback (most recent call last):
-    ...
-    ocio_thinfilm.checks.ParameterError: limit must be at most 100 here, got 200
-    """
-    t, lim = compress.check_knobs(threshold, limit)
-    if lim > KNOB_LIMIT_MAX:
-        raise ParameterError("limit", f" must be at most {KNOB_LIMIT_MAX:g} here, got {lim:g}")
-    return t, lim
 
 
 # --------------------------------------------------------------------------- #
@@ -285,6 +256,57 @@ def _piecewise_decode(L: _Language, encoding: registry.Encoding, v: str) -> str:
     )
 
 
+def _log_decoding(L: _Language, curve_name: str) -> list[str]:
+    """Return the lines decoding ``r``, ``g``, ``b`` from the log curve ``curve_name``.
+
+    Any curve of :data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`: codes limited to
+    those of linear +-1e6, then the toe's line below the break, ``(2 ** (code * S - O) -
+    lin_offset) / lin_slope`` above it (S, O: the log side's scale and offset in base 2).
+    """
+    c = LOG_CURVES[curve_name]
+    lo = c.encode_one(-ocio_ops.LIMIT)
+    hi = c.encode_one(ocio_ops.LIMIT)
+    scale = math.log2(c.base) / c.log_slope
+    offset = c.log_offset * scale
+    power = f"{L.exp2}({{ch}} * {L.lit(scale)} - {L.lit(offset)})"
+    if c.lin_offset:
+        power = f"({power} - {L.lit(c.lin_offset)})"
+    if c.lin_slope != 1.0:
+        power = f"{power} / {L.lit(c.lin_slope)}"
+    toe = f"({{ch}} - {L.lit(c.linear_offset)}) / {L.lit(c.linear_slope)}"
+    lines = [f"    // {curve_name} codes -> linear"]
+    for ch in "rgb":
+        lines.append(
+            f"    {ch} = ocio_thinfilm_range({ch}, {L.lit(lo)}, {L.lit(hi)});"
+            f"  {ch} = {ch} <= {L.lit(c.code_break)} ? {toe.format(ch=ch)} : "
+            f"{power.format(ch=ch)};"
+        )
+    return lines
+
+
+def _log_encoding(L: _Language, curve_name: str) -> list[str]:
+    """Return the lines encoding ``r``, ``g``, ``b`` with the log curve ``curve_name``.
+
+    The inverse of :func:`_log_decoding`.
+    """
+    c = LOG_CURVES[curve_name]
+    scale = math.log2(c.base) / c.log_slope
+    offset = c.log_offset * scale
+    inner = "{ch}"
+    if c.lin_slope != 1.0:
+        inner = f"{L.lit(c.lin_slope)} * {inner}"
+    if c.lin_offset:
+        inner = f"{inner} + {L.lit(c.lin_offset)}"
+    lines = [f"    // linear -> {curve_name} codes"]
+    for ch in "rgb":
+        lines.append(
+            f"    {ch} = {ch} <= {L.lit(c.lin_break)} ? {L.lit(c.linear_slope)} * {ch} + "
+            f"{L.lit(c.linear_offset)} : ({L.log2}({inner.format(ch=ch)}) + {L.lit(offset)}) / "
+            f"{L.lit(scale)};"
+        )
+    return lines
+
+
 def _input(L: _Language, source: str) -> str:
     """Input colour space -> CIE-XYZ-D65, limited as the config's colour space and view."""
     lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_input(float r, float g, float b)", "{"]
@@ -303,16 +325,9 @@ def _input(L: _Language, source: str) -> str:
         space = registry.linear_space_of(source)
         assert space is not None  # shader_source checked the source
         colorimetry_name = space.colorimetry
-    if source in registry.ENCODED_SPACES:  # ACEScct (S-2016-001) codes -> linear
-        lo = _ACESCCT_A * -ocio_ops.LIMIT + _ACESCCT_B
-        hi = (math.log2(ocio_ops.LIMIT) + _ACESCCT_OFFSET) / _ACESCCT_SCALE
-        for ch in "rgb":
-            lines.append(
-                f"    {ch} = ocio_thinfilm_range({ch}, {L.lit(lo)}, {L.lit(hi)});"
-                f"  {ch} = {ch} <= {L.lit(_ACESCCT_BREAK)} ? ({ch} - {L.lit(_ACESCCT_B)}) / "
-                f"{L.lit(_ACESCCT_A)} : {L.exp2}({ch} * {L.lit(_ACESCCT_SCALE)} - "
-                f"{L.lit(_ACESCCT_OFFSET)});"
-            )
+    encoded = registry.find_encoded(source)
+    if encoded is not None:
+        lines += _log_decoding(L, encoded.curve)
     for ch in "rgb":
         lines.append(f"    {ch} = ocio_thinfilm_finite({ch});")
     M = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(colorimetry_name))
@@ -389,21 +404,23 @@ def _map(L: _Language, gamut: str, soft: bool) -> str:
 def _encoding(L: _Language, entry: registry.AnyDisplay) -> str:
     """Display-linear -> code value of one channel (``v`` in [0, 1], or [0, k] for PQ)."""
     one, zero = L.lit(1.0), L.lit(0.0)
+    m1, m2, c1, c2, c3 = _pq().values()
+    ha, hb, hc = _hlg().values()
     head = f"{L.qualifier}float ocio_thinfilm_encode(float v)\n{{\n"
     if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
         scale = registry.HDR_REFERENCE_WHITE / 10000.0
         body = (
             f"    // SMPTE ST 2084; v = 1 is the reference white, {registry.HDR_REFERENCE_WHITE:g}"
             " cd/m2\n"
-            f"    float p = v > {zero} ? {L.pow}(v * {L.lit(scale)}, {L.lit(_PQ_M1)}) : {zero};\n"
-            f"    return {L.pow}(({L.lit(_PQ_C1)} + {L.lit(_PQ_C2)} * p) / ({one} + "
-            f"{L.lit(_PQ_C3)} * p), {L.lit(_PQ_M2)});\n"
+            f"    float p = v > {zero} ? {L.pow}(v * {L.lit(scale)}, {L.lit(m1)}) : {zero};\n"
+            f"    return {L.pow}(({L.lit(c1)} + {L.lit(c2)} * p) / ({one} + "
+            f"{L.lit(c3)} * p), {L.lit(m2)});\n"
         )
     elif isinstance(entry, registry.HDRDisplay):
         body = (
             "    // ITU-R BT.2100 HLG OETF of the scene light E in [0, 1]\n"
             f"    return v <= {L.lit(1 / 12)} ? {L.sqrt}({L.lit(3.0)} * v) : "
-            f"{L.lit(_HLG_A)} * {L.log}({L.lit(12.0)} * v - {L.lit(_HLG_B)}) + {L.lit(_HLG_C)};\n"
+            f"{L.lit(ha)} * {L.log}({L.lit(12.0)} * v - {L.lit(hb)}) + {L.lit(hc)};\n"
         )
     elif entry.encoding.offset is None:
         gamma = entry.encoding.gamma
@@ -466,6 +483,8 @@ def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
     white (203 cd/m2), HLG the scene light E in [0, 1].
     """
     one, zero = L.lit(1.0), L.lit(0.0)
+    m1, m2, c1, c2, c3 = _pq().values()
+    ha, hb, hc = _hlg().values()
     head = (
         f"{L.qualifier}float ocio_thinfilm_decode(float v)\n{{\n"
         f"    v = ocio_thinfilm_range(v, {zero}, {one});\n"
@@ -477,18 +496,18 @@ def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
             "    // = exp(x), q = 1 - p: (p - c1) / (c2 - c3 p) = (1 - c1 - q) / (c2 - c3 + c3 q)\n"
             "    // does not cancel near the peak (q from its series where x is small).\n"
             f"    if (!(v > {zero})) return {zero};\n"
-            f"    float x = {L.log}(v) * {L.lit(1 / _PQ_M2)};\n"
+            f"    float x = {L.log}(v) * {L.lit(1 / m2)};\n"
             f"    float q = x > {L.lit(-0.05)} ? -x * ({one} + x * ({L.lit(0.5)} + x * "
             f"({L.lit(1 / 6)} + x * {L.lit(1 / 24)}))) : {one} - {L.exp}(x);\n"
-            f"    float n = {L.max}({L.lit(1 - _PQ_C1)} - q, {zero}) / ({L.lit(_PQ_C2 - _PQ_C3)} + "
-            f"{L.lit(_PQ_C3)} * q);\n"
-            f"    return n > {zero} ? {L.lit(scale)} * {L.pow}(n, {L.lit(1 / _PQ_M1)}) : {zero};\n"
+            f"    float n = {L.max}({L.lit(1 - c1)} - q, {zero}) / ({L.lit(c2 - c3)} + "
+            f"{L.lit(c3)} * q);\n"
+            f"    return n > {zero} ? {L.lit(scale)} * {L.pow}(n, {L.lit(1 / m1)}) : {zero};\n"
         )
     elif isinstance(entry, registry.HDRDisplay):
         body = (
             "    // the inverse of the BT.2100 HLG OETF: scene light E in [0, 1]\n"
             f"    return v <= {L.lit(0.5)} ? v * v / {L.lit(3.0)} : ({L.exp}((v - "
-            f"{L.lit(_HLG_C)}) / {L.lit(_HLG_A)}) + {L.lit(_HLG_B)}) / {L.lit(12.0)};\n"
+            f"{L.lit(hc)}) / {L.lit(ha)}) + {L.lit(hb)}) / {L.lit(12.0)};\n"
         )
     elif entry.encoding.offset is None:
         gamma = entry.encoding.gamma
@@ -589,14 +608,9 @@ def _output(L: _Language, source: str) -> str:
     if texture:
         encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
         lines += [f"    {ch} = {_piecewise_encode(L, encoding, ch)};" for ch in "rgb"]
-    elif space is not None and source != space.name:  # ACEScct encoding (S-2016-001)
-        brk = 2.0 ** (_ACESCCT_BREAK * _ACESCCT_SCALE - _ACESCCT_OFFSET)
-        for ch in "rgb":
-            lines.append(
-                f"    {ch} = {ch} <= {L.lit(brk)} ? {L.lit(_ACESCCT_A)} * {ch} + "
-                f"{L.lit(_ACESCCT_B)} : ({L.log2}({ch}) + {L.lit(_ACESCCT_OFFSET)}) / "
-                f"{L.lit(_ACESCCT_SCALE)};"
-            )
+    encoded = registry.find_encoded(source)
+    if encoded is not None:
+        lines += _log_encoding(L, encoded.curve)
     lines += [f"    return {L.make3}(r, g, b);", "}", ""]
     return "\n".join(lines)
 
@@ -699,8 +713,8 @@ def shader_source(
             "(export view); the shaders take one of " + ", ".join(SHADER_SOURCES),
         )
     as_choice("source", source, SHADER_SOURCES)
-    t, lim = check_knobs(threshold, limit)
-    soft = view == registry.COMPRESS_VIEW
+    t, lim = compress.check_knobs(threshold, limit, limit_max=KNOB_LIMIT_MAX)
+    soft = bool(SHADER_MAPS[registry.as_view(view).kind])
     L = _LANGUAGE[lang]
     entry = registry.as_display(display)
     parts = [

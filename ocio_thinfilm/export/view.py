@@ -152,7 +152,9 @@ def _colorimetry(linear_space: str) -> str:
 # The shaper
 # --------------------------------------------------------------------------- #
 def shaper_domain(
-    linear_space: str, size: int = DEFAULT_VIEW_SIZE, display: str | None = None
+    linear_space: str,
+    size: int = DEFAULT_VIEW_SIZE,
+    display: registry.DisplayLike | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Return (lo, hi) of the shaper over ``linear_space``.
 
@@ -199,7 +201,7 @@ def _shaper_to_linear(lo, hi):
 def view_config(
     source: str,
     size: int = DEFAULT_VIEW_SIZE,
-    display: str | None = None,
+    display: registry.DisplayLike | None = None,
     *,
     compress_threshold: float = compress_map.THRESHOLD,
     compress_limit: float = compress_map.LIMIT,
@@ -215,7 +217,7 @@ def view_config(
         The input colour space of the config.
     size : int, optional
         Edge of the 3D LUT the shaper is for (default :data:`DEFAULT_VIEW_SIZE`).
-    display : str, optional
+    display : str or registry display, optional
         The display (an HDR display widens the shaper's domain).
     compress_threshold, compress_limit : float, optional
         The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3;
@@ -273,8 +275,8 @@ def _cube_shaper(source, fmt, shaper):
     if not shaper and source not in _PLAIN_INPUTS:
         raise ParameterError(
             "shaper",
-            f"=False (a plain .cube) needs an input whose values "
-            f"lie in [0, 1] ({', '.join(_PLAIN_INPUTS)}); {source} "
+            f"=False (a plain .cube) needs an input whose code values 0..1 cover "
+            f"the views' colours ({', '.join(_PLAIN_INPUTS)}); {source} "
             "takes the Resolve form",
         )
     return bool(shaper)
@@ -289,10 +291,10 @@ def _validate(source, display, view, size, fmt, value_range):
     as_choice("source", source, spaces)
     if display is None:
         raise ParameterError("display", f" is needed: one of {', '.join(registry.ALL_DISPLAYS)}")
-    as_choice("display", display, registry.ALL_DISPLAYS)
+    registry.as_display(display)
     if view is None:
         raise ParameterError("view", f" is needed: one of {', '.join(registry.VIEWS)}")
-    as_choice("view", view, registry.VIEWS)
+    registry.as_view(view)
     as_choice("fmt", fmt, VIEW_FORMATS)
     if size is not None and (isinstance(size, bool) or not isinstance(size, (int, np.integer))):
         raise TypeError(f"size must be an integer, got {size!r} ({type(size).__name__})")
@@ -310,12 +312,11 @@ def _validate(source, display, view, size, fmt, value_range):
             raise ParameterError(
                 "value_range", f" must be two finite numbers MIN < MAX, got {lo:g} {hi:g}"
             )
-        if lo < 0 or (source == "Thin Film Morpho Iridescence" and hi > 1) or hi > 100:
+        top = 1.0 if film.kind == "morpho" else 100.0  # cos(theta), or thickness in um
+        if lo < 0 or hi > top:
             raise ParameterError(
                 "value_range",
-                f" for {source} ({film.pixel}) must lie in "
-                f"{'0..1' if 'Morpho' in source else '0..100'}, "
-                f"got {lo:g} {hi:g}",
+                f" for {source} ({film.pixel}) must lie in 0..{top:g}, got {lo:g} {hi:g}",
             )
         size = default_size if size is None else size
         if not 2 <= size <= 1 << 20:
@@ -352,10 +353,10 @@ def set_name(source: str, display: str, view: str) -> str:
 # --------------------------------------------------------------------------- #
 # Writing
 # --------------------------------------------------------------------------- #
-def _description(source, display, view, size, shaper, baked, knobs=None):
+def _description(source, entry, view, size, shaper, baked, knobs=None):
     text = (
-        f"ocio-thinfilm display LUT: {source} -> {display} / {view}. Input: the raw "
-        f"pixel values of {source}; output: {display} display code values."
+        f"ocio-thinfilm display LUT: {source} -> {entry.name} / {view}. Input: the raw "
+        f"pixel values of {source}; output: {entry.name} display code values."
     )
     if knobs is not None:
         t, lim = (compress_map.knob_text(v) for v in knobs)
@@ -363,7 +364,7 @@ def _description(source, display, view, size, shaper, baked, knobs=None):
     if shaper:
         sibling = _linear_sibling(source)
         assert sibling is not None  # a 3D input: XYZ, scene-linear or encoded
-        lo, hi = shaper_domain(sibling, size, display)
+        lo, hi = shaper_domain(sibling, size, entry)
         text += (
             f" Shaper: sign(x)|x|^(1/2) per channel of linear "
             f"{sibling} over {lo:.6g}..{hi:.6g} (clamped beyond)."
@@ -402,7 +403,7 @@ def _metadata(source, display, view):
     )
 
 
-def _bake_text(cfg, fmt, source, shaper, display, view, size, description, target=None, knobs=None):
+def _bake_text(cfg, fmt, source, shaper, entry, view, size, description, target=None, knobs=None):
     import PyOpenColorIO as ocio
 
     baker = ocio.Baker()
@@ -413,14 +414,14 @@ def _bake_text(cfg, fmt, source, shaper, display, view, size, description, targe
     if target is not None:
         baker.setTargetSpace(target)
     else:
-        baker.setDisplayView(display, view)
+        baker.setDisplayView(entry.name, view)
     if shaper:
         baker.setShaperSpace(shaper)
         baker.setShaperSize(SHAPER_SIZE)
     baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
     text = baker.bake()
-    if target is None and _fitted_table(source, fmt, shaper, display):
-        nodes = _fitted_nodes(source, display, view, size, bool(shaper), knobs)
+    if target is None and _fitted_table(source, fmt, shaper, entry):
+        nodes = _fitted_nodes(source, entry.name, view, size, bool(shaper), knobs)
         text = _with_table(text, nodes)
     if fmt == "cube":
         text = _without_trailing_zeros(text)
@@ -454,14 +455,21 @@ def _fitted_nodes(source, display, view, size, shaper, knobs):
     """
     compress = {} if knobs is None else dict(zip(KNOB_NAMES, knobs, strict=True))
     cfg, shaper_space = view_config(source, size, display, **compress)
+    fit = {} if knobs is None else dict(knobs=knobs)
     if shaper and shaper_space:
         return view_fit.fit_view_table(
-            cfg, shaper_space, display, view, size, object_weight=view_fit.SHAPER_OBJECT_WEIGHT
+            cfg,
+            shaper_space,
+            display,
+            view,
+            size,
+            object_weight=view_fit.SHAPER_OBJECT_WEIGHT,
+            **fit,
         )
-    return view_fit.fit_view_table(cfg, source, display, view, size)
+    return view_fit.fit_view_table(cfg, source, display, view, size, **fit)
 
 
-def _fitted_table(source, fmt, shaper, display):
+def _fitted_table(source, fmt, shaper, entry):
     """Return whether the 3D table is fitted (:data:`FITTED_FORMATS`, SDR displays).
 
     The plain form always; with a shaper only for inputs whose shaper reaches below 0
@@ -469,7 +477,7 @@ def _fitted_table(source, fmt, shaper, display):
     within ΔE2000 max 2.1-2.4 on object colours and fitted ones 4.2-6.0 (least squares does not
     hold the largest error down).
     """
-    if fmt not in FITTED_FORMATS or display not in registry.DISPLAYS:
+    if fmt not in FITTED_FORMATS or entry.hdr:
         return False
     sibling = _linear_sibling(source)
     return not shaper or sibling is None or not _shaper_from_zero(sibling)
@@ -621,7 +629,6 @@ def export_view(
     import PyOpenColorIO as ocio
 
     knob_values = compress_map.check_knobs(compress_threshold, compress_limit, names=KNOB_NAMES)
-    display = registry.display_name(display)
     if fmt is None:
         fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
         if fmt not in VIEW_FORMATS:
@@ -630,6 +637,9 @@ def export_view(
             )
     size, value_range = _validate(source, display, view, size, fmt, value_range)
     assert source is not None and display is not None and view is not None  # _validate
+    entry = registry.as_display(display)  # the objects from here on, their names for text
+    view_entry = registry.as_view(view)
+    display, view = entry.name, view_entry.name
     cube_shaper = None
     if source in _THIN_FILM:
         if shaper is not None:
@@ -643,19 +653,19 @@ def export_view(
         raise ParameterError("out", f" {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."))
 
-    knobs = knob_values if view == registry.COMPRESS_VIEW else None
+    knobs = knob_values if view_entry.kind == "compress" else None
     compress = dict(zip(KNOB_NAMES, knob_values, strict=True))
-    cfg, shaper_space = view_config(source, size, display, **compress)
+    cfg, shaper_space = view_config(source, size, entry, **compress)
     meta = _metadata(source, display, view)
     if source in _THIN_FILM:
-        description = _description(source, display, view, size, None, False, knobs)
+        description = _description(source, entry, view, size, None, False, knobs)
         return [
             _write_1d(out, fmt, cfg, source, display, view, size, value_range, meta, description)
         ]
     if fmt in ("clf", "ctf"):
         proc = cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD)
         exact = list(proc.createGroupTransform())
-        description = _description(source, display, view, size, None, False, knobs)
+        description = _description(source, entry, view, size, None, False, knobs)
         try:
             return [_write_group(out, fmt, exact, meta, description + " Exact chain.")]
         except ocio.Exception:
@@ -668,23 +678,23 @@ def export_view(
                 fmt,
                 _baked_3d_transforms(cfg, source, shaper_space, display, view, size),
                 meta,
-                _description(source, display, view, size, shaper_space, True, knobs),
+                _description(source, entry, view, size, shaper_space, True, knobs),
             )
         ]
     if fmt == "cube" and not cube_shaper:
         shaper_space = None  # the plain form: the grid over ACEScct itself
-    description = _description(source, display, view, size, shaper_space, True, knobs)
+    description = _description(source, entry, view, size, shaper_space, True, knobs)
     if fmt == "spi3d" and shaper_space:
         companion = out.with_name(out.stem + ".shaper.spi1d")
         text3d = _bake_text(
-            cfg, "spi3d", shaper_space, None, display, view, size, description, knobs=knobs
+            cfg, "spi3d", shaper_space, None, entry, view, size, description, knobs=knobs
         )
         text1d = _bake_text(
             cfg,
             "spi1d",
             source,
             shaper_space,
-            display,
+            entry,
             view,
             size,
             description,
@@ -692,7 +702,7 @@ def export_view(
             knobs=knobs,
         )
         return [write_text(out, text3d), write_text(companion, text1d)]
-    text = _bake_text(cfg, fmt, source, shaper_space, display, view, size, description, knobs=knobs)
+    text = _bake_text(cfg, fmt, source, shaper_space, entry, view, size, description, knobs=knobs)
     if fmt == "cube":  # OCIO's writer has no title line: say which form the file is
         text = _cube_title(source, display, view, size, bool(shaper_space)) + "\n" + text
     return [write_text(out, text)]

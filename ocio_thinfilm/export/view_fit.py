@@ -13,13 +13,13 @@ weighted :data:`INSIDE_WEIGHT` times the others:
 - mixtures of up to three spectral lines at random luminance (saturated emissive
   colours), weight :data:`SPREAD_WEIGHT`.
 
-The target is the analytic view where the package has it (``Constant-Lightness
-Clip``: :func:`ocio_thinfilm.colour.clip.clip_RGB`; ``Constant-Lightness Compress``:
-:func:`ocio_thinfilm.colour.compress.compress_RGB`; ``Channel Clamp``), else the view
-as OCIO applies it. The fit serves the interpolations hosts apply by default, both at
-once: tetrahedral (ffmpeg's ``lut3d``) and trilinear (OpenColorIO's ``FileTransform``,
-colour-science's ``LUT3D.apply``). Fitted nodes may lie outside [0, 1] (hosts clamp
-the display code values); the file's input side (its grid, its shaper) is unchanged.
+The target is the analytic view where the package has it
+(:data:`ocio_thinfilm.colour.views.ANALYTIC_MAPS`: the clip, the compression with the
+file's knobs, the clamp), else the view as OCIO applies it. The fit serves the
+interpolations hosts apply by default, both at once: tetrahedral (ffmpeg's ``lut3d``)
+and trilinear (OpenColorIO's ``FileTransform``, colour-science's ``LUT3D.apply``).
+Fitted nodes may lie outside [0, 1] (hosts clamp the display code values); the file's
+input side (its grid, its shaper) is unchanged.
 
 The samples come from a fixed seed and the fit sums in a fixed order, so a bake is
 byte-identical across runs (:mod:`ocio_thinfilm.export.view` memoises the tables on
@@ -36,6 +36,7 @@ import numpy as np
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
+from ocio_thinfilm.colour.views import analytic_map
 from ocio_thinfilm.lut import lattice_fit, ocio_ops
 
 __all__ = [
@@ -71,12 +72,6 @@ SEED = 20090604
 #: value, and values within ``SNAP[1]`` of 0 or 1 are stored as 0 or 1 (far below one
 #: 8-bit code; a 65^3 sRGB .cube of 6-decimal values trims to 3.6 MB instead of 7.4).
 SNAP = (1e-4, 2e-5)
-#: Views with an analytic form here (display-linear RGB -> display-linear RGB).
-_ANALYTIC = {
-    "Constant-Lightness Clip": clip.clip_RGB,
-    "Constant-Lightness Compress": compress.compress_RGB,
-    "Channel Clamp": lambda rgb, display: np.clip(rgb, 0.0, 1.0),
-}
 
 
 def training_colours(
@@ -134,16 +129,18 @@ def _apply(cfg, src, dst, values):
     return px.astype(np.float64)
 
 
-def _view_codes(cfg, start, display, view, coords, XYZ):
+def _view_codes(cfg, start, display, view, coords, XYZ, knobs):
     """Return the display code values of ``view`` for colours ``XYZ``.
 
-    Analytic where possible, or else those of OCIO's view applied to ``coords`` in the
-    ``start`` space.
+    Analytic where the view has a closed form (:data:`ocio_thinfilm.colour.views.
+    ANALYTIC_MAPS`, with the compression's ``knobs``), or else those of OCIO's view
+    applied to ``coords`` in the ``start`` space.
     """
     from ocio_thinfilm.lut.display_transforms import display_encoding_transform
 
-    if display in registry.DISPLAYS and view in _ANALYTIC:
-        rgb = _ANALYTIC[view](colorimetry.XYZ_to_RGB(XYZ, display), display)
+    form = analytic_map(view)
+    if display in registry.DISPLAYS and form is not None:
+        rgb = form.rgb(colorimetry.XYZ_to_RGB(XYZ, display), display, *knobs)
         codes = ocio_ops.apply(display_encoding_transform(display), rgb.astype(np.float32))
         return np.asarray(codes, dtype=np.float64)
     return _apply(cfg, start, (display, view), coords)
@@ -164,6 +161,7 @@ def fit_view_table(
     size: int,
     inside_weight: float = INSIDE_WEIGHT,
     object_weight: float = OBJECT_WEIGHT,
+    knobs: tuple[float, float] = (compress.THRESHOLD, compress.LIMIT),
 ) -> np.ndarray:
     """Fit the 3D table of ``display`` / ``view`` over a ``size``^3 grid.
 
@@ -172,13 +170,17 @@ def fit_view_table(
     has shape (size, size, size, 3), indexed [r, g, b]: display code values, possibly outside
     [0, 1]. The config must have ``CIE-XYZ-D65``. ``inside_weight``, ``object_weight``: the
     weights of the training colours inside the gamut and of the object colours outside it.
+    ``knobs``: the compression's (threshold, limit), for its view's analytic target (the
+    config ``cfg`` must have been made with the same).
     """
     g = np.linspace(0.0, 1.0, size)
     grid = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)
-    prior = _view_codes(cfg, start, display, view, grid, _apply(cfg, start, "CIE-XYZ-D65", grid))
+    prior = _view_codes(
+        cfg, start, display, view, grid, _apply(cfg, start, "CIE-XYZ-D65", grid), knobs
+    )
     XYZ, family = training_colours(display)
     coords = np.clip(_apply(cfg, "CIE-XYZ-D65", start, XYZ), 0.0, 1.0)
-    values = _view_codes(cfg, start, display, view, coords, XYZ)
+    values = _view_codes(cfg, start, display, view, coords, XYZ, knobs)
     weights = np.where(
         _inside(display, XYZ),
         inside_weight,

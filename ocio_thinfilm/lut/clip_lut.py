@@ -260,7 +260,7 @@ class ClipLUT:
     @property
     def name(self) -> str:
         """Name of the clip's transforms: ``Constant-Lightness Clip <display>``."""
-        return f"Constant-Lightness Clip {self.display}"
+        return f"{registry.CLIP_VIEW} {self.display}"
 
     def black_core(self) -> ocio_ops.Transform:
         """CLF-writable black pass: the Lut3D.

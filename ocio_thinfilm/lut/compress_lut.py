@@ -271,7 +271,7 @@ class CompressLUT:
     @property
     def name(self) -> str:
         """Name of the compression's transforms: ``Constant-Lightness Compress <display>``."""
-        return f"Constant-Lightness Compress {self.display}"
+        return f"{registry.COMPRESS_VIEW} {self.display}"
 
     def black_core(self) -> ocio_ops.Transform:
         """CLF-writable S_b: chart (u_a, u_b, Y) in and out."""

@@ -19,6 +19,9 @@ between two exact scales, and a colour brighter than the peak white is the peak 
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
 
 from ocio_thinfilm import registry, reproducible
@@ -38,9 +41,8 @@ from ocio_thinfilm.lut.display_transforms import (
     hdr_encoding_transform,
 )
 from ocio_thinfilm.lut.ocio_ops import finite_limit_transform, group, transform_id
-from ocio_thinfilm.registry import VIEWS
 
-__all__ = ["view_linear_transform", "view_transform", "hdr_scaled"]
+__all__ = ["LINEAR_VIEWS", "LUT_VIEWS", "view_linear_transform", "view_transform", "hdr_scaled"]
 
 
 #: HLG (ITU-R BT.2100, Table 5): the OOTF's system gamma for a 1000 cd/m2 peak and the
@@ -171,8 +173,58 @@ def hdr_scaled(display: registry.DisplayLike, transforms: list) -> list:
     return [ocio_ops.matrix(np.eye(3) / k)] + list(transforms) + [ocio_ops.matrix(np.eye(3) * k)]
 
 
+def _clip_linear(entry: registry.Display, size: int) -> ocio_ops.Transform:
+    return clip_transform(entry, size)
+
+
+def _compress_linear(entry: registry.Display, size: int) -> ocio_ops.Transform:
+    return group(compress_lut(entry, clip_size=size).transforms() + [working_decoding_transform()])
+
+
+# the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range takes
+# to the lower bound) stay finite through the matrices at every optimisation level
+# (OPTIMIZATION_NONE does not compose them, so F32_MAX inputs overflowed to Inf - Inf = NaN)
+def _clamp_linear(entry: registry.Display, size: int) -> ocio_ops.Transform:
+    return group(
+        [finite_limit_transform(), display_matrix_transform(entry), ocio_ops.range_(0.0, 1.0)]
+    )
+
+
+def _aces_linear(entry: registry.Display, size: int) -> ocio_ops.Transform:
+    return group(
+        [
+            finite_limit_transform(),
+            display_matrix_transform(entry),
+            aces_gamut_compression_transform(),
+            ocio_ops.range_(0.0, 1.0),
+        ]
+    )
+
+
+#: View kind (:data:`ocio_thinfilm.registry.VIEW_KINDS`) -> ``f(display, size)``,
+#: CIE-XYZ-D65 -> display-linear RGB in [0, 1] of an SDR display; ``None`` for the raw
+#: view (no view transform).
+LINEAR_VIEWS: dict[str, Callable[[registry.Display, int], ocio_ops.Transform] | None] = {
+    "clip": _clip_linear,
+    "compress": _compress_linear,
+    "clamp": _clamp_linear,
+    "aces": _aces_linear,
+    "raw": None,
+}
+#: View kind -> its LUT chain (:func:`ocio_thinfilm.lut.clip_lut.clip_lut`,
+#: :func:`ocio_thinfilm.lut.compress_lut.compress_lut`) for the views that end in sRGB code
+#: values, named after the LUT; ``None`` for the views made of a linear transform.
+LUT_VIEWS: dict[str, Callable[[registry.Display, int], Any] | None] = {
+    "clip": lambda entry, size: clip_lut(entry, size),
+    "compress": lambda entry, size: compress_lut(entry, clip_size=size),
+    "clamp": None,
+    "aces": None,
+    "raw": None,
+}
+
+
 def view_linear_transform(
-    display: registry.DisplayLike, view: str, size: int = CLIP_SIZE
+    display: registry.DisplayLike, view: str | registry.View, size: int = CLIP_SIZE
 ) -> ocio_ops.Transform:
     """CIE-XYZ-D65 -> display-linear RGB in [0, 1] for ``view`` (not for Raw).
 
@@ -189,9 +241,9 @@ def view_linear_transform(
     ----------
     display : str or registry display
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
-    view : str
-        ``"Constant-Lightness Clip"``, ``"Channel Clamp"`` or
-        ``"ACES Gamut Compression"``.
+    view : str or View
+        A view of :data:`ocio_thinfilm.registry.VIEWS` (or its name) other than the raw
+        one: its kind picks the transform (:data:`LINEAR_VIEWS`).
     size : int, optional
         Edge length of the clip's Lut3Ds, in [9, 129] (default 65).
 
@@ -229,36 +281,16 @@ def view_linear_transform(
     ocio_thinfilm.checks.ParameterError: view must be one of (...), got 'Raw'
     """
     entry = registry.as_display(display)
+    kind = registry.as_view(view, raw=False).kind
     if entry.hdr:
         return group(hdr_scaled(entry, [view_linear_transform(entry.gamut, view, size)]))
-    if view == "Constant-Lightness Clip":
-        return clip_transform(entry, size)
-    if view == "Constant-Lightness Compress":
-        return group(
-            compress_lut(entry, clip_size=size).transforms() + [working_decoding_transform()]
-        )
-    # the baselines limit XYZ to +-LIMIT first: +-Inf (and NaN, which OCIO's CPU Range
-    # takes to the lower bound) stay finite through the matrices at every
-    # optimisation level (OPTIMIZATION_NONE does not compose them, so F32_MAX inputs
-    # overflowed to Inf - Inf = NaN)
-    if view == "Channel Clamp":
-        return group(
-            [finite_limit_transform(), display_matrix_transform(entry), ocio_ops.range_(0.0, 1.0)]
-        )
-    if view == "ACES Gamut Compression":
-        return group(
-            [
-                finite_limit_transform(),
-                display_matrix_transform(entry),
-                aces_gamut_compression_transform(),
-                ocio_ops.range_(0.0, 1.0),
-            ]
-        )
-    raise ParameterError("view", f" must be one of {VIEWS[:-1]}, got {view!r}")
+    linear = LINEAR_VIEWS[kind]
+    assert linear is not None  # as_view refused the raw view
+    return linear(entry.gamut, size)
 
 
 def view_transform(
-    display: registry.DisplayLike, view: str, size: int = CLIP_SIZE
+    display: registry.DisplayLike, view: str | registry.View, size: int = CLIP_SIZE
 ) -> ocio_ops.Transform:
     """OCIO transform CIE-XYZ-D65 -> display-encoded RGB for ``view`` in :data:`VIEWS`.
 
@@ -275,8 +307,8 @@ def view_transform(
     ----------
     display : str or registry display
         A display of :data:`ocio_thinfilm.registry.ALL_DISPLAYS`.
-    view : str
-        A view of :data:`ocio_thinfilm.registry.VIEWS`.
+    view : str or View
+        A view of :data:`ocio_thinfilm.registry.VIEWS` (or its name).
     size : int, optional
         Edge length of the clip's Lut3Ds, in [9, 129] (default 65).
 
@@ -312,11 +344,10 @@ def view_transform(
     True
     """
     entry = registry.as_display(display)
+    kind = registry.as_view(view).kind
+    if kind == "raw":
+        return group([])
     if entry.hdr:
-        if view not in VIEWS:
-            raise ParameterError("view", f" must be one of {VIEWS}, got {view!r}")
-        if view == "Raw":
-            return group([])
         return group(
             [
                 view_linear_transform(entry, view, size),
@@ -324,22 +355,13 @@ def view_transform(
                 hdr_encoding_transform(entry),
             ]
         )
-    if view not in VIEWS:
-        raise ParameterError("view", f" must be one of {VIEWS}, got {view!r}")
-    if view == "Raw":
-        return group([])
-    if view == "Constant-Lightness Clip":
-        lut = clip_lut(entry, size)
+    make_lut = LUT_VIEWS[kind]
+    if make_lut is not None:
+        # the LUT chain ends in sRGB code values: decoded, then the display's encoding
+        lut = make_lut(entry.gamut, size)
         return group(
             lut.transforms() + [working_decoding_transform(), display_encoding_transform(entry)],
             name=lut.name,
             id=transform_id("Gamut_Map", lut.name),
-        )
-    if view == "Constant-Lightness Compress":
-        soft = compress_lut(entry, clip_size=size)
-        return group(
-            soft.transforms() + [working_decoding_transform(), display_encoding_transform(entry)],
-            name=soft.name,
-            id=transform_id("Gamut_Map", soft.name),
         )
     return group([view_linear_transform(entry, view, size), display_encoding_transform(entry)])

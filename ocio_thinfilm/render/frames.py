@@ -42,7 +42,7 @@ __all__ = [
 
 DEFAULT_SIZE = (512, 512)
 DEFAULT_DISPLAY = "sRGB"
-DEFAULT_VIEW = "Constant-Lightness Clip"
+DEFAULT_VIEW = registry.CLIP_VIEW
 
 #: How the EXR's colour channels are to be read (also written into every EXR).
 EXR_COLORSPACE = "CIE-XYZ-D65"

@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.render import noise
@@ -89,13 +90,8 @@ class SpectrumScene(Scene):
     animation = "none (every frame is the same)"
     tables = (FILM_TABLE, MORPHO_TABLE)
 
-    #: The views compared, left to right.
-    VIEWS = (
-        "Constant-Lightness Clip",
-        "Constant-Lightness Compress",
-        "Channel Clamp",
-        "ACES Gamut Compression",
-    )
+    #: The views compared, left to right (the registry's of these kinds).
+    VIEWS = tuple(registry.view_of_kind(k).name for k in ("clip", "compress", "clamp", "aces"))
     #: Peak luminance of the spectrum strip (Y of the equal-energy spectrum at 555 nm).
     SPECTRUM_PEAK_Y = 0.6
     WAVELENGTHS = (380.0, 700.0)
