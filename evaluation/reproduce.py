@@ -71,7 +71,7 @@ def regenerate(out: Path) -> list[Path]:
     for display, view, language in SHADERS:
         path = out / "shaders" / shader_name(display, view, language)
         argv = ["export", "shader", "--lang", language, "--from", "ACEScct"]
-        argv += ["--display", display, "--view", view, "--out", str(path), "--quiet"]
+        argv += ["--display", display, "--view", view, "--out", str(path)]
         if cli_main(argv) != 0:
             raise RuntimeError(f"export shader failed: {argv}")
         written.append(path)

@@ -18,8 +18,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-import numpy as np
-
 from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour.log_curves import LOG_CURVES
@@ -52,7 +50,9 @@ def matrix_to_reference(colorimetry_name: str) -> ocio_ops.Transform:
     PyOpenColorIO.GroupTransform
     """
     M = colorimetry.matrix_XYZ_to_RGB(colorimetry_name)
-    return ocio_ops.group([ocio_ops.finite_limit_transform(), ocio_ops.matrix(reproducible.inv3(M))])
+    return ocio_ops.group(
+        [ocio_ops.finite_limit_transform(), ocio_ops.matrix(reproducible.inv3(M))]
+    )
 
 
 def _acescct_decoding() -> list[ocio_ops.Transform]:

@@ -35,7 +35,8 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry, compress
+from ocio_thinfilm.colour import clip, colorimetry, compress, encodings
+from ocio_thinfilm.colour.log_curves import LOG_CURVES
 from ocio_thinfilm.colour.views import analytic_map
 from ocio_thinfilm.lut import lattice_fit, ocio_ops
 
@@ -129,6 +130,31 @@ def _apply(cfg, src, dst, values):
     return px.astype(np.float64)
 
 
+def _to_XYZ(cfg, start, values):
+    """Convert ``values`` of the colour space ``start`` to CIE-XYZ-D65.
+
+    In float64 for the registry's encoded spaces (their log curve, then their gamut's
+    matrix): what the fit is trained on then does not depend on OCIO's float32 CPU path,
+    whose SIMD kernels differ between CPUs (:mod:`ocio_thinfilm.reproducible`). Any
+    other space (the shaper space of :func:`ocio_thinfilm.export.view.view_config`) by
+    the config's CPU processor.
+    """
+    encoded = registry.find_encoded(start)
+    if encoded is None:
+        return _apply(cfg, start, "CIE-XYZ-D65", values)
+    linear = LOG_CURVES[encoded.curve].decode(values)
+    return colorimetry.RGB_to_XYZ(linear, encoded.gamut.colorimetry)
+
+
+def _from_XYZ(cfg, start, XYZ):
+    """Convert CIE-XYZ-D65 to the colour space ``start``: the inverse of :func:`_to_XYZ`."""
+    encoded = registry.find_encoded(start)
+    if encoded is None:
+        return _apply(cfg, "CIE-XYZ-D65", start, XYZ)
+    linear = colorimetry.XYZ_to_RGB(XYZ, encoded.gamut.colorimetry)
+    return LOG_CURVES[encoded.curve].encode(linear)
+
+
 def _view_codes(cfg, start, display, view, coords, XYZ, knobs):
     """Return the display code values of ``view`` for colours ``XYZ``.
 
@@ -136,13 +162,11 @@ def _view_codes(cfg, start, display, view, coords, XYZ, knobs):
     ANALYTIC_MAPS`, with the compression's ``knobs``), or else those of OCIO's view
     applied to ``coords`` in the ``start`` space.
     """
-    from ocio_thinfilm.lut.display_transforms import display_encoding_transform
-
     form = analytic_map(view)
     if display in registry.DISPLAYS and form is not None:
         rgb = form.rgb(colorimetry.XYZ_to_RGB(XYZ, display), display, *knobs)
-        codes = ocio_ops.apply(display_encoding_transform(display), rgb.astype(np.float32))
-        return np.asarray(codes, dtype=np.float64)
+        # the display's encoding in float64 (colour.encodings), not OCIO's float32 CPU path
+        return encodings.encode(rgb, registry.as_display(display).encoding)
     return _apply(cfg, start, (display, view), coords)
 
 
@@ -175,11 +199,9 @@ def fit_view_table(
     """
     g = np.linspace(0.0, 1.0, size)
     grid = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)
-    prior = _view_codes(
-        cfg, start, display, view, grid, _apply(cfg, start, "CIE-XYZ-D65", grid), knobs
-    )
+    prior = _view_codes(cfg, start, display, view, grid, _to_XYZ(cfg, start, grid), knobs)
     XYZ, family = training_colours(display)
-    coords = np.clip(_apply(cfg, "CIE-XYZ-D65", start, XYZ), 0.0, 1.0)
+    coords = np.clip(_from_XYZ(cfg, start, XYZ), 0.0, 1.0)
     values = _view_codes(cfg, start, display, view, coords, XYZ, knobs)
     weights = np.where(
         _inside(display, XYZ),

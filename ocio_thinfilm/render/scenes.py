@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm import registry
+from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.physics import spectra
 from ocio_thinfilm.render import noise
@@ -420,7 +420,7 @@ class SoapScene(Scene):
         # upper left over a dim room, brighter above than below.
         rx, ry, rz = 2 * nz * nx, 2 * nz * ny, 2 * nz * nz - 1
         window = np.array([-0.45, 0.6, 0.66], np.float32)
-        window /= np.linalg.norm(window)
+        window /= np.sqrt(reproducible.matmul(window, window))
         key = _smoothstep(0.86, 0.97, rx * window[0] + ry * window[1] + rz * window[2])
         env = 0.55 + 0.3 * ry + 0.45 * key
         # Background: a dark gradient, seen through the bubble too (transmission ~ 1).
@@ -517,13 +517,13 @@ class MorphoScene(Scene):
             self.TILT + self.TILT_SWING * np.sin(2 * np.pi * (frame - 1) / self.TILT_PERIOD)
         )
         view = np.array([np.sin(tilt) * 0.6, np.sin(tilt) * 0.8, np.cos(tilt)], np.float32)
-        view /= np.linalg.norm(view)
-        cos_view = np.clip(n @ view, 0.0, 1.0).astype(np.float32)
+        view /= np.sqrt(reproducible.matmul(view, view))
+        cos_view = np.clip(reproducible.matmul(n, view), 0.0, 1.0).astype(np.float32)
         colour = lookup(MORPHO_TABLE, cos_view)
         # Soft diffuse term for the shape, light from the upper left.
         light = np.array([-0.4, 0.5, 0.77], np.float32)
-        light /= np.linalg.norm(light)
-        diffuse = np.clip(n @ light, 0.0, 1.0)
+        light /= np.sqrt(reproducible.matmul(light, light))
+        diffuse = np.clip(reproducible.matmul(n, light), 0.0, 1.0)
         xyz = np.float32(self.EXPOSURE) * colour + _grey(self.PIGMENT_Y * (0.4 + 0.6 * diffuse))
         theta = np.degrees(np.arccos(cos_view)).astype(np.float32)
         return Picture(
