@@ -150,7 +150,7 @@ def canonical(values: npt.ArrayLike) -> np.ndarray:
     Examples
     --------
     >>> canonical([1.0524667000000003, 1.0524666999999983, -8.5e-22]).tolist()
-    [1.0524667000000003, 1.0524667000000003, 0.0]
+    [1.0524666998535395, 1.0524666998535395, 0.0]
     """
     a = snap(values, TABLE_BITS)
     return np.where(np.abs(a) < 2.0**-40, 0.0, a) + 0.0
