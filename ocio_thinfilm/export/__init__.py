@@ -4,7 +4,8 @@ Every file the package writes is written here (the stages before it hand over da
 objects).
 
 - :mod:`.files` -- standalone table and clip LUTs (``export film|morpho|clip``);
-- :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``);
+- :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``; its shaper:
+  :mod:`.view_shaper`, its fitted tables: :mod:`.view_fit`);
 - :mod:`.shader` -- the clip and compression views as GLSL and DCTL code, no LUT
   (``export shader``; the code's parts: :mod:`.shader_parts`, in the tokens of
   :mod:`.shader_language`);
