@@ -73,9 +73,11 @@ def _view_knobs(args: argparse.Namespace) -> dict[str, float]:
     given = [o for o, (dest, _) in _KNOB_OPTIONS.items() if getattr(args, dest) is not None]
     if not given:
         return {}
-    if args.view != registry.COMPRESS_VIEW:
+    view = registry.as_view(args.view) if args.view in registry.VIEWS else None
+    if view is None or view.kind != "compress":
+        compress_view = registry.view_of_kind("compress").name
         raise UsageError(
-            f"{given[0]} applies to 'export view|shader --view \"{registry.COMPRESS_VIEW}\"', "
+            f"{given[0]} applies to 'export view|shader --view \"{compress_view}\"', "
             f"not --view {args.view!r}"
         )
     return _compress_knobs(args)
@@ -208,7 +210,6 @@ def _run_shader(args: argparse.Namespace) -> int:
     out = args.out
     if out is None and args.display is not None and args.view is not None:
         out = f"{view.set_name(source, args.display, args.view)}.{args.lang}"
-    threshold, limit = (knobs.get(dest, default) for dest, default in _KNOB_OPTIONS.values())
     path = shader.export_shader(
         # without --display or --view the library refuses before it writes anything
         out if out is not None else "ocio_thinfilm_view",
@@ -216,8 +217,7 @@ def _run_shader(args: argparse.Namespace) -> int:
         args.display,
         args.view,
         source,
-        threshold=threshold,
-        limit=limit,
+        **knobs,
     )
     print(f"wrote {path}")
     return 0

@@ -56,6 +56,7 @@ from pathlib import Path
 from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import compress
+from ocio_thinfilm.config.luts import KNOB_NAMES
 from ocio_thinfilm.export import shader_parts
 from ocio_thinfilm.export.shader_language import TOKENS
 from ocio_thinfilm.io import StrPath, check_output_file, write_text
@@ -150,8 +151,8 @@ def shader_source(
     view: str,
     source: str = registry.REFERENCE,
     *,
-    threshold: float = compress.THRESHOLD,
-    limit: float = compress.LIMIT,
+    compress_threshold: float = compress.THRESHOLD,
+    compress_limit: float = compress.LIMIT,
 ) -> str:
     """Return the view's map as GLSL or DCTL source code.
 
@@ -165,10 +166,11 @@ def shader_source(
         ``"Constant-Lightness Clip"`` or ``"Constant-Lightness Compress"``.
     source : str, optional
         The input colour space (:data:`SHADER_SOURCES`), default ``CIE-XYZ-D65``.
-    threshold, limit : float, optional
-        The compression's knobs as the code's defaults (the GLSL's fallback for unset
-        uniforms, the DCTL sliders' defaults): ``0 < threshold < 1 < limit``. Ignored
-        by the clip.
+    compress_threshold, compress_limit : float, optional
+        The compression's knobs, threshold and limit, as the code's defaults (the GLSL's
+        fallback for unset uniforms, the DCTL sliders' defaults): ``0 < threshold < 1 <
+        limit <=`` :data:`KNOB_LIMIT_MAX` (the names of ``export view`` and ``bake``).
+        Ignored by the clip.
 
     Returns
     -------
@@ -194,14 +196,16 @@ def shader_source(
     as_choice("lang", lang, LANGUAGES)
     as_choice("display", display, registry.ALL_DISPLAYS)
     as_choice("view", view, SHADER_VIEWS)
-    if source in registry.THIN_FILM_SPACES:
+    if registry.space_kind(source) == "thin-film":
         raise ParameterError(
             "source",
             f" {source!r} is a spectral table, not a formula: its views are LUTs "
             "(export view); the shaders take one of " + ", ".join(SHADER_SOURCES),
         )
     as_choice("source", source, SHADER_SOURCES)
-    t, lim = compress.check_knobs(threshold, limit, limit_max=KNOB_LIMIT_MAX)
+    t, lim = compress.check_knobs(
+        compress_threshold, compress_limit, names=KNOB_NAMES, limit_max=KNOB_LIMIT_MAX
+    )
     soft = bool(SHADER_MAPS[registry.as_view(view).kind])
     L = TOKENS[lang]
     entry = registry.as_display(display)
@@ -292,8 +296,8 @@ def export_shader(
     view: str,
     source: str = registry.REFERENCE,
     *,
-    threshold: float = compress.THRESHOLD,
-    limit: float = compress.LIMIT,
+    compress_threshold: float = compress.THRESHOLD,
+    compress_limit: float = compress.LIMIT,
 ) -> Path:
     """Write :func:`shader_source` to ``path`` (written aside, checked, then renamed).
 
@@ -302,7 +306,7 @@ def export_shader(
     path : str or os.PathLike
         The file to write (``.glsl``, ``.dctl`` or any name); the file named is
         replaced atomically, a directory in its place is refused.
-    lang, display, view, source, threshold, limit
+    lang, display, view, source, compress_threshold, compress_limit
         As :func:`shader_source`.
 
     Returns
@@ -315,5 +319,12 @@ def export_shader(
     ValueError
         For a bad argument (naming it) or an output path that cannot be written.
     """
-    text = shader_source(lang, display, view, source, threshold=threshold, limit=limit)
+    text = shader_source(
+        lang,
+        display,
+        view,
+        source,
+        compress_threshold=compress_threshold,
+        compress_limit=compress_limit,
+    )
     return write_text(check_output_file(path, "path"), text)

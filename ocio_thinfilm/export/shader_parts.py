@@ -32,9 +32,10 @@ __all__ = [
     "output_code",
 ]
 
-#: The config's sRGB-encoded texture space: the sRGB display's encoding over Rec.709
-#: primaries (its colour space decodes with the display's curve, then the matrix).
-_TEXTURE = (registry.TEXTURE_SPACE, "Rec.709", "sRGB")
+#: The config's sRGB-encoded texture space (:data:`ocio_thinfilm.registry.TEXTURE_SPACE`):
+#: its primaries and the display whose encoding it has (its colour space decodes with the
+#: display's curve, then the matrix).
+_TEXTURE_PRIMARIES, _TEXTURE_DISPLAY = "Rec.709", "sRGB"
 
 
 def _pq() -> dict[str, float]:
@@ -170,17 +171,18 @@ def _log_encoding(L: Language, curve_name: str) -> list[str]:
 def input_code(L: Language, source: str) -> str:
     """Input colour space -> CIE-XYZ-D65, limited as the config's colour space and view."""
     lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_input(float r, float g, float b)", "{"]
-    if source == registry.REFERENCE:
+    kind = registry.space_kind(source)
+    if kind == "reference":
         lines.append(
             f"    return {L.make3}(ocio_thinfilm_finite(r), ocio_thinfilm_finite(g), "
             "ocio_thinfilm_finite(b));"
         )
         return "\n".join(lines + ["}", ""])
-    if source == _TEXTURE[0]:
-        encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
+    if kind == "texture":
+        encoding = registry.as_display(_TEXTURE_DISPLAY, hdr=False).encoding
         for ch in "rgb":
             lines.append(f"    {ch} = {_piecewise_decode(L, encoding, ch)};")
-        colorimetry_name = _TEXTURE[1]
+        colorimetry_name = _TEXTURE_PRIMARIES
     else:
         space = registry.linear_space_of(source)
         assert space is not None  # shader_source checked the source
@@ -458,15 +460,16 @@ def undisplay_code(L: Language, entry: registry.AnyDisplay, soft: bool) -> str:
 def output_code(L: Language, source: str) -> str:
     """CIE-XYZ-D65 -> the input colour space (the inverse of :func:`input_code`)."""
     lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_output(float X, float Y, float Z)", "{"]
-    if source == registry.REFERENCE:
+    kind = registry.space_kind(source)
+    if kind == "reference":
         return "\n".join(lines + [f"    return {L.make3}(X, Y, Z);", "}", ""])
-    texture = source == _TEXTURE[0]
+    texture = kind == "texture"
     space = None if texture else registry.linear_space_of(source)
-    M = colorimetry.matrix_XYZ_to_RGB(_TEXTURE[1] if space is None else space.colorimetry)
+    M = colorimetry.matrix_XYZ_to_RGB(_TEXTURE_PRIMARIES if space is None else space.colorimetry)
     R, G, B = matrix_rows(L, M, ("X", "Y", "Z"))
     lines += [f"    float r = {R};", f"    float g = {G};", f"    float b = {B};"]
     if texture:
-        encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
+        encoding = registry.as_display(_TEXTURE_DISPLAY, hdr=False).encoding
         lines += [f"    {ch} = {_piecewise_encode(L, encoding, ch)};" for ch in "rgb"]
     encoded = registry.find_encoded(source)
     if encoded is not None:

@@ -52,7 +52,7 @@ def linear_sibling(source: str) -> str | None:
     The reference XYZ or a scene-linear space itself, an encoded space's linear one;
     None for the others (thin-film and display spaces).
     """
-    if source == registry.REFERENCE:
+    if registry.space_kind(source) == "reference":
         return source
     space = registry.linear_space_of(source)
     return None if space is None else space.name
