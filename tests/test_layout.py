@@ -305,3 +305,34 @@ def test_no_package_module_is_over_700_lines(tmp_path):
     (tmp_path / "long.py").write_text("x = 1\n" * (MAX_LINES + 1))
     (tmp_path / "short.py").write_text("x = 1\n" * MAX_LINES)
     assert _too_long(tmp_path) == {"long.py": MAX_LINES + 1}
+
+
+def _knob_parameters(path: Path) -> list[str]:
+    """``"line name"`` of every public function of ``path`` with a parameter called
+    ``threshold`` or ``limit``."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
+            a = node.args
+            names = {p.arg for p in a.posonlyargs + a.args + a.kwonlyargs}
+            if names & {"threshold", "limit"}:
+                found.append(f"{node.lineno} {node.name}")
+    return found
+
+
+def test_the_stages_after_lut_name_the_knobs_compress_threshold_and_compress_limit(tmp_path):
+    """The compression's knobs have one name in the API of the config, the files, the
+    shaders and the renderer (``compress_threshold``, ``compress_limit``, as the options
+    ``--compress-threshold`` and ``--compress-limit``); only the compression's own math
+    (``colour.compress``, ``lut.compress_lut``), where they are its only parameters, calls
+    them ``threshold`` and ``limit``."""
+    later = {name for name in STAGES if RANK[name] > RANK["lut"]}
+    offenders = {
+        str(p.relative_to(PACKAGE)): _knob_parameters(p)
+        for p in _modules()
+        if p.relative_to(PACKAGE).parts[0] in later
+    }
+    assert {k: v for k, v in offenders.items() if v} == {}
+    bad = tmp_path / "bad.py"
+    bad.write_text("def f(lang: str, *, threshold: float = 0.8) -> str:\n    return lang\n")
+    assert _knob_parameters(bad) == ["1 f"]

@@ -269,8 +269,14 @@ def test_every_stage_maps_every_view_kind_and_log_curve():
     assert all(LINEAR_VIEWS[k] is not None for k in kinds - {"raw"})
 
 
+#: The registry's constants that hold one view's or one colour space's name.
+NAME_CONSTANTS = {"CLIP_VIEW", "COMPRESS_VIEW", "REFERENCE", "TEXTURE_SPACE", "RAW_SPACE"}
+
+
 def _named_literals(path: Path, names: set[str]) -> list[str]:
-    """``line: name`` of each comparison with, or dict key of, a string in ``names``."""
+    """``line: name`` of each comparison with, or dict key of, a string in ``names``, and
+    of each comparison with a registry constant of :data:`NAME_CONSTANTS` (``view ==
+    registry.COMPRESS_VIEW`` picks by name as much as ``view == "..."`` does)."""
     import ast
 
     curves = set(registry.LOG_CURVES)
@@ -282,6 +288,14 @@ def _named_literals(path: Path, names: set[str]) -> list[str]:
             operands = [node.left, *node.comparators]
             operands += [
                 e for o in operands if isinstance(o, (ast.Tuple, ast.List, ast.Set)) for e in o.elts
+            ]
+            found += [
+                f"{o.lineno}: registry.{o.attr}"
+                for o in operands
+                if isinstance(o, ast.Attribute)
+                and o.attr in NAME_CONSTANTS
+                and isinstance(o.value, ast.Name)
+                and o.value.id == "registry"
             ]
         elif isinstance(node, ast.Dict):  # curve names key the stages' curve mappings
             operands = [
@@ -297,11 +311,19 @@ def _named_literals(path: Path, names: set[str]) -> list[str]:
     return found
 
 
-def test_no_view_or_encoded_space_is_picked_by_its_name_outside_the_registry(tmp_path):
-    """Behaviour comes from a view's kind and an encoded space's curve: no module of the
-    package compares a view's or an encoded space's name with a string literal, or keys a
-    dict by one (the check can fail: a copy of the old comparison is found)."""
-    names = set(registry.VIEWS) | set(registry.ENCODED_SPACES)
+def test_no_view_or_space_is_picked_by_its_name_outside_the_registry(tmp_path):
+    """Behaviour comes from a view's kind, a colour space's kind
+    (:func:`ocio_thinfilm.registry.space_kind`) and an encoded space's curve: no module of
+    the package (``cli/`` included) compares a view's or a colour space's name with a
+    string literal or with a registry constant holding one, or keys a dict by one (the
+    check can fail: copies of such comparisons are found)."""
+    names = (
+        set(registry.VIEWS)
+        | set(registry.ENCODED_SPACES)
+        | set(registry.SCENE_LINEAR_SPACES)
+        | set(registry.THIN_FILM_SPACES)
+        | {registry.REFERENCE, registry.TEXTURE_SPACE, registry.RAW_SPACE}
+    )
     package = ROOT / "ocio_thinfilm"
     found = {
         str(p.relative_to(package)): hits
@@ -309,9 +331,39 @@ def test_no_view_or_encoded_space_is_picked_by_its_name_outside_the_registry(tmp
         if p.relative_to(package).parts[0] != "registry" and (hits := _named_literals(p, names))
     }
     assert found == {}
+    assert (package / "cli" / "export.py") in set(package.rglob("*.py"))
     bad = tmp_path / "bad.py"
-    bad.write_text('def f(view):\n    return view == "Channel Clamp" or {"Raw": 1}\n')
-    assert sorted(_named_literals(bad, names)) == ["2: Channel Clamp", "2: Raw"]
+    bad.write_text(
+        "def f(view, source):\n"
+        '    return view == "Channel Clamp" or {"Raw": 1} or source == "CIE-XYZ-D65"\n'
+        "def g(args):\n"
+        "    return args.view != registry.COMPRESS_VIEW or registry.REFERENCE == args.source\n"
+    )
+    assert sorted(_named_literals(bad, names)) == [
+        "2: CIE-XYZ-D65",
+        "2: Channel Clamp",
+        "2: Raw",
+        "4: registry.COMPRESS_VIEW",
+        "4: registry.REFERENCE",
+    ]
+
+
+def test_every_space_of_the_registry_has_one_kind():
+    """:func:`~ocio_thinfilm.registry.space_kind` gives each colour space the registry
+    names its kind, every kind is used, and other names have none."""
+    expected = {
+        registry.REFERENCE: "reference",
+        registry.TEXTURE_SPACE: "texture",
+        registry.RAW_SPACE: "raw",
+        **{n: "scene-linear" for n in registry.SCENE_LINEAR_SPACES},
+        **{n: "encoded" for n in registry.ENCODED_SPACES},
+        **{n: "thin-film" for n in registry.THIN_FILM_SPACES},
+        **{d.colorspace: "display" for d in registry.ALL_DISPLAY_LIST},
+    }
+    assert {n: registry.space_kind(n) for n in expected} == expected
+    assert sorted(set(expected.values())) == sorted(registry.SPACE_KINDS)
+    assert registry.space_kind("ACES 1.0 - SDR Video") is None
+    assert registry.space_kind(None) is None  # type: ignore[arg-type]
 
 
 def test_the_config_page_lists_the_registrys_views_and_spaces():

@@ -190,7 +190,9 @@ def test_every_finite_input_gives_finite_codes_and_non_finite_ones_the_config_s(
 
 
 def test_glsl_uniforms_left_unset_or_invalid_give_the_exported_knobs(gl, sets):
-    text = shader.shader_source("glsl", "sRGB", COMPRESS, threshold=0.6, limit=1.5)
+    text = shader.shader_source(
+        "glsl", "sRGB", COMPRESS, compress_threshold=0.6, compress_limit=1.5
+    )
     assert "uniform float ocio_thinfilm_threshold;" in text
     assert "uniform float ocio_thinfilm_limit;" in text
     assert not re.search(r"^\s*#\s*version", text, re.M)
@@ -208,7 +210,7 @@ def test_glsl_uniforms_left_unset_or_invalid_give_the_exported_knobs(gl, sets):
 
 
 def test_dctl_sliders_and_built_ins(cxx):
-    text = shader.shader_source("dctl", "Rec.2100-PQ", COMPRESS, "ACEScct", threshold=0.7)
+    text = shader.shader_source("dctl", "Rec.2100-PQ", COMPRESS, "ACEScct", compress_threshold=0.7)
     assert (
         "__DEVICE__ float3 transform(int p_Width, int p_Height, int p_X, int p_Y, "
         "float p_R, float p_G, float p_B)" in text
@@ -324,16 +326,17 @@ def test_the_inverse_is_the_analytic_inverse(lang, display, view):
         (dict(view="Raw"), "view"),
         (dict(source="Thin Film Morpho Iridescence"), "source"),
         (dict(source="sRGB - Display"), "source"),
-        (dict(threshold=0.0), "threshold"),
-        (dict(threshold=1.0), "threshold"),
-        (dict(limit=1.0), "limit"),
-        (dict(limit=float("nan")), "limit"),
+        (dict(compress_threshold=0.0), "compress_threshold"),
+        (dict(compress_threshold=1.0), "compress_threshold"),
+        (dict(compress_limit=1.0), "compress_limit"),
+        (dict(compress_limit=float("nan")), "compress_limit"),
+        (dict(compress_limit=shader.KNOB_LIMIT_MAX * 2), "compress_limit"),
     ],
 )
 def test_library_refuses_bad_arguments_naming_them(kwargs, parameter):
     args = dict(lang="glsl", display="sRGB", view=COMPRESS, source=registry.REFERENCE)
     args.update(kwargs)
-    knobs = {k: args.pop(k) for k in ("threshold", "limit") if k in args}
+    knobs = {k: args.pop(k) for k in ("compress_threshold", "compress_limit") if k in args}
     with pytest.raises(ParameterError) as info:
         shader.shader_source(args["lang"], args["display"], args["view"], args["source"], **knobs)
     assert info.value.parameter == parameter
@@ -355,6 +358,7 @@ def test_cli_writes_the_file_and_refuses_bad_options(tmp_path, capsys, cxx, sets
     for extra, option in [
         (["--compress-threshold", "1.3"], "--compress-threshold"),
         (["--compress-limit", "0.9"], "--compress-limit"),
+        (["--compress-limit", "200"], "--compress-limit"),  # above the shaders' largest
         (["--lang", "hlsl"], "--lang"),
         (["--size", "33"], "--size"),
         (["--from", "Thin Film Phase-Change Thickness"], "--from"),

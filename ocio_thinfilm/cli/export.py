@@ -45,11 +45,12 @@ _KNOB_OPTIONS = {
 }
 
 
-def _compress_knobs(args: argparse.Namespace) -> dict[str, float]:
+def _compress_knobs(args: argparse.Namespace, limit_max: float | None = None) -> dict[str, float]:
     """Return the knobs as the library's keyword arguments, checked, and warn if untested.
 
-    A knob out of range is a ParameterError naming the library parameter (the command
-    line names the option). Knobs outside the tested range
+    A knob out of range (a limit above ``limit_max`` too, where given) is a
+    ParameterError naming the library parameter (the command line names the option),
+    raised before any warning. Knobs outside the tested range
     (:func:`ocio_thinfilm.lut.compress_lut.untested_knobs_note`) print one warning line
     on stderr with the accuracy measured there.
     """
@@ -60,7 +61,9 @@ def _compress_knobs(args: argparse.Namespace) -> dict[str, float]:
         default if getattr(args, dest) is None else getattr(args, dest)
         for dest, default in _KNOB_OPTIONS.values()
     ]
-    threshold, limit = compress_map.check_knobs(*given, names=(names[0], names[1]))
+    threshold, limit = compress_map.check_knobs(
+        *given, names=(names[0], names[1]), limit_max=limit_max
+    )
     note = compress_lut.untested_knobs_note(threshold, limit)
     if note is not None:
         command = " ".join(w for w in (args.command, getattr(args, "subcommand", None)) if w)
@@ -68,17 +71,22 @@ def _compress_knobs(args: argparse.Namespace) -> dict[str, float]:
     return dict(zip(names, (threshold, limit), strict=True))
 
 
-def _view_knobs(args: argparse.Namespace) -> dict[str, float]:
-    """Return the knobs of ``export view|shader``, refused for views other than the compression."""
+def _view_knobs(args: argparse.Namespace, limit_max: float | None = None) -> dict[str, float]:
+    """Return the knobs of ``export view|shader``, refused for views other than the compression.
+
+    ``limit_max``: as :func:`_compress_knobs` (the shaders' largest limit).
+    """
     given = [o for o, (dest, _) in _KNOB_OPTIONS.items() if getattr(args, dest) is not None]
     if not given:
         return {}
-    if args.view != registry.COMPRESS_VIEW:
+    view = registry.as_view(args.view) if args.view in registry.VIEWS else None
+    if view is None or view.kind != "compress":
+        compress_view = registry.view_of_kind("compress").name
         raise UsageError(
-            f"{given[0]} applies to 'export view|shader --view \"{registry.COMPRESS_VIEW}\"', "
+            f"{given[0]} applies to 'export view|shader --view \"{compress_view}\"', "
             f"not --view {args.view!r}"
         )
-    return _compress_knobs(args)
+    return _compress_knobs(args, limit_max)
 
 
 def _add_knob_options(parser: argparse.ArgumentParser, what: str) -> None:
@@ -203,12 +211,11 @@ def _run_shader(args: argparse.Namespace) -> int:
 
     if args.lang is None:
         raise UsageError(f"--lang is needed for 'export shader': {' or '.join(shader.LANGUAGES)}")
-    knobs = _view_knobs(args)
+    knobs = _view_knobs(args, limit_max=shader.KNOB_LIMIT_MAX)
     source = registry.REFERENCE if args.source is None else args.source
     out = args.out
     if out is None and args.display is not None and args.view is not None:
         out = f"{view.set_name(source, args.display, args.view)}.{args.lang}"
-    threshold, limit = (knobs.get(dest, default) for dest, default in _KNOB_OPTIONS.values())
     path = shader.export_shader(
         # without --display or --view the library refuses before it writes anything
         out if out is not None else "ocio_thinfilm_view",
@@ -216,8 +223,7 @@ def _run_shader(args: argparse.Namespace) -> int:
         args.display,
         args.view,
         source,
-        threshold=threshold,
-        limit=limit,
+        **knobs,
     )
     print(f"wrote {path}")
     return 0

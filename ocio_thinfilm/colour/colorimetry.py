@@ -357,7 +357,7 @@ def _bradford(source_xy: np.ndarray, target_xy: np.ndarray) -> np.ndarray:
 def _matrix_cached(space: str) -> np.ndarray:
     import colour
 
-    if space == "CIE-XYZ-D65":
+    if registry.space_kind(space) == "reference":  # the reference XYZ: no matrix
         return np.eye(3)
     if space not in registry.RGB_COLORIMETRY:
         raise ParameterError(

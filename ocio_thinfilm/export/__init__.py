@@ -4,9 +4,11 @@ Every file the package writes is written here (the stages before it hand over da
 objects).
 
 - :mod:`.files` -- standalone table and clip LUTs (``export film|morpho|clip``);
-- :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``);
+- :mod:`.view` -- display/view LUTs through OCIO's Baker (``export view``; its shaper:
+  :mod:`.view_shaper`, its fitted tables: :mod:`.view_fit`);
 - :mod:`.shader` -- the clip and compression views as GLSL and DCTL code, no LUT
-  (``export shader``);
+  (``export shader``; the code's parts: :mod:`.shader_parts`, in the tokens of
+  :mod:`.shader_language`);
 - :mod:`.knob_page` -- ``docs/knobs.html``, a WebGL2 page that draws test colours
   through the exported GLSL, to choose the compression's knobs (its style sheet and
   script: :mod:`.knob_page_script`);

@@ -51,19 +51,15 @@ colorimetry the config is built from.
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
-from ocio_thinfilm import __version__, registry, reproducible
+from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice
-from ocio_thinfilm.colour import clip, colorimetry, compress
-from ocio_thinfilm.colour.log_curves import LOG_CURVES
+from ocio_thinfilm.colour import compress
+from ocio_thinfilm.config.luts import KNOB_NAMES
+from ocio_thinfilm.export import shader_parts
+from ocio_thinfilm.export.shader_language import TOKENS
 from ocio_thinfilm.io import StrPath, check_output_file, write_text
-from ocio_thinfilm.lut import ocio_ops
-from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
 
 __all__ = [
     "LANGUAGES",
@@ -78,7 +74,7 @@ __all__ = [
 ]
 
 #: The languages :func:`shader_source` writes.
-LANGUAGES = ("glsl", "dctl")
+LANGUAGES = tuple(TOKENS)
 #: View kind (:data:`ocio_thinfilm.registry.VIEW_KINDS`) -> whether its map is the soft
 #: compression (``True``) or the clip (``False``); ``None`` for the kinds the shaders do
 #: not write (the baselines are LUT-free in the config already, the raw view passes data
@@ -101,518 +97,11 @@ SHADER_SOURCES = (
     + registry.ENCODED_SPACES
     + (registry.TEXTURE_SPACE,)
 )
-#: The config's sRGB-encoded texture space: the sRGB display's encoding over Rec.709
-#: primaries (its colour space decodes with the display's curve, then the matrix).
-_TEXTURE = (registry.TEXTURE_SPACE, "Rec.709", "sRGB")
 #: The largest limit the shaders accept from a host (a larger uniform gives the defaults).
 KNOB_LIMIT_MAX = compress.LIMIT_MAX
 #: DCTL slider ranges (min, max, step); widened to hold the exported default.
 THRESHOLD_SLIDER = (0.05, 0.99, 0.01)
 LIMIT_SLIDER = (1.01, 3.0, 0.01)
-
-
-def _pq() -> dict[str, float]:
-    """SMPTE ST 2084's constants m_1, m_2, c_1, c_2, c_3 in that order, colour-science's."""
-    from colour.models.rgb.transfer_functions.st_2084 import CONSTANTS_ST2084
-
-    return {k: float(v) for k, v in CONSTANTS_ST2084.items()}
-
-
-def _hlg() -> dict[str, float]:
-    """ITU-R BT.2100 HLG OETF's constants a, b, c in that order, colour-science's."""
-    from colour.models.rgb.transfer_functions.arib_std_b67 import CONSTANTS_ARIBSTDB67
-
-    return {k: float(v) for k, v in CONSTANTS_ARIBSTDB67.items()}
-
-
-@dataclass(frozen=True)
-class _Language:
-    """The tokens in which GLSL and DCTL differ (the code is otherwise shared)."""
-
-    vec3: str
-    make3: str
-    qualifier: str
-    suffix: str
-    pow: str
-    max: str
-    sqrt: str
-    log: str
-    exp2: str
-    exp: str
-    log2: str
-    saturate: str
-
-    def lit(self, x: float) -> str:
-        """Return a float literal that rounds to the float32 nearest ``x`` (finite)."""
-        mantissa, _, exponent = f"{float(np.float32(x)):.9g}".partition("e")
-        if "." not in mantissa:
-            mantissa += ".0"
-        return mantissa + (f"e{exponent}" if exponent else "") + self.suffix
-
-
-_GLSL = _Language(
-    vec3="vec3",
-    make3="vec3",
-    qualifier="",
-    suffix="",
-    pow="pow",
-    max="max",
-    sqrt="sqrt",
-    log="log",
-    exp2="exp2",
-    exp="exp",
-    log2="log2",
-    saturate="ocio_thinfilm_saturate",
-)
-_DCTL = _Language(
-    vec3="float3",
-    make3="make_float3",
-    qualifier="__DEVICE__ ",
-    suffix="f",
-    pow="_powf",
-    max="_fmaxf",
-    sqrt="_sqrtf",
-    log="_logf",
-    exp2="_exp2f",
-    exp="_expf",
-    log2="_log2f",
-    saturate="_saturatef",
-)
-_LANGUAGE = {"glsl": _GLSL, "dctl": _DCTL}
-
-
-# --------------------------------------------------------------------------- #
-# The parts of the code, each a function of the language
-# --------------------------------------------------------------------------- #
-def _helpers(L: _Language) -> str:
-    lim = L.lit(ocio_ops.LIMIT)
-    text = f"""
-// Components limited to [lo, hi]; NaN and -Inf give lo, +Inf gives hi (OCIO's Range).
-{L.qualifier}float ocio_thinfilm_range(float x, float lo, float hi)
-{{
-    return x > lo ? (x < hi ? x : hi) : lo;
-}}
-
-{L.qualifier}float ocio_thinfilm_finite(float x)
-{{
-    return ocio_thinfilm_range(x, -{lim}, {lim});
-}}
-"""
-    one = L.lit(1.0)
-    text += f"""
-// A channel's normalised distance along the ray from the grey Y (0 < Y < 1): the
-// fraction of the way to the face through black (below Y) or through white (above).
-{L.qualifier}float ocio_thinfilm_distance(float c, float Y)
-{{
-    return c < Y ? (Y - c) / Y : (c - Y) / ({one} - Y);
-}}
-"""
-    if L is _GLSL:
-        text += """
-float ocio_thinfilm_saturate(float x)
-{
-    return clamp(x, 0.0, 1.0);
-}
-"""
-    return text
-
-
-def _matrix_rows(L: _Language, M: np.ndarray, names: tuple[str, str, str]) -> list[str]:
-    a, b, c = names
-    return [
-        f"{L.lit(M[i, 0])} * {a} + {L.lit(M[i, 1])} * {b} + {L.lit(M[i, 2])} * {c}"
-        for i in range(3)
-    ]
-
-
-def _piecewise(encoding: registry.Encoding) -> tuple[float, float]:
-    """Return where the sRGB-style curve's linear segment ends (linear) and its slope.
-
-    Value and slope continuous there, as OCIO's ExponentWithLinearTransform (IEC
-    61966-2-1 rounds them to 0.0031308 and 12.92).
-    """
-    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
-    brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
-    return brk, (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
-
-
-def _piecewise_encode(L: _Language, encoding: registry.Encoding, v: str) -> str:
-    """Return the sRGB-style curve's encoding of the expression ``v`` (linear below 0)."""
-    brk, slope = _piecewise(encoding)
-    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
-    return (
-        f"{v} <= {L.lit(brk)} ? {L.lit(slope)} * {v} : "
-        f"{L.lit(1 + offset)} * {L.pow}({v}, {L.lit(1 / gamma)}) - {L.lit(offset)}"
-    )
-
-
-def _piecewise_decode(L: _Language, encoding: registry.Encoding, v: str) -> str:
-    """Return the sRGB-style curve's decoding of the expression ``v`` (linear below 0)."""
-    brk, slope = _piecewise(encoding)
-    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
-    return (
-        f"{v} <= {L.lit(slope * brk)} ? {v} / {L.lit(slope)} : "
-        f"{L.pow}(({v} + {L.lit(offset)}) / {L.lit(1 + offset)}, {L.lit(gamma)})"
-    )
-
-
-def _log_decoding(L: _Language, curve_name: str) -> list[str]:
-    """Return the lines decoding ``r``, ``g``, ``b`` from the log curve ``curve_name``.
-
-    Any curve of :data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`: codes limited to
-    those of linear +-1e6, then the toe's line below the break, ``(2 ** (code * S - O) -
-    lin_offset) / lin_slope`` above it (S, O: the log side's scale and offset in base 2).
-    """
-    c = LOG_CURVES[curve_name]
-    lo = c.encode_one(-ocio_ops.LIMIT)
-    hi = c.encode_one(ocio_ops.LIMIT)
-    scale = math.log2(c.base) / c.log_slope
-    offset = c.log_offset * scale
-    power = f"{L.exp2}({{ch}} * {L.lit(scale)} - {L.lit(offset)})"
-    if c.lin_offset:
-        power = f"({power} - {L.lit(c.lin_offset)})"
-    if c.lin_slope != 1.0:
-        power = f"{power} / {L.lit(c.lin_slope)}"
-    toe = f"({{ch}} - {L.lit(c.linear_offset)}) / {L.lit(c.linear_slope)}"
-    lines = [f"    // {curve_name} codes -> linear"]
-    for ch in "rgb":
-        lines.append(
-            f"    {ch} = ocio_thinfilm_range({ch}, {L.lit(lo)}, {L.lit(hi)});"
-            f"  {ch} = {ch} <= {L.lit(c.code_break)} ? {toe.format(ch=ch)} : "
-            f"{power.format(ch=ch)};"
-        )
-    return lines
-
-
-def _log_encoding(L: _Language, curve_name: str) -> list[str]:
-    """Return the lines encoding ``r``, ``g``, ``b`` with the log curve ``curve_name``.
-
-    The inverse of :func:`_log_decoding`.
-    """
-    c = LOG_CURVES[curve_name]
-    scale = math.log2(c.base) / c.log_slope
-    offset = c.log_offset * scale
-    inner = "{ch}"
-    if c.lin_slope != 1.0:
-        inner = f"{L.lit(c.lin_slope)} * {inner}"
-    if c.lin_offset:
-        inner = f"{inner} + {L.lit(c.lin_offset)}"
-    lines = [f"    // linear -> {curve_name} codes"]
-    for ch in "rgb":
-        lines.append(
-            f"    {ch} = {ch} <= {L.lit(c.lin_break)} ? {L.lit(c.linear_slope)} * {ch} + "
-            f"{L.lit(c.linear_offset)} : ({L.log2}({inner.format(ch=ch)}) + {L.lit(offset)}) / "
-            f"{L.lit(scale)};"
-        )
-    return lines
-
-
-def _input(L: _Language, source: str) -> str:
-    """Input colour space -> CIE-XYZ-D65, limited as the config's colour space and view."""
-    lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_input(float r, float g, float b)", "{"]
-    if source == registry.REFERENCE:
-        lines.append(
-            f"    return {L.make3}(ocio_thinfilm_finite(r), ocio_thinfilm_finite(g), "
-            "ocio_thinfilm_finite(b));"
-        )
-        return "\n".join(lines + ["}", ""])
-    if source == _TEXTURE[0]:
-        encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
-        for ch in "rgb":
-            lines.append(f"    {ch} = {_piecewise_decode(L, encoding, ch)};")
-        colorimetry_name = _TEXTURE[1]
-    else:
-        space = registry.linear_space_of(source)
-        assert space is not None  # shader_source checked the source
-        colorimetry_name = space.colorimetry
-    encoded = registry.find_encoded(source)
-    if encoded is not None:
-        lines += _log_decoding(L, encoded.curve)
-    for ch in "rgb":
-        lines.append(f"    {ch} = ocio_thinfilm_finite({ch});")
-    M = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(colorimetry_name))
-    X, Y, Z = _matrix_rows(L, M, ("r", "g", "b"))
-    lines += [
-        f"    float X = ocio_thinfilm_finite({X});",
-        f"    float Y = ocio_thinfilm_finite({Y});",
-        f"    float Z = ocio_thinfilm_finite({Z});",
-        f"    return {L.make3}(X, Y, Z);",
-        "}",
-        "",
-    ]
-    return "\n".join(lines)
-
-
-def _map(L: _Language, gamut: str, soft: bool) -> str:
-    """Display-linear RGB of ``gamut`` -> the map (Smits & Meyer 1990, Section 3.2)."""
-    w = ", ".join(f"{v:.6f}" for v in clip.luminance_weights(gamut))
-    one, zero = L.lit(1.0), L.lit(0.0)
-    text = ""
-    if soft:
-        p = compress.POWER
-        text += f"""
-// The compressed distance over the distance, threshold < d < limit: the ACES 1.3 power
-// curve (S-2020-001, power {p:g}) through (threshold, threshold) with slope 1, reaching
-// the boundary (1) at the limit.
-{L.qualifier}float ocio_thinfilm_curve_s(float t, float l)
-{{
-    // the curve's scale: its asymptote is t + s, it reaches 1 at l
-    return (l - t) / {L.pow}({L.pow}((l - t) / ({one} - t), {L.lit(p)}) - {one}, {L.lit(1 / p)});
-}}
-
-{L.qualifier}float ocio_thinfilm_scale(float d, float t, float l)
-{{
-    float s = ocio_thinfilm_curve_s(t, l);
-    float x = d - t;
-    return (t + x / {L.pow}({one} + {L.pow}(x / s, {L.lit(p)}), {L.lit(1 / p)})) / d;
-}}
-"""
-    scale = "d >= l ? {one} / d : ocio_thinfilm_scale(d, t, l)" if soft else "{one} / d"
-    knobs = ", float t, float l" if soft else ""
-    inside = "t" if soft else one
-    on_face = "l" if soft else one
-    text += f"""
-// Display-linear RGB -> the map: towards the grey of the same luminance Y (R = G = B =
-// Y), by the scale k of the normalised distance d to the gamut's faces.
-// Y is the colour's luminance (the weights of R, G, B: {w}), the input's CIE Y:
-// taken from XYZ, no float32 cancellation between large channels moves it.
-{L.qualifier}{L.vec3} ocio_thinfilm_map(float r, float g, float b, float Y{knobs})
-{{
-    if (!(Y > {zero})) return {L.make3}({zero}, {zero}, {zero});
-    if (Y >= {one}) return {L.make3}({one}, {one}, {one});
-    float dr = ocio_thinfilm_distance(r, Y);
-    float dg = ocio_thinfilm_distance(g, Y);
-    float db = ocio_thinfilm_distance(b, Y);
-    float d = {L.max}(dr, {L.max}(dg, db));
-    if (d <= {inside}) return {L.make3}(r, g, b);
-    float k = {scale.format(one=one)};
-    float mr = Y + k * (r - Y);
-    float mg = Y + k * (g - Y);
-    float mb = Y + k * (b - Y);
-    if (d >= {on_face}) {{
-        // on the boundary: the channels that meet a face are on it exactly
-        if (dr == d) mr = r < Y ? {zero} : {one};
-        if (dg == d) mg = g < Y ? {zero} : {one};
-        if (db == d) mb = b < Y ? {zero} : {one};
-    }}
-    return {L.make3}({L.saturate}(mr), {L.saturate}(mg), {L.saturate}(mb));
-}}
-"""
-    return text
-
-
-def _encoding(L: _Language, entry: registry.AnyDisplay) -> str:
-    """Display-linear -> code value of one channel (``v`` in [0, 1], or [0, k] for PQ)."""
-    one, zero = L.lit(1.0), L.lit(0.0)
-    m1, m2, c1, c2, c3 = _pq().values()
-    ha, hb, hc = _hlg().values()
-    head = f"{L.qualifier}float ocio_thinfilm_encode(float v)\n{{\n"
-    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
-        scale = registry.HDR_REFERENCE_WHITE / 10000.0
-        body = (
-            f"    // SMPTE ST 2084; v = 1 is the reference white, {registry.HDR_REFERENCE_WHITE:g}"
-            " cd/m2\n"
-            f"    float p = v > {zero} ? {L.pow}(v * {L.lit(scale)}, {L.lit(m1)}) : {zero};\n"
-            f"    return {L.pow}(({L.lit(c1)} + {L.lit(c2)} * p) / ({one} + "
-            f"{L.lit(c3)} * p), {L.lit(m2)});\n"
-        )
-    elif isinstance(entry, registry.HDRDisplay):
-        body = (
-            "    // ITU-R BT.2100 HLG OETF of the scene light E in [0, 1]\n"
-            f"    return v <= {L.lit(1 / 12)} ? {L.sqrt}({L.lit(3.0)} * v) : "
-            f"{L.lit(ha)} * {L.log}({L.lit(12.0)} * v - {L.lit(hb)}) + {L.lit(hc)};\n"
-        )
-    elif entry.encoding.offset is None:
-        gamma = entry.encoding.gamma
-        body = (
-            f"    // ITU-R BT.1886 with a black level of 0: L ** (1 / {gamma:g})\n"
-            f"    return v > {zero} ? {L.pow}(v, {L.lit(1 / gamma)}) : {zero};\n"
-        )
-    else:
-        body = (
-            f"    // IEC 61966-2-1 piecewise ({_piecewise(entry.encoding)[1]:.6g} L below "
-            f"{_piecewise(entry.encoding)[0]:.6g})\n"
-            f"    return {_piecewise_encode(L, entry.encoding, 'v')};\n"
-        )
-    return head + body + "}\n"
-
-
-def _display(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
-    """CIE-XYZ-D65 -> code values: the HDR scale, the matrix, the map, the encoding."""
-    gamut = entry.gamut.name
-    M = colorimetry.matrix_XYZ_to_RGB(gamut)
-    knobs, args = (", float t, float l", ", t, l") if soft else ("", "")
-    lines = [
-        f"{L.qualifier}{L.vec3} ocio_thinfilm_display(float X, float Y, float Z{knobs})",
-        "{",
-    ]
-    scale_out = "v"
-    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
-        k = entry.scale
-        lines.append(f"    // the PQ volume is the gamut's parallelepiped scaled by {k:.6g}")
-        lines += [f"    {c} = {c} * {L.lit(1 / k)};" for c in "XYZ"]
-        scale_out = f"v * {L.lit(k)}"
-    elif isinstance(entry, registry.HDRDisplay):
-        # BT.2100 Table 5 (L_B = 0): F_D = L_W Y_S ** (gamma - 1) E; the display light of
-        # luminance Y_D has scene light E = F_D / (L_W Y_S ** (gamma - 1)), Y_S =
-        # (Y_D / L_W) ** (1 / gamma); the map runs on E, the signal's parallelepiped.
-        a = registry.HDR_REFERENCE_WHITE / entry.peak
-        lines += [
-            "    // HLG: the BT.2100 inverse OOTF to scene light E (the signal's volume is",
-            f"    // the gamut's parallelepiped in E); peak {entry.peak:g} cd/m2, gamma "
-            f"{HLG_GAMMA:g}",
-            f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y * {L.lit(a)}, "
-            f"{L.lit(1 / HLG_GAMMA - 1)}) : {L.lit(0.0)};",
-        ]
-        lines += [f"    {c} = {c} * f;" for c in "XYZ"]
-    R, G, B = _matrix_rows(L, M, ("X", "Y", "Z"))
-    lines += [
-        f"    {L.vec3} m = ocio_thinfilm_map({R},",
-        f"        {G},",
-        f"        {B}, Y{args});",
-    ]
-    enc = [f"ocio_thinfilm_encode({scale_out.replace('v', 'm.' + c)})" for c in "xyz"]
-    lines += [f"    return {L.make3}({', '.join(enc)});", "}", ""]
-    return "\n".join(lines)
-
-
-def _decoding(L: _Language, entry: registry.AnyDisplay) -> str:
-    """Code value -> display-linear of one channel (the inverse of :func:`_encoding`).
-
-    Code values are limited to [0, 1] first (NaN to 0); PQ gives units of the reference
-    white (203 cd/m2), HLG the scene light E in [0, 1].
-    """
-    one, zero = L.lit(1.0), L.lit(0.0)
-    m1, m2, c1, c2, c3 = _pq().values()
-    ha, hb, hc = _hlg().values()
-    head = (
-        f"{L.qualifier}float ocio_thinfilm_decode(float v)\n{{\n"
-        f"    v = ocio_thinfilm_range(v, {zero}, {one});\n"
-    )
-    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ":
-        scale = 10000.0 / registry.HDR_REFERENCE_WHITE
-        body = (
-            "    // SMPTE ST 2084 EOTF, in units of the reference white. With p = v ** (1 / m2)\n"
-            "    // = exp(x), q = 1 - p: (p - c1) / (c2 - c3 p) = (1 - c1 - q) / (c2 - c3 + c3 q)\n"
-            "    // does not cancel near the peak (q from its series where x is small).\n"
-            f"    if (!(v > {zero})) return {zero};\n"
-            f"    float x = {L.log}(v) * {L.lit(1 / m2)};\n"
-            f"    float q = x > {L.lit(-0.05)} ? -x * ({one} + x * ({L.lit(0.5)} + x * "
-            f"({L.lit(1 / 6)} + x * {L.lit(1 / 24)}))) : {one} - {L.exp}(x);\n"
-            f"    float n = {L.max}({L.lit(1 - c1)} - q, {zero}) / ({L.lit(c2 - c3)} + "
-            f"{L.lit(c3)} * q);\n"
-            f"    return n > {zero} ? {L.lit(scale)} * {L.pow}(n, {L.lit(1 / m1)}) : {zero};\n"
-        )
-    elif isinstance(entry, registry.HDRDisplay):
-        body = (
-            "    // the inverse of the BT.2100 HLG OETF: scene light E in [0, 1]\n"
-            f"    return v <= {L.lit(0.5)} ? v * v / {L.lit(3.0)} : ({L.exp}((v - "
-            f"{L.lit(hc)}) / {L.lit(ha)}) + {L.lit(hb)}) / {L.lit(12.0)};\n"
-        )
-    elif entry.encoding.offset is None:
-        gamma = entry.encoding.gamma
-        body = (
-            f"    // ITU-R BT.1886 with a black level of 0: V ** {gamma:g}\n"
-            f"    return {L.pow}(v, {L.lit(gamma)});\n"
-        )
-    else:
-        body = (
-            "    // IEC 61966-2-1 piecewise, inverted\n"
-            f"    return {_piecewise_decode(L, entry.encoding, 'v')};\n"
-        )
-    return head + body + "}\n"
-
-
-def _unmap(L: _Language, gamut: str, soft: bool) -> str:
-    """Return the map's inverse on display-linear RGB in [0, 1] (the preimage)."""
-    w = clip.luminance_weights(gamut)
-    one, zero = L.lit(1.0), L.lit(0.0)
-    if not soft:
-        return f"""
-// The clip's inverse inside the gamut: every colour of the gamut is its own preimage.
-{L.qualifier}{L.vec3} ocio_thinfilm_unmap(float r, float g, float b)
-{{
-    return {L.make3}({L.saturate}(r), {L.saturate}(g), {L.saturate}(b));
-}}
-"""
-    p = compress.POWER
-    return f"""
-// The compression's inverse: the colour at most limit boundary distances out that the
-// map takes to this one (the boundary itself: limit), along the same ray, Y kept.
-{L.qualifier}{L.vec3} ocio_thinfilm_unmap(float r, float g, float b, float t, float l)
-{{
-    r = {L.saturate}(r);
-    g = {L.saturate}(g);
-    b = {L.saturate}(b);
-    float Y = {L.lit(w[0])} * r + {L.lit(w[1])} * g + {L.lit(w[2])} * b;
-    if (!(Y > {zero})) return {L.make3}({zero}, {zero}, {zero});
-    if (Y >= {one}) return {L.make3}({one}, {one}, {one});
-    float d = {L.max}(ocio_thinfilm_distance(r, Y),
-        {L.max}(ocio_thinfilm_distance(g, Y), ocio_thinfilm_distance(b, Y)));
-    if (d <= t) return {L.make3}(r, g, b);
-    float k = l / d;
-    if (d < {one}) {{
-        float s = ocio_thinfilm_curve_s(t, l);
-        float u = d - t;
-        k = (t + u / {L.pow}({one} - {L.pow}(u / s, {L.lit(p)}), {L.lit(1 / p)})) / d;
-    }}
-    return {L.make3}(Y + k * (r - Y), Y + k * (g - Y), Y + k * (b - Y));
-}}
-"""
-
-
-def _undisplay(L: _Language, entry: registry.AnyDisplay, soft: bool) -> str:
-    """Code values -> CIE-XYZ-D65: the decoding, the map's inverse, the HDR scale."""
-    gamut = entry.gamut.name
-    Minv = reproducible.inv3(colorimetry.matrix_XYZ_to_RGB(gamut))
-    knobs, args = (", float t, float l", ", t, l") if soft else ("", "")
-    lines = [
-        f"{L.qualifier}{L.vec3} ocio_thinfilm_undisplay(float r, float g, float b{knobs})",
-        "{",
-    ]
-    decoded = [f"ocio_thinfilm_decode({c})" for c in "rgb"]
-    pq = isinstance(entry, registry.HDRDisplay) and entry.transfer == "PQ"
-    if pq:
-        decoded = [f"{d} * {L.lit(1 / entry.scale)}" for d in decoded]
-    lines.append(f"    {L.vec3} m = ocio_thinfilm_unmap({', '.join(decoded)}{args});")
-    rows = _matrix_rows(L, Minv, ("m.x", "m.y", "m.z"))
-    if pq:
-        rows = [f"{L.lit(entry.scale)} * ({row})" for row in rows]
-    lines += [f"    float {c} = {row};" for c, row in zip("XYZ", rows, strict=True)]
-    if isinstance(entry, registry.HDRDisplay) and entry.transfer == "HLG":
-        # the BT.2100 OOTF: display light F_D = L_W Y_S ** (gamma - 1) E, in units of 203
-        a = entry.peak / registry.HDR_REFERENCE_WHITE
-        lines += [
-            f"    // the BT.2100 OOTF (gamma {HLG_GAMMA:g}) back to display light, Y = 1 at "
-            f"{registry.HDR_REFERENCE_WHITE:g} cd/m2",
-            f"    float f = Y > {L.lit(0.0)} ? {L.lit(a)} * {L.pow}(Y, {L.lit(HLG_GAMMA - 1)}) "
-            f": {L.lit(0.0)};",
-            "    X = X * f;",
-            "    Y = Y * f;",
-            "    Z = Z * f;",
-        ]
-    lines += [f"    return {L.make3}(X, Y, Z);", "}", ""]
-    return "\n".join(lines)
-
-
-def _output(L: _Language, source: str) -> str:
-    """CIE-XYZ-D65 -> the input colour space (the inverse of :func:`_input`)."""
-    lines = [f"{L.qualifier}{L.vec3} ocio_thinfilm_output(float X, float Y, float Z)", "{"]
-    if source == registry.REFERENCE:
-        return "\n".join(lines + [f"    return {L.make3}(X, Y, Z);", "}", ""])
-    texture = source == _TEXTURE[0]
-    space = None if texture else registry.linear_space_of(source)
-    M = colorimetry.matrix_XYZ_to_RGB(_TEXTURE[1] if space is None else space.colorimetry)
-    R, G, B = _matrix_rows(L, M, ("X", "Y", "Z"))
-    lines += [f"    float r = {R};", f"    float g = {G};", f"    float b = {B};"]
-    if texture:
-        encoding = registry.as_display(_TEXTURE[2], hdr=False).encoding
-        lines += [f"    {ch} = {_piecewise_encode(L, encoding, ch)};" for ch in "rgb"]
-    encoded = registry.find_encoded(source)
-    if encoded is not None:
-        lines += _log_encoding(L, encoded.curve)
-    lines += [f"    return {L.make3}(r, g, b);", "}", ""]
-    return "\n".join(lines)
 
 
 def _header(L, lang, source, entry, view, knobs) -> str:
@@ -662,8 +151,8 @@ def shader_source(
     view: str,
     source: str = registry.REFERENCE,
     *,
-    threshold: float = compress.THRESHOLD,
-    limit: float = compress.LIMIT,
+    compress_threshold: float = compress.THRESHOLD,
+    compress_limit: float = compress.LIMIT,
 ) -> str:
     """Return the view's map as GLSL or DCTL source code.
 
@@ -677,10 +166,11 @@ def shader_source(
         ``"Constant-Lightness Clip"`` or ``"Constant-Lightness Compress"``.
     source : str, optional
         The input colour space (:data:`SHADER_SOURCES`), default ``CIE-XYZ-D65``.
-    threshold, limit : float, optional
-        The compression's knobs as the code's defaults (the GLSL's fallback for unset
-        uniforms, the DCTL sliders' defaults): ``0 < threshold < 1 < limit``. Ignored
-        by the clip.
+    compress_threshold, compress_limit : float, optional
+        The compression's knobs, threshold and limit, as the code's defaults (the GLSL's
+        fallback for unset uniforms, the DCTL sliders' defaults): ``0 < threshold < 1 <
+        limit <=`` :data:`KNOB_LIMIT_MAX` (the names of ``export view`` and ``bake``).
+        Ignored by the clip.
 
     Returns
     -------
@@ -706,16 +196,18 @@ def shader_source(
     as_choice("lang", lang, LANGUAGES)
     as_choice("display", display, registry.ALL_DISPLAYS)
     as_choice("view", view, SHADER_VIEWS)
-    if source in registry.THIN_FILM_SPACES:
+    if registry.space_kind(source) == "thin-film":
         raise ParameterError(
             "source",
             f" {source!r} is a spectral table, not a formula: its views are LUTs "
             "(export view); the shaders take one of " + ", ".join(SHADER_SOURCES),
         )
     as_choice("source", source, SHADER_SOURCES)
-    t, lim = compress.check_knobs(threshold, limit, limit_max=KNOB_LIMIT_MAX)
+    t, lim = compress.check_knobs(
+        compress_threshold, compress_limit, names=KNOB_NAMES, limit_max=KNOB_LIMIT_MAX
+    )
     soft = bool(SHADER_MAPS[registry.as_view(view).kind])
-    L = _LANGUAGE[lang]
+    L = TOKENS[lang]
     entry = registry.as_display(display)
     parts = [
         _header(L, lang, source, entry, view, (t, lim) if soft else None),
@@ -734,15 +226,15 @@ def shader_source(
     if lang == "dctl":
         parts.append("DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert, DCTLUI_CHECK_BOX, 0)\n")
     parts += [
-        _helpers(L),
-        _input(L, source),
-        _map(L, entry.gamut.name, soft),
-        _encoding(L, entry),
-        _display(L, entry, soft),
-        _decoding(L, entry),
-        _unmap(L, entry.gamut.name, soft),
-        _undisplay(L, entry, soft),
-        _output(L, source),
+        shader_parts.helpers_code(L),
+        shader_parts.input_code(L, source),
+        shader_parts.map_code(L, entry.gamut.name, soft),
+        shader_parts.encode_code(L, entry),
+        shader_parts.display_code(L, entry, soft),
+        shader_parts.decode_code(L, entry),
+        shader_parts.unmap_code(L, entry.gamut.name, soft),
+        shader_parts.undisplay_code(L, entry, soft),
+        shader_parts.output_code(L, source),
     ]
     if soft:
         check = (
@@ -804,8 +296,8 @@ def export_shader(
     view: str,
     source: str = registry.REFERENCE,
     *,
-    threshold: float = compress.THRESHOLD,
-    limit: float = compress.LIMIT,
+    compress_threshold: float = compress.THRESHOLD,
+    compress_limit: float = compress.LIMIT,
 ) -> Path:
     """Write :func:`shader_source` to ``path`` (written aside, checked, then renamed).
 
@@ -814,7 +306,7 @@ def export_shader(
     path : str or os.PathLike
         The file to write (``.glsl``, ``.dctl`` or any name); the file named is
         replaced atomically, a directory in its place is refused.
-    lang, display, view, source, threshold, limit
+    lang, display, view, source, compress_threshold, compress_limit
         As :func:`shader_source`.
 
     Returns
@@ -827,5 +319,12 @@ def export_shader(
     ValueError
         For a bad argument (naming it) or an output path that cannot be written.
     """
-    text = shader_source(lang, display, view, source, threshold=threshold, limit=limit)
+    text = shader_source(
+        lang,
+        display,
+        view,
+        source,
+        compress_threshold=compress_threshold,
+        compress_limit=compress_limit,
+    )
     return write_text(check_output_file(path, "path"), text)

@@ -56,18 +56,8 @@ displays keep sampled nodes.
 
 The shaper
 ----------
-Per channel of the input's *linear* RGB (ACEScct: ACEScg), a mirrored square root
-``e = sign(x) |x|^(1/2)`` mapped affinely from [e(lo), e(hi)] onto [0, 1]. Its domain
-[lo, hi] covers every object colour under D65 (the optimal colours: per channel the
-sum of the positive, and of the negative, spectral weights), with hi at least 1.5
-so that scene values somewhat above white, which every view maps to white, stay
-inside; values beyond are clamped. A square root spends the grid on the upper half
-of the range, where this config's views bend hardest (every colour converges to the
-display white as Y approaches 1); a log or ACEScct allocation spends it on the
-shadows and leaves cells near white about 0.27 stops wide. Measured for ACEScct ->
-sRGB, Constant-Lightness Clip, 65^3, on object colours inside AP1 (ΔE2000
-p99 / max, tetrahedral): plain ACEScct grid 4.1 / 8.8; an affine sub-range of ACEScct
-2.1 / 5.2; the square-root shaper 0.6 / 2.0 (see ``tests/test_export_view.py``).
+See :mod:`ocio_thinfilm.export.view_shaper`: a mirrored square root per channel of the
+input's linear RGB, over a domain that covers every object colour under D65.
 """
 
 from __future__ import annotations
@@ -79,13 +69,20 @@ from pathlib import Path
 
 import numpy as np
 
-from ocio_thinfilm import cache, registry, reproducible
+from ocio_thinfilm import cache, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
-from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.data import KNOB_NAMES
 from ocio_thinfilm.export import view_fit
 from ocio_thinfilm.export.files import LUT_FORMATS
+from ocio_thinfilm.export.view_shaper import (
+    DEFAULT_VIEW_SIZE,
+    SHAPER_SIZE,
+    linear_sibling,
+    shaper_domain,
+    shaper_from_zero,
+    view_config,
+)
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable, write_text
 from ocio_thinfilm.lut import ocio_ops, storage
 
@@ -101,14 +98,7 @@ __all__ = [
 #: Format -> OCIO writer name: every format of :data:`~ocio_thinfilm.export.files.LUT_FORMATS`
 #: (``.spi1d`` only for the 1D, thin-film, inputs).
 VIEW_FORMATS = {name: spec[0] for name, spec in LUT_FORMATS.items()}
-DEFAULT_VIEW_SIZE = 65
 MAX_VIEW_SIZE = 129
-#: Entries of the shaper (.cube 1D part, .csp prelut knots, companion .spi1d).
-SHAPER_SIZE = 4096
-SHAPER_GAMMA = 2.0
-#: Lower bound of the shaper's upper end (scene-linear; 1.0 is the display white).
-SHAPER_MIN_HI = 1.5
-SHAPER_SPACE = "ocio-thinfilm export shaper"
 #: Formats whose 3D table holds fitted node values (:mod:`ocio_thinfilm.export.view_fit`,
 #: lattice regression) rather than samples of the view, for the SDR displays (the HDR
 #: displays' tables stay samples; see :func:`_fitted_table`).
@@ -124,141 +114,6 @@ _THIN_FILM = {s.name: s for s in registry.THIN_FILM_LIST}
 #: is linear 222.9, far above the display white that every view maps brighter colours
 #: to): their ``.cube`` is a plain 3D LUT over [0, 1] unless the Resolve form is asked for.
 _PLAIN_INPUTS = tuple(e.name for e in registry.ENCODED_LIST if e.plain)
-
-
-def _linear_sibling(source: str) -> str | None:
-    """Return the config space holding ``source``'s linear RGB (the shaper works there).
-
-    The reference XYZ or a scene-linear space itself, an encoded space's linear one;
-    None for the others (thin-film and display spaces).
-    """
-    if source == registry.REFERENCE:
-        return source
-    space = registry.linear_space_of(source)
-    return None if space is None else space.name
-
-
-def _shaper_from_zero(linear_space: str) -> bool:
-    space = registry.linear_space_of(linear_space)
-    return space is not None and space.shaper_from_zero
-
-
-def _colorimetry(linear_space: str) -> str:
-    space = registry.linear_space_of(linear_space)
-    return registry.REFERENCE if space is None else space.colorimetry
-
-
-# --------------------------------------------------------------------------- #
-# The shaper
-# --------------------------------------------------------------------------- #
-def shaper_domain(
-    linear_space: str,
-    size: int = DEFAULT_VIEW_SIZE,
-    display: registry.DisplayLike | None = None,
-) -> tuple[np.ndarray, np.ndarray]:
-    """Return (lo, hi) of the shaper over ``linear_space``.
-
-    ``linear_space`` is the reference XYZ or a scene-linear space of the registry. The
-    range is the same for the three channels so that every grid node on the diagonal
-    is a neutral (greys stay grey under tetrahedral interpolation): it covers the
-    channel extremes of all object colours under D65 (optimal colours: reflectance
-    1 where a channel's spectral weight is positive, 0 elsewhere, and the reverse),
-    widened by 10 %, and at least [0, 1.5] (from 0 for a space whose
-    ``shaper_from_zero`` is set: AP1, the ACES working gamut -- a mirrored square root
-    spends a fifth of the grid on the few object colours outside it, down to -0.09;
-    measured ACEScct -> sRGB 65^3: max ΔE2000 4.4 with them, 2.2 without; values below
-    0 are clamped to the AP1 boundary). (Nudging it so that black and white fall on grid
-    nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
-    2.2; ``size`` is kept for that reason in the signature.) For an HDR ``display`` the
-    upper end is at least 1.5 times its peak (1000 / 203 in units of the reference
-    white), so highlights up to the peak are not clamped by the shaper.
-    """
-    wl = np.arange(360.0, 781.0, 1.0)
-    W = colorimetry.spectral_weights(wl)  # XYZ per unit reflectance at each wavelength
-    w = reproducible.matmul(W, colorimetry.matrix_XYZ_to_RGB(_colorimetry(linear_space)).T)
-    lo = min(0.0, 1.1 * float(np.minimum(w, 0.0).sum(axis=0).min()))
-    if _shaper_from_zero(linear_space):
-        lo = 0.0
-    least = SHAPER_MIN_HI * (1.0 if display is None else registry.as_display(display).scale)
-    hi = max(least, 1.1 * float(np.maximum(w, 0.0).sum(axis=0).max()))
-    return ocio_ops.quantize(lo, 6), ocio_ops.quantize(hi, 6)
-
-
-def _mirror_root(x):
-    return np.sign(x) * np.abs(x) ** (1.0 / SHAPER_GAMMA)
-
-
-def _shaper_to_linear(lo, hi):
-    """OCIO transform: shaper value u in [0, 1] -> linear RGB in [lo, hi]."""
-    import PyOpenColorIO as ocio
-
-    e_lo, e_hi = _mirror_root(lo), _mirror_root(hi)
-    power = ocio.ExponentTransform([SHAPER_GAMMA] * 3 + [1.0])
-    power.setNegativeStyle(ocio.NEGATIVE_MIRROR)
-    return ocio_ops.group([ocio_ops.matrix(np.eye(3) * (e_hi - e_lo), [e_lo] * 3), power])
-
-
-def view_config(
-    source: str,
-    size: int = DEFAULT_VIEW_SIZE,
-    display: registry.DisplayLike | None = None,
-    *,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
-) -> tuple[ocio_ops.Config, str | None]:
-    """Return the config in memory (LUTs inline, no files) and the shaper space's name.
-
-    The shaper colour space for ``source`` (for a ``size`` grid and ``display``) is
-    added when it needs one.
-
-    Parameters
-    ----------
-    source : str
-        The input colour space of the config.
-    size : int, optional
-        Edge of the 3D LUT the shaper is for (default :data:`DEFAULT_VIEW_SIZE`).
-    display : str or registry display, optional
-        The display (an HDR display widens the shaper's domain).
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3;
-        :func:`ocio_thinfilm.colour.compress.check_knobs`).
-
-    Returns
-    -------
-    config : PyOpenColorIO.Config
-        The config, with the shaper space added when ``source`` needs one.
-    shaper : str or None
-        The shaper space's name, or ``None``.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range.
-    """
-    import PyOpenColorIO as ocio
-
-    from ocio_thinfilm import config as config_module
-
-    data = config_module.config_data(
-        inline=True, compress_threshold=compress_threshold, compress_limit=compress_limit
-    )
-    cfg = config_module.generate_config(data, validate=False)
-    sibling = _linear_sibling(source)
-    if sibling is None:
-        return cfg, None
-    lo, hi = shaper_domain(sibling, size, display)
-    to_ref = cfg.getColorSpace(sibling).getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
-    parts = [_shaper_to_linear(lo, hi)] + ([to_ref] if to_ref is not None else [])
-    cs = ocio.ColorSpace()
-    cs.setName(SHAPER_SPACE)
-    cs.setFamily("Utility")
-    cs.setDescription(
-        f"Shaper for {source}: per channel of {sibling}, "
-        f"sign(x)|x|^(1/2) from {lo:.6g}..{hi:.6g} onto 0..1"
-    )
-    cs.setTransform(ocio_ops.group(parts), ocio.COLORSPACE_DIR_TO_REFERENCE)
-    cfg.addColorSpace(cs)
-    return cfg, SHAPER_SPACE
 
 
 # --------------------------------------------------------------------------- #
@@ -362,7 +217,7 @@ def _description(source, entry, view, size, shaper, baked, knobs=None):
         t, lim = (compress_map.knob_text(v) for v in knobs)
         text += f" Compression threshold {t}, limit {lim}."
     if shaper:
-        sibling = _linear_sibling(source)
+        sibling = linear_sibling(source)
         assert sibling is not None  # a 3D input: XYZ, scene-linear or encoded
         lo, hi = shaper_domain(sibling, size, entry)
         text += (
@@ -479,8 +334,8 @@ def _fitted_table(source, fmt, shaper, entry):
     """
     if fmt not in FITTED_FORMATS or entry.hdr:
         return False
-    sibling = _linear_sibling(source)
-    return not shaper or sibling is None or not _shaper_from_zero(sibling)
+    sibling = linear_sibling(source)
+    return not shaper or sibling is None or not shaper_from_zero(sibling)
 
 
 def _with_table(text, nodes):

@@ -166,7 +166,7 @@ def _view_codes(cfg, start, display, view, coords, XYZ, knobs):
     if display in registry.DISPLAYS and form is not None:
         rgb = form.rgb(colorimetry.XYZ_to_RGB(XYZ, display), display, *knobs)
         # the display's encoding in float64 (colour.encodings), not OCIO's float32 CPU path
-        return encodings.encode(rgb, registry.as_display(display).encoding)
+        return encodings.encode(rgb, registry.as_display(display, hdr=False).encoding)
     return _apply(cfg, start, (display, view), coords)
 
 

@@ -241,7 +241,7 @@ def white_nodes(
         gap[first:inside_cells] = gap[first] * ratio ** np.arange(graded)
         gap[inside_cells] = 0.0
     code = 1.0 - gap
-    below = encodings.decode(code, registry.as_display(WORKING_ENCODING).encoding)
+    below = encodings.decode(code, registry.as_display(WORKING_ENCODING, hdr=False).encoding)
     below[0], below[-1] = 0.0, 1.0
     # a little above 1 / w_i: float32 round-off of the matrix in front stays inside
     tops = 1.001 / luminance_weights(display)

@@ -79,6 +79,8 @@ __all__ = [
     "ENCODED_SPACES",
     "linear_space_of",
     "find_encoded",
+    "SPACE_KINDS",
+    "space_kind",
     "SCENE_LINEAR_BY_NAME",
     "DISPLAY_LIST",
     "HDR_DISPLAY_LIST",
@@ -327,6 +329,47 @@ def thin_film_space_for_kind(kind: str) -> ThinFilmSpace:
     raise ValueError(f"no thin-film colour space for table kind {kind!r}")
 
 
+#: The kinds of the config's colour spaces the registry names: what a space is, which a
+#: stage maps to its own code (the input decodings of the shaders and of ``export view``).
+SPACE_KINDS = ("reference", "scene-linear", "encoded", "texture", "raw", "thin-film", "display")
+
+_SPACE_KIND = {
+    REFERENCE: "reference",
+    TEXTURE_SPACE: "texture",
+    RAW_SPACE: "raw",
+    **{name: "scene-linear" for name in SCENE_LINEAR_SPACES},
+    **{name: "encoded" for name in ENCODED_SPACES},
+    **{name: "thin-film" for name in THIN_FILM_SPACES},
+    **{d.colorspace: "display" for d in ALL_DISPLAY_LIST},
+}
+
+
+def space_kind(name: str) -> str | None:
+    """Return the kind (:data:`SPACE_KINDS`) of the config's colour space ``name``.
+
+    The one look-up of a colour space's kind by its name: what follows reads the kind.
+
+    Parameters
+    ----------
+    name : str
+        A colour space name of the config.
+
+    Returns
+    -------
+    str or None
+        One of :data:`SPACE_KINDS`, or ``None`` for a name the registry does not have
+        (a space of another config, a film file's space).
+
+    Examples
+    --------
+    >>> space_kind("CIE-XYZ-D65"), space_kind("ACEScct"), space_kind("sRGB - Texture")
+    ('reference', 'encoded', 'texture')
+    >>> space_kind("no such space") is None
+    True
+    """
+    return _SPACE_KIND.get(name) if isinstance(name, str) else None
+
+
 def linear_space_of(name: str) -> SceneSpace | None:
     """Return the scene-linear space holding the RGB of the config's colour space ``name``.
 
@@ -463,6 +506,8 @@ def validate() -> None:
             )
         if encoded.curve not in LOG_CURVES or not encoded.family:
             raise ValueError(f"registry: {encoded.name!r}: bad curve or family {encoded!r}")
+    if sorted(set(_SPACE_KIND.values())) != sorted(SPACE_KINDS):
+        raise ValueError(f"registry: a colour space of each kind {SPACE_KINDS}")
     kinds = [s.kind for s in THIN_FILM_LIST]
     if len(set(kinds)) != len(kinds):
         raise ValueError(f"registry: one thin-film space per table kind: {kinds}")
