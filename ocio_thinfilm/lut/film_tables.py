@@ -6,7 +6,7 @@ film's varying layer in micrometres (all channels equal), nodes uniform over the
 ``range_um`` (the LUT's clamp holds the end colours outside it), values CIE XYZ (D65,
 CIE 1931 2 degree observer, perfect reflector Y = 1) of the film's reflectance
 (:func:`ocio_thinfilm.physics.films.film_reflectance`) through the colorimetry's
-trapezoid weights (:func:`ocio_thinfilm.colour.colorimetry.spectral_weights`).
+trapezoid weights under the film's illuminant, adapted to D65 (:func:`film_weights`).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 
 from ocio_thinfilm import cache, reproducible
 from ocio_thinfilm.checks import as_count
-from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.colour import adaptation
 from ocio_thinfilm.lut.tables import Table1D
 from ocio_thinfilm.physics import films as films_module
 from ocio_thinfilm.physics.films import Film
@@ -27,6 +27,8 @@ __all__ = [
     "MAX_SIZE",
     "NODES_PER_FRINGE",
     "default_size",
+    "film_weights",
+    "light_words",
     "film_XYZ",
     "user_film_table",
 ]
@@ -70,12 +72,56 @@ def default_size(film: Film) -> int:
     return int(min(MAX_SIZE, max(MIN_SIZE, size)))
 
 
+def film_weights(film: Film, wavelengths: np.ndarray) -> np.ndarray:
+    """Return the weights ``W`` so that ``XYZ = R @ W`` is a film's colour under its light.
+
+    :func:`ocio_thinfilm.colour.adaptation.viewing_weights` with the film's
+    ``illuminant`` and ``adaptation``: the trapezoid weights under the illuminant with
+    the perfect reflector under it as white, adapted to D65 (under D65 the plain
+    weights).
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    wavelengths : numpy.ndarray
+        Wavelengths in nm.
+
+    Returns
+    -------
+    numpy.ndarray
+        (len(wavelengths), 3).
+    """
+    return adaptation.viewing_weights(wavelengths, film.illuminant, film.adaptation)
+
+
+def light_words(film: Film) -> str:
+    """Describe the light a film is seen under, for its descriptions.
+
+    ``""`` under D65, else e.g. ``" under FL2, CAT02-adapted to D65,"``.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+
+    Returns
+    -------
+    str
+        The words.
+    """
+    if film.illuminant == adaptation.SCENE_ILLUMINANT:
+        return ""
+    return f" under {film.illuminant}, {film.adaptation}-adapted to D65,"
+
+
 def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
     """Return CIE XYZ of ``film`` at physical thicknesses of its varying layer (um).
 
     The colours are CIE XYZ (D65, perfect reflector Y = 1) of the film's reflectance
     spectra on :func:`films.film_wavelengths
-    <ocio_thinfilm.physics.films.film_wavelengths>` through the trapezoid weights.
+    <ocio_thinfilm.physics.films.film_wavelengths>` through the trapezoid weights
+    under the film's illuminant (:func:`film_weights`).
 
     Parameters
     ----------
@@ -93,7 +139,7 @@ def film_XYZ(film: Film, thickness_um: np.ndarray) -> np.ndarray:
     flat = t_nm.reshape(-1)
     top = max(float(flat.max()) if flat.size else 0.0, film.range_um[1] * 1000.0)
     wl = films_module.film_wavelengths(film, top)
-    w = colorimetry.spectral_weights(wl)
+    w = film_weights(film, wl)
     out = np.empty((flat.size, 3))
     rows = max(1, _BLOCK_SAMPLES // wl.size)
     for start in range(0, flat.size, rows):
@@ -135,7 +181,8 @@ def _user_film_table(film: Film, size: int) -> Table1D:
         "all channels equal",
         description=(
             f"Thin film {film.key}: {film.describe()}; {model}; CIE XYZ (D65, CIE 1931 "
-            f"2 deg, perfect reflector Y = 1) against the {film.varying.name} layer's "
+            f"2 deg, perfect reflector{light_words(film)} Y = 1) against the "
+            f"{film.varying.name} layer's "
             f"physical thickness {lo:g}-{hi:g} um (clamped outside); {size}-entry Lut1D."
             f"{scale}"
         ),

@@ -93,8 +93,7 @@ LIBRARY: dict[str, _Entry] = {
     ),
     "HfO2": _Entry(
         "hfo2.yml",
-        note="e-beam HfO2 film, 113 nm on Si (Franta, Necas & Ohlidal 2015, Appl. Opt. 54, "
-        "9108)",
+        note="e-beam HfO2 film, 113 nm on Si (Franta, Necas & Ohlidal 2015, Appl. Opt. 54, 9108)",
         aliases=("hafnia",),
     ),
     "Ta2O5": _Entry(
