@@ -158,7 +158,9 @@ def _swatch_sheet(swatches: Swatches) -> np.ndarray:
     rows = -(-count // columns)
     cell_h = _PATCH + _LABEL
     sheet = np.full((_TITLE + rows * cell_h, columns * _PATCH, 3), _BACKGROUND)
-    labels = [(columns * _PATCH / 2, _TITLE * 0.7, swatches.film.name, 18)]
+    film = swatches.film
+    seen = "" if film.illuminant == "D65" else f" under {film.illuminant} ({film.adaptation})"
+    labels = [(columns * _PATCH / 2, _TITLE * 0.7, film.name + seen, 18)]
     for i, (t, code) in enumerate(zip(swatches.thickness_um, swatches.hex, strict=True)):
         row, col = divmod(i, columns)
         y0, x0 = _TITLE + row * cell_h, col * _PATCH
