@@ -98,7 +98,7 @@ def test_a_film_under_an_illuminant_matches_colour_science(illuminant, key, tran
     # the illuminant matters: the same film under D65 differs visibly
     assert _delta_E(film_tables.film_XYZ(_oxide(), t), reference).max() > 1.0
     # a reflectance of 1 is the scene white D65 (RGB 1 in every space)
-    w = adaptation.viewing_weights(np.arange(380.0, 781.0, 2.0), key, transform)
+    w = film_tables.viewing_weights(np.arange(380.0, 781.0, 2.0), key, transform)
     np.testing.assert_allclose(colorimetry.XYZ_to_RGB(w.sum(axis=0), "sRGB"), 1.0, atol=1e-12)
 
 
@@ -108,7 +108,7 @@ def test_d65_is_the_default_and_the_plain_weights():
     assert (plain.illuminant, plain.adaptation) == ("D65", "CAT02")
     assert "under" not in plain.describe() and "under" not in film.describe()
     wl = np.arange(380.0, 781.0, 3.0)
-    assert np.array_equal(adaptation.viewing_weights(wl), colorimetry.spectral_weights(wl))
+    assert np.array_equal(film_tables.viewing_weights(wl), colorimetry.spectral_weights(wl))
     assert "under FL11 (CAT02 to D65)" in _oxide("F11").describe()
 
 

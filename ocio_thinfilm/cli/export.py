@@ -4,7 +4,8 @@
 own ``--help``:
 
 - ``export film`` -- the thickness table of a built-in film kind, or a film of a film
-  file (``--films FILE --film KEY``);
+  file (``--films FILE --film KEY``), or that film's swatches and spectra as CSV
+  (``--swatches``, ``--spectra``);
 - ``export morpho`` -- the Morpho angle table;
 - ``export clip`` -- the constant-lightness clip of a display, a 3D LUT;
 - ``export view`` -- a display/view of the config, from one of its colour spaces;
@@ -166,9 +167,9 @@ def _run_film(args: argparse.Namespace) -> int:
     tables = [o for o in ("swatches", "spectra", "thickness") if getattr(args, o) is not None]
     if args.films is None:
         if args.film is not None or tables:
-            given = f"--film {args.film}" if args.film is not None else f"--{tables[0]}"
+            named = f"--film {args.film}" if args.film is not None else f"--{tables[0]}"
             raise UsageError(
-                f"--films FILE is missing: {given} applies to a film of a film file "
+                f"--films FILE is missing: {named} applies to a film of a film file "
                 "(see docs/films.md)"
             )
         return _run_table(args)
@@ -359,7 +360,7 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         help="a thin-film thickness table (1D), a built-in kind or a film of a film file",
         description="Write the thickness table of a film kind (input: thickness in um), "
         "or with --films FILE --film KEY a film of a film file in every 1D format and "
-        "as an EXR ramp.",
+        "as an EXR ramp, or its swatches (--swatches) or spectra (--spectra).",
     )
     f.add_argument(
         "--kind",

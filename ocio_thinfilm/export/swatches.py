@@ -26,6 +26,7 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError, as_array
 from ocio_thinfilm.colour import clip, colorimetry, encodings
 from ocio_thinfilm.io import StrPath, transaction, write_image
+from ocio_thinfilm.io.images import draw_labels
 from ocio_thinfilm.lut import film_tables
 from ocio_thinfilm.physics import films as films_module
 from ocio_thinfilm.physics.films import MAX_RANGE_UM, Film
@@ -47,8 +48,8 @@ SWATCH_COUNT = 25
 SWATCH_SPACE = "sRGB"
 #: The sheet's layout: swatches per row and each swatch's size in pixels.
 _COLUMNS, _PATCH, _LABEL = 8, 96, 40
-#: The sheet's background (an sRGB code value) and its title's height in pixels.
-_BACKGROUND, _TITLE = 0.12, 36
+#: The sheet's background and labels (sRGB code values) and its title's height in pixels.
+_BACKGROUND, _LABEL_CODE, _TITLE = 0.12, 0.92, 36
 
 
 @dataclass(frozen=True)
@@ -151,15 +152,13 @@ def _swatch_csv(swatches: Swatches) -> str:
 
 def _swatch_sheet(swatches: Swatches) -> np.ndarray:
     """Return the labelled sheet: sRGB code values, float32 (H, W, 3)."""
-    from ocio_thinfilm.render.frames import draw_labels
-
     count = swatches.thickness_um.size
     columns = min(_COLUMNS, count)
     rows = -(-count // columns)
     cell_h = _PATCH + _LABEL
     sheet = np.full((_TITLE + rows * cell_h, columns * _PATCH, 3), _BACKGROUND)
     film = swatches.film
-    seen = "" if film.illuminant == "D65" else f" under {film.illuminant} ({film.adaptation})"
+    seen = "" if not film_tables.light_words(film) else f" under {film.illuminant}"
     labels = [(columns * _PATCH / 2, _TITLE * 0.7, film.name + seen, 18)]
     for i, (t, code) in enumerate(zip(swatches.thickness_um, swatches.hex, strict=True)):
         row, col = divmod(i, columns)
@@ -167,7 +166,7 @@ def _swatch_sheet(swatches: Swatches) -> np.ndarray:
         sheet[y0 + 4 : y0 + _PATCH, x0 + 4 : x0 + _PATCH - 4] = swatches.encoded[i]
         labels.append((x0 + _PATCH / 2, y0 + _PATCH + 16, f"{t * 1000:g} nm", 14))
         labels.append((x0 + _PATCH / 2, y0 + _PATCH + 32, code, 13))
-    drawn, _ = draw_labels(sheet.astype(np.float32), labels)
+    drawn, _ = draw_labels(sheet.astype(np.float32), labels, _LABEL_CODE)
     return drawn
 
 

@@ -14,12 +14,14 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import numpy.typing as npt
 
 from ocio_thinfilm import cache, reproducible
 from ocio_thinfilm.checks import as_count
-from ocio_thinfilm.colour import adaptation
+from ocio_thinfilm.colour import adaptation, colorimetry
 from ocio_thinfilm.lut.tables import Table1D
 from ocio_thinfilm.physics import films as films_module
+from ocio_thinfilm.physics import light
 from ocio_thinfilm.physics.films import Film
 
 __all__ = [
@@ -27,6 +29,7 @@ __all__ = [
     "MAX_SIZE",
     "NODES_PER_FRINGE",
     "default_size",
+    "viewing_weights",
     "film_weights",
     "light_words",
     "film_XYZ",
@@ -72,10 +75,71 @@ def default_size(film: Film) -> int:
     return int(min(MAX_SIZE, max(MIN_SIZE, size)))
 
 
+def viewing_weights(
+    wavelengths: npt.ArrayLike,
+    illuminant: str = light.SCENE_ILLUMINANT,
+    adaptation_name: str = light.DEFAULT_ADAPTATION,
+) -> np.ndarray:
+    """Return weights ``W`` so that ``XYZ = R @ W`` is a reflectance seen under ``illuminant``.
+
+    The tristimulus weights under the illuminant
+    (:func:`ocio_thinfilm.colour.colorimetry.spectral_weights`: the perfect reflector
+    under it has Y = 1), followed by the von Kries adaptation
+    (:func:`ocio_thinfilm.colour.adaptation.von_kries_matrix`, in the cone space
+    ``adaptation_name``) from the perfect reflector under the illuminant on the same
+    wavelengths to the scene white D65 (colour-science's chromaticity,
+    Y = 1, the white of the colour spaces' matrices). Under D65 these are
+    :func:`~ocio_thinfilm.colour.colorimetry.spectral_weights` themselves.
+
+    Parameters
+    ----------
+    wavelengths : array_like
+        Sample wavelengths in nm (as ``spectral_weights``).
+    illuminant : str, optional
+        A name :func:`~ocio_thinfilm.physics.light.check_illuminant` takes (default D65).
+    adaptation_name : str, optional
+        A name :func:`~ocio_thinfilm.physics.light.check_adaptation` takes (default CAT02).
+
+    Returns
+    -------
+    numpy.ndarray
+        (len(wavelengths), 3); the perfect reflector's XYZ, the column sums, is the
+        D65 white.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``illuminant`` or ``adaptation_name``) for names colour-science does not know.
+
+    Examples
+    --------
+    A reflectance of 1 is the D65 white under any illuminant:
+
+    >>> wl = np.arange(380.0, 781.0, 5.0)
+    >>> viewing_weights(wl, "F11").sum(axis=0).round(3).tolist()
+    [0.95, 1.0, 1.089]
+    """
+    illuminant = light.check_illuminant(illuminant)
+    adaptation_name = light.check_adaptation(adaptation_name, "adaptation_name")
+    if illuminant == light.SCENE_ILLUMINANT:
+        return colorimetry.spectral_weights(wavelengths)
+    import colour
+
+    W = colorimetry.spectral_weights(wavelengths, illuminant=illuminant)
+    white = reproducible.matmul(np.ones(W.shape[0]), W)
+    xy = np.asarray(
+        colour.CCS_ILLUMINANTS[colorimetry.DEFAULT_OBSERVER][light.SCENE_ILLUMINANT], np.float64
+    )
+    target = np.array([xy[0] / xy[1], 1.0, (1.0 - xy[0] - xy[1]) / xy[1]])
+    cat = colour.CHROMATIC_ADAPTATION_TRANSFORMS[adaptation_name]
+    A = adaptation.von_kries_matrix(white, target, cat)
+    return reproducible.matmul(W, A.T)
+
+
 def film_weights(film: Film, wavelengths: np.ndarray) -> np.ndarray:
     """Return the weights ``W`` so that ``XYZ = R @ W`` is a film's colour under its light.
 
-    :func:`ocio_thinfilm.colour.adaptation.viewing_weights` with the film's
+    :func:`viewing_weights` with the film's
     ``illuminant`` and ``adaptation``: the trapezoid weights under the illuminant with
     the perfect reflector under it as white, adapted to D65 (under D65 the plain
     weights).
@@ -92,7 +156,7 @@ def film_weights(film: Film, wavelengths: np.ndarray) -> np.ndarray:
     numpy.ndarray
         (len(wavelengths), 3).
     """
-    return adaptation.viewing_weights(wavelengths, film.illuminant, film.adaptation)
+    return viewing_weights(wavelengths, film.illuminant, film.adaptation)
 
 
 def light_words(film: Film) -> str:
@@ -110,7 +174,7 @@ def light_words(film: Film) -> str:
     str
         The words.
     """
-    if film.illuminant == adaptation.SCENE_ILLUMINANT:
+    if film.illuminant == light.SCENE_ILLUMINANT:
         return ""
     return f" under {film.illuminant}, {film.adaptation}-adapted to D65,"
 

@@ -68,8 +68,8 @@ import numpy.typing as npt
 
 from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError, as_array
-from ocio_thinfilm.colour import adaptation as cat
 from ocio_thinfilm.physics import exact, materials
+from ocio_thinfilm.physics import light as viewing
 from ocio_thinfilm.physics.materials import VISIBLE_NM, Material
 from ocio_thinfilm.physics.sampling import check_wavelengths, wavelength_grid
 from ocio_thinfilm.physics.spectra import two_beam_reflectance
@@ -126,7 +126,7 @@ class Film:
     its brightest entry has Y = 1 (for compositors that expect a colour, not a
     reflectance); ``illuminant``, ``adaptation``: the light it is seen under and the
     chromatic adaptation to the scene white D65
-    (:func:`ocio_thinfilm.colour.adaptation.viewing_weights`).
+    (:mod:`ocio_thinfilm.physics.light`).
     """
 
     key: str
@@ -139,8 +139,8 @@ class Film:
     model: str = "exact"
     source: str = ""
     normalise: bool = False
-    illuminant: str = cat.SCENE_ILLUMINANT
-    adaptation: str = cat.DEFAULT_ADAPTATION
+    illuminant: str = viewing.SCENE_ILLUMINANT
+    adaptation: str = viewing.DEFAULT_ADAPTATION
 
     @property
     def layers(self) -> tuple[Material, ...]:
@@ -174,7 +174,7 @@ class Film:
             else:
                 parts.append(f"{layer.name} {self.thickness_nm[j]:g} nm")
         parts.append(self.stack[-1].name)
-        seen = self.illuminant != cat.SCENE_ILLUMINANT
+        seen = self.illuminant != viewing.SCENE_ILLUMINANT
         light = f", under {self.illuminant} ({self.adaptation} to D65)" if seen else ""
         return f"{' | '.join(parts)} at {self.angle_deg:g} deg, {self.model} model{light}"
 
@@ -400,8 +400,8 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
         raise where.error("normalise", f"must be true or false, got {normalise!r}")
     light = []
     for option, default, check in (
-        ("illuminant", cat.SCENE_ILLUMINANT, cat.check_illuminant),
-        ("adaptation", cat.DEFAULT_ADAPTATION, cat.check_adaptation),
+        ("illuminant", viewing.SCENE_ILLUMINANT, viewing.check_illuminant),
+        ("adaptation", viewing.DEFAULT_ADAPTATION, viewing.check_adaptation),
     ):  # the light it is seen under
         try:
             light.append(check(table.get(option, default)))
