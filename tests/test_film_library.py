@@ -298,3 +298,16 @@ def test_swatch_and_spectra_errors_are_one_line_exit_2(
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and needle in err, err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f.toml"]
+
+
+def test_swatches_of_a_normalised_film_are_its_tables_colours():
+    film = films_module.parse_films(
+        '[films.S]\nstack = ["air", "soap film", "air"]\nnormalise = true\nilluminant = "A"'
+    )["S"]
+    from ocio_thinfilm.export import swatches
+
+    table = film_tables.user_film_table(film)
+    t = np.asarray(table.nodes)[[0, 100, 333, 700]]
+    got = swatches.film_swatches(film, t)
+    np.testing.assert_allclose(got.XYZ, np.asarray(table.values)[[0, 100, 333, 700]], atol=1e-12)
+    assert np.asarray(table.values)[:, 1].max() == pytest.approx(1.0)

@@ -121,8 +121,9 @@ def film_swatches(film: Film, thickness_um: npt.ArrayLike | None = None) -> Swat
     """
     t = swatch_thicknesses(film) if thickness_um is None else _thicknesses(thickness_um)
     XYZ = film_tables.film_XYZ(film, t)
-    if film.normalise:
-        brightest = float(np.asarray(film_tables.user_film_table(film).values)[:, 1].max())
+    if film.normalise:  # the table's factor: its brightest entry before scaling
+        nodes = np.asarray(film_tables.user_film_table(film).nodes)
+        brightest = float(film_tables.film_XYZ(film, nodes)[:, 1].max())
         if brightest > 0:
             XYZ = XYZ / brightest
     rgb = colorimetry.XYZ_to_RGB(XYZ, SWATCH_SPACE)
