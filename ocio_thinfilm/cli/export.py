@@ -4,7 +4,8 @@
 own ``--help``:
 
 - ``export film`` -- the thickness table of a built-in film kind, or a film of a film
-  file (``--films FILE --film KEY``);
+  file (``--films FILE --film KEY``), or that film's swatches and spectra as CSV
+  (``--swatches``, ``--spectra``);
 - ``export morpho`` -- the Morpho angle table;
 - ``export clip`` -- the constant-lightness clip of a display, a 3D LUT;
 - ``export view`` -- a display/view of the config, from one of its colour spaces;
@@ -163,10 +164,12 @@ def _run_table(args: argparse.Namespace) -> int:
 
 def _run_film(args: argparse.Namespace) -> int:
     """``export film``: a built-in kind's table, or with ``--films`` a film of that file."""
+    tables = [o for o in ("swatches", "spectra", "thickness") if getattr(args, o) is not None]
     if args.films is None:
-        if args.film is not None:
+        if args.film is not None or tables:
+            named = f"--film {args.film}" if args.film is not None else f"--{tables[0]}"
             raise UsageError(
-                f"--films FILE is missing: --film {args.film} names a film of a film file "
+                f"--films FILE is missing: {named} applies to a film of a film file "
                 "(see docs/films.md)"
             )
         return _run_table(args)
@@ -178,10 +181,35 @@ def _run_film(args: argparse.Namespace) -> int:
     ):
         if given:
             raise UsageError(f"{option} does not apply to a film of --films (its file says)")
+    if tables:
+        return _run_film_tables(args)
     from ocio_thinfilm.export.film_files import export_film
 
     for path in export_film(args.films, args.film, args.out, fmt=args.format, size=args.size):
         print(f"wrote {path}")
+    return 0
+
+
+def _run_film_tables(args: argparse.Namespace) -> int:
+    """``export film --swatches|--spectra``: a film's colours or spectra as CSV (and PNG)."""
+    from ocio_thinfilm.export import swatches
+    from ocio_thinfilm.export.film_files import pick_film
+
+    for option in ("out", "format", "size"):
+        if getattr(args, option) is not None:
+            raise UsageError(
+                f"--{option} does not go with --swatches/--spectra (they name their own files)"
+            )
+    if args.spectra is not None and args.thickness is None:
+        raise UsageError("--spectra needs --thickness T [T ...] (um)")
+    if args.thickness is not None and args.swatches is None and args.spectra is None:
+        raise UsageError("--thickness goes with --swatches or --spectra")
+    film = pick_film(args.films, args.film)
+    if args.swatches is not None:
+        for path in swatches.write_swatches(film, args.swatches, args.thickness):
+            print(f"wrote {path}")
+    if args.spectra is not None:
+        print(f"wrote {swatches.write_spectra(film, args.spectra, args.thickness)}")
     return 0
 
 
@@ -326,12 +354,13 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         f"display gamut ({', '.join(registry.DISPLAYS)}): clipped display-linear RGB instead of XYZ"
     )
 
+    swatches_count = 25  # ocio_thinfilm.export.swatches.SWATCH_COUNT (imported when run)
     f = kinds.add_parser(
         "film",
         help="a thin-film thickness table (1D), a built-in kind or a film of a film file",
         description="Write the thickness table of a film kind (input: thickness in um), "
         "or with --films FILE --film KEY a film of a film file in every 1D format and "
-        "as an EXR ramp.",
+        "as an EXR ramp, or its swatches (--swatches) or spectra (--spectra).",
     )
     f.add_argument(
         "--kind",
@@ -356,6 +385,29 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         "(thickness along x) into --out DIR, or one of them to --out FILE",
     )
     f.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
+    f.add_argument(
+        "--swatches",
+        default=None,
+        metavar="OUT.csv",
+        help="with --films: write the film's colours (thickness, sRGB hex, linear sRGB, "
+        "XYZ) as a CSV and a labelled PNG sheet beside it (OUT.png), at --thickness or "
+        f"{swatches_count} thicknesses over its range",
+    )
+    f.add_argument(
+        "--spectra",
+        default=None,
+        metavar="OUT.csv",
+        help="with --films: write the film's reflectance spectra R(lambda) at --thickness "
+        "as a CSV (reflectance only)",
+    )
+    f.add_argument(
+        "--thickness",
+        nargs="+",
+        type=float,
+        default=None,
+        metavar="T",
+        help="physical thicknesses of the film's varying layer in um, for --swatches and --spectra",
+    )
     f.set_defaults(func=_run_film)
 
     m = kinds.add_parser(

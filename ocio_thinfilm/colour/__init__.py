@@ -8,8 +8,10 @@
   two squeezes;
 - :mod:`.views` -- each view kind's map in closed form (the clip, the compression, the
   clamp);
+- :mod:`.adaptation` -- the von Kries chromatic adaptation (a film's illuminant to
+  D65, the ACES whites);
 - :mod:`.log_curves` -- the log curves of the encoded input spaces (ACEScct, DaVinci
   Intermediate, ARRI LogC4, S-Log3).
 """
 
-__all__ = ["colorimetry", "encodings", "clip", "compress", "views", "log_curves"]
+__all__ = ["colorimetry", "adaptation", "encodings", "clip", "compress", "views", "log_curves"]

@@ -341,16 +341,16 @@ def _bradford(source_xy: np.ndarray, target_xy: np.ndarray) -> np.ndarray:
     """Return the von Kries adaptation in Bradford's cone space from one white to another.
 
     ``colour.adaptation.matrix_chromatic_adaptation_VonKries(..., transform="Bradford")``
-    in elementwise arithmetic (the same bits on every CPU), with colour-science's
-    Bradford matrix.
+    by :func:`ocio_thinfilm.colour.adaptation.von_kries_matrix` (the same bits on every
+    CPU), with colour-science's Bradford matrix.
     """
     import colour
 
-    M = np.asarray(colour.adaptation.CAT_BRADFORD, dtype=np.float64)
-    gain = reproducible.matmul(M, _xy_to_XYZ(target_xy)) / reproducible.matmul(
-        M, _xy_to_XYZ(source_xy)
+    from ocio_thinfilm.colour.adaptation import von_kries_matrix
+
+    return von_kries_matrix(
+        _xy_to_XYZ(source_xy), _xy_to_XYZ(target_xy), colour.adaptation.CAT_BRADFORD
     )
-    return reproducible.matmul(reproducible.inv3(M) * gain, M)
 
 
 @cache.persistent

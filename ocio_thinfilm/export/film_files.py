@@ -96,7 +96,7 @@ def film_contents(film: Any, size: int | None = None) -> tuple[np.ndarray, Any, 
     meta = dict(
         name=stem,
         input=table.input_descriptor,
-        output="CIE-XYZ-D65 (perfect reflector Y = 1), unclipped",
+        output=f"CIE-XYZ-D65 (perfect reflector{film_tables.light_words(film)} Y = 1), unclipped",
         description=table.description,
         range=(lo, hi),
         size=table.size,
@@ -178,7 +178,8 @@ def export_film(
         t = lo + (np.arange(width) + 0.5) / width * (hi - lo)
         ramp = np.broadcast_to(film_tables.film_XYZ(chosen, t), (RAMP_HEIGHT, width, 3))
         description = (
-            f"{chosen.name}: CIE XYZ D65 (perfect reflector Y = 1) against the "
+            f"{chosen.name}: CIE XYZ D65 (perfect reflector"
+            f"{film_tables.light_words(chosen)} Y = 1) against the "
             f"physical thickness of the {chosen.varying.name} layer, {lo:g}-{hi:g} um "
             f"along x (texel i at lo + (i + 0.5) / {width} * (hi - lo)); "
             f"{chosen.describe()}"

@@ -7,7 +7,7 @@ always report a full disk).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -17,6 +17,7 @@ from ocio_thinfilm.io.transactions import Transaction, transaction
 __all__ = [
     "write_image",
     "read_image",
+    "draw_labels",
 ]
 
 if TYPE_CHECKING:
@@ -182,3 +183,48 @@ def read_image(path: StrPath) -> np.ndarray:
     pixels = buf.get_pixels(oiio.FLOAT)
     assert pixels is not None  # has_error is False: the pixels were read
     return pixels
+
+
+def draw_labels(
+    rgb: np.ndarray,
+    labels: Sequence[tuple[float, float, str, float]],
+    code: float,
+) -> tuple[np.ndarray, bool]:
+    """Draw captions with OpenImageIO's ``render_text`` and its bundled font.
+
+    Parameters
+    ----------
+    rgb : numpy.ndarray
+        (H, W, 3) display code values.
+    labels : sequence of (float, float, str, float)
+        ``(x, y, text, size)`` captions: the text centred at x, its baseline at y
+        (pixels, truncated to integers), ``size`` its height in pixels.
+    code : float, optional
+        The captions' grey, a code value.
+
+    Returns
+    -------
+    image : numpy.ndarray
+        float32 (H, W, 3) with the captions; ``rgb`` itself when there are no labels
+        or when a caption could not be drawn (then none is drawn).
+    drawn : bool
+        Whether the captions were drawn (``True`` without labels).
+    """
+    if not labels:
+        return rgb, True
+    import numpy as np
+    import OpenImageIO as oiio
+
+    buf = oiio.ImageBuf(oiio.ImageSpec(rgb.shape[1], rgb.shape[0], 3, oiio.FLOAT))
+    buf.set_pixels(oiio.ROI(), np.ascontiguousarray(rgb, dtype=np.float32))
+    drawn = True
+    for x, y, text, size in labels:
+        ok = oiio.ImageBufAlgo.render_text(
+            buf, int(x), int(y), text, int(size), "", (code, code, code), "center", "baseline", 0
+        )
+        drawn = drawn and bool(ok)
+    if not drawn:
+        return rgb, False
+    pixels = buf.get_pixels(oiio.FLOAT)
+    assert pixels is not None  # the buffer was filled above
+    return pixels, True

@@ -8,5 +8,6 @@
   integration every model shares;
 - :mod:`.materials` -- optical constants n + ik of real materials (a package: the model,
   its readers and the built-in library, one module each);
-- :mod:`.films` -- users' film files (TOML): stacks of those materials.
+- :mod:`.films` -- users' film files (TOML): stacks of those materials;
+- :mod:`.light` -- the names of the light a film is seen under (illuminant, adaptation).
 """

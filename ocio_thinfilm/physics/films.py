@@ -24,6 +24,8 @@ films::
     model = "exact"                   # or "paper"
     name = "Oil Slick"                # colour space name (default "Thin Film <key>")
     normalise = false                 # true: the table scaled to a brightest Y of 1
+    illuminant = "D65"                # the light it is seen under (colour-science's names)
+    adaptation = "CAT02"              # its chromatic adaptation to the scene white D65
 
 Materials not defined in the file come from the built-in library
 (:mod:`ocio_thinfilm.physics.materials`; a material the file defines wins over a
@@ -67,6 +69,7 @@ import numpy.typing as npt
 from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError, as_array
 from ocio_thinfilm.physics import exact, materials
+from ocio_thinfilm.physics import light as viewing
 from ocio_thinfilm.physics.materials import VISIBLE_NM, Material
 from ocio_thinfilm.physics.sampling import check_wavelengths, wavelength_grid
 from ocio_thinfilm.physics.spectra import two_beam_reflectance
@@ -104,6 +107,8 @@ _FILM_KEYS = (
     "model",
     "name",
     "normalise",
+    "illuminant",
+    "adaptation",
 )
 
 
@@ -119,7 +124,9 @@ class Film:
     ``angle_deg``: the viewing angle in the incident medium; ``model``: ``"exact"`` or
     ``"paper"``; ``source``: the film file; ``normalise``: its table scaled so that
     its brightest entry has Y = 1 (for compositors that expect a colour, not a
-    reflectance).
+    reflectance); ``illuminant``, ``adaptation``: the light it is seen under and the
+    chromatic adaptation to the scene white D65
+    (:mod:`ocio_thinfilm.physics.light`).
     """
 
     key: str
@@ -132,6 +139,8 @@ class Film:
     model: str = "exact"
     source: str = ""
     normalise: bool = False
+    illuminant: str = viewing.SCENE_ILLUMINANT
+    adaptation: str = viewing.DEFAULT_ADAPTATION
 
     @property
     def layers(self) -> tuple[Material, ...]:
@@ -165,7 +174,9 @@ class Film:
             else:
                 parts.append(f"{layer.name} {self.thickness_nm[j]:g} nm")
         parts.append(self.stack[-1].name)
-        return f"{' | '.join(parts)} at {self.angle_deg:g} deg, {self.model} model"
+        seen = self.illuminant != viewing.SCENE_ILLUMINANT
+        light = f", under {self.illuminant} ({self.adaptation} to D65)" if seen else ""
+        return f"{' | '.join(parts)} at {self.angle_deg:g} deg, {self.model} model{light}"
 
 
 # --------------------------------------------------------------------------- #
@@ -387,6 +398,15 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     normalise = table.get("normalise", False)
     if not isinstance(normalise, bool):
         raise where.error("normalise", f"must be true or false, got {normalise!r}")
+    light = []
+    for option, default, check in (
+        ("illuminant", viewing.SCENE_ILLUMINANT, viewing.check_illuminant),
+        ("adaptation", viewing.DEFAULT_ADAPTATION, viewing.check_adaptation),
+    ):  # the light it is seen under
+        try:
+            light.append(check(table.get(option, default)))
+        except ParameterError as error:
+            raise where.error(option, error.detail.lstrip(": ")) from None
     name = table.get("name", NAME_FORMAT.format(key=key))
     if not isinstance(name, str) or not name.strip() or name != name.strip():
         raise where.error("name", f"must be a non-empty name without outer spaces, got {name!r}")
@@ -401,6 +421,8 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
         model=model,
         source=path,
         normalise=normalise,
+        illuminant=light[0],
+        adaptation=light[1],
     )
 
 

@@ -22,7 +22,14 @@ from pathlib import Path
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.io import StrPath, Transaction, check_output_file, transaction, write_image
+from ocio_thinfilm.io import (
+    StrPath,
+    Transaction,
+    check_output_file,
+    images,
+    transaction,
+    write_image,
+)
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.render import scenes as scene_module
 from ocio_thinfilm.render.processors import ConfigProcessors, display_image, make_lookup
@@ -129,6 +136,8 @@ def draw_labels(
 ) -> tuple[np.ndarray, bool]:
     """Draw captions with OpenImageIO's ``render_text`` and its bundled font.
 
+    :func:`ocio_thinfilm.io.images.draw_labels` with the scenes' grey.
+
     Parameters
     ----------
     rgb : numpy.ndarray
@@ -147,23 +156,7 @@ def draw_labels(
     drawn : bool
         Whether the captions were drawn (``True`` without labels).
     """
-    if not labels:
-        return rgb, True
-    import OpenImageIO as oiio
-
-    buf = oiio.ImageBuf(oiio.ImageSpec(rgb.shape[1], rgb.shape[0], 3, oiio.FLOAT))
-    buf.set_pixels(oiio.ROI(), np.ascontiguousarray(rgb, dtype=np.float32))
-    drawn = True
-    for x, y, text, size in labels:
-        ok = oiio.ImageBufAlgo.render_text(
-            buf, int(x), int(y), text, int(size), "", (code, code, code), "center", "baseline", 0
-        )
-        drawn = drawn and bool(ok)
-    if not drawn:
-        return rgb, False
-    pixels = buf.get_pixels(oiio.FLOAT)
-    assert pixels is not None  # the buffer was filled above
-    return pixels, True
+    return images.draw_labels(rgb, labels, code)
 
 
 # --------------------------------------------------------------------------- #

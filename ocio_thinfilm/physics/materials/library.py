@@ -79,6 +79,44 @@ LIBRARY: dict[str, _Entry] = {
         note="TiO2 thin film, 200 nm on glass (Sarkar et al. 2019, ACS Appl. Mater. "
         "Interfaces 11, 13752); every 5th nm of the table",
     ),
+    "Si3N4": _Entry(
+        "si3n4.yml",
+        note="silicon nitride, LPCVD film (Philipp 1973, J. Electrochem. Soc. 120, 295; "
+        "Sellmeier of Baak 1982, Appl. Opt. 21, 1069)",
+        aliases=("silicon nitride",),
+    ),
+    "Al2O3": _Entry(
+        "al2o3.yml",
+        note="synthetic sapphire, ordinary ray, 20 C (Malitson & Dodge 1972, J. Opt. Soc. "
+        "Am. 62, 1405; Sellmeier)",
+        aliases=("alumina", "sapphire"),
+    ),
+    "HfO2": _Entry(
+        "hfo2.yml",
+        note="e-beam HfO2 film, 113 nm on Si (Franta, Necas & Ohlidal 2015, Appl. Opt. 54, 9108)",
+        aliases=("hafnia",),
+    ),
+    "Ta2O5": _Entry(
+        "ta2o5.yml",
+        note="ion-assisted e-beam Ta2O5 film, 400 nm on BK7 (Gao, Lemarchand & Lequime "
+        "2012, Opt. Express 20, 15734)",
+        aliases=("tantala",),
+    ),
+    "Nb2O5": _Entry(
+        "nb2o5.yml",
+        note="sputtered Nb2O5 film, 500 nm on BK7 (Lemarchand 2013; method of Gao, "
+        "Lemarchand & Lequime 2012, Opt. Express 20, 15734)",
+    ),
+    "ZnS": _Entry(
+        "zns.yml",
+        note="zinc sulfide (Querry 1987, CRDEC-CR-88009)",
+        aliases=("zinc sulfide", "zinc sulphide"),
+    ),
+    "ITO": _Entry(
+        "ito.yml",
+        note="indium tin oxide, 72 nm film on BK7 (Konig et al. 2014, ACS Nano 8, 6182)",
+        aliases=("indium tin oxide", "In2O3-SnO2"),
+    ),
     "chitin": _Entry(
         None,
         note="butterfly-wing chitin, Cauchy n = 1.517 + 8.80e3 nm^2 / lambda^2 "
@@ -90,6 +128,11 @@ LIBRARY: dict[str, _Entry] = {
         note="haematite, alpha-Fe2O3, ordinary ray (Querry 1985, CRDC-CR-85034): the "
         "oxide of temper colours",
         aliases=("haematite", "hematite", "iron oxide"),
+    ),
+    "Si": _Entry(
+        "si.yml",
+        note="crystalline silicon, 300 K (Green 2008, Sol. Energy Mater. Sol. Cells 92, 1305)",
+        aliases=("silicon",),
     ),
     "Ti": _Entry(
         "ti.yml",
