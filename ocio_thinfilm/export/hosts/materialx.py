@@ -1,5 +1,6 @@
-"""The film in MaterialX 1.39: a node graph that reads the reflectance table by thickness
-and view angle and feeds a BSDF.
+"""The film in MaterialX 1.39: a node graph reading the table, feeding a BSDF.
+
+The graph reads the reflectance table by thickness and view angle.
 
 :func:`materialx_document` writes a ``.mtlx`` document (MaterialX Specification 1.39,
 standard library nodes only):
@@ -145,7 +146,7 @@ def materialx_document(
     _node(
         graph,
         "remap",
-        "u",
+        "thickness_u",
         "float",
         **{
             "in": ("float", {"interfacename": "thickness"}),
@@ -160,7 +161,7 @@ def materialx_document(
         "combine2",
         "uv",
         "vector2",
-        in1=("float", {"nodename": "u"}),
+        in1=("float", {"nodename": "thickness_u"}),
         in2=("float", {"nodename": "cos_theta"}),
     )
     _node(
