@@ -13,6 +13,7 @@ OSL code is generated, not compiled (no ``oslc`` here).
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 
@@ -179,6 +180,14 @@ def test_the_glsl_draws_the_exact_reflectance_on_mesa(gl):
     )
     assert np.all(image[radius > 1.02] == 0.0)
     assert error.max() <= TOLERANCE
+    gallery = os.environ.get("OCIO_THINFILM_GALLERY")  # a directory for the docs' picture
+    if gallery:
+        import colour
+        import OpenImageIO as oiio
+
+        codes = colour.cctf_encoding(np.clip(image[::-1, :, :3], 0.0, 1.0), "sRGB")
+        png = oiio.ImageBuf(np.round(codes * 255.0).astype(np.uint8))
+        assert png.write(os.path.join(gallery, "materialx_soap.png")), oiio.geterror()
 
 
 @pytest.mark.parametrize(

@@ -13,6 +13,8 @@ Skips, with the reason, without Chromium or where three.js cannot be installed.
 from __future__ import annotations
 
 import base64
+import os
+from pathlib import Path
 
 import colour
 import numpy as np
@@ -76,9 +78,22 @@ def test_the_mirror_sphere_shows_the_exact_reflectance(chromium, three, tmp_path
         assert np.all(rgba[radius > 1.02][:, :3] == 0)  # the background: black
     print(f"\nthree.js {browser.THREE_VERSION}: |canvas - exact| (1/255) max, p99 {worst}")
     assert max(w[0] for w in worst.values()) <= TOLERANCE
+    _keep(out["frames"][1], tmp_path)
     # the thickness uniform does change the colours
     frames = [np.frombuffer(base64.b64decode(f), np.uint8) for f in out["frames"]]
     assert np.abs(frames[0].astype(int) - frames[1]).max() > 40
+
+
+def _keep(frame, tmp_path):
+    """Write the frame as ``threejs_soap.png`` (top row first) into tmp_path and, where
+    the environment names a gallery directory (``OCIO_THINFILM_GALLERY``), there too."""
+    import OpenImageIO as oiio
+
+    rgba = np.frombuffer(base64.b64decode(frame), np.uint8).reshape(SIZE, SIZE, 4)[::-1]
+    for folder in [tmp_path, os.environ.get("OCIO_THINFILM_GALLERY")]:
+        if folder:
+            image = oiio.ImageBuf(np.ascontiguousarray(rgba[:, :, :3]))
+            assert image.write(str(Path(folder) / "threejs_soap.png")), oiio.geterror()
 
 
 def test_the_module_names_its_table_and_range():
