@@ -1,0 +1,75 @@
+"""The film-as-material table in renderers: one writer per host.
+
+Each writer takes only the table's file names and numbers (the table itself:
+``export material``).
+
+- :mod:`.three` -- an ES module for three.js that turns a ``MeshPhysicalMaterial`` into
+  the film;
+- :mod:`.materialx` -- a MaterialX 1.39 document: a node graph reading the table by
+  thickness and view angle, feeding a BSDF.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import PurePath
+
+from ocio_thinfilm.checks import ParameterError, as_pair
+
+__all__ = ["thickness_range", "table_name"]
+
+
+def thickness_range(range_um: object) -> tuple[float, float]:
+    """Return the table's thickness axis ``(lo, hi)`` in µm, checked.
+
+    Parameters
+    ----------
+    range_um : sequence of two numbers
+        The film's ``range_um``: the thickness at u = 0 and u = 1 of the table.
+
+    Returns
+    -------
+    tuple of float
+        ``(lo, hi)``.
+
+    Raises
+    ------
+    ParameterError
+        Unless ``0 <= lo < hi`` and both are finite.
+    """
+    lo, hi = as_pair("range_um", range_um)
+    if not (math.isfinite(lo) and math.isfinite(hi) and 0.0 <= lo < hi):
+        raise ParameterError("range_um", f" must be finite with 0 <= lo < hi, got ({lo}, {hi})")
+    return lo, hi
+
+
+def table_name(parameter: str, path: object) -> str:
+    """Return the file name of a table EXR, checked.
+
+    A host loads the table from beside the material's file.
+
+    Parameters
+    ----------
+    parameter : str
+        The Python parameter's name, for the error message.
+    path : str or os.PathLike
+        The table's path; only its last component is kept.
+
+    Returns
+    -------
+    str
+        The file name, ending in ``.exr``.
+
+    Raises
+    ------
+    ParameterError
+        If it does not end in ``.exr`` or holds a quote, ``<``, ``>`` or ``&``.
+    """
+    if not isinstance(path, (str, PurePath)):
+        raise TypeError(f"{parameter} must be a path, got {type(path).__name__}")
+    name = PurePath(path).name
+    if not name.lower().endswith(".exr") or any(c in name for c in "\"'<>&\\"):
+        raise ParameterError(
+            parameter, f" must be an .exr file name without quotes, <, > or &, got {name!r}"
+        )
+    return name
