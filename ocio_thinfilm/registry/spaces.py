@@ -118,12 +118,17 @@ class SceneSpace:
         Whether a display LUT's shaper over it starts at 0 (negative values clamped to
         the gamut's boundary: the ACES working gamut AP1, where a mirrored shaper would
         spend a fifth of its grid on the few colours outside it); default ``False``.
+    materialx : str or None, optional
+        Its name in MaterialX's default colour management (MaterialX Specification 1.39,
+        "Color Spaces"), for the film tables a MaterialX document reads; ``None``
+        (default) where MaterialX has none.
     """
 
     name: str
     colorimetry: str
     description: str
     shaper_from_zero: bool = False
+    materialx: str | None = None
 
 
 @dataclass(frozen=True)
@@ -234,16 +239,19 @@ SCENE_LINEAR_LIST = (
         colorimetry="ACEScg",
         description="ACEScg: AP1 primaries, ACES white (Bradford from D65)",
         shaper_from_zero=True,
+        materialx="acescg",
     ),
     SceneSpace(
         name="Linear Rec.709 (sRGB)",
         colorimetry="Rec.709",
         description="Scene-linear Rec.709 / sRGB primaries, D65",
+        materialx="lin_rec709",
     ),
     SceneSpace(
         name="Linear P3-D65",
         colorimetry="Display P3",
         description="Scene-linear P3 primaries, D65",
+        materialx="lin_displayp3",
     ),
     SceneSpace(
         name="Linear Rec.2020",

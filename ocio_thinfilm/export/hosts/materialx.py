@@ -27,15 +27,20 @@ import re
 import xml.etree.ElementTree as ET
 from os import PathLike
 
-from ocio_thinfilm import __version__
+from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import as_choice
 from ocio_thinfilm.export.hosts import table_name, thickness_range
 
 __all__ = ["MATERIALX_COLORSPACES", "materialx_document"]
 
 #: The table's scene space -> MaterialX's colour space name (its default colour
-#: management system's names, MaterialX Specification 1.39, "Color Spaces").
-MATERIALX_COLORSPACES = {"Linear Rec.709 (sRGB)": "lin_rec709", "ACEScg": "acescg"}
+#: management system's names, MaterialX Specification 1.39, "Color Spaces"), from the
+#: registry's scene-linear spaces.
+MATERIALX_COLORSPACES = {
+    space.name: space.materialx
+    for space in registry.SCENE_LINEAR_LIST
+    if space.materialx is not None
+}
 
 
 def _node(parent: ET.Element, category: str, name: str, kind: str, **inputs) -> ET.Element:
