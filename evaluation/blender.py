@@ -10,6 +10,10 @@ standard library).
 - :func:`install_bpy` -- make the venv and ``pip install bpy==BPY_VERSION`` (once);
   ``.ci/run`` calls it (``python -m evaluation.blender``) ahead of the tests.
 - :func:`render` -- run :data:`SCENE` with a JSON job; returns its JSON answer.
+- :func:`sphere_pixels` -- what each pixel of :data:`SCENE`'s render sees: the pixel
+  centres, the disc away from the silhouette, cos(theta) there.
+- :func:`render_film` -- the sphere with a generated film material, and the exact
+  colours at its pixels (:mod:`evaluation.materials`).
 """
 
 from __future__ import annotations
@@ -22,12 +26,27 @@ import sys
 import tempfile
 from pathlib import Path
 
-__all__ = ["BPY_VERSION", "SCENE", "bpy_directory", "bpy_python", "install_bpy", "render"]
+import numpy as np
+
+__all__ = [
+    "BPY_VERSION",
+    "SCENE",
+    "FRAME",
+    "bpy_directory",
+    "bpy_python",
+    "install_bpy",
+    "render",
+    "read_exr",
+    "sphere_pixels",
+    "render_film",
+]
 
 #: The PyPI ``bpy`` release the tests render with (Blender 5.0.1, Python 3.11).
 BPY_VERSION = "5.0.1"
 #: The scene script the venv's Python runs.
 SCENE = Path(__file__).resolve().with_name("blender_scene.py")
+#: The width of :data:`SCENE`'s orthographic frame (the unit sphere and a margin).
+FRAME = 2.2
 
 
 def bpy_directory() -> Path:
@@ -109,6 +128,68 @@ def render(job: dict, *, timeout: float = 300.0) -> dict:
             tail = "\n".join((done.stdout + done.stderr).strip().splitlines()[-15:])
             raise RuntimeError(f"Blender run failed ({done.returncode}):\n{tail}")
         return json.loads(answer.read_text())
+
+
+def read_exr(path: Path) -> np.ndarray:
+    """The RGB of an EXR as float64 (H, W, 3), first scanline first (OpenImageIO)."""
+    import OpenImageIO as oiio
+
+    return oiio.ImageBuf(str(path)).get_pixels(oiio.FLOAT)[..., :3].astype(float)
+
+
+def sphere_pixels(size: int, radius: float = 0.95):
+    """(x, y, disc, cos_theta) of :data:`SCENE`'s ``size`` x ``size`` render, rows from
+    the top: the pixel centres on the unit sphere's plane, the pixels with
+    ``x^2 + y^2 < radius^2`` (away from the silhouette) and ``n_z = sqrt(1 - x^2 -
+    y^2)``, the cosine of the angle between the normal and the view (+z)."""
+    c = -FRAME / 2 + FRAME * (np.arange(size) + 0.5) / size
+    x, y = np.meshgrid(c, -c)
+    r2 = x**2 + y**2
+    return x, y, r2 < radius**2, np.sqrt(np.clip(1 - r2, 0, 1))
+
+
+def render_film(
+    folder: Path,
+    stack,
+    key: str,
+    *,
+    range_um=(0.0, 1.0),
+    table_size=(256, 128),
+    ramp_um=(0.05, 0.95),
+    size: int = 96,
+    engine: str = "CYCLES",
+    transmittance: bool = False,
+    **job,
+):
+    """Render the sphere with film ``stack`` as the generated material and return
+    (rendered RGB on the disc, exact R on the disc, Blender's answer).
+
+    The tables (``table_size`` = width, height over ``range_um``) and the script go to
+    ``folder / key`` (:func:`evaluation.materials.write_film_folder`); the film's
+    thickness ramps over ``ramp_um`` from object x = -1 to +1.
+    """
+    from evaluation import materials
+    from ocio_thinfilm.export.blender import blender_name
+
+    script = materials.write_film_folder(
+        Path(folder) / key, stack, key, range_um, *table_size, transmittance=transmittance
+    )
+    out = Path(folder) / f"{key}_{engine}.exr"
+    material = {"kind": "script", "script": str(script), "name": blender_name(key)}
+    answer = render(
+        {
+            "engine": engine,
+            "size": size,
+            "out": str(out),
+            "material": material,
+            "thickness_um": list(ramp_um),
+            **job,
+        }
+    )
+    x, _, disc, cos_theta = sphere_pixels(size)
+    thickness = ramp_um[0] + (x + 1) / 2 * (ramp_um[1] - ramp_um[0])
+    exact = materials.film_rgb(stack, thickness[disc], cos_theta[disc])
+    return read_exr(out)[disc], exact, answer
 
 
 if __name__ == "__main__":

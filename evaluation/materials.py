@@ -15,6 +15,9 @@ white with CAT02, so the perfect reflector is RGB (1, 1, 1)).
   texel-centre axes (texture rows: row 0 = cos theta near 0).
 - :func:`write_table` -- that table as a float EXR with the contract's header
   (OpenImageIO; first scanline = the top = cos theta near 1).
+- :func:`write_film_folder` -- the tables and the Blender script of a film, laid out as
+  ``export material`` lays them out.
+- :func:`delta_e` -- CIE 2000 between linear BT.709 colours (colour-science).
 """
 
 from __future__ import annotations
@@ -25,7 +28,16 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["Stack", "SOAP_BUBBLE", "SOAP_ON_GLASS", "film_rgb", "table", "write_table"]
+__all__ = [
+    "Stack",
+    "SOAP_BUBBLE",
+    "SOAP_ON_GLASS",
+    "delta_e",
+    "film_rgb",
+    "table",
+    "write_table",
+    "write_film_folder",
+]
 
 Index = complex | float | Sequence[complex] | np.ndarray
 
@@ -181,3 +193,46 @@ def write_table(
     out.write_image(pixels)
     out.close()
     return Path(path)
+
+
+def write_film_folder(
+    folder: Path,
+    stack: Stack,
+    key: str,
+    range_um: tuple[float, float],
+    width: int,
+    height: int,
+    *,
+    transmittance: bool = False,
+) -> Path:
+    """Write ``ThinFilm_User_<key>_R.exr`` (and ``_T.exr``) and the Blender script
+    ``ThinFilm_User_<key>.py`` (:func:`ocio_thinfilm.export.blender.blender_script`)
+    into ``folder``; return the script's path."""
+    from ocio_thinfilm.export.blender import blender_script
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    names = {"reflectance": f"ThinFilm_User_{key}_R.exr"}
+    if transmittance:
+        names["transmittance"] = f"ThinFilm_User_{key}_T.exr"
+    for quantity, name in names.items():
+        rgb = table(stack, range_um, width, height, quantity=quantity)
+        write_table(folder / name, rgb, key=key, quantity=quantity, range_um=range_um)
+    script = folder / f"ThinFilm_User_{key}.py"
+    script.write_text(
+        blender_script(key, names["reflectance"], names.get("transmittance"), range_um)
+    )
+    return script
+
+
+def delta_e(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """CIE 2000 colour difference of linear BT.709 colours (D65 white), colour-science's
+    ``RGB_to_XYZ``, ``XYZ_to_Lab`` and ``delta_E``."""
+    import colour
+
+    white = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+
+    def lab(rgb):
+        return colour.XYZ_to_Lab(colour.RGB_to_XYZ(rgb, "ITU-R BT.709"), white)
+
+    return colour.delta_E(lab(a), lab(b), method="CIE 2000")

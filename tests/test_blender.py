@@ -12,6 +12,7 @@ is a ramp in x.
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 
@@ -22,15 +23,12 @@ from evaluation import blender, materials
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.export.blender import blender_name, blender_script
 
-#: The table's range and resolution (256 x 128: the bilinear lookup of it is within
-#: DeltaE2000 0.52 of the exact film at the test's pixels, measured in NumPy).
+#: The renders' tables (evaluation.blender.render_film) are 256 x 128 over 0-1 um: their
+#: bilinear lookup is within DeltaE2000 0.52 of the exact film at the test's pixels,
+#: measured in NumPy (64 rows give 1.2, from the rows near normal incidence). The tests
+#: that only build the material use small ones.
 RANGE = (0.0, 1.0)
-WIDTH, HEIGHT = 256, 128
-#: The thickness ramp over the sphere (object x = -1 -> +1), micrometres.
-RAMP = (0.05, 0.95)
-#: Pixels, and the disc compared: away from the silhouette (cos(theta) >= 0.31).
-SIZE = 96
-RADIUS = 0.95
+WIDTH, HEIGHT = 16, 8
 
 
 def _bpy():
@@ -43,65 +41,9 @@ def _bpy():
 
 def _film_folder(tmp_path, stack, key, *, transmittance=False):
     """The tables and the script, as ``export material`` lays them out."""
-    folder = tmp_path / key
-    folder.mkdir()
-    r_name = f"ThinFilm_User_{key}_R.exr"
-    rgb = materials.table(stack, RANGE, WIDTH, HEIGHT)
-    materials.write_table(folder / r_name, rgb, key=key, quantity="reflectance", range_um=RANGE)
-    t_name = None
-    if transmittance:
-        t_name = f"ThinFilm_User_{key}_T.exr"
-        rgb = materials.table(stack, RANGE, WIDTH, HEIGHT, quantity="transmittance")
-        materials.write_table(
-            folder / t_name, rgb, key=key, quantity="transmittance", range_um=RANGE
-        )
-    script = folder / f"ThinFilm_User_{key}.py"
-    script.write_text(blender_script(key, r_name, t_name, RANGE))
-    return script
-
-
-def _read(path):
-    import OpenImageIO as oiio
-
-    return oiio.ImageBuf(str(path)).get_pixels(oiio.FLOAT)[..., :3].astype(float)
-
-
-def _pixels():
-    """Pixel centres (x, y), the disc mask and cos(theta) = n_z there."""
-    c = -1.1 + 2.2 * (np.arange(SIZE) + 0.5) / SIZE
-    x, y = np.meshgrid(c, -c)
-    r2 = x**2 + y**2
-    return x, y, r2 < RADIUS**2, np.sqrt(np.clip(1 - r2, 0, 1))
-
-
-def delta_e(colour, a, b):
-    """CIE 2000 of two linear BT.709 colour sets, colour-science throughout."""
-    white = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
-
-    def lab(rgb):
-        return colour.XYZ_to_Lab(colour.RGB_to_XYZ(rgb, "ITU-R BT.709"), white)
-
-    return colour.delta_E(lab(a), lab(b), method="CIE 2000")
-
-
-def render_film(tmp_path, stack, key, engine="CYCLES", **job):
-    """The sphere with the film's generated material: (render, exact R, disc mask)."""
-    script = _film_folder(tmp_path, stack, key, transmittance=job.pop("transmittance", False))
-    out = tmp_path / f"{key}_{engine}.exr"
-    answer = blender.render(
-        {
-            "engine": engine,
-            "size": SIZE,
-            "out": str(out),
-            "material": {"kind": "script", "script": str(script), "name": blender_name(key)},
-            "thickness_um": RAMP,
-            **job,
-        }
+    return materials.write_film_folder(
+        tmp_path / key, stack, key, RANGE, WIDTH, HEIGHT, transmittance=transmittance
     )
-    x, _, disc, cos_theta = _pixels()
-    thickness = RAMP[0] + (x + 1) / 2 * (RAMP[1] - RAMP[0])
-    exact = materials.film_rgb(stack, thickness[disc], cos_theta[disc])
-    return _read(out)[disc], exact, answer
 
 
 # --------------------------------------------------------------------------- #
@@ -134,6 +76,7 @@ def test_blender_script_is_python_with_the_constants():
     assert 'NAME = "Thin Film Odd \\"key\\""' in text
     assert 'REFLECTANCE = "sub/a_R.exr"' in text and 'TRANSMITTANCE = "sub/a_T.exr"' in text
     assert "RANGE_UM = (0.25, 2.0)" in text
+    assert blender_name("Soap") == "Thin Film Soap"
 
 
 # --------------------------------------------------------------------------- #
@@ -144,7 +87,8 @@ _INSPECT = """
 import json, runpy, sys, bpy
 keep = bpy.data.materials.new("Keep")
 def names():
-    return {k: {d.name for d in getattr(bpy.data, k)} for k in ("node_groups", "materials", "images")}
+    kinds = ("node_groups", "materials", "images")
+    return {k: {d.name for d in getattr(bpy.data, k)} for k in kinds}
 before = names()
 for _ in range(2):
     runpy.run_path(sys.argv[-1], run_name="__main__")
@@ -163,7 +107,9 @@ print("JSON" + json.dumps({
     "removed": {k: sorted(before[k] - v) for k, v in names().items()},
     "sockets": sockets,
     "thickness": node.inputs["Thickness"].default_value,
-    "textures": [(t.interpolation, t.extension, t.image.colorspace_settings.name) for t in textures],
+    "textures": [
+        (t.interpolation, t.extension, t.image.colorspace_settings.name) for t in textures
+    ],
     "users": node.node_tree.name,
 }))
 """
@@ -193,8 +139,10 @@ def _check_inspected(found):
         "images": ["ThinFilm_User_Soap_R.exr", "ThinFilm_User_Soap_T.exr"],
     }
     assert found["removed"] == {"node_groups": [], "materials": [], "images": []}
-    assert ["INPUT", "Thickness"] in found["sockets"] and ["INPUT", "Roughness"] in found["sockets"]
-    assert ["OUTPUT", "BSDF"] in found["sockets"] and ["OUTPUT", "Transmittance"] in found["sockets"]
+    for socket in ("Thickness", "Roughness"):
+        assert ["INPUT", socket] in found["sockets"]
+    for socket in ("BSDF", "Reflectance", "Transmittance"):
+        assert ["OUTPUT", socket] in found["sockets"]
     assert found["thickness"] == pytest.approx(0.5)
     assert found["textures"] == [["Linear", "EXTEND", "Non-Color"]] * 2
 
@@ -216,26 +164,26 @@ def test_the_script_builds_in_blender_3(tmp_path):
 # --------------------------------------------------------------------------- #
 # In Blender: the renders
 # --------------------------------------------------------------------------- #
-def test_cycles_mirror_sphere_is_the_exact_reflectance(tmp_path, colour):
+def test_cycles_mirror_sphere_is_the_exact_reflectance(tmp_path):
     """Soap film in air (n = 1.33), reflection only: every pixel of the disc within
     DeltaE2000 1.0 of colour-science's exact R at its thickness and angle. Exact colours
     outside BT.709 (a channel < 0) are compared clamped at 0: Cycles clamps a closure's
     negative colour to 0, so the table's gamut mapping is what it can show of them."""
     _bpy()
-    got, exact, _ = render_film(tmp_path, materials.SOAP_BUBBLE, "Soap", samples=1)
+    got, exact, _ = blender.render_film(tmp_path, materials.SOAP_BUBBLE, "Soap", samples=1)
     inside = exact.min(axis=1) >= 0
-    de = delta_e(colour, got, np.where(inside[:, None], exact, np.clip(exact, 0, None)))
+    de = materials.delta_e(got, np.where(inside[:, None], exact, np.clip(exact, 0, None)))
     assert inside.sum() > 2000 and (~inside).sum() > 0
     assert np.percentile(de[inside], 99) <= 0.6, np.percentile(de[inside], [50, 99, 100])
     assert de.max() <= 1.0, (de[inside].max(), de[~inside].max())
     assert got.min() >= 0
 
 
-def test_cycles_film_on_glass_is_the_exact_reflectance(tmp_path, colour):
+def test_cycles_film_on_glass_is_the_exact_reflectance(tmp_path):
     """A soap-like film on glass (1.33 on 1.5, semi-infinite): the same bound."""
     _bpy()
-    got, exact, _ = render_film(tmp_path, materials.SOAP_ON_GLASS, "Glass", samples=1)
-    de = delta_e(colour, got, np.clip(exact, 0, None))
+    got, exact, _ = blender.render_film(tmp_path, materials.SOAP_ON_GLASS, "Glass", samples=1)
+    de = materials.delta_e(got, np.clip(exact, 0, None))
     assert de.max() <= 1.0, np.percentile(de, [50, 99, 100])
 
 
@@ -246,9 +194,57 @@ def test_cycles_free_standing_bubble_conserves_energy(tmp_path):
     so one pixel is noisy, their mean is not). A material that dropped T (mean ~0.1) or
     counted R twice is far off."""
     _bpy()
-    got, _, _ = render_film(
+    got, _, _ = blender.render_film(
         tmp_path, materials.SOAP_BUBBLE, "Bubble", samples=16, transmittance=True
     )
     mean = got.mean(axis=0)
     assert np.abs(mean - 1).max() <= 0.01, mean
     assert np.abs(np.median(got, axis=0) - 1).max() <= 0.1, np.median(got, axis=0)
+
+
+def test_principled_thin_film_side_by_side(tmp_path):
+    """Principled BSDF's thin film (Blender 4.2+) on the same scene and film (1.33 on
+    glass 1.5, thickness in nm from the same ramp): near the exact film (its model is an
+    approximation: measured p50 0.8, max 1.8 at 128 px, docs/blender.md) and farther
+    from it than the node group. A wrong unit or index in the side-by-side scene puts it
+    tens of DeltaE away."""
+    _bpy()
+    ours, exact, _ = blender.render_film(tmp_path, materials.SOAP_ON_GLASS, "Glass", samples=1)
+    out = tmp_path / "principled.exr"
+    blender.render(
+        {
+            "engine": "CYCLES",
+            "size": 96,
+            "samples": 1,
+            "out": str(out),
+            "material": {"kind": "principled", "ior": 1.5, "film_ior": 1.33},
+            "thickness_um": [0.05, 0.95],
+        }
+    )
+    principled = blender.read_exr(out)[blender.sphere_pixels(96)[2]]
+    clipped = np.clip(exact, 0, None)
+    theirs = materials.delta_e(principled, clipped)
+    mine = materials.delta_e(ours, clipped)
+    assert np.median(theirs) <= 2.0 and theirs.max() <= 4.0, np.percentile(theirs, [50, 100])
+    assert np.median(mine) < np.median(theirs) and mine.max() < theirs.max()
+
+
+#: EEVEE needs a GPU context; on Mesa's llvmpipe (CI, this kind of machine) bpy 5.0.1's
+#: EEVEE renders but not faithfully: the node group shows a pixel-grid pattern without
+#: its angle dependence and Principled's own thin film shows no colour at all, at 4 to
+#: 30 s a frame. Set OCIO_THINFILM_EEVEE=1 on a machine with a GPU to run it.
+EEVEE = os.environ.get("OCIO_THINFILM_EEVEE") == "1"
+
+
+@pytest.mark.skipif(
+    not EEVEE,
+    reason="EEVEE on software GL (Mesa llvmpipe) in bpy 5.0.1 does not render the scene "
+    "faithfully (Principled's thin film shows no colour); OCIO_THINFILM_EEVEE=1 on a GPU",
+)
+def test_eevee_mirror_sphere_is_the_exact_reflectance(tmp_path):
+    _bpy()
+    got, exact, _ = blender.render_film(
+        tmp_path, materials.SOAP_BUBBLE, "Soap", engine="BLENDER_EEVEE", samples=16
+    )
+    de = materials.delta_e(got, np.clip(exact, 0, None))
+    assert np.percentile(de, 99) <= 1.0, np.percentile(de, [50, 99, 100])

@@ -139,7 +139,7 @@ def blender_script(
 
 
 def _quote(text: str) -> str:
-    """A Python string literal in double quotes (``repr`` may choose single ones)."""
+    """Return ``text`` as a Python string literal in double quotes."""
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
