@@ -4,7 +4,8 @@
 venv of its own under the user's cache directory, never in the project's environment;
 the tests run Blender in a subprocess with that venv's Python and the scene script
 :data:`SCENE` (``evaluation/blender_scene.py``, which imports only ``bpy`` and the
-standard library).
+standard library). This module imports only the standard library at its top, so
+``.ci/run`` can run it before the project's requirements are installed.
 
 - :func:`bpy_python` -- the venv's Python where ``bpy`` is installed, or None.
 - :func:`install_bpy` -- make the venv and ``pip install bpy==BPY_VERSION`` (once);
@@ -25,8 +26,6 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
-
-import numpy as np
 
 __all__ = [
     "BPY_VERSION",
@@ -130,7 +129,7 @@ def render(job: dict, *, timeout: float = 300.0) -> dict:
         return json.loads(answer.read_text())
 
 
-def read_exr(path: Path) -> np.ndarray:
+def read_exr(path: Path):
     """The RGB of an EXR as float64 (H, W, 3), first scanline first (OpenImageIO)."""
     import OpenImageIO as oiio
 
@@ -142,6 +141,8 @@ def sphere_pixels(size: int, radius: float = 0.95):
     the top: the pixel centres on the unit sphere's plane, the pixels with
     ``x^2 + y^2 < radius^2`` (away from the silhouette) and ``n_z = sqrt(1 - x^2 -
     y^2)``, the cosine of the angle between the normal and the view (+z)."""
+    import numpy as np
+
     c = -FRAME / 2 + FRAME * (np.arange(size) + 0.5) / size
     x, y = np.meshgrid(c, -c)
     r2 = x**2 + y**2

@@ -11,6 +11,7 @@ is a ramp in x.
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import shutil
@@ -31,12 +32,21 @@ RANGE = (0.0, 1.0)
 WIDTH, HEIGHT = 16, 8
 
 
+@functools.cache
+def _install_error() -> str | None:
+    """Install the bpy venv once per run (``.ci/run`` does it ahead of the tests); the
+    reason it cannot be made, or None."""
+    try:
+        blender.install_bpy()
+    except RuntimeError as error:
+        return str(error)
+    return None
+
+
 def _bpy():
-    if blender.bpy_python() is None:
-        try:
-            blender.install_bpy()
-        except RuntimeError as error:
-            pytest.skip(f"no PyPI bpy {blender.BPY_VERSION} venv: {error}")
+    error = _install_error()
+    if error is not None:
+        pytest.skip(f"no PyPI bpy {blender.BPY_VERSION} venv: {error}")
 
 
 def _film_folder(tmp_path, stack, key, *, transmittance=False):
