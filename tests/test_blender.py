@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import functools
 import json
-import os
 import shutil
 import subprocess
 
@@ -154,7 +153,7 @@ def _check_inspected(found):
     for socket in ("BSDF", "Reflectance", "Transmittance"):
         assert ["OUTPUT", socket] in found["sockets"]
     assert found["thickness"] == pytest.approx(0.5)
-    assert found["textures"] == [["Linear", "EXTEND", "Non-Color"]] * 2
+    assert found["textures"] == [["Closest", "EXTEND", "Non-Color"]] * 8
 
 
 def test_the_script_builds_once_from_a_moved_folder_in_bpy(tmp_path):
@@ -239,22 +238,15 @@ def test_principled_thin_film_side_by_side(tmp_path):
     assert np.median(mine) < np.median(theirs) and mine.max() < theirs.max()
 
 
-#: EEVEE needs a GPU context; on Mesa's llvmpipe (CI, this kind of machine) bpy 5.0.1's
-#: EEVEE renders but not faithfully: the node group shows a pixel-grid pattern without
-#: its angle dependence and Principled's own thin film shows no colour at all, at 4 to
-#: 30 s a frame. Set OCIO_THINFILM_EEVEE=1 on a machine with a GPU to run it.
-EEVEE = os.environ.get("OCIO_THINFILM_EEVEE") == "1"
-
-
-@pytest.mark.skipif(
-    not EEVEE,
-    reason="EEVEE on software GL (Mesa llvmpipe) in bpy 5.0.1 does not render the scene "
-    "faithfully (Principled's thin film shows no colour); OCIO_THINFILM_EEVEE=1 on a GPU",
-)
 def test_eevee_mirror_sphere_is_the_exact_reflectance(tmp_path):
+    """EEVEE (headless: EGL on Mesa's llvmpipe in CI), the same scene and bound as
+    Cycles. The node group's bilinear lookup is its own (four Closest reads): EEVEE's
+    filtered texture read picks a mipmap level from the screen-space derivatives of the
+    lookup, which on llvmpipe returned wrong colours (DeltaE2000 p50 16 with the
+    thickness ramp, scattered pixels at 68 with a uniform thickness)."""
     _bpy()
     got, exact, _ = blender.render_film(
-        tmp_path, materials.SOAP_BUBBLE, "Soap", engine="BLENDER_EEVEE", samples=16
+        tmp_path, materials.SOAP_BUBBLE, "Soap", engine="BLENDER_EEVEE", samples=1
     )
     de = materials.delta_e(got, np.clip(exact, 0, None))
-    assert np.percentile(de, 99) <= 1.0, np.percentile(de, [50, 99, 100])
+    assert de.max() <= 1.0, np.percentile(de, [50, 99, 100])

@@ -14,11 +14,17 @@ Geometry node's shading ``Normal`` and ``Incoming``, the unit vector towards the
 origin; the absolute value serves back faces, where a free-standing film is the same
 seen from either side), the texture coordinates are ``u = (t - lo) / (hi - lo)`` and
 ``v = cos(theta)`` (the table's texel-centre axes: ``docs/blender.md``, the material
-table's contract), and the tables are Image Texture nodes (colour space Non-Color,
-Linear interpolation, EXTEND). The shader is a Glossy BSDF (multiscatter GGX, the
-``Roughness`` input) tinted by the reflectance R, plus, where a transmittance table is
-given, a Transparent BSDF tinted by the transmittance T: light goes straight through a
-film far thinner than the object, and the two weights add to R + T, the film's energy.
+table's contract), and each table is read bilinearly in nodes: four Image Texture nodes
+(colour space Non-Color, Closest interpolation, EXTEND) at the texel centres around
+(u, v), mixed by the fractional texel position. A GPU's own filtered read (EEVEE's
+Linear) picks a mipmap level from the screen-space derivatives of (u, v) and so blurs
+the table across thicknesses; measured in bpy 5.0.1's EEVEE on Mesa, it returned wrong
+colours outright (DeltaE2000 p50 16 against the exact film; 0.2 with the nodes).
+
+The shader is a Glossy BSDF (multiscatter GGX, the ``Roughness`` input) tinted by the
+reflectance R, plus, where a transmittance table is given, a Transparent BSDF tinted by
+the transmittance T: light goes straight through a film far thinner than the object, and
+the two weights add to R + T, the film's energy.
 
 The script finds the tables beside itself (their paths are relative to the script's
 folder, so the folder can be moved) and is idempotent: run again, it rebuilds the node
@@ -221,7 +227,7 @@ def build_group():
         return n
 
     inputs = node("NodeGroupInput", -900, 0)
-    outputs = node("NodeGroupOutput", 500, 0)
+    outputs = node("NodeGroupOutput", 1800, 0)
     geometry = node("ShaderNodeNewGeometry", -900, -250)
     dot = node("ShaderNodeVectorMath", -700, -250, operation="DOT_PRODUCT")
     links.new(geometry.outputs["Normal"], dot.inputs[0])
@@ -234,33 +240,83 @@ def build_group():
     links.new(inputs.outputs["Thickness"], u.inputs[0])
     u.inputs[1].default_value = 1.0 / (hi - lo)
     u.inputs[2].default_value = -lo / (hi - lo)
-    uv = node("ShaderNodeCombineXYZ", -300, 0)
-    links.new(u.outputs[0], uv.inputs[0])
-    links.new(cosine.outputs[0], uv.inputs[1])
+
+    def texel_centres(value, size, x, y):
+        """The two texel centres around value (0-1) of size texels, and the weight of
+        the second: p = value * size - 0.5, centres (floor(p) + 0.5) / size and the
+        next, weight p - floor(p) (EXTEND: a centre off the edge reads the edge)."""
+        p = node("ShaderNodeMath", x, y, operation="MULTIPLY_ADD")
+        links.new(value, p.inputs[0])
+        p.inputs[1].default_value = float(size)
+        p.inputs[2].default_value = -0.5
+        low = node("ShaderNodeMath", x + 150, y, operation="FLOOR")
+        links.new(p.outputs[0], low.inputs[0])
+        weight = node("ShaderNodeMath", x + 300, y, operation="SUBTRACT")
+        links.new(p.outputs[0], weight.inputs[0])
+        links.new(low.outputs[0], weight.inputs[1])
+        first = node("ShaderNodeMath", x + 300, y - 150, operation="MULTIPLY_ADD")
+        links.new(low.outputs[0], first.inputs[0])
+        first.inputs[1].default_value = 1.0 / size
+        first.inputs[2].default_value = 0.5 / size
+        second = node("ShaderNodeMath", x + 450, y - 150, operation="ADD")
+        links.new(first.outputs[0], second.inputs[0])
+        second.inputs[1].default_value = 1.0 / size
+        return first.outputs[0], second.outputs[0], weight.outputs[0]
+
+    def lerp(a, b, weight, x, y):
+        difference = node("ShaderNodeVectorMath", x, y, operation="SUBTRACT")
+        links.new(b, difference.inputs[0])
+        links.new(a, difference.inputs[1])
+        result = node("ShaderNodeVectorMath", x + 150, y, operation="MULTIPLY_ADD")
+        links.new(difference.outputs[0], result.inputs[0])
+        links.new(weight, result.inputs[1])
+        links.new(a, result.inputs[2])
+        return result.outputs[0]
 
     def texture(relative, y, label):
-        t = node("ShaderNodeTexImage", -100, y, interpolation="Linear", extension="EXTEND")
-        t.image = table(relative)
-        t.label = label
-        links.new(uv.outputs[0], t.inputs["Vector"])
-        return t
+        """Bilinear lookup of the table from four Closest reads at texel centres, the
+        same on every engine (a GPU's filtered read picks a mipmap level from the
+        screen-space derivatives of (u, v): it blurs the table across thicknesses)."""
+        image = table(relative)
+        width, height = image.size
+        u0, u1, wu = texel_centres(u.outputs[0], width, -300, y + 300)
+        v0, v1, wv = texel_centres(cosine.outputs[0], height, -300, y)
+        corners = []
+        for i, (a, b) in enumerate(((u0, v0), (u1, v0), (u0, v1), (u1, v1))):
+            uv = node("ShaderNodeCombineXYZ", 300, y + 300 - 150 * i)
+            links.new(a, uv.inputs[0])
+            links.new(b, uv.inputs[1])
+            t = node(
+                "ShaderNodeTexImage",
+                450,
+                y + 300 - 150 * i,
+                interpolation="Closest",
+                extension="EXTEND",
+            )
+            t.image = image
+            t.label = label
+            links.new(uv.outputs[0], t.inputs["Vector"])
+            corners.append(t.outputs["Color"])
+        low = lerp(corners[0], corners[1], wu, 700, y + 250)
+        high = lerp(corners[2], corners[3], wu, 700, y)
+        return lerp(low, high, wv, 1000, y + 100)
 
-    glossy = node("ShaderNodeBsdfGlossy", 200, 100)
+    glossy = node("ShaderNodeBsdfGlossy", 1400, 100)
     try:
         glossy.distribution = "MULTI_GGX"
     except TypeError:
         glossy.distribution = "GGX"
     links.new(inputs.outputs["Roughness"], glossy.inputs["Roughness"])
-    r = texture(REFLECTANCE, 150, "Reflectance R")
-    links.new(r.outputs["Color"], glossy.inputs["Color"])
-    links.new(r.outputs["Color"], outputs.inputs["Reflectance"])
+    r = texture(REFLECTANCE, 300, "Reflectance R")
+    links.new(r, glossy.inputs["Color"])
+    links.new(r, outputs.inputs["Reflectance"])
     bsdf = glossy.outputs[0]
     if TRANSMITTANCE is not None:
-        t = texture(TRANSMITTANCE, -250, "Transmittance T")
-        transparent = node("ShaderNodeBsdfTransparent", 200, -150)
-        links.new(t.outputs["Color"], transparent.inputs["Color"])
-        links.new(t.outputs["Color"], outputs.inputs["Transmittance"])
-        add = node("ShaderNodeAddShader", 350, 0)
+        t = texture(TRANSMITTANCE, -500, "Transmittance T")
+        transparent = node("ShaderNodeBsdfTransparent", 1400, -150)
+        links.new(t, transparent.inputs["Color"])
+        links.new(t, outputs.inputs["Transmittance"])
+        add = node("ShaderNodeAddShader", 1600, 0)
         links.new(glossy.outputs[0], add.inputs[0])
         links.new(transparent.outputs[0], add.inputs[1])
         bsdf = add.outputs[0]
