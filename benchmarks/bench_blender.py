@@ -13,7 +13,7 @@ ramping from 0.05 um at the left to 0.95 um at the right:
 - **exact**: colour-science's TMM at each pixel's thickness and angle (clamped at 0 per
   channel where it is outside BT.709: Cycles clamps negative closure colours);
 - and the node group of a free-standing soap film (n = 1.33 in air) against its exact
-  reflectance.
+  reflectance, in Cycles and in EEVEE (headless: EGL, on Mesa's llvmpipe here).
 
 Prints and writes reports/bench_blender.json and reports/bench_blender.md: DeltaE2000
 (p50 / p99 / max over the sphere away from its silhouette) of ours and Principled's
@@ -23,7 +23,7 @@ the picture docs/gallery/blender_soap.png (ours | Principled, sRGB), and
 docs/gallery/blender_bubble.png: the same sphere with a free-standing soap film (n = 1.33
 in air), reflection only (the scene of tests/test_blender.py's exact-reflectance test).
 
-Usage: python benchmarks/bench_blender.py [--size 128] [--samples 16] [--runs 5]
+Usage: python benchmarks/bench_blender.py [--size 128] [--samples 16] [--runs 7]
 """
 
 from __future__ import annotations
@@ -90,6 +90,10 @@ def measure(size: int, samples: int, runs: int) -> dict:
             Path(work), materials.SOAP_BUBBLE, "Bubble", **job
         )
         _png([blender.read_exr(Path(work) / "Bubble_CYCLES.exr")], BUBBLE)
+        once = {**job, "runs": 1}
+        eevee, eevee_exact, _ = blender.render_film(
+            Path(work), materials.SOAP_BUBBLE, "Bubble", engine="BLENDER_EEVEE", **once
+        )
     _, _, disc, _ = blender.sphere_pixels(size)
     principled = principled_image[disc]
     clipped = np.clip(exact, 0, None)  # Cycles clamps negative closure colours to 0
@@ -106,6 +110,9 @@ def measure(size: int, samples: int, runs: int) -> dict:
             "principled_vs_exact": _stats(materials.delta_e(principled, clipped)),
             "ours_vs_principled": _stats(materials.delta_e(ours, principled)),
             "bubble_vs_exact": _stats(materials.delta_e(bubble, np.clip(bubble_exact, 0, None))),
+            "bubble_eevee_vs_exact": _stats(
+                materials.delta_e(eevee, np.clip(eevee_exact, 0, None))
+            ),
         },
         "seconds": {"ours": round(ours_s, 4), "principled": round(principled_s, 4)},
         "ratio": round(ours_s / principled_s, 3),
@@ -125,6 +132,7 @@ def markdown(result: dict) -> str:
         "principled_vs_exact": "Principled thin film vs exact",
         "ours_vs_principled": "node group vs Principled",
         "bubble_vs_exact": "node group vs exact, free-standing soap film (reflection)",
+        "bubble_eevee_vs_exact": "the same in EEVEE",
     }
     for key, name in names.items():
         s = result["delta_e"][key]
@@ -142,7 +150,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--size", type=int, default=128)
     parser.add_argument("--samples", type=int, default=16)
-    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--runs", type=int, default=7)
     args = parser.parse_args()
     result = measure(args.size, args.samples, args.runs)
     REPORT.mkdir(exist_ok=True)

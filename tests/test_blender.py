@@ -250,3 +250,16 @@ def test_eevee_mirror_sphere_is_the_exact_reflectance(tmp_path):
     )
     de = materials.delta_e(got, np.clip(exact, 0, None))
     assert de.max() <= 1.0, np.percentile(de, [50, 99, 100])
+
+
+def test_docs_quote_the_benchmark(load_benchmark, marked):
+    """docs/blender.md's numbers are benchmarks/bench_blender.py's last run
+    (reports/bench_blender.json) as its markdown renders them."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    result = json.loads((root / "reports" / "bench_blender.json").read_text())
+    text = (root / "docs" / "blender.md").read_text()
+    block = marked(text, "<!-- bench_blender:begin -->", "<!-- bench_blender:end -->")
+    assert block == load_benchmark("bench_blender").markdown(result).strip()
+    assert result["ratio"] <= 1.3
