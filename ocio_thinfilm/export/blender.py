@@ -1,6 +1,6 @@
 """A film's material tables as a Blender node group and material (Cycles and EEVEE).
 
-:func:`blender_script` returns the text of a Python script that, run in Blender 3.0 or
+:func:`blender_script` returns the text of a Python script that, run in Blender 3.4 or
 later (``blender --python FILE``, or the Text Editor's *Run Script*), builds
 
 - the shader node group ``Thin Film <KEY>``: inputs ``Thickness`` (the film's physical
@@ -130,7 +130,7 @@ def blender_script(
 
     head = (
         f'"""{blender_name(key)}: the film as a Blender node group and material.\n\n'
-        f"Written by ocio-thinfilm {__version__}. Run it in Blender 3.0 or later: "
+        f"Written by ocio-thinfilm {__version__}. Run it in Blender 3.4 or later: "
         "blender --python THIS_FILE,\nor open it in the Text Editor and Run Script. "
         "The tables are read from this file's folder.\n"
         '"""\n\n'
@@ -149,7 +149,7 @@ def _quote(text: str) -> str:
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
-#: The script after its constants: plain Blender Python, 3.0 to 5.x (the node group's
+#: The script after its constants: plain Blender Python, 3.4 to 5.x (the node group's
 #: sockets through ``interface`` from 4.0, ``inputs``/``outputs`` before).
 _BODY = r'''
 
