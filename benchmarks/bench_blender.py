@@ -3,11 +3,12 @@
 The test scene of tests/test_blender.py (``evaluation/blender_scene.py``: a mirror sphere,
 roughness 0, in a uniform white world, orthographic camera, Cycles on the CPU, no
 denoising), with a soap-like film on glass (n = 1.33 on 1.5, in air), its thickness
-ramping from 0.05 um at the left to 0.95 um at the right:
+ramping from 0.05 um at the left to 0.95 um at the right (and, for two more rows, from
+1 um to 3 um):
 
 - **ours**: the script of :func:`ocio_thinfilm.export.blender.blender_script` over tables
   made by :mod:`evaluation.materials` (colour-science's exact TMM, 256 x 128 over
-  0-1 um);
+  0-1 um; for the thicker films 768 x 128 over 0-3 um);
 - **Principled**: Blender's Principled BSDF, black base, IOR 1.5, ``Thin Film IOR`` 1.33,
   ``Thin Film Thickness`` from the same ramp (nm);
 - **exact**: colour-science's TMM at each pixel's thickness and angle (clamped at 0 per
@@ -42,6 +43,8 @@ REPORT = ROOT / "reports"
 PICTURE = ROOT / "docs" / "gallery" / "blender_soap.png"
 BUBBLE = ROOT / "docs" / "gallery" / "blender_bubble.png"
 RAMP = (0.05, 0.95)
+#: The thicker films' ramp, over a 0-3 um table of 768 x 128.
+THICK = (1.0, 3.0)
 
 
 def _stats(de):
@@ -73,19 +76,28 @@ def measure(size: int, samples: int, runs: int) -> dict:
             Path(work), materials.SOAP_ON_GLASS, "SoapOnGlass", **job
         )
         ours_image = blender.read_exr(Path(work) / "SoapOnGlass_CYCLES.exr")
-        principled_out = Path(work) / "principled.exr"
-        principled_answer = blender.render(
-            {
-                "engine": "CYCLES",
-                "size": size,
-                "samples": samples,
-                "runs": runs + 1,
-                "out": str(principled_out),
-                "material": {"kind": "principled", "ior": 1.5, "film_ior": 1.33},
-                "thickness_um": list(RAMP),
-            }
+
+        def principled_render(ramp, runs):
+            out = Path(work) / "principled.exr"
+            answer = blender.render(
+                {
+                    "engine": "CYCLES",
+                    "size": size,
+                    "samples": samples,
+                    "runs": runs,
+                    "out": str(out),
+                    "material": {"kind": "principled", "ior": 1.5, "film_ior": 1.33},
+                    "thickness_um": list(ramp),
+                }
+            )
+            return blender.read_exr(out), answer
+
+        principled_image, principled_answer = principled_render(RAMP, runs + 1)
+        thick = {**job, "runs": 1, "ramp_um": THICK, "range_um": (0.0, 3.0)}
+        thick_ours, thick_exact, _ = blender.render_film(
+            Path(work), materials.SOAP_ON_GLASS, "Thick", table_size=(768, 128), **thick
         )
-        principled_image = blender.read_exr(principled_out)
+        thick_principled = principled_render(THICK, 1)[0]
         bubble, bubble_exact, _ = blender.render_film(
             Path(work), materials.SOAP_BUBBLE, "Bubble", **job
         )
@@ -96,6 +108,7 @@ def measure(size: int, samples: int, runs: int) -> dict:
         )
     _, _, disc, _ = blender.sphere_pixels(size)
     principled = principled_image[disc]
+    thick_clipped = np.clip(thick_exact, 0, None)
     clipped = np.clip(exact, 0, None)  # Cycles clamps negative closure colours to 0
     ours_s = np.median(ours_answer["seconds"][1:])
     principled_s = np.median(principled_answer["seconds"][1:])
@@ -109,6 +122,10 @@ def measure(size: int, samples: int, runs: int) -> dict:
             "ours_vs_exact": _stats(materials.delta_e(ours, clipped)),
             "principled_vs_exact": _stats(materials.delta_e(principled, clipped)),
             "ours_vs_principled": _stats(materials.delta_e(ours, principled)),
+            "thick_ours_vs_exact": _stats(materials.delta_e(thick_ours, thick_clipped)),
+            "thick_principled_vs_exact": _stats(
+                materials.delta_e(thick_principled[disc], thick_clipped)
+            ),
             "bubble_vs_exact": _stats(materials.delta_e(bubble, np.clip(bubble_exact, 0, None))),
             "bubble_eevee_vs_exact": _stats(
                 materials.delta_e(eevee, np.clip(eevee_exact, 0, None))
@@ -131,6 +148,8 @@ def markdown(result: dict) -> str:
         "ours_vs_exact": "node group vs exact",
         "principled_vs_exact": "Principled thin film vs exact",
         "ours_vs_principled": "node group vs Principled",
+        "thick_ours_vs_exact": "node group vs exact, 1-3 um",
+        "thick_principled_vs_exact": "Principled thin film vs exact, 1-3 um",
         "bubble_vs_exact": "node group vs exact, free-standing soap film (reflection)",
         "bubble_eevee_vs_exact": "the same in EEVEE",
     }
