@@ -99,8 +99,14 @@ def names():
     kinds = ("node_groups", "materials", "images")
     return {k: {d.name for d in getattr(bpy.data, k)} for k in kinds}
 before = names()
-for _ in range(2):
-    runpy.run_path(sys.argv[-1], run_name="__main__")
+runpy.run_path(sys.argv[-1], run_name="__main__")
+mine = bpy.data.materials.new("Mine")  # a user's material around the group
+if mine.node_tree is None:
+    mine.use_nodes = True
+mine_node = mine.node_tree.nodes.new("ShaderNodeGroup")
+mine_node.node_tree = bpy.data.node_groups["Thin Film Soap"]
+runpy.run_path(sys.argv[-1], run_name="__main__")
+before["materials"].add("Mine")
 name = "Thin Film Soap"
 group = bpy.data.node_groups[name]
 sockets = (
@@ -119,7 +125,7 @@ print("JSON" + json.dumps({
     "textures": [
         (t.interpolation, t.extension, t.image.colorspace_settings.name) for t in textures
     ],
-    "users": node.node_tree.name,
+    "mine": mine_node.node_tree.name if mine_node.node_tree else None,
 }))
 """
 
@@ -153,6 +159,7 @@ def _check_inspected(found):
     for socket in ("BSDF", "Reflectance", "Transmittance"):
         assert ["OUTPUT", socket] in found["sockets"]
     assert found["thickness"] == pytest.approx(0.5)
+    assert found["mine"] == "Thin Film Soap"  # rebuilt in place, still used
     assert found["textures"] == [["Closest", "EXTEND", "Non-Color"]] * 8
 
 
