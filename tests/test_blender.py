@@ -270,3 +270,37 @@ def test_docs_quote_the_benchmark(load_benchmark, marked):
     block = marked(text, "<!-- bench_blender:begin -->", "<!-- bench_blender:end -->")
     assert block == load_benchmark("bench_blender").markdown(result).strip()
     assert result["ratio"] <= 1.3
+
+
+def test_a_missing_table_changes_nothing(tmp_path):
+    """The script checks every table before it touches Blender's data: with the
+    transmittance table gone it fails naming the path, and the group and material of an
+    earlier run are left as they were."""
+    _bpy()
+    script = _film_folder(tmp_path, materials.SOAP_BUBBLE, "Soap", transmittance=True)
+    probe = tmp_path / "film_probe.py"
+    probe.write_text(
+        "import json, runpy, sys, bpy\n"
+        "runpy.run_path(sys.argv[-2], run_name='__main__')\n"
+        "group = bpy.data.node_groups['Thin Film Soap']\n"
+        "count = len(group.nodes)\n"
+        "import os; os.remove(sys.argv[-1])\n"
+        "try:\n"
+        "    runpy.run_path(sys.argv[-2], run_name='__main__')\n"
+        "    error = None\n"
+        "except FileNotFoundError as e:\n"
+        "    error = str(e)\n"
+        "print('JSON' + json.dumps([error, count, len(group.nodes)]))\n"
+    )
+    t_table = script.parent / "ThinFilm_User_Soap_T.exr"
+    done = subprocess.run(
+        [str(blender.bpy_python()), str(probe), str(script), str(t_table)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    lines = [line for line in done.stdout.splitlines() if line.startswith("JSON")]
+    assert lines, done.stdout[-2000:] + done.stderr[-2000:]
+    error, before, after = json.loads(lines[-1][4:])
+    assert error is not None and str(t_table) in error and "\n" not in error
+    assert before == after > 10

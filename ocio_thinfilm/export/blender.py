@@ -167,12 +167,16 @@ def folder():
     )
 
 
-def table(relative):
-    """The EXR table as an image, reloaded from disk, read as data (Non-Color)."""
+def table_path(relative):
     path = os.path.join(folder(), *relative.split("/"))
     if not os.path.isfile(path):
-        raise FileNotFoundError(NAME + ": no table at " + path)
-    image = bpy.data.images.load(path, check_existing=True)
+        raise FileNotFoundError(NAME + ": no table at " + path + " (nothing was changed)")
+    return path
+
+
+def table(relative):
+    """The EXR table as an image, reloaded from disk, read as data (Non-Color)."""
+    image = bpy.data.images.load(table_path(relative), check_existing=True)
     image.reload()
     for space in ("Non-Color", "Raw", "Utility - Raw", "Data"):
         try:
@@ -198,6 +202,9 @@ def socket(group, in_out, kind, name):
 
 
 def build_group():
+    for relative in (REFLECTANCE, TRANSMITTANCE):
+        if relative is not None:
+            table_path(relative)  # every table is there before anything changes
     group = bpy.data.node_groups.get(NAME)
     if group is None or group.bl_idname != "ShaderNodeTree":
         group = bpy.data.node_groups.new(NAME, "ShaderNodeTree")
