@@ -48,8 +48,9 @@ class Stack:
 
     ``layers`` are (index, thickness_nm) from the incident side; the layer at ``varying``
     has its thickness set by the table (its listed thickness is ignored). An index is a
-    number (constant, ``n + ik`` for absorbing media) or an array over
-    :data:`WAVELENGTHS`-like samples of the wavelengths used.
+    number (constant, ``n + ik`` for absorbing media) or an array with one value per
+    wavelength used: 380 to 780 nm in steps of ``step_nm`` (:func:`film_rgb`; 81 values
+    at the default 5 nm).
     """
 
     incident: Index
