@@ -18,4 +18,9 @@ Not part of the shipped package: a top-level package of the repository, beside
   tests of the browser pages (docs/knobs.html, docs/glsl.md's three.js page).
 - :mod:`.views`: the committed config's views applied the way a host does (OCIO's CPU
   processor), the extreme inputs, colour-science's decoding of display code values.
+- :mod:`.materials`: films' reflectance and transmittance colours from colour-science
+  alone (exact TMM, CMFs, illuminant, RGB colourspaces) and their material tables as
+  EXRs: the truth the renderer tests compare with.
+- :mod:`.blender`: PyPI ``bpy`` in its own venv and the test scene
+  (``blender_scene.py``, run by that venv's Python) of tests/test_blender.py.
 """
