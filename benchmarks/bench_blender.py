@@ -6,7 +6,7 @@ denoising), with a soap-like film on glass (n = 1.33 on 1.5, in air), its thickn
 ramping from 0.05 um at the left to 0.95 um at the right (and, for two more rows, from
 1 um to 3 um):
 
-- **ours**: the script of :func:`ocio_thinfilm.export.blender.blender_script` over tables
+- **ours**: the script of :func:`ocio_thinfilm.export.hosts.blender.blender_script` over tables
   made by :mod:`evaluation.materials` (colour-science's exact TMM, 256 x 128 over
   0-1 um; for the thicker films 768 x 128 over 0-3 um);
 - **Principled**: Blender's Principled BSDF, black base, IOR 1.5, ``Thin Film IOR`` 1.33,

@@ -170,7 +170,7 @@ def render_film(
     thickness ramps over ``ramp_um`` from object x = -1 to +1.
     """
     from evaluation import materials
-    from ocio_thinfilm.export.blender import blender_name
+    from ocio_thinfilm.export.hosts.blender import blender_name
 
     script = materials.write_film_folder(
         Path(folder) / key, stack, key, range_um, *table_size, transmittance=transmittance

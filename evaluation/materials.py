@@ -207,9 +207,9 @@ def write_film_folder(
     transmittance: bool = False,
 ) -> Path:
     """Write ``ThinFilm_User_<key>_R.exr`` (and ``_T.exr``) and the Blender script
-    ``ThinFilm_User_<key>.py`` (:func:`ocio_thinfilm.export.blender.blender_script`)
+    ``ThinFilm_User_<key>.py`` (:func:`ocio_thinfilm.export.hosts.blender.blender_script`)
     into ``folder``; return the script's path."""
-    from ocio_thinfilm.export.blender import blender_script
+    from ocio_thinfilm.export.hosts.blender import blender_script
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)

@@ -1,4 +1,4 @@
-"""The film as a Blender material (:mod:`ocio_thinfilm.export.blender`), rendered.
+"""The film as a Blender material (:mod:`ocio_thinfilm.export.hosts.blender`), rendered.
 
 The tables come from :mod:`evaluation.materials` (colour-science's transfer-matrix method,
 CMFs, D65 and BT.709: nothing of the package), the renders from PyPI ``bpy``
@@ -21,7 +21,7 @@ import pytest
 
 from evaluation import blender, materials
 from ocio_thinfilm.checks import ParameterError
-from ocio_thinfilm.export.blender import blender_name, blender_script
+from ocio_thinfilm.export.hosts.blender import blender_name, blender_script
 
 #: The renders' tables (evaluation.blender.render_film) are 256 x 128 over 0-1 um: their
 #: bilinear lookup is within DeltaE2000 0.52 of the exact film at the test's pixels,
@@ -69,7 +69,6 @@ def _film_folder(tmp_path, stack, key, *, transmittance=False):
         (("Soap", "a_R.exr", None, (1, 1)), "range_um"),
         (("Soap", "a_R.exr", None, (-0.1, 1)), "range_um"),
         (("Soap", "a_R.exr", None, (0, float("inf"))), "range_um"),
-        (("Soap", "a_R.exr", None, "ab"), "range_um"),
     ],
 )
 def test_blender_script_names_the_bad_parameter(arguments, parameter):
@@ -77,6 +76,11 @@ def test_blender_script_names_the_bad_parameter(arguments, parameter):
         blender_script(*arguments)
     assert error.value.parameter == parameter
     assert "\n" not in str(error.value)
+
+
+def test_blender_script_refuses_a_range_that_is_no_pair_of_numbers():
+    with pytest.raises(TypeError, match="range_um"):
+        blender_script("Soap", "a_R.exr", None, "ab")
 
 
 def test_blender_script_is_python_with_the_constants():

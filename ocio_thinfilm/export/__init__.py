@@ -12,8 +12,8 @@ objects).
 - :mod:`.knob_page` -- ``docs/knobs.html``, a WebGL2 page that draws test colours
   through the exported GLSL, to choose the compression's knobs (its style sheet and
   script: :mod:`.knob_page_script`);
-- :mod:`.blender` -- a film's material tables as a Blender node group and material: the
-  Python script Blender runs;
+- :mod:`.hosts` -- a film's material tables in renderers: a Blender script, a three.js
+  module, a MaterialX document;
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.

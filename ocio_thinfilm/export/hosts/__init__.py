@@ -3,6 +3,8 @@
 Each writer takes only the table's file names and numbers (the table itself:
 ``export material``).
 
+- :mod:`.blender` -- a Python script Blender runs: the film's node group and material
+  (Cycles, EEVEE);
 - :mod:`.three` -- an ES module for three.js that turns a ``MeshPhysicalMaterial`` into
   the film;
 - :mod:`.materialx` -- a MaterialX 1.39 document: a node graph reading the table by

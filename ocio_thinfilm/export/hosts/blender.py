@@ -34,11 +34,11 @@ keep doing so) and reloads the images from disk; it touches no other data.
 
 from __future__ import annotations
 
-import math
 import os
 from pathlib import PurePosixPath
 
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.export.hosts import thickness_range
 
 __all__ = ["blender_script", "blender_name"]
 
@@ -118,14 +118,7 @@ def blender_script(
     transmittance = (
         None if transmittance_exr is None else _relative("transmittance_exr", transmittance_exr)
     )
-    try:
-        lo, hi = (float(v) for v in range_um)
-    except (TypeError, ValueError):
-        raise ParameterError(
-            "range_um", f" must be two numbers (lo, hi) in micrometres, got {range_um!r}"
-        ) from None
-    if not (math.isfinite(lo) and math.isfinite(hi) and 0 <= lo < hi):
-        raise ParameterError("range_um", f" must satisfy 0 <= lo < hi, got ({lo}, {hi})")
+    lo, hi = thickness_range(range_um)
     from ocio_thinfilm import __version__
 
     head = (
