@@ -160,8 +160,8 @@ def commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> None
     existing one is locked (``flock``) and changed file by file so that it always holds
     complete files that load: the marker first lists the old and the new files, then the
     files are renamed (the claim's ``last`` ones at the end), the previous run's files
-    that this one does not write are removed (kept with ``keep_others``), and the marker is rewritten to list
-    exactly the new files. The stage is removed in the end.
+    that this one does not write are removed (kept with ``keep_others``), and the marker
+    is rewritten to list exactly the files there. The stage is removed in the end.
 
     Parameters
     ----------

@@ -405,9 +405,7 @@ def atomic_directory(
         Naming ``parameter``, if ``path`` may not be written (see
         :func:`~ocio_thinfilm.io.ownership.claim_directory`).
     """
-    claim = ownership.claim_directory(
-        path, parameter=parameter, last=last, keep_others=keep_others
-    )
+    claim = ownership.claim_directory(path, parameter=parameter, last=last, keep_others=keep_others)
     with transaction() as tx:
         yield tx.directory(claim)
 
