@@ -80,10 +80,11 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--samples", type=int, default=400)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--film", action="append", help="only these films (keys)")
     args = parser.parse_args()
     fs = films.read_films(ROOT / "docs" / "films.toml")
     thick = dataclasses.replace(fs["SoapFilm"], key="Soap10um", range_um=(0.0, 10.0))
-    chosen = [*fs.values(), thick]
+    chosen = [f for f in (*fs.values(), thick) if not args.film or f.key in args.film]
     rng = np.random.default_rng(args.seed)
     print("Delta E 2000 of bilinear lookups against the exact film (p99 / max)")
     for film in chosen:

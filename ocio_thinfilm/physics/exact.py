@@ -408,10 +408,10 @@ def _rouard(
         out += 0.5 * np.abs(r) ** 2
         if through is not None and t is not None:
             n0, ns, c0, cs = media[0], media[-1], cosines[0], cosines[-1]
-            if polarisation == 0:
-                flux = np.real(ns * cs) / np.real(n0 * c0)
-            else:
-                flux = np.real(ns * np.conj(cs)) / np.real(n0 * np.conj(c0))
+            conj = np.conj if polarisation == 1 else np.asarray
+            num, den = np.broadcast_arrays(np.real(ns * conj(cs)), np.real(n0 * conj(c0)))
+            # grazing incidence (cos = 0) carries no power into the stack: T = 0
+            flux = np.divide(num, den, out=np.zeros(num.shape), where=den > 0)
             through += 0.5 * np.broadcast_to(flux, shape) * np.abs(t) ** 2
     # |r|^2 <= 1; rounding can leave 1e-16 outside
     return np.clip(out, 0.0, 1.0), None if through is None else np.clip(through, 0.0, 1.0)
