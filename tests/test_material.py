@@ -146,7 +146,7 @@ def test_R_plus_T_is_one_for_a_lossless_stack_and_A_is_beer_lambert():
         kz = np.sqrt((n + 1j * k) ** 2 - (n * np.sin(np.deg2rad(theta))) ** 2)
         beer = np.exp(-4 * np.pi * kz.imag * 2000.0 / wl)
         np.testing.assert_allclose(T[0], beer, rtol=2e-3)
-        assert R.max() < 1e-4
+        assert R.max() < 2e-3
 
 
 def test_transmittance_matches_tmm_through_an_absorbing_layer():
