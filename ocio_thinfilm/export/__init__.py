@@ -12,6 +12,8 @@ objects).
 - :mod:`.knob_page` -- ``docs/knobs.html``, a WebGL2 page that draws test colours
   through the exported GLSL, to choose the compression's knobs (its style sheet and
   script: :mod:`.knob_page_script`);
+- :mod:`.material` -- a film as a renderer's material: its reflectance (and
+  transmittance) over thickness x view angle as float EXRs (``export material``);
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.
