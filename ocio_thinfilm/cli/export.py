@@ -334,7 +334,7 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         dest="subcommand",
         metavar="TABLE",
         required=True,
-        help="film, material, morpho, clip, view or shader",
+        help="film, morpho, clip, view, shader or material",
     )
     table_display = (
         f"display gamut ({', '.join(registry.DISPLAYS)}): clipped display-linear RGB instead of XYZ"
@@ -371,45 +371,6 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     )
     f.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
     f.set_defaults(func=_run_film)
-
-    mat = kinds.add_parser(
-        "material",
-        help="a film of a film file as a view-dependent material: R (and T) over "
-        "thickness x cos theta, float EXR",
-        description="Write a film's unpolarised reflectance (and, for a free-standing "
-        "film, transmittance) over its thickness range (x) and the cosine of the view "
-        "angle (y) as float OpenEXR images in a scene-linear space, for renderers "
-        "(see docs/materials.md).",
-    )
-    mat.add_argument(
-        "--films", required=True, metavar="FILE", help="a film file (TOML, see docs/films.md)"
-    )
-    mat.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
-    mat.add_argument(
-        "--out",
-        "-o",
-        required=True,
-        metavar="DIR",
-        help="output directory (created if missing; files this tool did not write are "
-        "never replaced)",
-    )
-    from ocio_thinfilm.export.material import DEFAULT_SPACE
-
-    mat.add_argument(
-        "--space",
-        default=DEFAULT_SPACE,
-        metavar="SPACE",
-        help=f"scene-linear space of the RGB ({', '.join(registry.SCENE_LINEAR_SPACES)}; "
-        f"default {DEFAULT_SPACE})",
-    )
-    mat.add_argument(
-        "--size",
-        default=None,
-        metavar="WxH",
-        help="texels along thickness x cos theta, e.g. 256x64 (default: measured per film, "
-        "docs/materials.md)",
-    )
-    mat.set_defaults(func=_run_material)
 
     m = kinds.add_parser(
         "morpho",
@@ -484,6 +445,45 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     _add_view_options(s, default_source=registry.REFERENCE)
     _add_knob_options(s, "the code's defaults (GLSL uniforms, DCTL sliders)")
     s.set_defaults(func=_run_shader)
+
+    mat = kinds.add_parser(
+        "material",
+        help="a film of a film file as a view-dependent material: R (and T) over "
+        "thickness x cos theta, float EXR",
+        description="Write a film's unpolarised reflectance (and, for a free-standing "
+        "film, transmittance) over its thickness range (x) and the cosine of the view "
+        "angle (y) as float OpenEXR images in a scene-linear space, for renderers "
+        "(see docs/materials.md).",
+    )
+    mat.add_argument(
+        "--films", required=True, metavar="FILE", help="a film file (TOML, see docs/films.md)"
+    )
+    mat.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
+    mat.add_argument(
+        "--out",
+        "-o",
+        required=True,
+        metavar="DIR",
+        help="output directory (created if missing; files this tool did not write are "
+        "never replaced)",
+    )
+    from ocio_thinfilm.export.material import DEFAULT_SPACE
+
+    mat.add_argument(
+        "--space",
+        default=DEFAULT_SPACE,
+        metavar="SPACE",
+        help=f"scene-linear space of the RGB ({', '.join(registry.SCENE_LINEAR_SPACES)}; "
+        f"default {DEFAULT_SPACE})",
+    )
+    mat.add_argument(
+        "--size",
+        default=None,
+        metavar="WxH",
+        help="texels along thickness x cos theta, e.g. 256x64 (default: measured per film, "
+        "docs/materials.md)",
+    )
+    mat.set_defaults(func=_run_material)
 
 
 def _add_view_options(p: argparse.ArgumentParser, default_source: str | None = None) -> None:
