@@ -19,11 +19,10 @@ import sys
 import tempfile
 from pathlib import Path
 
-from evaluation import browser, three_film
-from evaluation.film_table import write_table
+from evaluation import browser, materials, three_film
 from ocio_thinfilm.export.hosts.three import three_module
 
-STACK = (1.0, 1.33, 1.0)
+STACK = materials.SOAP_BUBBLE  # n = 1.33 in air
 RANGE_UM = (0.0, 1.0)
 SIZE = 512
 
@@ -34,7 +33,10 @@ def _run(chromium: str, three: Path, draw: str, frames: int) -> float:
     site = tmp / "site"
     module = three_module("Soap", "Soap_R.exr", RANGE_UM)
     three_film.write_site(site, three, module, SIZE, [0.4], frames + 1)
-    write_table(site / "Soap_R.exr", STACK, RANGE_UM, 64, 32)
+    rgb = materials.table(STACK, RANGE_UM, 64, 32)
+    materials.write_table(
+        site / "Soap_R.exr", rgb, key="Soap", quantity="reflectance", range_um=RANGE_UM
+    )
     with browser.serve(site) as url:
         dom, stderr, seconds = browser.dump_dom(
             chromium,

@@ -53,6 +53,8 @@ __all__ = ["TABLE_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap"]
 TABLE_BITS = 32
 #: Values are rounded to this many significant bits before quantisation (:func:`snap`).
 SNAP_BITS = 36
+#: Largest product array (elements) :func:`matmul` forms at once.
+_ACCUMULATE_SIZE = 1 << 22
 
 
 def matmul(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
@@ -89,9 +91,15 @@ def matmul(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
     column = B.ndim == 1
     if column:
         B = B[:, None]
-    out = A[..., 0, None] * B[0]
-    for k in range(1, B.shape[0]):
-        out = out + A[..., k, None] * B[k]
+    if A.size * B.shape[1] <= _ACCUMULATE_SIZE:
+        # the same products summed in the same order by one ufunc call (add.accumulate
+        # is sequential, never pairwise): the loop's bits, without its per-k overhead
+        products = A[..., :, None] * B
+        out = np.add.accumulate(products, axis=-2)[..., -1, :]
+    else:
+        out = A[..., 0, None] * B[0]
+        for k in range(1, B.shape[0]):
+            out = out + A[..., k, None] * B[k]
     return out[..., 0] if column else out
 
 

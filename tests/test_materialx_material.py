@@ -5,7 +5,7 @@ GLSL compiles (glslang's ``glslangValidator``, and Mesa through moderngl) and, d
 Mesa as MaterialX's viewer would (the table bound with clamp-to-edge, linear filtering,
 v = 0 at its bottom row; a uniform white lat-long environment), a mirror sphere shows
 the exact reflectance at each pixel's angle: colour-science's transfer matrices, CIE
-1931 2°, D65, linear sRGB (:mod:`evaluation.film_table`), not the package's physics.
+1931 2°, D65, linear sRGB (:mod:`evaluation.materials`), not the package's physics.
 
 Skips, with the reason, without ``materialx``, glslang or a headless OpenGL context. The
 OSL code is generated, not compiled (no ``oslc`` here).
@@ -20,14 +20,14 @@ import subprocess
 import numpy as np
 import pytest
 
-from evaluation.film_table import film_rgb, table_axes
+from evaluation import materials
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.export.hosts.materialx import materialx_document
 
 mx = pytest.importorskip("MaterialX", reason="no PyPI materialx (a test-only dependency)")
 
 #: A soap film (water, n = 1.33) in air, its table over 0.2-0.7 µm.
-STACK = (1.0, 1.33, 1.0)
+STACK = materials.SOAP_BUBBLE  # n = 1.33 in air
 RANGE_UM = (0.2, 0.7)
 TABLE = (128, 128)  # (width: thickness, height: cos θ)
 THICKNESS = 0.61
@@ -161,15 +161,14 @@ def _render(ctx, sources, table):
 
 def test_the_glsl_draws_the_exact_reflectance_on_mesa(gl):
     sources = _generate("glsl")
-    thickness, cos_theta = table_axes(RANGE_UM, *TABLE)
-    table = film_rgb(STACK, thickness, cos_theta, "sRGB")  # row 0: cos θ near 0
+    table = materials.table(STACK, RANGE_UM, *TABLE)  # row 0: cos θ near 0
     image = _render(gl, sources, table)
     centres = (np.arange(SIZE) + 0.5) / SIZE * 2.0 - 1.0
     x, y = np.meshgrid(centres, centres)
     radius = np.hypot(x, y)
     inside = radius <= RADIUS
     grid = np.linspace(0.0, 1.0, 4097)
-    exact = film_rgb(STACK, np.array([THICKNESS]), grid, "sRGB")[:, 0]
+    exact = materials.film_rgb(STACK, THICKNESS, grid)
     cos = np.sqrt(1.0 - radius[inside] ** 2)
     truth = np.stack([np.interp(cos, grid, exact[:, k]) for k in range(3)], axis=1)
     truth = np.maximum(truth, 0.0)  # the GLSL's BSDF clamps negative (out-of-gamut) values

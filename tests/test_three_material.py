@@ -4,8 +4,8 @@ white environment, orthographic camera, in headless Chromium (WebGL2 on SwiftSha
 three.js from npm (:func:`evaluation.browser.install_three`). Every pixel away from the
 silhouette is held, through three.js's sRGB output, to the exact reflectance at that
 pixel's angle: colour-science's transfer matrices (s and p averaged), CIE 1931 2°, D65,
-sRGB (:mod:`evaluation.film_table`), never the package's own physics. The table the page
-loads is written by :mod:`evaluation.film_table` in the film-as-material layout.
+sRGB (:mod:`evaluation.materials`), never the package's own physics. The table the page
+loads is written by :mod:`evaluation.materials` in the film-as-material layout.
 
 Skips, with the reason, without Chromium or where three.js cannot be installed.
 """
@@ -20,13 +20,12 @@ import colour
 import numpy as np
 import pytest
 
-from evaluation import browser, three_film
-from evaluation.film_table import film_rgb, write_table
+from evaluation import browser, materials, three_film
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.export.hosts.three import three_module
 
 #: A soap film (water, n = 1.33) in air, its table over 0.2-0.7 µm.
-STACK = (1.0, 1.33, 1.0)
+STACK = materials.SOAP_BUBBLE  # n = 1.33 in air
 RANGE_UM = (0.2, 0.7)
 TABLE = (128, 128)  # (width: thickness, height: cos θ)
 THICKNESSES = (0.3, 0.61)
@@ -48,7 +47,7 @@ def _exact_codes(thickness, cos_theta):
     """sRGB codes (0-1) of the film's exact reflectance at each cos θ (linear in cos θ
     between 4097 exact values: < 1e-5 off)."""
     grid = np.linspace(0.0, 1.0, 4097)
-    exact = film_rgb(STACK, np.array([thickness]), grid)[:, 0]
+    exact = materials.film_rgb(STACK, thickness, grid)
     linear = np.stack([np.interp(cos_theta, grid, exact[:, k]) for k in range(3)], axis=1)
     return colour.cctf_encoding(np.clip(linear, 0.0, 1.0), "sRGB")
 
@@ -57,7 +56,10 @@ def test_the_mirror_sphere_shows_the_exact_reflectance(chromium, three, tmp_path
     site = tmp_path / "site"
     module = three_module("Soap", "Soap_R.exr", RANGE_UM)
     three_film.write_site(site, three, module, SIZE, THICKNESSES)
-    write_table(site / "Soap_R.exr", STACK, RANGE_UM, *TABLE)
+    rgb = materials.table(STACK, RANGE_UM, *TABLE)
+    materials.write_table(
+        site / "Soap_R.exr", rgb, key="Soap", quantity="reflectance", range_um=RANGE_UM
+    )
     with browser.serve(site) as url:
         dom, stderr, _ = browser.dump_dom(
             chromium, url + "index.html", tmp_path / "profile", "--window-size=400,400"

@@ -6,6 +6,8 @@ own ``--help``:
 - ``export film`` -- the thickness table of a built-in film kind, or a film of a film
   file (``--films FILE --film KEY``), or that film's swatches and spectra as CSV
   (``--swatches``, ``--spectra``);
+- ``export material`` -- a film of a film file as a renderer's material: its
+  reflectance (and transmittance) over thickness x view angle, float EXRs;
 - ``export morpho`` -- the Morpho angle table;
 - ``export clip`` -- the constant-lightness clip of a display, a 3D LUT;
 - ``export view`` -- a display/view of the config, from one of its colour spaces;
@@ -15,7 +17,8 @@ Options are parsed and typed by argparse here; the library functions
 (:func:`ocio_thinfilm.export.bake.bake`, :func:`ocio_thinfilm.export.merged.bake_into`,
 :func:`ocio_thinfilm.export.files.export_lut`,
 :func:`ocio_thinfilm.export.view.export_view`,
-:func:`ocio_thinfilm.export.shader.export_shader`) check what the values allow.
+:func:`ocio_thinfilm.export.shader.export_shader`,
+:func:`ocio_thinfilm.export.material.export_material`) check what the values allow.
 """
 
 from __future__ import annotations
@@ -213,6 +216,18 @@ def _run_film_tables(args: argparse.Namespace) -> int:
     return 0
 
 
+def _run_material(args: argparse.Namespace) -> int:
+    """``export material``: a film's reflectance (and transmittance) tables as EXRs."""
+    from ocio_thinfilm.export.film_files import pick_film
+    from ocio_thinfilm.export.material import export_material, host_files
+
+    film = pick_film(args.films, args.film)
+    hosts = host_files(film, args.space)
+    for path in export_material(film, args.out, space=args.space, size=args.size, hosts=hosts):
+        print(f"wrote {path}")
+    return 0
+
+
 def _run_view(args: argparse.Namespace) -> int:
     """``export view``: a display/view of the config as one LUT file."""
     from ocio_thinfilm.export.view import export_view
@@ -348,7 +363,7 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         dest="subcommand",
         metavar="TABLE",
         required=True,
-        help="film, morpho, clip, view or shader",
+        help="film, morpho, clip, view, shader or material",
     )
     table_display = (
         f"display gamut ({', '.join(registry.DISPLAYS)}): clipped display-linear RGB instead of XYZ"
@@ -483,6 +498,45 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     _add_view_options(s, default_source=registry.REFERENCE)
     _add_knob_options(s, "the code's defaults (GLSL uniforms, DCTL sliders)")
     s.set_defaults(func=_run_shader)
+
+    mat = kinds.add_parser(
+        "material",
+        help="a film of a film file as a view-dependent material: R (and T) over "
+        "thickness x cos theta, float EXR",
+        description="Write a film's unpolarised reflectance (and, for a free-standing "
+        "film, transmittance) over its thickness range (x) and the cosine of the view "
+        "angle (y) as float OpenEXR images in a scene-linear space, for renderers "
+        "(see docs/materials.md).",
+    )
+    mat.add_argument(
+        "--films", required=True, metavar="FILE", help="a film file (TOML, see docs/films.md)"
+    )
+    mat.add_argument("--film", default=None, metavar="KEY", help="the film of --films")
+    mat.add_argument(
+        "--out",
+        "-o",
+        required=True,
+        metavar="DIR",
+        help="output directory (created if missing; files this tool did not write are "
+        "never replaced)",
+    )
+    from ocio_thinfilm.export.material import DEFAULT_SPACE
+
+    mat.add_argument(
+        "--space",
+        default=DEFAULT_SPACE,
+        metavar="SPACE",
+        help=f"scene-linear space of the RGB ({', '.join(registry.SCENE_LINEAR_SPACES)}; "
+        f"default {DEFAULT_SPACE})",
+    )
+    mat.add_argument(
+        "--size",
+        default=None,
+        metavar="WxH",
+        help="texels along thickness x cos theta, e.g. 256x64 (default: measured per film, "
+        "docs/materials.md)",
+    )
+    mat.set_defaults(func=_run_material)
 
 
 def _add_view_options(p: argparse.ArgumentParser, default_source: str | None = None) -> None:

@@ -14,6 +14,8 @@ objects).
   script: :mod:`.knob_page_script`);
 - :mod:`.hosts` -- a film's material tables in renderers: a Blender script, a three.js
   module, a MaterialX document;
+- :mod:`.material` -- a film as a renderer's material: its reflectance (and
+  transmittance) over thickness x view angle as float EXRs (``export material``);
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.

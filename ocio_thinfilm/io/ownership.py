@@ -49,11 +49,17 @@ class Claim:
         The parameter that named it (for messages).
     last : iterable of str, optional
         Relative paths to rename after all others (e.g. ``config.ocio``).
+    keep_others : bool, optional
+        Keep the files of earlier runs that this one does not write (a directory that
+        collects several runs' outputs, e.g. one material per film); default ``False``.
     """
 
-    def __init__(self, path: Path, exists: bool, owned: set, parameter: str, last=()):
+    def __init__(
+        self, path: Path, exists: bool, owned: set, parameter: str, last=(), keep_others=False
+    ):
         self.path, self.exists, self.owned, self.parameter = path, exists, owned, parameter
         self.last = tuple(last)
+        self.keep_others = bool(keep_others)
 
 
 def _read_marker(path: Path) -> set:
@@ -74,6 +80,7 @@ def claim_directory(
     *,
     parameter: str = "out",
     last: Iterable[str] = (),
+    keep_others: bool = False,
 ) -> Claim:
     """Check that ``path`` may be (re)written as an output directory of this tool.
 
@@ -89,6 +96,8 @@ def claim_directory(
         The caller's name for ``path``, for the error messages (default ``"out"``).
     last : iterable of str, optional
         Relative paths to rename after all others (e.g. ``config.ocio``).
+    keep_others : bool, optional
+        Keep the earlier runs' files that this run does not write (see :class:`Claim`).
 
     Returns
     -------
@@ -115,7 +124,7 @@ def claim_directory(
         raise ParameterError(parameter, f" {p}: exists and is not a directory")
     if not p.exists():
         destinations.check_writable(p)
-        return Claim(p, False, set(), parameter, last)
+        return Claim(p, False, set(), parameter, last, keep_others)
     destinations.check_writable(p)
     temporaries.clean_stale(p)
     names = [n for n in os.listdir(p) if not n.startswith(temporaries.TMP_PREFIX)]
@@ -133,7 +142,7 @@ def claim_directory(
             f"by ocio-thinfilm (no {MARKER}); give a new or "
             "empty directory",
         )
-    return Claim(p, True, set(owned), parameter, last)
+    return Claim(p, True, set(owned), parameter, last, keep_others)
 
 
 def _write_marker(directory: Path, files, umask) -> None:
@@ -151,8 +160,8 @@ def commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> None
     existing one is locked (``flock``) and changed file by file so that it always holds
     complete files that load: the marker first lists the old and the new files, then the
     files are renamed (the claim's ``last`` ones at the end), the previous run's files
-    that this one does not write are removed, and the marker is rewritten to list
-    exactly the new files. The stage is removed in the end.
+    that this one does not write are removed (kept with ``keep_others``), and the marker
+    is rewritten to list exactly the files there. The stage is removed in the end.
 
     Parameters
     ----------
@@ -215,7 +224,9 @@ def commit_directory(claim: Claim, stage: Path, files: list, umask: int) -> None
         for d in {(claim.path / r).parent for r in order}:
             durable.fsync_dir(d)
         faults.fault_point("after-renames")
-        # 3. files of the previous run that this one does not write
+        # 3. files of the previous run that this one does not write (unless kept)
+        if claim.keep_others:
+            new = old | new
         for rel in sorted(old - new):
             target = claim.path / rel
             if target.is_file() or target.is_symlink():

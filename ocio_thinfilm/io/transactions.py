@@ -374,6 +374,7 @@ def atomic_directory(
     *,
     parameter: str = "out",
     last: Iterable[str] = (),
+    keep_others: bool = False,
 ) -> Iterator[Path]:
     """Write a directory's files together: yield a staging directory for ``path``.
 
@@ -390,6 +391,8 @@ def atomic_directory(
         The caller's name for ``path``, for the error messages (default ``"out"``).
     last : iterable of str, optional
         Relative paths to rename after all others (e.g. ``config.ocio``).
+    keep_others : bool, optional
+        Keep the files of earlier runs that this one does not write.
 
     Yields
     ------
@@ -402,7 +405,7 @@ def atomic_directory(
         Naming ``parameter``, if ``path`` may not be written (see
         :func:`~ocio_thinfilm.io.ownership.claim_directory`).
     """
-    claim = ownership.claim_directory(path, parameter=parameter, last=last)
+    claim = ownership.claim_directory(path, parameter=parameter, last=last, keep_others=keep_others)
     with transaction() as tx:
         yield tx.directory(claim)
 

@@ -3,6 +3,8 @@
 - :mod:`.ocio_ops` -- the one implementation of each OCIO op helper (a leaf);
 - :mod:`.tables` -- the 1D thin-film tables (pixel value -> exact XYZ);
 - :mod:`.film_tables` -- the tables of users' films (physical thickness -> XYZ);
+- :mod:`.material_tables` -- a film's colour over thickness x view angle (the
+  material tables of ``export material``);
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
 - :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
 - :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its
@@ -19,6 +21,7 @@ __all__ = [
     "ocio_ops",
     "tables",
     "film_tables",
+    "material_tables",
     "display_transforms",
     "grid",
     "node_fit",

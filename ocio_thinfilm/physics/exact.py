@@ -4,7 +4,9 @@
   the exact s/p Fresnel amplitudes (absorbing and evanescent layers included),
   band-limited like the paper's models (:mod:`ocio_thinfilm.physics.sampling`);
 - :func:`transfer_matrix_reflectance` -- a stack of layers by transfer matrices
-  (Byrnes 2016, as colour-science's ``multilayer_tmm``), evaluated as a recursion.
+  (Byrnes 2016, as colour-science's ``multilayer_tmm``), evaluated as a recursion;
+- :func:`stack_reflectance`, :func:`stack_transmittance` -- the same against one
+  layer's thickness with dispersive indices (and the power transmitted).
 
 Lengths in nanometres, angles in degrees; the wavelength grid is the last axis of the
 result.
@@ -29,6 +31,7 @@ __all__ = [
     "airy_reflectance",
     "transfer_matrix_reflectance",
     "stack_reflectance",
+    "stack_transmittance",
     "adequate_step",
     "interface_amplitudes",
 ]
@@ -357,33 +360,61 @@ def transfer_matrix_reflectance(
         np.exp(2j * (2.0 * np.pi / wl) * media[j] * cosines[j] * depths[j - 1])
         for j in range(1, len(media) - 1)
     ]
-    return _rouard(media, cosines, z, shape)
+    return _rouard(media, cosines, z, shape)[0]
 
 
 def _rouard(
-    media: list[np.ndarray], cosines: list[np.ndarray], z: list[np.ndarray], shape: tuple
-) -> np.ndarray:
-    """Return the unpolarised reflectance of the stack ``media`` (incident, layers, substrate).
+    media: list[np.ndarray],
+    cosines: list[np.ndarray],
+    z: list[np.ndarray],
+    shape: tuple,
+    transmit: bool = False,
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Return the unpolarised reflectance (and transmittance) of the stack ``media``.
 
-    The layers' round-trip phasors are ``z``; Rouard's recursion runs from the substrate
-    up, per polarisation (see :func:`transfer_matrix_reflectance`).
+    ``media``: incident medium, layers, substrate; the layers' round-trip phasors are
+    ``z``. Rouard's recursion runs from the substrate up, per polarisation (see
+    :func:`transfer_matrix_reflectance`); with ``transmit`` the transmitted amplitude
+    follows the same recursion, ``t_j = tau_j t_{j+1} sqrt(z_j) / (1 + rho_j r_{j+1}
+    z_j)`` with the Fresnel transmission amplitude ``tau_j`` (Byrnes 2016, Eq. 13 and
+    15), and ``T = Re(n_s cos_s) / Re(n_0 cos_0) |t|^2`` for s and with the conjugate
+    cosines for p (the power flow through a non-absorbing incident medium).
     """
     out = np.zeros(shape)
+    through = np.zeros(shape) if transmit else None
+    roots = [np.sqrt(zj) for zj in z] if transmit else []
     for polarisation in (0, 1):
         rho = [
             _fresnel(media[i], cosines[i], media[i + 1], cosines[i + 1])[polarisation]
             for i in range(len(media) - 1)
         ]
         r = np.broadcast_to(rho[-1], shape).astype(complex)
+        t = np.broadcast_to(1.0 + rho[-1], shape).astype(complex) if transmit else None
+        if transmit and polarisation == 1:  # tau_p = (1 + r_p) n_i / n_j
+            t = t * np.broadcast_to(media[-2] / media[-1], shape)
         for j in range(len(media) - 2, 0, -1):
             a = np.broadcast_to(rho[j - 1], shape).astype(complex)
             rz = r * z[j - 1]
             den = 1.0 + a * rz
             # den = 0 needs |rho| = |r z| = 1 (grazing incidence on an absentee layer):
             # keep the interface's own total reflection there.
-            r = np.divide(a + rz, den, out=a.copy(), where=den != 0)
+            ok = den != 0
+            r = np.divide(a + rz, den, out=a.copy(), where=ok)
+            if t is not None:
+                tau = 1.0 + a
+                if polarisation == 1:
+                    tau = tau * (media[j - 1] / media[j])
+                t = np.divide(tau * t * roots[j - 1], den, out=np.zeros(shape, complex), where=ok)
         out += 0.5 * np.abs(r) ** 2
-    return np.clip(out, 0.0, 1.0)  # |r|^2 <= 1; rounding can leave 1e-16 outside
+        if through is not None and t is not None:
+            n0, ns, c0, cs = media[0], media[-1], cosines[0], cosines[-1]
+            conj = np.conj if polarisation == 1 else np.asarray
+            num, den = np.broadcast_arrays(np.real(ns * conj(cs)), np.real(n0 * conj(c0)))
+            # grazing incidence (cos = 0) carries no power into the stack: T = 0
+            flux = np.divide(num, den, out=np.zeros(num.shape), where=den > 0)
+            through += 0.5 * np.broadcast_to(flux, shape) * np.abs(t) ** 2
+    # |r|^2 <= 1; rounding can leave 1e-16 outside
+    return np.clip(out, 0.0, 1.0), None if through is None else np.clip(through, 0.0, 1.0)
 
 
 def stack_reflectance(
@@ -436,6 +467,71 @@ def stack_reflectance(
     >>> stack_reflectance([1.0, 1.5, 1.0], [0.0], 0, [250.0], [555.0]).round(7).tolist()
     [[0.1215919]]
     """
+    return _stack(n_media, thicknesses, vary, thickness, wavelengths, theta, False)[0]
+
+
+def stack_transmittance(
+    n_media: npt.ArrayLike,
+    thicknesses: npt.ArrayLike,
+    vary: int,
+    thickness: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    theta: float = 0.0,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Exact unpolarised reflectance and transmittance of a stack against one layer's thickness.
+
+    The arguments and the reflectance are those of :func:`stack_reflectance`; the
+    transmittance ``(T_s + T_p) / 2`` is the power carried into the substrate, through
+    Rouard's recursion for the transmitted amplitude (Byrnes 2016, Eq. 13-15, 21-22).
+    The incident medium must not absorb (the power flow there is then well defined).
+    For lossless layers ``R + T = 1``; absorbing layers take the rest, ``A = 1 - R - T``.
+
+    Parameters
+    ----------
+    n_media, thicknesses, vary, thickness, wavelengths, theta
+        As :func:`stack_reflectance`.
+
+    Returns
+    -------
+    R, T : numpy.ndarray
+        Each in [0, 1], shape ``thickness.shape + (len(wavelengths),)``.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``n_media``) if the incident medium absorbs, and the errors of
+        :func:`stack_reflectance`.
+
+    References
+    ----------
+    Byrnes, S. J. (2016). Multilayer optical calculations. arXiv:1603.02720.
+
+    Examples
+    --------
+    A 250 nm film of index 1.5 in air at 555 nm: R as colour-science documents, and
+    T = 1 - R:
+
+    >>> R, T = stack_transmittance([1.0, 1.5, 1.0], [0.0], 0, [250.0], [555.0])
+    >>> R.round(7).tolist(), (R + T).round(12).tolist()
+    ([[0.1215919]], [[1.0]])
+    """
+    if np.any(np.asarray(n_media)[0].imag != 0):
+        raise ParameterError("n_media", " must start with a non-absorbing incident medium (k = 0)")
+    R, T = _stack(n_media, thicknesses, vary, thickness, wavelengths, theta, True)
+    assert T is not None
+    return R, T
+
+
+def _stack(
+    n_media: npt.ArrayLike,
+    thicknesses: npt.ArrayLike,
+    vary: int,
+    thickness: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    theta: float,
+    transmit: bool,
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Check the arguments of :func:`stack_reflectance` and run Rouard's recursion."""
     wl = check_wavelengths(wavelengths)
     n = np.asarray(n_media)
     if n.dtype.kind not in "biufc":
@@ -465,7 +561,7 @@ def stack_reflectance(
         else:
             z.append(np.ones(wl.shape, complex))  # an absent layer: a zero path
     shape = d.shape + wl.shape
-    return _rouard(media, cosines, z, shape)
+    return _rouard(media, cosines, z, shape, transmit)
 
 
 def adequate_step(

@@ -586,7 +586,9 @@ def _sharpness(film: Film) -> float:
     return float(max(np.abs(above[p] * below[p]).max() for p in (0, 1)))
 
 
-def film_wavelengths(film: Film, max_thickness_nm: float | None = None) -> np.ndarray:
+def film_wavelengths(
+    film: Film, max_thickness_nm: float | None = None, max_sharpness: float = 1.0
+) -> np.ndarray:
     """Return the wavelength grid (nm) a film's spectra are evaluated on.
 
     The paper model: 360-780 nm in 5 nm steps, band-limited like the built-in tables
@@ -601,6 +603,9 @@ def film_wavelengths(film: Film, max_thickness_nm: float | None = None) -> np.nd
         The film.
     max_thickness_nm : float, optional
         The thickest the varying layer gets.
+    max_sharpness : float, optional
+        A cap on the fringes' sharpness the step resolves (the material tables' measured
+        choice, :mod:`ocio_thinfilm.lut.material_tables`).
 
     Returns
     -------
@@ -612,7 +617,7 @@ def film_wavelengths(film: Film, max_thickness_nm: float | None = None) -> np.nd
         return wavelength_grid(start, 780.0, 5.0)
     top = film.range_um[1] * 1000.0 if max_thickness_nm is None else float(max_thickness_nm)
     step = exact.adequate_step(
-        _optical_path_nm(film, top), VISIBLE_NM[0], sharpness=_sharpness(film)
+        _optical_path_nm(film, top), VISIBLE_NM[0], sharpness=min(_sharpness(film), max_sharpness)
     )
     count = int(math.ceil((VISIBLE_NM[1] - VISIBLE_NM[0]) / step)) + 1
     return check_wavelengths(np.linspace(VISIBLE_NM[0], VISIBLE_NM[1], count))

@@ -122,6 +122,10 @@ class SceneSpace:
         Its name in MaterialX's default colour management (MaterialX Specification 1.39,
         "Color Spaces"), for the film tables a MaterialX document reads; ``None``
         (default) where MaterialX has none.
+    threejs : str or None, optional
+        Its name as three.js's working colour space (``THREE.LinearSRGBColorSpace``'s
+        value), for the film tables a three.js module reads; ``None`` (default) where
+        three.js does not work in it.
     """
 
     name: str
@@ -129,6 +133,7 @@ class SceneSpace:
     description: str
     shaper_from_zero: bool = False
     materialx: str | None = None
+    threejs: str | None = None
 
 
 @dataclass(frozen=True)
@@ -246,6 +251,7 @@ SCENE_LINEAR_LIST = (
         colorimetry="Rec.709",
         description="Scene-linear Rec.709 / sRGB primaries, D65",
         materialx="lin_rec709",
+        threejs="srgb-linear",
     ),
     SceneSpace(
         name="Linear P3-D65",

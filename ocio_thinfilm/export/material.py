@@ -1,0 +1,347 @@
+"""``ocio-thinfilm export material``: a film as a view-dependent material table for renderers.
+
+:func:`material_table` evaluates a film (:mod:`ocio_thinfilm.physics.films`) over its
+thickness range and every view angle (:func:`ocio_thinfilm.lut.material_tables.film_angle_XYZ`)
+and converts the colours to a scene-linear RGB space of the registry
+(:func:`ocio_thinfilm.colour.colorimetry.XYZ_to_RGB`); :func:`export_material` writes
+the tables as float OpenEXR images (docs/materials.md):
+
+- ``<stem>_R.exr``: unpolarised reflectance; ``<stem>_T.exr``: transmittance, for a
+  free-standing film (:func:`~ocio_thinfilm.lut.material_tables.free_standing`);
+- x: the varying layer's physical thickness over ``range_um``, column ``i`` of ``W``
+  at ``lo + (i + 0.5) (hi - lo) / W``; y: cos theta in the incident medium, texture
+  row ``j`` of ``H`` (v = 0 at the bottom) at ``(j + 0.5) / H``; a host samples
+  ``u = (t - lo) / (hi - lo)``, ``v = cos theta`` bilinearly with clamp-to-edge;
+- RGB of the space, white = the perfect reflector under the film's illuminant; colours
+  outside the space's gamut keep their negative channels (measured in
+  docs/materials.md: renderers carry them, and the config's views map them at display).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ocio_thinfilm import __version__, registry
+from ocio_thinfilm.checks import ParameterError, as_count
+from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.config.data import ROLES, film_lut_stem
+from ocio_thinfilm.io import StrPath, atomic_directory, write_image
+from ocio_thinfilm.lut import material_tables
+from ocio_thinfilm.physics.films import Film
+
+__all__ = [
+    "DEFAULT_SPACE",
+    "MAX_SIZE",
+    "MaterialTable",
+    "HostWriter",
+    "check_space",
+    "parse_size",
+    "material_table",
+    "host_files",
+    "export_material",
+]
+
+#: The default scene space: the config's scene_linear role.
+DEFAULT_SPACE = ROLES["scene_linear"]
+#: Largest width or height of a table.
+MAX_SIZE = 16384
+#: A fixed EXR timestamp: equal inputs give equal bytes.
+_DATETIME = "2000:01:01 00:00:00"
+
+#: A host writer: (film key, reflectance EXR, transmittance EXR or None, range_um) ->
+#: the text of a file for that host (a Blender script, an ES module, a MaterialX
+#: document).
+HostWriter = Callable[[str, Path, "Path | None", tuple[float, float]], str]
+
+
+@dataclass(frozen=True)
+class MaterialTable:
+    """A film's reflectance (and transmittance) over thickness x cos theta.
+
+    ``reflectance``, ``transmittance``: (H, W, 3) float64 linear RGB of ``space`` in
+    texture row order (row 0 at cos theta = 0.5 / H, v ascending), ``transmittance``
+    None unless the film is free-standing; ``range_um``: the thickness axis' range;
+    ``film``: the film.
+    """
+
+    reflectance: np.ndarray
+    transmittance: np.ndarray | None
+    range_um: tuple[float, float]
+    space: str
+    film: Film
+
+    @property
+    def size(self) -> tuple[int, int]:
+        """(width, height) of the table."""
+        h, w = self.reflectance.shape[:2]
+        return w, h
+
+    def lookup(
+        self, thickness_um: npt.ArrayLike, cos_theta: npt.ArrayLike, quantity: str = "reflectance"
+    ) -> np.ndarray:
+        """Return the table's colour as a host reads it: bilinear, texel-centre, clamp-to-edge.
+
+        Parameters
+        ----------
+        thickness_um, cos_theta : array_like
+            Points (broadcast together).
+        quantity : str, optional
+            ``"reflectance"`` or ``"transmittance"``.
+
+        Returns
+        -------
+        numpy.ndarray
+            RGB, shape ``broadcast shape + (3,)``.
+        """
+        image = self.reflectance if quantity == "reflectance" else self.transmittance
+        if image is None:
+            raise ParameterError("quantity", f" {quantity!r}: the film has no such table")
+        lo, hi = self.range_um
+        t, c = np.broadcast_arrays(np.asarray(thickness_um, float), np.asarray(cos_theta, float))
+        h, w = image.shape[:2]
+        x = np.clip((t - lo) / (hi - lo) * w - 0.5, 0.0, w - 1.0)
+        y = np.clip(c * h - 0.5, 0.0, h - 1.0)
+        x0 = np.minimum(np.floor(x).astype(int), max(w - 2, 0))
+        y0 = np.minimum(np.floor(y).astype(int), max(h - 2, 0))
+        x1, y1 = np.minimum(x0 + 1, w - 1), np.minimum(y0 + 1, h - 1)
+        fx, fy = (x - x0)[..., None], (y - y0)[..., None]
+        top = image[y0, x0] * (1 - fx) + image[y0, x1] * fx
+        bottom = image[y1, x0] * (1 - fx) + image[y1, x1] * fx
+        return top * (1 - fy) + bottom * fy
+
+
+def check_space(space: str) -> str:
+    """Return ``space`` if it is a scene-linear space of the registry.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``space``) naming the scene-linear spaces.
+    """
+    if space not in registry.SCENE_LINEAR_SPACES:
+        raise ParameterError(
+            "space",
+            f" must be a scene-linear space, one of {', '.join(registry.SCENE_LINEAR_SPACES)}; "
+            f"got {space!r}",
+        )
+    return space
+
+
+def parse_size(size: str | tuple[int, int] | None) -> tuple[int, int] | None:
+    """Return a table size ``"WxH"`` (or ``(W, H)``) as two integers in [2, :data:`MAX_SIZE`].
+
+    Examples
+    --------
+    >>> parse_size("256x64"), parse_size(None)
+    ((256, 64), None)
+    """
+    if size is None:
+        return None
+    if isinstance(size, str):
+        m = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", size)
+        if not m:
+            raise ParameterError(
+                "size", f" must be WIDTHxHEIGHT, two integers in [2, {MAX_SIZE}], got {size!r}"
+            )
+        size = (int(m.group(1)), int(m.group(2)))
+    w, h = size
+    return as_count("size", w, 2, MAX_SIZE), as_count("size", h, 2, MAX_SIZE)
+
+
+def material_table(
+    film: Film,
+    *,
+    space: str = DEFAULT_SPACE,
+    width: int | None = None,
+    height: int | None = None,
+) -> MaterialTable:
+    """Return a film's reflectance (and transmittance) table over thickness x cos theta.
+
+    Parameters
+    ----------
+    film : Film
+        The film (:func:`ocio_thinfilm.physics.films.read_films`).
+    space : str, optional
+        A scene-linear space of the registry (default the config's scene_linear).
+    width, height : int, optional
+        Texels along thickness and cos theta, in [2, :data:`MAX_SIZE`] (default
+        :func:`ocio_thinfilm.lut.material_tables.default_resolution`).
+
+    Returns
+    -------
+    MaterialTable
+        The tables in texture row order.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``film``, ``space``, ``width``, ``height``) a film whose incident medium absorbs
+        or whose range has zero width, a space that is not scene-linear, a size out of
+        range.
+    """
+    material_tables.check_film(film)
+    space = check_space(space)
+    w0, h0 = material_tables.default_resolution(film)
+    w = w0 if width is None else as_count("width", width, 2, MAX_SIZE)
+    h = h0 if height is None else as_count("height", height, 2, MAX_SIZE)
+    lo, hi = film.range_um
+    t = material_tables.texel_centres(lo, hi, w)
+    c = material_tables.texel_centres(0.0, 1.0, h)
+    transmit = material_tables.free_standing(film)
+    XYZ_R, XYZ_T = material_tables.film_angle_XYZ(film, t, c, transmittance=transmit)
+    colorimetry_name = registry.SCENE_LINEAR_BY_NAME[space].colorimetry
+    R = colorimetry.XYZ_to_RGB(XYZ_R, colorimetry_name)
+    T = None if XYZ_T is None else colorimetry.XYZ_to_RGB(XYZ_T, colorimetry_name)
+    return MaterialTable(R, T, (lo, hi), space, film)
+
+
+def _attributes(table: MaterialTable, quantity: str) -> dict[str, Any]:
+    film = table.film
+    lo, hi = table.range_um
+    w, h = table.size
+    return {
+        "ImageDescription": (
+            f"{film.name}: {quantity} of {re.sub(r' at [0-9.e+-]+ deg,', ',', film.describe())} "
+            f"in {table.space} "
+            f"(white = the perfect reflector); x: {film.varying.name} thickness "
+            f"{lo:g}-{hi:g} um, column i at lo + (i + 0.5) (hi - lo) / {w}; y: cos theta in "
+            f"the incident medium, texture row j (v = 0 at the bottom) at (j + 0.5) / {h}"
+        ),
+        "DateTime": _DATETIME,
+        "ocio_thinfilm:film": film.key,
+        "ocio_thinfilm:quantity": quantity,
+        "ocio_thinfilm:space": table.space,
+        "ocio_thinfilm:x": "thickness_um",
+        "ocio_thinfilm:x_range": (lo, hi),
+        "ocio_thinfilm:y": "cos_theta",
+        "ocio_thinfilm:y_range": (0.0, 1.0),
+        "ocio_thinfilm:sampling": "texel-centre",
+        "ocio_thinfilm:illuminant": str(
+            getattr(film, "illuminant", colorimetry.DEFAULT_ILLUMINANT)
+        ),
+        "ocio_thinfilm:version": __version__,
+    }
+
+
+def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
+    """Return the host files ``export material`` writes beside a film's tables.
+
+    - ``<stem>.py``: a Python script Blender runs (the node group and material,
+      :func:`ocio_thinfilm.export.hosts.blender.blender_script`; reflection, and
+      transmission for a free-standing film);
+    - ``<stem>.js``: an ES module for three.js
+      (:func:`ocio_thinfilm.export.hosts.three.three_module`), for tables in three.js's
+      working space (linear Rec.709: the registry's ``threejs`` name);
+    - ``<stem>.mtlx``: a MaterialX 1.39 document
+      (:func:`ocio_thinfilm.export.hosts.materialx.materialx_document`), for the spaces
+      MaterialX names.
+
+    Parameters
+    ----------
+    film : Film
+    space : str, optional
+        The tables' scene-linear space (default the config's scene_linear).
+
+    Returns
+    -------
+    dict
+        File name -> :data:`HostWriter`.
+    """
+    from ocio_thinfilm.export.hosts import blender, materialx, three
+
+    stem = film_lut_stem(film)
+    space = check_space(space)
+
+    def blender_file(key, reflectance, transmittance, range_um):
+        t_name = None if transmittance is None else transmittance.name
+        return blender.blender_script(key, reflectance.name, t_name, range_um)
+
+    def three_file(key, reflectance, transmittance, range_um):
+        return three.three_module(key, reflectance, range_um, module_name=f"{stem}.js")
+
+    def materialx_file(key, reflectance, transmittance, range_um):
+        return materialx.materialx_document(key, reflectance, range_um, space=space)
+
+    entry = registry.SCENE_LINEAR_BY_NAME[space]
+    files: dict[str, HostWriter] = {f"{stem}.py": blender_file}
+    if entry.threejs is not None:
+        files[f"{stem}.js"] = three_file
+    if entry.materialx is not None:
+        files[f"{stem}.mtlx"] = materialx_file
+    return files
+
+
+def export_material(
+    film: Film,
+    out_dir: StrPath,
+    *,
+    space: str = DEFAULT_SPACE,
+    size: str | tuple[int, int] | None = None,
+    hosts: Mapping[str, HostWriter] | None = None,
+) -> list[Path]:
+    """Write a film's material tables (and host files) into the directory ``out_dir``.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    out_dir : str or os.PathLike
+        The output directory: created if missing; an existing one must be empty or hold
+        files of earlier runs only (:func:`ocio_thinfilm.io.ownership.claim_directory`,
+        its files from other films are kept).
+    space : str, optional
+        A scene-linear space of the registry (default the config's scene_linear).
+    size : str or tuple of int, optional
+        ``"WxH"`` or ``(W, H)`` (default the measured
+        :func:`~ocio_thinfilm.lut.material_tables.default_resolution`).
+    hosts : mapping, optional
+        File name -> host writer: each is called with the film's key, the paths of the
+        written reflectance and transmittance EXRs (None without one) and ``range_um``,
+        and its text is written to ``out_dir / name`` with the tables (default none).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, together (all or none).
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        The errors of :func:`material_table` and :func:`parse_size` (``size``), and
+        (``out``) an output directory holding files this tool did not write.
+    """
+    dims = parse_size(size)
+    width, height = (None, None) if dims is None else dims
+    table = material_table(film, space=space, width=width, height=height)
+    stem = film_lut_stem(film)
+    images = {f"{stem}_R.exr": ("reflectance", table.reflectance)}
+    if table.transmittance is not None:
+        images[f"{stem}_T.exr"] = ("transmittance", table.transmittance)
+    out = Path(out_dir)
+    paths = {name: out / name for name in images}
+    texts = {}
+    for name, writer in (hosts or {}).items():
+        if Path(name).name != name or name in images:
+            raise ParameterError("hosts", f" {name!r}: must be a new file name without folders")
+        t_path = paths.get(f"{stem}_T.exr")
+        texts[name] = writer(film.key, paths[f"{stem}_R.exr"], t_path, table.range_um)
+    with atomic_directory(out, parameter="out", keep_others=True) as stage:
+        for name, (quantity, pixels) in images.items():
+            # the EXR's first scanline is the top: cos theta descending
+            write_image(
+                stage / name,
+                pixels[::-1],
+                channel_names=("R", "G", "B"),
+                dtype="float",
+                attributes=_attributes(table, quantity),
+            )
+        for name, text in texts.items():
+            (stage / name).write_text(text, encoding="utf-8")
+    return [out / name for name in (*images, *texts)]
