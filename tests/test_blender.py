@@ -207,6 +207,35 @@ def test_cycles_film_on_glass_is_the_exact_reflectance(tmp_path):
     assert de.max() <= 1.0, np.percentile(de, [50, 99, 100])
 
 
+def test_export_material_renders_the_exact_film_in_cycles(tmp_path):
+    """The user's path: a film file, ``ocio-thinfilm export material``, and the Blender
+    script it writes beside the package's own tables (the exact engine), run in Blender:
+    a soap-like film on glass within DeltaE2000 1.0 of colour-science's exact R."""
+    from ocio_thinfilm.cli.main import main as cli_main
+
+    _bpy()
+    films = tmp_path / "films.toml"
+    films.write_text(
+        "[materials.Soapy]\nn = 1.33\n\n[materials.Glass]\nn = 1.5\n\n"
+        '[films.OnGlass]\nstack = ["air", "Soapy", "Glass"]\nrange_um = [0, 1]\n'
+    )
+    out = tmp_path / "materials"
+    argv = ["export", "material", "--films", str(films), "--film", "OnGlass", "--out", str(out)]
+    assert cli_main(argv) == 0
+    scripts = sorted(out.glob("*.py"))
+    assert [p.name for p in scripts] == ["ThinFilm_User_OnGlass.py"]
+    size, ramp = 96, (0.05, 0.95)
+    render = tmp_path / "render.exr"
+    material = {"kind": "script", "script": str(scripts[0]), "name": blender_name("OnGlass")}
+    job = {"engine": "CYCLES", "size": size, "out": str(render), "material": material}
+    blender.render({**job, "thickness_um": list(ramp), "samples": 1})
+    x, _, disc, cos_theta = blender.sphere_pixels(size)
+    thickness = ramp[0] + (x + 1) / 2 * (ramp[1] - ramp[0])
+    exact = materials.film_rgb(materials.SOAP_ON_GLASS, thickness[disc], cos_theta[disc])
+    de = materials.delta_e(blender.read_exr(render)[disc], np.clip(exact, 0, None))
+    assert de.max() <= 1.0, np.percentile(de, [50, 99, 100])
+
+
 def test_cycles_free_standing_bubble_conserves_energy(tmp_path):
     """The bubble (R and T tables, 16 bounces) in a white world: R + T = 1 for a film
     that absorbs nothing, so light reaches the camera undimmed: white on average over
