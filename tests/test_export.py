@@ -383,14 +383,17 @@ def test_the_library_refuses_an_index_for_the_morpho_table(tmp_path):
 #: ``export`` sub-command -> the options its ``--help`` lists (argparse's own -h too).
 EXPORT_OPTIONS = {
     "film": {"--kind", "--index", "--display", "--range", "--size", "--format", "--out"}
-    | {"--quiet", "--films", "--film"},
+    | {"--quiet", "--films", "--film", "--swatches", "--spectra", "--thickness"},
     "morpho": {"--display", "--range", "--size", "--format", "--out", "--quiet"},
     "clip": {"--display", "--range", "--size", "--format", "--out", "--quiet"},
     "view": {"--from", "--display", "--view", "--out", "--format", "--size", "--range"}
     | {"--resolve-shaper", "--compress-threshold", "--compress-limit"},
     "shader": {"--lang", "--from", "--display", "--view", "--out"}
     | {"--compress-threshold", "--compress-limit"},
+    "material": {"--films", "--film", "--out", "--space", "--size"},
 }
+#: What a sub-command requires besides --out, for the refusal of another's option.
+_REQUIRED = {"material": ["--films", "films.toml"]}
 #: An option of one sub-command and a value for it (None: a flag).
 _VALUES = {"--range": ["0", "1"], "--resolve-shaper": [], "--quiet": []}
 
@@ -408,7 +411,7 @@ def test_each_export_subcommand_has_its_own_options_and_help(what, tmp_path, cap
     assert listed == EXPORT_OPTIONS[what]
     others = set().union(*EXPORT_OPTIONS.values()) - EXPORT_OPTIONS[what]
     for option in sorted(others):
-        argv = ["export", what, option, *_VALUES.get(option, ["1"])]
+        argv = ["export", what, *_REQUIRED.get(what, []), option, *_VALUES.get(option, ["1"])]
         assert cli.main(argv + ["--out", str(tmp_path / "x.cube")]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1, err

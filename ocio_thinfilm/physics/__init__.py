@@ -8,6 +8,9 @@
   integration every model shares;
 - :mod:`.materials` -- optical constants n + ik of real materials (a package: the model,
   its readers and the built-in library, one module each);
-- :mod:`.films` -- users' film files (TOML): stacks of those materials;
+- :mod:`.film_file` -- users' film files (TOML): stacks of those materials, as
+  :class:`~.film_file.Film` objects;
+- :mod:`.films` -- a film's spectra (the exact and the paper's model, its wavelength
+  grid);
 - :mod:`.light` -- the names of the light a film is seen under (illuminant, adaptation).
 """
