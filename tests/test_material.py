@@ -298,3 +298,30 @@ def test_bad_films_built_in_python(tmp_path):
     with pytest.raises(ParameterError, match=r"^film AnodisedTitanium: range_um: must satisfy"):
         material.export_material(flat, tmp_path / "b")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_gamut_clip_keeps_luminance_and_the_colours_inside():
+    """``gamut="clip"``: the soap film's out-of-gamut texels (a tenth of them have a
+    negative linear Rec.709 channel) move into the RGB cube at their own luminance (the
+    BT.709 Y row, from colour-science), the others stay bit for bit."""
+    import colour
+
+    film = FILMS["SoapFilm"]
+    keep = material.material_table(film, width=64, height=32)
+    clip = material.material_table(film, width=64, height=32, gamut="clip")
+    weights = colour.RGB_COLOURSPACES["ITU-R BT.709"].matrix_RGB_to_XYZ[1]
+    for a, b in ((keep.reflectance, clip.reflectance), (keep.transmittance, clip.transmittance)):
+        outside = (a < 0).any(axis=-1) | (a > 1).any(axis=-1)
+        assert outside.any() and (~outside).any()
+        assert b.min() >= 0.0 and b.max() <= 1.0
+        np.testing.assert_array_equal(b[~outside], a[~outside])
+        np.testing.assert_allclose(b @ weights, a @ weights, rtol=0, atol=1e-9)
+
+
+def test_gamut_clip_needs_a_display_gamut():
+    with pytest.raises(ParameterError, match="needs a space with a display's primaries") as e:
+        material.material_table(FILMS["SoapFilm"], space="ACEScg", gamut="clip")
+    assert e.value.parameter == "gamut"
+    with pytest.raises(ParameterError) as e:
+        material.material_table(FILMS["SoapFilm"], gamut="squash")
+    assert e.value.parameter == "gamut"

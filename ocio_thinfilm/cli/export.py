@@ -223,7 +223,10 @@ def _run_material(args: argparse.Namespace) -> int:
 
     film = pick_film(args.films, args.film)
     hosts = host_files(film, args.space)
-    for path in export_material(film, args.out, space=args.space, size=args.size, hosts=hosts):
+    written = export_material(
+        film, args.out, space=args.space, size=args.size, hosts=hosts, gamut=args.gamut
+    )
+    for path in written:
         print(f"wrote {path}")
     return 0
 
@@ -520,7 +523,7 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         help="output directory (created if missing; files this tool did not write are "
         "never replaced)",
     )
-    from ocio_thinfilm.export.material import DEFAULT_SPACE
+    from ocio_thinfilm.export.material import DEFAULT_SPACE, GAMUTS, gamut_display
 
     mat.add_argument(
         "--space",
@@ -535,6 +538,15 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         metavar="WxH",
         help="texels along thickness x cos theta, e.g. 256x64 (default: measured per film, "
         "docs/materials.md)",
+    )
+    mat.add_argument(
+        "--gamut",
+        default=GAMUTS[0],
+        choices=GAMUTS,
+        help="colours outside the space's gamut: keep their negative channels (default), "
+        "or clip them at constant lightness into the space's RGB cube, for renderers that "
+        "clamp negative colours (Cycles, MaterialX); clip needs "
+        + ", ".join(s.name for s in registry.SCENE_LINEAR_LIST if gamut_display(s.name)),
     )
     mat.set_defaults(func=_run_material)
 

@@ -29,8 +29,8 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm import __version__, registry
-from ocio_thinfilm.checks import ParameterError, as_count
-from ocio_thinfilm.colour import colorimetry
+from ocio_thinfilm.checks import ParameterError, as_choice, as_count
+from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config.data import ROLES, film_lut_stem
 from ocio_thinfilm.io import StrPath, atomic_directory, write_image
 from ocio_thinfilm.lut import material_tables
@@ -39,7 +39,9 @@ from ocio_thinfilm.physics.films import Film
 __all__ = [
     "DEFAULT_SPACE",
     "MAX_SIZE",
+    "GAMUTS",
     "MaterialTable",
+    "gamut_display",
     "HostWriter",
     "check_space",
     "parse_size",
@@ -50,6 +52,8 @@ __all__ = [
 
 #: The default scene space: the config's scene_linear role.
 DEFAULT_SPACE = ROLES["scene_linear"]
+#: What a table does with colours outside its space's gamut (:func:`material_table`).
+GAMUTS = ("keep", "clip")
 #: Largest width or height of a table.
 MAX_SIZE = 16384
 #: A fixed EXR timestamp: equal inputs give equal bytes.
@@ -155,12 +159,27 @@ def parse_size(size: str | tuple[int, int] | None) -> tuple[int, int] | None:
     return as_count("size", w, 2, MAX_SIZE), as_count("size", h, 2, MAX_SIZE)
 
 
+def gamut_display(space: str) -> registry.Display | None:
+    """Return the SDR display whose gamut (primaries and white) is the scene space's.
+
+    The constant-lightness clip (Smits & Meyer 1990, Section 3.2) works in a display's
+    RGB cube; a scene space with a display's primaries (linear Rec.709, P3-D65,
+    Rec.2020) can be clipped in it. ``None`` for the others (ACEScg, the camera gamuts).
+    """
+    M = colorimetry.matrix_XYZ_to_RGB(registry.SCENE_LINEAR_BY_NAME[space].colorimetry)
+    for display in registry.DISPLAY_LIST:
+        if np.array_equal(colorimetry.matrix_XYZ_to_RGB(display.colorimetry), M):
+            return display
+    return None
+
+
 def material_table(
     film: Film,
     *,
     space: str = DEFAULT_SPACE,
     width: int | None = None,
     height: int | None = None,
+    gamut: str = "keep",
 ) -> MaterialTable:
     """Return a film's reflectance (and transmittance) table over thickness x cos theta.
 
@@ -173,6 +192,13 @@ def material_table(
     width, height : int, optional
         Texels along thickness and cos theta, in [2, :data:`MAX_SIZE`] (default
         :func:`ocio_thinfilm.lut.material_tables.default_resolution`).
+    gamut : str, optional
+        Colours outside the space's gamut: ``"keep"`` (default) their negative
+        channels, for renderers that carry them; ``"clip"`` the constant-lightness clip
+        into the space's RGB cube (:func:`ocio_thinfilm.colour.clip.clip_RGB`: Y and the
+        hue line kept), for renderers that clamp negative colours per channel (Cycles,
+        MaterialX's generated code); only for a space with a display's primaries
+        (:func:`gamut_display`).
 
     Returns
     -------
@@ -182,12 +208,24 @@ def material_table(
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
-        (``film``, ``space``, ``width``, ``height``) a film whose incident medium absorbs
-        or whose range has zero width, a space that is not scene-linear, a size out of
-        range.
+        (``film``, ``space``, ``width``, ``height``, ``gamut``) a film whose incident
+        medium absorbs or whose range has zero width, a space that is not scene-linear, a
+        size out of range, a gamut choice not in :data:`GAMUTS` or a clip in a space
+        without a display's primaries.
     """
     material_tables.check_film(film)
     space = check_space(space)
+    gamut = as_choice("gamut", gamut, GAMUTS)
+    display = gamut_display(space)
+    if gamut == "clip" and display is None:
+        with_display = [
+            s.name for s in registry.SCENE_LINEAR_LIST if gamut_display(s.name) is not None
+        ]
+        raise ParameterError(
+            "gamut",
+            f" 'clip' needs a space with a display's primaries ({', '.join(with_display)}), "
+            f"got {space!r}",
+        )
     w0, h0 = material_tables.default_resolution(film)
     w = w0 if width is None else as_count("width", width, 2, MAX_SIZE)
     h = h0 if height is None else as_count("height", height, 2, MAX_SIZE)
@@ -199,6 +237,9 @@ def material_table(
     colorimetry_name = registry.SCENE_LINEAR_BY_NAME[space].colorimetry
     R = colorimetry.XYZ_to_RGB(XYZ_R, colorimetry_name)
     T = None if XYZ_T is None else colorimetry.XYZ_to_RGB(XYZ_T, colorimetry_name)
+    if gamut == "clip" and display is not None:
+        R = clip.clip_RGB(R, display)
+        T = None if T is None else clip.clip_RGB(T, display)
     return MaterialTable(R, T, (lo, hi), space, film)
 
 
@@ -285,6 +326,7 @@ def export_material(
     space: str = DEFAULT_SPACE,
     size: str | tuple[int, int] | None = None,
     hosts: Mapping[str, HostWriter] | None = None,
+    gamut: str = "keep",
 ) -> list[Path]:
     """Write a film's material tables (and host files) into the directory ``out_dir``.
 
@@ -305,6 +347,8 @@ def export_material(
         File name -> host writer: each is called with the film's key, the paths of the
         written reflectance and transmittance EXRs (None without one) and ``range_um``,
         and its text is written to ``out_dir / name`` with the tables (default none).
+    gamut : str, optional
+        ``"keep"`` (default) or ``"clip"`` (:func:`material_table`).
 
     Returns
     -------
@@ -319,7 +363,7 @@ def export_material(
     """
     dims = parse_size(size)
     width, height = (None, None) if dims is None else dims
-    table = material_table(film, space=space, width=width, height=height)
+    table = material_table(film, space=space, width=width, height=height, gamut=gamut)
     stem = film_lut_stem(film)
     images = {f"{stem}_R.exr": ("reflectance", table.reflectance)}
     if table.transmittance is not None:
