@@ -16,7 +16,7 @@ import io
 import numpy as np
 import pytest
 
-from evaluation.films import colour_R
+from evaluation.films import colour_R, tmm_RTA
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import adaptation, colorimetry
@@ -266,13 +266,17 @@ def test_spectra_csv_matches_colour_science(tmp_path, capsys):
     args = ["export", "film", "--films", str(films_file), "--spectra", str(out)]
     assert cli.main([*args, "--thickness", "0.1", "0.3", "1.2"]) == 0
     rows = _rows(out)
-    assert list(rows[0]) == ["wavelength_nm", "R_0.1um", "R_0.3um", "R_1.2um"]
+    names = ["R_0.1um", "R_0.3um", "R_1.2um", "T_0.1um", "T_0.3um", "T_1.2um"]
+    assert list(rows[0]) == ["wavelength_nm", *names]  # free-standing: T too
     wl = np.array([float(r["wavelength_nm"]) for r in rows])
-    R = np.array([[float(r[c]) for c in list(rows[0])[1:]] for r in rows]).T
+    R = np.array([[float(r[c]) for c in names[:3]] for r in rows]).T
+    T = np.array([[float(r[c]) for c in names[3:]] for r in rows]).T
     assert wl[0] == 380.0 and wl[-1] == 780.0
     film = films_module.read_films(films_file)["Soap"]
     np.testing.assert_allclose(R, colour_R(film, np.array([100.0, 300.0, 1200.0]), wl), atol=1e-8)
-    assert "no transmittance" in out.read_text().splitlines()[0]
+    for i, d in enumerate([100.0, 300.0, 1200.0]):  # PyPI tmm's transmittance
+        np.testing.assert_allclose(T[i, ::10], tmm_RTA(film, d, wl[::10])[:, 1], atol=1e-8)
+    assert "T: unpolarised transmittance" in out.read_text().splitlines()[0]
 
 
 @pytest.mark.parametrize(

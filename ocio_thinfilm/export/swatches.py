@@ -7,8 +7,8 @@
   prints for the built-in soap film);
 - :func:`write_swatches` -- those as a CSV and a labelled PNG sheet beside it;
 - :func:`film_spectra` / :func:`write_spectra` -- the reflectance spectra R(lambda) at
-  chosen thicknesses, on the film's own wavelength grid, as a CSV. The numeric core
-  computes reflectance only: no transmittance column.
+  chosen thicknesses, on the film's own wavelength grid, and a free-standing film's
+  transmittance T(lambda), as a CSV.
 
 Files are written in one transaction (:func:`ocio_thinfilm.io.transaction`): all or
 nothing, after every argument was checked.
@@ -27,7 +27,7 @@ from ocio_thinfilm.checks import ParameterError, as_array
 from ocio_thinfilm.colour import clip, colorimetry, encodings
 from ocio_thinfilm.io import StrPath, transaction, write_image
 from ocio_thinfilm.io.images import draw_labels
-from ocio_thinfilm.lut import film_tables
+from ocio_thinfilm.lut import film_tables, material_tables
 from ocio_thinfilm.physics import films as films_module
 from ocio_thinfilm.physics.films import MAX_RANGE_UM, Film
 
@@ -221,15 +221,17 @@ def write_swatches(
     return [csv, png]
 
 
-def film_spectra(film: Film, thickness_um: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
-    """Return a film's reflectance spectra at physical thicknesses of its varying layer.
+def film_spectra(
+    film: Film, thickness_um: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """Return a film's reflectance (and transmittance) spectra at physical thicknesses.
 
     Parameters
     ----------
     film : Film
         The film.
     thickness_um : array_like
-        Thicknesses in um, in [0, 20].
+        Thicknesses of its varying layer in um, in [0, 20].
 
     Returns
     -------
@@ -237,7 +239,10 @@ def film_spectra(film: Film, thickness_um: npt.ArrayLike) -> tuple[np.ndarray, n
         (W,) nm: the film's grid for its thickest layer
         (:func:`ocio_thinfilm.physics.films.film_wavelengths`).
     reflectance : numpy.ndarray
-        (N, W): :func:`ocio_thinfilm.physics.films.film_reflectance`.
+        (N, W): the unpolarised reflectance at the film's angle.
+    transmittance : numpy.ndarray or None
+        (N, W) for a free-standing film
+        (:func:`ocio_thinfilm.lut.material_tables.free_standing`), else None.
 
     Raises
     ------
@@ -247,7 +252,9 @@ def film_spectra(film: Film, thickness_um: npt.ArrayLike) -> tuple[np.ndarray, n
     t = _thicknesses(thickness_um)
     top = max(float(t.max()), film.range_um[1]) * 1000.0
     wl = films_module.film_wavelengths(film, top)
-    return wl, films_module.film_reflectance(film, t * 1000.0, wl)
+    transmit = material_tables.free_standing(film)
+    R, T = material_tables.film_spectra(film, t * 1000.0, wl, transmit)
+    return wl, R, T
 
 
 def write_spectra(film: Film, out: StrPath, thickness_um: npt.ArrayLike) -> Path:
@@ -278,19 +285,26 @@ def write_spectra(film: Film, out: StrPath, thickness_um: npt.ArrayLike) -> Path
     """
     csv = _check_csv(out, "spectra")
     t = _thicknesses(thickness_um)
-    wl, R = film_spectra(film, t)
+    wl, R, T = film_spectra(film, t)
     what = (
         "unpolarised reflectance (R_s + R_p) / 2"
         if film.model == "exact"
         else "the paper's normalised Eq. 7/8"
     )
+    through = (
+        "; T: unpolarised transmittance (a free-standing film)"
+        if T is not None
+        else "; no T (the film is not free-standing)"
+    )
+    columns = [(f"R_{v:.9g}um", R[i]) for i, v in enumerate(t)]
+    if T is not None:
+        columns += [(f"T_{v:.9g}um", T[i]) for i, v in enumerate(t)]
     lines = [
-        f"# {film.name}: {film.describe()}; R: {what}; no transmittance (the numeric core "
-        "computes reflectance)",
-        "wavelength_nm," + ",".join(f"R_{v:.9g}um" for v in t),
+        f"# {film.name}: {film.describe()}; R: {what}{through}",
+        "wavelength_nm," + ",".join(name for name, _ in columns),
     ]
     for j, w in enumerate(wl):
-        lines.append(f"{w:.9g}," + ",".join(f"{v:.9g}" for v in R[:, j]))
+        lines.append(f"{w:.9g}," + ",".join(f"{values[j]:.9g}" for _, values in columns))
     with transaction() as tx:
         csv.parent.mkdir(parents=True, exist_ok=True)
         tx.write(csv, "\n".join(lines) + "\n")

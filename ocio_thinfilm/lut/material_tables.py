@@ -193,10 +193,16 @@ def _grid(film: Film, top_nm: float) -> np.ndarray:
     return np.linspace(wl[0], wl[-1], count)
 
 
-def _row_spectra(
+def film_spectra(
     film: Film, d_nm: np.ndarray, wl: np.ndarray, transmit: bool
 ) -> tuple[np.ndarray, np.ndarray | None]:
-    """R (and T) spectra of ``film`` (its ``angle_deg`` the row's) at thicknesses ``d_nm``."""
+    """Return the R (and T) spectra of ``film`` at its ``angle_deg``, thicknesses ``d_nm``.
+
+    By the film's model: the exact engine's R and T of the stack
+    (:func:`ocio_thinfilm.physics.exact.stack_transmittance`), or the paper's lossless
+    film (T = 1 - R). ``transmit``: also T (the film must be :func:`free_standing`),
+    else None. Shapes (len(d_nm), len(wl)).
+    """
     if film.model == "paper":
         R = films_module.film_reflectance(film, d_nm, wl)
         # the paper's film is lossless: what it does not reflect it transmits
@@ -266,7 +272,7 @@ def film_angle_XYZ(
             step = max(1, _BLOCK_SAMPLES // wl.size)
             for start in range(0, cols.size, step):
                 part = cols[start : start + step]
-                R, T = _row_spectra(row_film, d[part], wl, transmittance)
+                R, T = film_spectra(row_film, d[part], wl, transmittance)
                 out_R[row, part] = reproducible.matmul(R, w)
                 if out_T is not None and T is not None:
                     out_T[row, part] = reproducible.matmul(T, w)
