@@ -173,3 +173,21 @@ def test_the_numeric_core_raises_parameter_errors():
             call()
         assert raised.value.parameter == parameter, raised.value
         assert str(raised.value).startswith(parameter + " ")
+
+
+def test_building_the_parser_imports_no_colour_science(tmp_path):
+    """Every command builds the whole parser: its help texts must not compute anything
+    (importing colour-science costs about a second on a cold cache)."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from ocio_thinfilm.cli.main import build_parser; build_parser(); "
+        "print(sorted(m for m in ('colour', 'PyOpenColorIO', 'OpenImageIO') if m in sys.modules))"
+    )
+    env = {**__import__("os").environ, "OCIO_THINFILM_CACHE": "0"}
+    done = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=tmp_path
+    )
+    assert done.returncode == 0, done.stderr
+    assert "'colour'" not in done.stdout, done.stdout

@@ -50,6 +50,16 @@ def test_matmul_and_inv3_agree_with_numpy():
     assert reproducible.matmul(v, v) == pytest.approx(v @ v, abs=1e-14)
 
 
+def test_matmul_sums_alike_in_one_call_and_in_a_loop(monkeypatch):
+    # small products are summed by one add.accumulate, large ones by a loop over k: the
+    # same products in the same order, so the same bits
+    rng = np.random.default_rng(3)
+    a, b = rng.normal(size=(300, 421)), rng.normal(size=(421, 3))
+    one_call = reproducible.matmul(a, b)
+    monkeypatch.setattr(reproducible, "_ACCUMULATE_SIZE", 0)
+    assert np.array_equal(reproducible.matmul(a, b), one_call)
+
+
 def test_matmul_is_one_fixed_order():
     # the order is k = 0, 1, 2, ...: (1 + 1e16) - 1e16 = 0 in float64, (-1e16 + 1e16) + 1
     # = 1; a pairwise or BLAS order may differ, this one may not

@@ -523,7 +523,7 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         help="output directory (created if missing; files this tool did not write are "
         "never replaced)",
     )
-    from ocio_thinfilm.export.material import DEFAULT_SPACE, GAMUTS, gamut_display
+    from ocio_thinfilm.export.material import DEFAULT_SPACE, GAMUTS
 
     mat.add_argument(
         "--space",
@@ -545,8 +545,8 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         choices=GAMUTS,
         help="colours outside the space's gamut: keep their negative channels (default), "
         "or clip them at constant lightness into the space's RGB cube, for renderers that "
-        "clamp negative colours (Cycles, MaterialX); clip needs "
-        + ", ".join(s.name for s in registry.SCENE_LINEAR_LIST if gamut_display(s.name)),
+        "clamp negative colours (Cycles, MaterialX); clip needs a --space with a display's "
+        "primaries (docs/materials.md)",
     )
     mat.set_defaults(func=_run_material)
 
