@@ -8,7 +8,7 @@ import sys
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import clip, colorimetry, encodings
 from ocio_thinfilm.io import check_output_file, is_stdout, write_image
 from ocio_thinfilm.physics import spectra
 
@@ -51,16 +51,12 @@ def soap_film_colour(thickness_nm: float, display: str = "sRGB", theta: float = 
 def _encode(rgb, display="sRGB"):
     """Display-linear RGB clamped to [0, 1] -> code values in ``display``'s encoding.
 
-    The registry's encoding (the sRGB piecewise curve of IEC 61966-2-1, or BT.1886's inverse
-    EOTF with a black level of 0), by colour-science.
+    The registry's encoding as the config's OCIO op applies it (the sRGB piecewise curve
+    of IEC 61966-2-1, or BT.1886's inverse EOTF with a black level of 0):
+    :func:`ocio_thinfilm.colour.encodings.encode`.
     """
-    import colour
-
     encoding = registry.as_display(display, hdr=False, parameter="display").encoding
-    linear = np.clip(rgb, 0, 1)
-    if encoding.offset is None:
-        return colour.models.eotf_inverse_BT1886(linear)
-    return colour.cctf_encoding(linear, function="sRGB")
+    return encodings.encode(np.clip(rgb, 0, 1), encoding)
 
 
 def soap_strip(
@@ -129,7 +125,10 @@ def run(args: argparse.Namespace) -> int:
         ("linear sRGB, unclipped", "linear_rgb"),
         ("constant-lightness clip", "clipped_rgb"),
     ):
-        print(f"  {label:<28}{np.array2string(result[key], precision=4)}", file=text)
+        # numpy's 1.13 layout, which colour-science's import makes the default: the same
+        # text whether or not this process imported it
+        row = np.array2string(result[key], precision=4, legacy="1.13")
+        print(f"  {label:<28}{row}", file=text)
     code = "#" + "".join(f"{int(round(v * 255)):02X}" for v in result["encoded"])
     print(f"  sRGB-encoded                {code}", file=text)
     write_image(out, soap_strip())

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from ocio_thinfilm import registry, reproducible
-from ocio_thinfilm.colour import clip, colorimetry, compress
+from ocio_thinfilm.colour import clip, colorimetry, compress, encodings
 from ocio_thinfilm.colour.log_curves import LOG_CURVES
 from ocio_thinfilm.export.shader_language import GLSL, Language, matrix_rows
 from ocio_thinfilm.lut import ocio_ops
@@ -86,20 +86,9 @@ float ocio_thinfilm_saturate(float x)
     return text
 
 
-def _piecewise(encoding: registry.Encoding) -> tuple[float, float]:
-    """Return where the sRGB-style curve's linear segment ends (linear) and its slope.
-
-    Value and slope continuous there, as OCIO's ExponentWithLinearTransform (IEC
-    61966-2-1 rounds them to 0.0031308 and 12.92).
-    """
-    gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
-    brk = (offset * gamma / ((1.0 + offset) * (gamma - 1.0))) ** gamma
-    return brk, (1.0 + offset) / gamma * brk ** (1.0 / gamma - 1.0)
-
-
 def _piecewise_encode(L: Language, encoding: registry.Encoding, v: str) -> str:
     """Return the sRGB-style curve's encoding of the expression ``v`` (linear below 0)."""
-    brk, slope = _piecewise(encoding)
+    brk, slope = encodings.piecewise(encoding)
     gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
     return (
         f"{v} <= {L.lit(brk)} ? {L.lit(slope)} * {v} : "
@@ -109,7 +98,7 @@ def _piecewise_encode(L: Language, encoding: registry.Encoding, v: str) -> str:
 
 def _piecewise_decode(L: Language, encoding: registry.Encoding, v: str) -> str:
     """Return the sRGB-style curve's decoding of the expression ``v`` (linear below 0)."""
-    brk, slope = _piecewise(encoding)
+    brk, slope = encodings.piecewise(encoding)
     gamma, offset = encoding.gamma, float(encoding.offset or 0.0)
     return (
         f"{v} <= {L.lit(slope * brk)} ? {v} / {L.lit(slope)} : "
@@ -292,8 +281,8 @@ def encode_code(L: Language, entry: registry.AnyDisplay) -> str:
         )
     else:
         body = (
-            f"    // IEC 61966-2-1 piecewise ({_piecewise(entry.encoding)[1]:.6g} L below "
-            f"{_piecewise(entry.encoding)[0]:.6g})\n"
+            f"    // IEC 61966-2-1 piecewise ({encodings.piecewise(entry.encoding)[1]:.6g} L below "
+            f"{encodings.piecewise(entry.encoding)[0]:.6g})\n"
             f"    return {_piecewise_encode(L, entry.encoding, 'v')};\n"
         )
     return head + body + "}\n"
