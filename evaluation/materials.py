@@ -12,9 +12,9 @@ white with CAT02, so the perfect reflector is RGB (1, 1, 1)).
   substrate; constant or per-wavelength indices.
 - :func:`film_rgb` -- R or T of a stack as RGB at (thickness, cos theta) pairs.
 - :func:`table` -- the thickness x cos theta table with the material contract's
-  texel-centre axes (texture rows: row 0 = cos theta near 0).
+  node-centred axes (texture rows: row 0 = cos theta 0, the last row cos theta 1).
 - :func:`write_table` -- that table as a float EXR with the contract's header
-  (OpenImageIO; first scanline = the top = cos theta near 1).
+  (OpenImageIO; first scanline = the top = cos theta 1).
 - :func:`write_film_folder` -- the tables and the Blender script of a film, laid out as
   ``export material`` lays them out.
 - :func:`delta_e` -- CIE 2000 between linear BT.709 colours (colour-science).
@@ -148,11 +148,12 @@ def table(
     **options,
 ) -> np.ndarray:
     """The (height, width, 3) table of :func:`film_rgb` in texture row order: column i
-    at thickness ``lo + (i + 0.5) (hi - lo) / width``, row j at cos theta ``(j + 0.5) /
-    height`` (row 0 = grazing), as the material contract samples it."""
+    at thickness ``lo + i (hi - lo) / (width - 1)``, row j at cos theta ``j / (height -
+    1)`` (row 0 = grazing, the last row normal incidence), as the material contract
+    samples it (node-centred)."""
     lo, hi = range_um
-    t = lo + (np.arange(width) + 0.5) * (hi - lo) / width
-    c = (np.arange(height) + 0.5) / height
+    t = lo + np.arange(width) * (hi - lo) / (width - 1)
+    c = np.arange(height) / (height - 1)
     return film_rgb(stack, t[None, :], c[:, None], **options)
 
 
@@ -167,7 +168,7 @@ def write_table(
     illuminant: str = "D65",
 ) -> Path:
     """Write a texture-row-order table as the contract's float EXR (first scanline =
-    the top = cos theta near 1), with its ``ocio_thinfilm:*`` header."""
+    the top = cos theta 1), with its ``ocio_thinfilm:*`` header."""
     import OpenImageIO as oiio
 
     pixels = np.ascontiguousarray(rgb[::-1], dtype=np.float32)
@@ -180,7 +181,7 @@ def write_table(
         "space": space,
         "x": "thickness_um",
         "y": "cos_theta",
-        "sampling": "texel-centre",
+        "sampling": "node-centred",
         "illuminant": illuminant,
         "version": "evaluation.materials",
     }

@@ -103,19 +103,49 @@ def test_soap_transmittance_matches_the_exact_film(tables):
     _check_against_reference(tables["SoapFilm"], "SoapFilm", "transmittance")
 
 
-def test_table_axes_are_texel_centres(tables):
-    """Texel (j, i) holds the reference colour at t_i = lo + (i + 0.5) / W (hi - lo),
-    cos theta_j = (j + 0.5) / H (texture rows, v ascending)."""
+def test_table_axes_are_nodes(tables):
+    """Texel (j, i) holds the reference colour at t_i = lo + i / (W - 1) (hi - lo),
+    cos theta_j = j / (H - 1) (texture rows, v ascending): the first and last rows are
+    grazing and normal incidence exactly, the first and last columns the range's ends."""
     table = tables["OilOnWater"]
     w, h = table.size
     lo, hi = table.range_um
     import colour
 
-    j = np.array([0, h - 1, h // 3])
-    i = np.array([0, w - 1, w // 2])
-    XYZ, _ = _reference_XYZ(FILMS["OilOnWater"], lo + (i + 0.5) / w * (hi - lo), (j + 0.5) / h)
+    j = np.array([0, h - 1, h // 3, h - 1])
+    i = np.array([0, w - 1, w // 2, 0])
+    XYZ, _ = _reference_XYZ(FILMS["OilOnWater"], lo + i / (w - 1) * (hi - lo), j / (h - 1))
     rgb = colour.XYZ_to_RGB(XYZ, "sRGB", apply_cctf_encoding=False)
     np.testing.assert_allclose(table.reflectance[j, i], rgb, atol=2e-3)
+
+
+#: The angles a render sees most: a sphere's centre (0 deg) to its silhouette (89 deg).
+FIXED_ANGLES_DEG = (0.0, 30.0, 60.0, 80.0, 89.0)
+
+
+@pytest.mark.parametrize("key", list(FILMS))
+def test_table_is_exact_at_fixed_angles(key):
+    """At 0, 30, 60, 80 and 89 degrees (not only random angles: normal incidence is
+    the centre of every sphere), bilinear lookups of the default table at 16 thicknesses
+    across the range, ends included, are within Delta E 2000 0.2 of the independent
+    exact TMM (colour-science / PyPI tmm), for R and, where the film is free-standing,
+    T."""
+    import colour
+
+    film = FILMS[key]
+    table = material.material_table(film)
+    lo, hi = film.range_um
+    t = np.linspace(lo, hi, 16)
+    quantities = ["reflectance"] + (["transmittance"] if table.transmittance is not None else [])
+    for angle in FIXED_ANGLES_DEG:
+        c = np.full(t.shape, np.cos(np.radians(angle)))
+        for quantity in quantities:
+            ours = colour.RGB_to_XYZ(
+                table.lookup(t, c, quantity), "sRGB", apply_cctf_decoding=False
+            )
+            XYZ, white = _reference_XYZ(film, t, c, quantity == "transmittance")
+            dE = delta_E(ours, XYZ, white)
+            assert dE.max() <= 0.2, (key, quantity, angle, dE.round(3).tolist())
 
 
 def test_grazing_incidence_reflects_everything():
@@ -197,7 +227,7 @@ def test_exr_files_header_and_values(tmp_path):
             "ocio_thinfilm:space": "ACEScg",
             "ocio_thinfilm:x": "thickness_um",
             "ocio_thinfilm:y": "cos_theta",
-            "ocio_thinfilm:sampling": "texel-centre",
+            "ocio_thinfilm:sampling": "node-centred",
             "ocio_thinfilm:illuminant": "D65",
         }
         for key, value in attrs.items():
@@ -224,12 +254,22 @@ def test_out_directory_collects_films_and_refuses_foreign_files(tmp_path):
     assert sorted(p.name for p in foreign.iterdir()) == ["notes.txt"]
 
 
-def test_host_writers_get_the_paths_and_range(tmp_path):
+def test_host_writers_get_the_paths_range_size_and_names(tmp_path):
     seen = []
 
-    def writer(key, r_path, t_path, range_um):
-        seen.append((key, r_path.name, t_path and t_path.name, range_um))
-        return f"# {key}\n"
+    def writer(files):
+        seen.append(
+            (
+                files.key,
+                files.name,
+                files.reflectance.name,
+                files.transmittance and files.transmittance.name,
+                files.range_um,
+                files.size,
+                files.space,
+            )
+        )
+        return f"# {files.key}\n"
 
     paths = material.export_material(
         FILMS["SoapFilm"], tmp_path, size="8x4", hosts={"soap.py": writer}
@@ -237,7 +277,15 @@ def test_host_writers_get_the_paths_and_range(tmp_path):
     assert [p.name for p in paths][-1] == "soap.py"
     assert (tmp_path / "soap.py").read_text() == "# SoapFilm\n"
     assert seen == [
-        ("SoapFilm", "ThinFilm_User_SoapFilm_R.exr", "ThinFilm_User_SoapFilm_T.exr", (0.0, 1.5))
+        (
+            "SoapFilm",
+            FILMS["SoapFilm"].name,
+            "ThinFilm_User_SoapFilm_R.exr",
+            "ThinFilm_User_SoapFilm_T.exr",
+            (0.0, 1.5),
+            (8, 4),
+            SPACE,
+        )
     ]
 
 

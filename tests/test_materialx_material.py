@@ -40,7 +40,7 @@ MATERIAL = "ThinFilm_Soap"
 
 
 def _document():
-    return materialx_document("Soap", "Soap_R.exr", RANGE_UM)
+    return materialx_document("Soap", "Soap_R.exr", RANGE_UM, size=TABLE)
 
 
 def _loaded():
@@ -195,9 +195,17 @@ def test_the_glsl_draws_the_exact_reflectance_on_mesa(gl):
         ({"range_um": (1.0, 0.5)}, "range_um"),
         ({"reflectance_exr": "Soap_R.tif"}, "reflectance_exr"),
         ({"space": "sRGB"}, "space"),
+        ({"size": (1, 64)}, "size"),
+        ({"size": (64,)}, "size"),
     ],
 )
 def test_bad_arguments_name_the_parameter(kwargs, match):
-    args = {"key": "Soap", "reflectance_exr": "Soap_R.exr", "range_um": (0.0, 1.0), **kwargs}
+    args = {
+        "key": "Soap",
+        "reflectance_exr": "Soap_R.exr",
+        "range_um": (0.0, 1.0),
+        "size": (64, 32),
+        **kwargs,
+    }
     with pytest.raises(ParameterError, match=f"^{match}"):
         materialx_document(**args)

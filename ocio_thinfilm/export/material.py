@@ -8,10 +8,14 @@ the tables as float OpenEXR images (docs/materials.md):
 
 - ``<stem>_R.exr``: unpolarised reflectance; ``<stem>_T.exr``: transmittance, for a
   free-standing film (:func:`~ocio_thinfilm.lut.material_tables.free_standing`);
-- x: the varying layer's physical thickness over ``range_um``, column ``i`` of ``W``
-  at ``lo + (i + 0.5) (hi - lo) / W``; y: cos theta in the incident medium, texture
-  row ``j`` of ``H`` (v = 0 at the bottom) at ``(j + 0.5) / H``; a host samples
-  ``u = (t - lo) / (hi - lo)``, ``v = cos theta`` bilinearly with clamp-to-edge;
+- node-centred axes (:func:`ocio_thinfilm.lut.material_tables.axis_nodes`): x the
+  varying layer's physical thickness over ``range_um``, column ``i`` of ``W`` at
+  ``lo + i (hi - lo) / (W - 1)``; y cos theta in the incident medium, texture row
+  ``j`` of ``H`` (v = 0 at the bottom) at ``j / (H - 1)``: row 0 is grazing incidence,
+  row ``H - 1`` normal incidence, both exact; a host reads fraction ``f`` of an axis
+  (``(t - lo) / (hi - lo)``, cos theta, clamped to [0, 1]) at the texture coordinate
+  ``(f (N - 1) + 0.5) / N`` bilinearly
+  (:func:`~ocio_thinfilm.lut.material_tables.texture_coordinate`);
 - RGB of the space, white = the perfect reflector under the film's illuminant; colours
   outside the space's gamut keep their negative channels (measured in
   docs/materials.md: renderers carry them, and the config's views map them at display).
@@ -32,6 +36,7 @@ from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_count
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config.data import ROLES, film_lut_stem
+from ocio_thinfilm.export.hosts import TableFiles
 from ocio_thinfilm.io import StrPath, atomic_directory, write_image
 from ocio_thinfilm.lut import material_tables
 from ocio_thinfilm.physics.films import Film
@@ -59,10 +64,10 @@ MAX_SIZE = 16384
 #: A fixed EXR timestamp: equal inputs give equal bytes.
 _DATETIME = "2000:01:01 00:00:00"
 
-#: A host writer: (film key, reflectance EXR, transmittance EXR or None, range_um) ->
-#: the text of a file for that host (a Blender script, an ES module, a MaterialX
+#: A host writer: the written tables (:class:`~ocio_thinfilm.export.hosts.TableFiles`)
+#: -> the text of a file for that host (a Blender script, an ES module, a MaterialX
 #: document).
-HostWriter = Callable[[str, Path, "Path | None", tuple[float, float]], str]
+HostWriter = Callable[[TableFiles], str]
 
 
 @dataclass(frozen=True)
@@ -70,7 +75,7 @@ class MaterialTable:
     """A film's reflectance (and transmittance) over thickness x cos theta.
 
     ``reflectance``, ``transmittance``: (H, W, 3) float64 linear RGB of ``space`` in
-    texture row order (row 0 at cos theta = 0.5 / H, v ascending), ``transmittance``
+    texture row order (row 0 at cos theta = 0, row H - 1 at 1), ``transmittance``
     None unless the film is free-standing; ``range_um``: the thickness axis' range;
     ``film``: the film.
     """
@@ -90,7 +95,7 @@ class MaterialTable:
     def lookup(
         self, thickness_um: npt.ArrayLike, cos_theta: npt.ArrayLike, quantity: str = "reflectance"
     ) -> np.ndarray:
-        """Return the table's colour as a host reads it: bilinear, texel-centre, clamp-to-edge.
+        """Return the table's colour as a host reads it: bilinear between nodes, clamped.
 
         Parameters
         ----------
@@ -110,8 +115,9 @@ class MaterialTable:
         lo, hi = self.range_um
         t, c = np.broadcast_arrays(np.asarray(thickness_um, float), np.asarray(cos_theta, float))
         h, w = image.shape[:2]
-        x = np.clip((t - lo) / (hi - lo) * w - 0.5, 0.0, w - 1.0)
-        y = np.clip(c * h - 0.5, 0.0, h - 1.0)
+        # node-centred axes: sample i of n at fraction i / (n - 1)
+        x = np.clip((t - lo) / (hi - lo), 0.0, 1.0) * (w - 1)
+        y = np.clip(c, 0.0, 1.0) * (h - 1)
         x0 = np.minimum(np.floor(x).astype(int), max(w - 2, 0))
         y0 = np.minimum(np.floor(y).astype(int), max(h - 2, 0))
         x1, y1 = np.minimum(x0 + 1, w - 1), np.minimum(y0 + 1, h - 1)
@@ -230,8 +236,8 @@ def material_table(
     w = w0 if width is None else as_count("width", width, 2, MAX_SIZE)
     h = h0 if height is None else as_count("height", height, 2, MAX_SIZE)
     lo, hi = film.range_um
-    t = material_tables.texel_centres(lo, hi, w)
-    c = material_tables.texel_centres(0.0, 1.0, h)
+    t = material_tables.axis_nodes(lo, hi, w)
+    c = material_tables.axis_nodes(0.0, 1.0, h)
     transmit = material_tables.free_standing(film)
     XYZ_R, XYZ_T = material_tables.film_angle_XYZ(film, t, c, transmittance=transmit)
     colorimetry_name = registry.SCENE_LINEAR_BY_NAME[space].colorimetry
@@ -252,8 +258,9 @@ def _attributes(table: MaterialTable, quantity: str) -> dict[str, Any]:
             f"{film.name}: {quantity} of {re.sub(r' at [0-9.e+-]+ deg,', ',', film.describe())} "
             f"in {table.space} "
             f"(white = the perfect reflector); x: {film.varying.name} thickness "
-            f"{lo:g}-{hi:g} um, column i at lo + (i + 0.5) (hi - lo) / {w}; y: cos theta in "
-            f"the incident medium, texture row j (v = 0 at the bottom) at (j + 0.5) / {h}"
+            f"{lo:g}-{hi:g} um, column i at lo + i (hi - lo) / {w - 1}; y: cos theta in "
+            f"the incident medium, texture row j (v = 0 at the bottom) at j / {h - 1}; "
+            f"node-centred: read fraction f of an axis of N texels at (f (N - 1) + 0.5) / N"
         ),
         "DateTime": _DATETIME,
         "ocio_thinfilm:film": film.key,
@@ -263,7 +270,7 @@ def _attributes(table: MaterialTable, quantity: str) -> dict[str, Any]:
         "ocio_thinfilm:x_range": (lo, hi),
         "ocio_thinfilm:y": "cos_theta",
         "ocio_thinfilm:y_range": (0.0, 1.0),
-        "ocio_thinfilm:sampling": "texel-centre",
+        "ocio_thinfilm:sampling": "node-centred",
         "ocio_thinfilm:illuminant": str(
             getattr(film, "illuminant", colorimetry.DEFAULT_ILLUMINANT)
         ),
@@ -300,15 +307,19 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
     stem = film_lut_stem(film)
     space = check_space(space)
 
-    def blender_file(key, reflectance, transmittance, range_um):
-        t_name = None if transmittance is None else transmittance.name
-        return blender.blender_script(key, reflectance.name, t_name, range_um)
+    def blender_file(files: TableFiles) -> str:
+        t_name = None if files.transmittance is None else files.transmittance.name
+        return blender.blender_script(files.key, files.reflectance.name, t_name, files.range_um)
 
-    def three_file(key, reflectance, transmittance, range_um):
-        return three.three_module(key, reflectance, range_um, module_name=f"{stem}.js")
+    def three_file(files: TableFiles) -> str:
+        return three.three_module(
+            files.key, files.reflectance, files.range_um, module_name=f"{stem}.js"
+        )
 
-    def materialx_file(key, reflectance, transmittance, range_um):
-        return materialx.materialx_document(key, reflectance, range_um, space=space)
+    def materialx_file(files: TableFiles) -> str:
+        return materialx.materialx_document(
+            files.key, files.reflectance, files.range_um, space=space, size=files.size
+        )
 
     entry = registry.SCENE_LINEAR_BY_NAME[space]
     files: dict[str, HostWriter] = {f"{stem}.py": blender_file}
@@ -344,9 +355,11 @@ def export_material(
         ``"WxH"`` or ``(W, H)`` (default the measured
         :func:`~ocio_thinfilm.lut.material_tables.default_resolution`).
     hosts : mapping, optional
-        File name -> host writer: each is called with the film's key, the paths of the
-        written reflectance and transmittance EXRs (None without one) and ``range_um``,
-        and its text is written to ``out_dir / name`` with the tables (default none).
+        File name -> host writer: each is called with the written tables
+        (:class:`~ocio_thinfilm.export.hosts.TableFiles`: the film's key and name, the
+        paths of the reflectance and transmittance EXRs, ``range_um``, the size, the
+        space) and its text is written to ``out_dir / name`` with the tables (default
+        none).
     gamut : str, optional
         ``"keep"`` (default) or ``"clip"`` (:func:`material_table`).
 
@@ -370,12 +383,20 @@ def export_material(
         images[f"{stem}_T.exr"] = ("transmittance", table.transmittance)
     out = Path(out_dir)
     paths = {name: out / name for name in images}
+    files = TableFiles(
+        key=film.key,
+        name=film.name,
+        reflectance=paths[f"{stem}_R.exr"],
+        transmittance=paths.get(f"{stem}_T.exr"),
+        range_um=table.range_um,
+        size=table.size,
+        space=table.space,
+    )
     texts = {}
     for name, writer in (hosts or {}).items():
         if Path(name).name != name or name in images:
             raise ParameterError("hosts", f" {name!r}: must be a new file name without folders")
-        t_path = paths.get(f"{stem}_T.exr")
-        texts[name] = writer(film.key, paths[f"{stem}_R.exr"], t_path, table.range_um)
+        texts[name] = writer(files)
     with atomic_directory(out, parameter="out", keep_others=True) as stage:
         for name, (quantity, pixels) in images.items():
             # the EXR's first scanline is the top: cos theta descending

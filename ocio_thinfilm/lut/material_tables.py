@@ -13,8 +13,11 @@ alias), integrated to CIE XYZ with the colorimetry's weights
 Y = 1). theta is the angle in the incident medium; at
 cos theta = 0 (grazing) every film reflects everything (R = 1, T = 0).
 
-:func:`texel_centres` gives the axes of a table (texel-centre sampling) and
-:func:`default_resolution` its measured default size (docs/materials.md).
+:func:`axis_nodes` gives the axes of a table (node-centred sampling: the first and last
+samples lie exactly on the ends of the range, so normal incidence, grazing incidence and
+both ends of the thickness range are table values, not extrapolations),
+:func:`texture_coordinate` the texture coordinate a host reads a value at, and
+:func:`default_resolution` the measured default size (docs/materials.md).
 """
 
 from __future__ import annotations
@@ -41,7 +44,8 @@ __all__ = [
     "MAX_SHARPNESS",
     "free_standing",
     "check_film",
-    "texel_centres",
+    "axis_nodes",
+    "texture_coordinate",
     "default_resolution",
     "film_angle_XYZ",
 ]
@@ -123,15 +127,17 @@ def check_film(film: Film) -> None:
         )
 
 
-def texel_centres(lo: float, hi: float, count: int) -> np.ndarray:
-    """Return the centres ``lo + (i + 0.5) (hi - lo) / count`` of ``count`` texels over [lo, hi].
+def axis_nodes(lo: float, hi: float, count: int) -> np.ndarray:
+    """Return the ``count`` samples ``lo + i (hi - lo) / (count - 1)`` of a table axis.
+
+    Node-centred sampling: the first sample is ``lo`` and the last ``hi`` exactly.
 
     Parameters
     ----------
     lo, hi : float
         The axis' range.
     count : int
-        Texels.
+        Samples, >= 2.
 
     Returns
     -------
@@ -140,10 +146,42 @@ def texel_centres(lo: float, hi: float, count: int) -> np.ndarray:
 
     Examples
     --------
-    >>> texel_centres(0.0, 1.0, 4).tolist()
-    [0.125, 0.375, 0.625, 0.875]
+    >>> axis_nodes(0.0, 1.0, 5).tolist()
+    [0.0, 0.25, 0.5, 0.75, 1.0]
     """
-    return lo + (np.arange(count) + 0.5) * ((hi - lo) / count)
+    if count < 2:
+        raise ParameterError("count", f" must be >= 2, got {count}")
+    return np.linspace(lo, hi, count)
+
+
+def texture_coordinate(fraction: npt.ArrayLike, count: int) -> np.ndarray:
+    """Return the texture coordinate of a table axis' ``fraction`` in [0, 1].
+
+    A texture of ``count`` texels has its texel centres at ``(i + 0.5) / count``; the
+    table's sample ``i`` (:func:`axis_nodes`) sits at fraction ``i / (count - 1)``, so
+    a host reads fraction ``f`` (clamped to [0, 1]) at ``(f (count - 1) + 0.5) / count``
+    with linear filtering: exact at every node, linear in between, the ends never
+    extrapolated.
+
+    Parameters
+    ----------
+    fraction : array_like
+        Position along the axis, 0 at the first sample, 1 at the last.
+    count : int
+        Texels along the axis.
+
+    Returns
+    -------
+    numpy.ndarray
+        Texture coordinates in ``[0.5 / count, 1 - 0.5 / count]``.
+
+    Examples
+    --------
+    >>> texture_coordinate([0.0, 0.5, 1.0], 4).tolist()
+    [0.125, 0.5, 0.875]
+    """
+    f = np.clip(np.asarray(fraction, dtype=float), 0.0, 1.0)
+    return (f * (count - 1) + 0.5) / count
 
 
 def default_resolution(film: Film) -> tuple[int, int]:

@@ -1,7 +1,9 @@
 """The film-as-material table in renderers: one writer per host.
 
-Each writer takes only the table's file names and numbers (the table itself:
-``export material``).
+Each writer takes only the table's file names and numbers, :class:`TableFiles` (the table
+itself: ``export material``). The tables' axes are node-centred
+(:func:`ocio_thinfilm.lut.material_tables.axis_nodes`): every host reads fraction ``f`` of
+an axis of ``N`` texels at the texture coordinate ``(f (N - 1) + 0.5) / N``.
 
 - :mod:`.blender` -- a Python script Blender runs: the film's node group and material
   (Cycles, EEVEE);
@@ -14,11 +16,32 @@ Each writer takes only the table's file names and numbers (the table itself:
 from __future__ import annotations
 
 import math
-from pathlib import PurePath
+from dataclasses import dataclass
+from pathlib import Path, PurePath
 
 from ocio_thinfilm.checks import ParameterError, as_pair
 
-__all__ = ["thickness_range", "table_name"]
+__all__ = ["TableFiles", "thickness_range", "table_name"]
+
+
+@dataclass(frozen=True)
+class TableFiles:
+    """A film's written material tables, as the host writers see them.
+
+    ``key``: the film's key; ``name``: its display name (the key where the film file
+    gives none); ``reflectance``, ``transmittance``: the EXRs' paths (``transmittance``
+    None unless the film is free-standing); ``range_um``: the thickness axis ``(lo,
+    hi)``; ``size``: ``(width, height)`` in texels; ``space``: the tables' scene-linear
+    space.
+    """
+
+    key: str
+    name: str
+    reflectance: Path
+    transmittance: Path | None
+    range_um: tuple[float, float]
+    size: tuple[int, int]
+    space: str
 
 
 def thickness_range(range_um: object) -> tuple[float, float]:

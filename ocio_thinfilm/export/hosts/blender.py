@@ -13,13 +13,15 @@ Inside the group the cosine of the incidence angle is ``|N . I|`` clamped to [0,
 Geometry node's shading ``Normal`` and ``Incoming``, the unit vector towards the ray's
 origin; the absolute value serves back faces, where a free-standing film is the same
 seen from either side), the texture coordinates are ``u = (t - lo) / (hi - lo)`` and
-``v = cos(theta)`` (the table's texel-centre axes: ``docs/blender.md``, the material
-table's contract), and each table is read bilinearly in nodes: four Image Texture nodes
-(colour space Non-Color, Closest interpolation, EXTEND) at the texel centres around
-(u, v), mixed by the fractional texel position. A GPU's own filtered read (EEVEE's
-Linear) picks a mipmap level from the screen-space derivatives of (u, v) and so blurs
-the table across thicknesses; measured in bpy 5.0.1's EEVEE on Mesa, it returned wrong
-colours outright (DeltaE2000 p50 16 against the exact film; 0.2 with the nodes).
+``v = cos(theta)`` (the table's node-centred axes: ``docs/blender.md``, the material
+table's contract: sample ``i`` of ``N`` at fraction ``i / (N - 1)``, so normal and grazing
+incidence are table rows), and each table is read bilinearly in nodes: four Image Texture
+nodes (colour space Non-Color, Closest interpolation, EXTEND) at the two samples around
+(u, v) along each axis, mixed by the fractional position between them. A GPU's own
+filtered read (EEVEE's Linear) picks a mipmap level from the screen-space derivatives
+of (u, v) and so blurs the table across thicknesses; measured in bpy 5.0.1's EEVEE on
+Mesa, it returned wrong colours outright (DeltaE2000 p50 16 against the exact film; 0.2
+with the nodes).
 
 The shader is a Glossy BSDF (multiscatter GGX, the ``Roughness`` input) tinted by the
 reflectance R, plus, where a transmittance table is given, a Transparent BSDF tinted by
@@ -241,14 +243,15 @@ def build_group():
     u.inputs[1].default_value = 1.0 / (hi - lo)
     u.inputs[2].default_value = -lo / (hi - lo)
 
-    def texel_centres(value, size, x, y):
-        """The two texel centres around value (0-1) of size texels, and the weight of
-        the second: p = value * size - 0.5, centres (floor(p) + 0.5) / size and the
-        next, weight p - floor(p) (EXTEND: a centre off the edge reads the edge)."""
+    def neighbours(value, size, x, y):
+        """The texel centres of the two samples around value (0-1) on a node-centred
+        axis of size texels, and the weight of the second: p = value * (size - 1),
+        centres (floor(p) + 0.5) / size and the next, weight p - floor(p) (EXTEND: a
+        centre off the edge reads the edge, so values outside 0-1 read the end)."""
         p = node("ShaderNodeMath", x, y, operation="MULTIPLY_ADD")
         links.new(value, p.inputs[0])
-        p.inputs[1].default_value = float(size)
-        p.inputs[2].default_value = -0.5
+        p.inputs[1].default_value = float(size - 1)
+        p.inputs[2].default_value = 0.0
         low = node("ShaderNodeMath", x + 150, y, operation="FLOOR")
         links.new(p.outputs[0], low.inputs[0])
         weight = node("ShaderNodeMath", x + 300, y, operation="SUBTRACT")
@@ -274,13 +277,13 @@ def build_group():
         return result.outputs[0]
 
     def texture(relative, y, label):
-        """Bilinear lookup of the table from four Closest reads at texel centres, the
+        """Bilinear lookup of the table from four Closest reads at its samples, the
         same on every engine (a GPU's filtered read picks a mipmap level from the
         screen-space derivatives of (u, v): it blurs the table across thicknesses)."""
         image = table(relative)
         width, height = image.size
-        u0, u1, wu = texel_centres(u.outputs[0], width, -300, y + 300)
-        v0, v1, wv = texel_centres(cosine.outputs[0], height, -300, y)
+        u0, u1, wu = neighbours(u.outputs[0], width, -300, y + 300)
+        v0, v1, wv = neighbours(cosine.outputs[0], height, -300, y)
         corners = []
         for i, (a, b) in enumerate(((u0, v0), (u1, v0), (u0, v1), (u1, v1))):
             uv = node("ShaderNodeCombineXYZ", 300, y + 300 - 150 * i)

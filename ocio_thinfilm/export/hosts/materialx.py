@@ -6,10 +6,12 @@ The graph reads the reflectance table by thickness and view angle.
 standard library nodes only):
 
 - the node graph ``NG_ThinFilm_<key>`` with one input, ``thickness`` (µm, default the
-  middle of the film's range), and one output, ``reflectance`` (color3): ``u`` =
-  ``remap(thickness, lo, hi, 0, 1)``, ``v`` = ``clamp(-dotproduct(viewdirection,
-  normal), 0, 1)`` = N·V (MaterialX's view direction points from the eye to the
-  surface; both in world space), ``image`` of the table at ``(u, v)`` with
+  middle of the film's range), and one output, ``reflectance`` (color3): the table's
+  node-centred axes read at ``(f (N - 1) + 0.5) / N`` for fraction ``f``: ``u`` =
+  ``remap(thickness, lo, hi, 0.5 / W, 1 - 0.5 / W)``, ``v`` = ``remap(cos θ, 0, 1, 0.5 /
+  H, 1 - 0.5 / H)`` with cos θ = ``clamp(-dotproduct(viewdirection, normal), 0, 1)`` = N·V
+  (MaterialX's view direction points from the eye to the surface; both in world
+  space), ``image`` of the table at ``(u, v)`` with
   ``uaddressmode``/``vaddressmode`` ``clamp`` and ``filtertype`` ``linear`` (MaterialX
   addresses images with v = 0 at the bottom row, the table's cos θ near 0);
 - ``generalized_schlick_bsdf`` with ``color0`` = ``color90`` = the reflectance (the
@@ -28,7 +30,7 @@ import xml.etree.ElementTree as ET
 from os import PathLike
 
 from ocio_thinfilm import __version__, registry
-from ocio_thinfilm.checks import as_choice
+from ocio_thinfilm.checks import ParameterError, as_choice, as_count
 from ocio_thinfilm.export.hosts import table_name, thickness_range
 
 __all__ = ["MATERIALX_COLORSPACES", "materialx_document"]
@@ -56,6 +58,7 @@ def materialx_document(
     reflectance_exr: str | PathLike[str],
     range_um: tuple[float, float],
     *,
+    size: tuple[int, int],
     space: str = "Linear Rec.709 (sRGB)",
 ) -> str:
     """Return a MaterialX 1.39 document (text) of the film as a material.
@@ -70,6 +73,9 @@ def materialx_document(
         document, as MaterialX resolves relative file names).
     range_um : tuple of float
         The table's thickness axis ``(lo, hi)`` in µm (the film's ``range_um``).
+    size : tuple of int
+        The table's ``(width, height)`` in texels, each >= 2: its axes are node-centred,
+        read at ``(f (N - 1) + 0.5) / N``.
     space : str, optional
         The table's scene space (a key of :data:`MATERIALX_COLORSPACES`).
 
@@ -86,7 +92,7 @@ def materialx_document(
 
     Examples
     --------
-    >>> text = materialx_document("Soap", "ThinFilm_User_Soap_R.exr", (0.0, 1.0))
+    >>> text = materialx_document("Soap", "ThinFilm_User_Soap_R.exr", (0.0, 1.0), size=(64, 32))
     >>> '<surfacematerial name="ThinFilm_Soap" type="material">' in text
     True
     """
@@ -94,6 +100,9 @@ def materialx_document(
         raise TypeError(f"key must be a non-empty string, got {key!r}")
     table = table_name("reflectance_exr", reflectance_exr)
     lo, hi = thickness_range(range_um)
+    if not isinstance(size, (tuple, list)) or len(size) != 2:
+        raise ParameterError("size", f" must be (width, height), got {size!r}")
+    width, height = (as_count("size", n, 2) for n in size)
     colorspace = MATERIALX_COLORSPACES[as_choice("space", space, MATERIALX_COLORSPACES)]
     name = re.sub(r"[^A-Za-z0-9_]", "_", key)
     graph_name = f"NG_ThinFilm_{name}"
@@ -157,8 +166,21 @@ def materialx_document(
             "in": ("float", {"interfacename": "thickness"}),
             "inlow": ("float", {"value": repr(lo)}),
             "inhigh": ("float", {"value": repr(hi)}),
-            "outlow": ("float", {"value": "0.0"}),
-            "outhigh": ("float", {"value": "1.0"}),
+            "outlow": ("float", {"value": repr(0.5 / width)}),
+            "outhigh": ("float", {"value": repr(1.0 - 0.5 / width)}),
+        },
+    )
+    _node(
+        graph,
+        "remap",
+        "cos_theta_v",
+        "float",
+        **{
+            "in": ("float", {"nodename": "cos_theta"}),
+            "inlow": ("float", {"value": "0.0"}),
+            "inhigh": ("float", {"value": "1.0"}),
+            "outlow": ("float", {"value": repr(0.5 / height)}),
+            "outhigh": ("float", {"value": repr(1.0 - 0.5 / height)}),
         },
     )
     _node(
@@ -167,7 +189,7 @@ def materialx_document(
         "uv",
         "vector2",
         in1=("float", {"nodename": "thickness_u"}),
-        in2=("float", {"nodename": "cos_theta"}),
+        in2=("float", {"nodename": "cos_theta_v"}),
     )
     _node(
         graph,

@@ -17,7 +17,10 @@ is the table's R at the thickness (a uniform, µm) and the angle:
   (anodised titanium, a bubble) wants ``metalness = 1`` or a black ``color``.
 
 Textures are addressed as OpenGL does (v = 0 at the texture's first row) and
-``EXRLoader`` puts the file's last scanline first, so the table's v is cos θ directly.
+``EXRLoader`` puts the file's last scanline first, so the table's y axis is cos θ
+ascending. The axes are node-centred (sample ``i`` of ``N`` at fraction ``i / (N - 1)``):
+the shader reads fraction ``f`` at ``(f (N - 1) + 0.5) / N`` with ``textureSize``, so normal
+and grazing incidence and both ends of the thickness range are table values.
 The module checks that three.js's shader chunks still hold the lines it replaces and
 throws an Error naming the three.js revision where they do not (written against three.js
 r187). Area lights (LTC) and iridescence are left as three.js has them: keep
@@ -45,7 +48,9 @@ uniform vec2 thinFilmRange;
 vec3 thinFilmR;
 vec3 thinFilmReflectance( const in float cosTheta ) {
 	float u = ( thinFilmThickness - thinFilmRange.x ) / ( thinFilmRange.y - thinFilmRange.x );
-	return texture2D( thinFilmTable, vec2( u, saturate( cosTheta ) ) ).rgb;
+	vec2 size = vec2( textureSize( thinFilmTable, 0 ) );
+	vec2 uv = ( saturate( vec2( u, cosTheta ) ) * ( size - 1.0 ) + 0.5 ) / size;
+	return texture( thinFilmTable, uv ).rgb;
 }
 """
 
@@ -86,7 +91,8 @@ import * as THREE from "three";
 import { EXRLoader } from "three/addons/loaders/EXRLoader.js";
 
 export const FILM = __KEY_JSON__;
-// The table's x axis: thickness (µm) at u = 0 and u = 1; its y axis: v = cos(theta).
+// The table's x axis: thickness (µm), first and last column; its y axis: cos(theta),
+// node-centred (the first row at 0, the last at 1).
 export const THICKNESS_RANGE_UM = [__LO__, __HI__];
 export const TABLE_URL = new URL(__TABLE_JSON__, import.meta.url).href;
 
@@ -133,7 +139,7 @@ export function applyThinFilm(material, table, { thickness = __MID__ } = {}) {
   return uniforms;
 }
 
-// The table as a texture: linear filtering, clamp to edge, no mipmaps, v = cos(theta).
+// The table as a texture: linear filtering, clamp to edge, no mipmaps, rows by cos(theta).
 export async function loadThinFilmTable(url = TABLE_URL, type = THREE.HalfFloatType) {
   const texture = await new EXRLoader().setDataType(type).loadAsync(url);
   texture.colorSpace = THREE.NoColorSpace;
