@@ -109,6 +109,33 @@ def test_report_bad_out_is_a_usage_error(tmp_path, capsys):
     assert "not writable" in err and len(err.strip().splitlines()) == 1
 
 
+def test_quick_report_never_replaces_a_full_report(tmp_path, capsys):
+    """A folder whose report.json is a full report (no "quick": true, as the committed
+    reports/report.json) is refused for --quick: exit 2, one line, nothing changed."""
+    full = tmp_path / "reports"
+    full.mkdir()
+    (full / "report.json").write_text(json.dumps({"headline": {}}))
+    (full / "report.md").write_text("the full report")
+    before = {p.name: p.read_bytes() for p in full.iterdir()}
+    assert main(["report", "--quick", "--no-progress", "--out", str(full)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("ocio-thinfilm: --out:") or "--out:" in err, err
+    assert "holds a full report" in err and len(err.splitlines()) == 1
+    assert {p.name: p.read_bytes() for p in full.iterdir()} == before
+
+
+def test_quick_report_records_that_it_is_quick(quick_report):
+    assert json.loads((quick_report / "report.json").read_text())["quick"] is True
+
+
+def test_quick_report_defaults_to_its_own_folder():
+    from ocio_thinfilm.cli import report as report_cli
+
+    assert report_cli.QUICK_OUT == "reports/quick"
+    ignored = Path(".gitignore").read_text(encoding="utf-8").splitlines()
+    assert "/reports/quick/" in ignored
+
+
 def test_belcour_barla_fit_is_normalised_and_tracks_the_exact_integral():
     # S(0, 0) = (1, 1, 1): the fit's equal-energy white.
     assert np.allclose(report.belcour_barla_sensitivity(0.0), 1.0, atol=2e-3)

@@ -118,6 +118,7 @@ def _run_report(ctx, quick, progress) -> Path:
         " / ".join(f"{v:.2f}" for v in os.getloadavg()) if hasattr(os, "getloadavg") else "?"
     )
     results["headline"] = facts
+    results["quick"] = bool(quick)
     results["load_average_after"] = load_after
     results["section_seconds"] = timings
     results["total_seconds"] = total

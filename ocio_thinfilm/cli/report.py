@@ -41,9 +41,37 @@ def _run_report():
     return run_report
 
 
+#: Where ``report --quick`` writes unless told: never the committed full report's folder.
+QUICK_OUT = "reports/quick"
+
+
+def _check_quick_out(out: Path) -> None:
+    """Refuse a ``--quick`` report into a folder that holds a full one.
+
+    A full report's ``report.json`` has no ``"quick": true``: a quick run must not
+    replace the measurements a checkout commits (reports/report.md and its plots).
+    """
+    import json
+
+    from ocio_thinfilm.checks import UsageError
+
+    try:
+        previous = json.loads((out / "report.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return
+    if isinstance(previous, dict) and not previous.get("quick", False):
+        raise UsageError(
+            f"--out: {out} holds a full report; a --quick report goes to another folder "
+            f"(default {QUICK_OUT})"
+        )
+
+
 def _run(args) -> int:
     run_report = _run_report()
-    print(run_report(args.out, quick=args.quick, progress=not args.no_progress))
+    out = Path(args.out if args.out is not None else QUICK_OUT if args.quick else "reports")
+    if args.quick:
+        _check_quick_out(out)
+    print(run_report(out, quick=args.quick, progress=not args.no_progress))
     return 0
 
 
@@ -61,7 +89,12 @@ def register(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) ->
         description="Measure everything on this machine and write <out>/report.md with PNG "
         "plots. Runs from a checkout of the repository (its evaluation/ folder).",
     )
-    p.add_argument("--out", default="reports", help="output directory (default: reports)")
+    p.add_argument(
+        "--out",
+        default=None,
+        help=f"output directory (default: reports; with --quick {QUICK_OUT}, and never a "
+        "folder holding a full report)",
+    )
     p.add_argument(
         "--quick",
         action="store_true",
