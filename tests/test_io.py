@@ -728,20 +728,31 @@ def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch)
 
     monkeypatch.setattr(durable, "fsync_file", enospc)
     code, _, err = cli_run(
-        [
-            "export",
-            "morpho",
-            "--size",
-            "8",
-            "--out",
-            str(tmp_path / "a" / "b" / "x.cube"),
-            "--quiet",
-        ],
+        ["export", "morpho", "--size", "8", "--out", str(tmp_path / "x.cube"), "--quiet"],
         capsys,
     )
     one_line_error(code, err, "x.cube")
     code, _, err = cli_run(
-        ["bake", "--out", str(tmp_path / "c" / "cfg"), "--quiet", "--clip-size", "9"], capsys
+        ["bake", "--out", str(tmp_path / "cfg"), "--quiet", "--clip-size", "9"], capsys
     )
     one_line_error(code, err)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["export", "morpho", "--size", "8", "--out", "{tmp}/missing/x.cube"],
+        ["export", "film", "--size", "16", "--out", "{tmp}/missing/dir/soap.cube"],
+        ["bake", "--clip-size", "9", "--out", "{tmp}/missing/cfg"],
+        ["render", "oil", "--size", "16", "--out", "{tmp}/missing/deeper"],
+    ],
+)
+def test_outputs_never_create_missing_folders_above_them(tmp_path, capsys, command):
+    """One rule for every command: the tool creates its output (a file, or an output
+    folder), never the missing folders above it, so a mistyped path is caught: one
+    line naming the missing folder, exit 2, nothing created."""
+    args = [a.replace("{tmp}", str(tmp_path)) for a in command]
+    code, _, err = cli_run([*args, "--quiet"], capsys)
+    one_line_error(code, err, "does not exist")
     assert list(tmp_path.iterdir()) == []

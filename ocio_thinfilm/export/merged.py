@@ -209,7 +209,7 @@ def bake_into(
     knobs = compress_map.check_knobs(compress_threshold, compress_limit, names=config.KNOB_NAMES)
     film_list = load_films(films)
     out = Path(out)
-    check_writable(out.parent if str(out.parent) else Path("."))
+    check_writable(out.parent if str(out.parent) else Path("."), create=False)
     compress = dict(zip(config.KNOB_NAMES, knobs, strict=True))
     if out.suffix.lower() == ".ocioz":
         with tempfile.TemporaryDirectory() as tmp:
@@ -264,7 +264,7 @@ def bake_archive(
     )
     film_list = load_films(films)
     out = Path(out)
-    check_writable(out.parent if str(out.parent) else Path("."))
+    check_writable(out.parent if str(out.parent) else Path("."), create=False)
     with tempfile.TemporaryDirectory() as tmp:
         path = write_config(
             tmp,

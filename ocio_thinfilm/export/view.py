@@ -506,7 +506,7 @@ def export_view(
     out = Path(out)
     if out.exists() and out.is_dir():
         raise ParameterError("out", f" {out} is a directory")
-    check_writable(out.parent if str(out.parent) else Path("."))
+    check_writable(out.parent if str(out.parent) else Path("."), create=False)
 
     knobs = knob_values if view_entry.kind == "compress" else None
     compress = dict(zip(KNOB_NAMES, knob_values, strict=True))

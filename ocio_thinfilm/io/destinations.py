@@ -161,16 +161,22 @@ def destination(path: StrPath) -> tuple[str, Path]:
     return "replace", real if p.is_symlink() else p
 
 
-def check_writable(directory: StrPath) -> Path:
+def check_writable(directory: StrPath, *, create: bool = True) -> Path:
     """Fail early, with a one-line error, if ``directory`` cannot be created or written.
 
-    The nearest existing directory on the way to ``directory`` must be writable (tried
-    with a real temporary file: ``access()`` says yes to root everywhere).
+    The package's one rule for outputs: it creates the output (a file, or a folder
+    when the output is a folder), never a chain of missing folders above it, so a
+    mistyped path is caught instead of silently made. ``directory`` must exist, or,
+    with ``create``, its parent must; that directory must be writable (tried with a
+    real temporary file: ``access()`` says yes to root everywhere).
 
     Parameters
     ----------
     directory : str or os.PathLike
         The directory; ``""`` is the current directory.
+    create : bool, optional
+        Whether the tool creates ``directory`` itself (an output folder: its parent
+        must exist); False for the folder a file goes into (it must exist).
 
     Returns
     -------
@@ -180,15 +186,22 @@ def check_writable(directory: StrPath) -> Path:
     Raises
     ------
     ValueError
-        ``"<directory>: directory is not writable"``, also when the nearest existing
-        path on the way is not a directory.
+        ``"<directory>: directory is not writable"`` (also when a path on the way is
+        not a directory), or a missing folder named.
     """
     d = Path(directory)
     if os.fspath(directory) == "":
         d = Path(".")
     probe = d
-    while not probe.exists() and not probe.is_symlink():
-        probe = probe.parent
+    if not probe.exists() and not probe.is_symlink():
+        probe = d.parent
+        if not create:
+            raise ValueError(f"{d}: folder does not exist (create it first)")
+        if not probe.exists() and not probe.is_symlink():
+            raise ValueError(
+                f"{d}: its folder {probe} does not exist (ocio-thinfilm creates the output "
+                "folder, not the folders above it)"
+            )
     if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
         raise ValueError(f"{d}: directory is not writable")
     try:  # access() says yes to root everywhere (even /proc): try a real file, kept nowhere
@@ -226,7 +239,10 @@ def check_output_file(path: StrPath, parameter: str = "out") -> Path:
     try:
         mode, dest = destination(path)
         if mode == "replace":
-            check_writable(dest.parent)
+            folder = dest.parent
+            if not folder.exists() and not folder.is_symlink():
+                raise ValueError(f"{path}: its folder {folder} does not exist (create it first)")
+            check_writable(folder, create=False)
     except ParameterError:
         raise
     except ValueError as error:

@@ -110,9 +110,9 @@ def claim_directory(
         Naming ``parameter``: an empty ``path``, a file that is not a directory, a
         :data:`MARKER` that is not a file, or a non-empty directory without the marker
         (it holds files this tool did not write).
-    ValueError
-        From :func:`ocio_thinfilm.io.destinations.check_writable`, if the directory
-        cannot be created or written.
+        Also (``parameter``) if the directory cannot be created or written
+        (:func:`ocio_thinfilm.io.destinations.check_writable`: a missing parent folder
+        included).
     """
     text = os.fspath(path)
     if text.strip() == "":
@@ -122,10 +122,12 @@ def claim_directory(
         p = Path(os.path.realpath(p))  # keep the link, write into what it points to
     if p.exists() and not p.is_dir():
         raise ParameterError(parameter, f" {p}: exists and is not a directory")
-    if not p.exists():
+    try:
         destinations.check_writable(p)
+    except ValueError as error:
+        raise ParameterError(parameter, f" {error}") from None
+    if not p.exists():
         return Claim(p, False, set(), parameter, last, keep_others)
-    destinations.check_writable(p)
     temporaries.clean_stale(p)
     names = [n for n in os.listdir(p) if not n.startswith(temporaries.TMP_PREFIX)]
     owned: set
