@@ -223,6 +223,7 @@ def test_swatches_csv_and_sheet_match_colour_science(tmp_path, capsys):
     films_file.write_text(
         '[films.Oxide]\nstack = ["air", "SiO2", "Si"]\nrange_um = [0, 0.6]\nilluminant = "F11"\n'
     )
+    (tmp_path / "sheets").mkdir()
     out = tmp_path / "sheets" / "oxide.csv"
     args = ["export", "film", "--films", str(films_file), "--swatches", str(out)]
     assert cli.main(args) == 0

@@ -744,6 +744,12 @@ def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch)
     [
         ["export", "morpho", "--size", "8", "--out", "{tmp}/missing/x.cube"],
         ["export", "film", "--size", "16", "--out", "{tmp}/missing/dir/soap.cube"],
+        ["export", "film", "--films", "docs/films.toml", "--film", "Temper"]
+        + ["--out", "{tmp}/missing/dir/temper.cube"],
+        ["export", "film", "--films", "docs/films.toml", "--film", "Temper"]
+        + ["--out", "{tmp}/missing/dir"],
+        ["export", "film", "--films", "docs/films.toml", "--film", "Temper"]
+        + ["--swatches", "{tmp}/missing/sheet.csv"],
         ["bake", "--clip-size", "9", "--out", "{tmp}/missing/cfg"],
         ["render", "oil", "--size", "16", "--out", "{tmp}/missing/deeper"],
     ],

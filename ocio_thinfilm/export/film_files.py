@@ -23,7 +23,7 @@ from ocio_thinfilm.checks import ParameterError, as_choice, as_count
 from ocio_thinfilm.config.data import film_lut_stem
 from ocio_thinfilm.export.bake import load_films
 from ocio_thinfilm.export.files import FORMATS, write_lut
-from ocio_thinfilm.io import StrPath, transaction, write_image
+from ocio_thinfilm.io import StrPath, check_output_file, check_writable, transaction, write_image
 from ocio_thinfilm.lut import film_tables, ocio_ops
 
 __all__ = ["FILM_FORMATS", "RAMP_HEIGHT", "pick_film", "film_contents", "export_film"]
@@ -163,13 +163,17 @@ def export_film(
             f"{', '.join('.' + f for f in FILM_FORMATS)}",
         )
     if fmt is not None and suffix:
-        targets = {fmt: out_path}
+        targets = {fmt: check_output_file(out_path, "out")}
     else:
         if out_path.exists() and not out_path.is_dir():
             raise ParameterError("out", f" {out_path}: not a directory")
         names = {f: stem + "." + FORMATS[f][1] for f in FORMATS if f in FILM_FORMATS}
         names["exr"] = stem + "_ramp.exr"
         targets = {f: out_path / names[f] for f in (FILM_FORMATS if fmt is None else (fmt,))}
+        try:  # the output folder: created here, its parent must exist
+            check_writable(out_path)
+        except ValueError as error:
+            raise ParameterError("out", f" {error}") from None
     values, lut, meta = film_contents(chosen, size)
     written = []
     if "exr" in targets:

@@ -25,7 +25,7 @@ import numpy.typing as npt
 from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError, as_array
 from ocio_thinfilm.colour import clip, colorimetry, encodings
-from ocio_thinfilm.io import StrPath, transaction, write_image
+from ocio_thinfilm.io import StrPath, check_output_file, transaction, write_image
 from ocio_thinfilm.io.images import draw_labels
 from ocio_thinfilm.lut import film_tables, material_tables
 from ocio_thinfilm.physics import films as films_module
@@ -177,6 +177,7 @@ def _check_csv(out: StrPath, parameter: str) -> Path:
         raise ParameterError(parameter, f" {path}: must be a file ending in .csv")
     if path.is_dir():
         raise ParameterError(parameter, f" {path}: is a directory; give a .csv file")
+    check_output_file(path, parameter)  # its folder exists and is writable
     return path
 
 
