@@ -742,6 +742,24 @@ def test_a_failed_write_leaves_no_new_directories(tmp_path, capsys, monkeypatch)
 @pytest.mark.parametrize(
     "command",
     [
+        ["export", "view", "--from", "ACEScct", "--display", "sRGB"]
+        + ["--view", "Channel Clamp", "--format", "cube", "--out", "{tmp}/c.spi1d"],
+        ["export", "film", "--format", "cube", "--out", "{tmp}/f.spi1d"],
+        ["export", "morpho", "--format", "clf", "--out", "{tmp}/m.csp"],
+    ],
+)
+def test_a_format_that_contradicts_the_file_name_is_refused(tmp_path, capsys, command):
+    """--format cube with --out c.spi1d would write a .cube under a .spi1d name, which
+    every host reading by extension misreads: one line naming --format, nothing written."""
+    args = [a.replace("{tmp}", str(tmp_path)) for a in command]
+    code, _, err = cli_run(args, capsys)
+    one_line_error(code, err, "--format", "ends in .")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
         ["export", "morpho", "--size", "8", "--out", "{tmp}/missing/x.cube"],
         ["export", "film", "--size", "16", "--out", "{tmp}/missing/dir/soap.cube"],
         ["export", "film", "--films", "docs/films.toml", "--film", "Temper"]

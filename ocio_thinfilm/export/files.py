@@ -58,6 +58,7 @@ __all__ = [
     "TABLES",
     "DEFAULT_SIZE",
     "DEFAULT_RANGE",
+    "lut_format",
     "lut_contents",
     "write_lut",
     "export_lut",
@@ -80,6 +81,60 @@ LUT_FORMATS = {
 #: all but CTF, OpenColorIO's own superset of CLF, which only whole views are written in.
 FORMATS = {name: spec for name, spec in LUT_FORMATS.items() if name != "ctf"}
 TABLES = ("film", "morpho", "clip")
+
+
+def lut_format(
+    out: StrPath | None, fmt: str | None, formats: Mapping[str, Any], default: str
+) -> str:
+    """Return the format of a LUT file: ``fmt``, else told from ``out``'s extension.
+
+    Parameters
+    ----------
+    out : str or os.PathLike or None
+        The output file (``None``: the default file name).
+    fmt : str or None
+        The format asked for.
+    formats : mapping
+        The allowed formats (name -> (OCIO writer, extension, dimensions)).
+    default : str
+        The format without ``out`` and ``fmt``.
+
+    Returns
+    -------
+    str
+        A key of ``formats``.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``fmt``) an unknown format, no format told from ``out``, or a format whose
+        files end otherwise than ``out``'s LUT extension (a .cube written into a
+        ``.spi1d`` name would mislead every host that reads by extension).
+
+    Examples
+    --------
+    >>> lut_format("a.spi1d", None, FORMATS, "clf"), lut_format(None, "csp", FORMATS, "clf")
+    ('spi1d', 'csp')
+    """
+    suffix = Path(out).suffix.lstrip(".").lower() if out else ""
+    if fmt is None:
+        fmt = suffix if out else default
+        if fmt not in formats:
+            raise ParameterError(
+                "fmt", f" is needed: no format can be told from {out!r} ({', '.join(formats)})"
+            )
+        return fmt
+    fmt = as_choice("fmt", fmt, formats)
+    known = {spec[1] for spec in LUT_FORMATS.values()}
+    if suffix in known and suffix != formats[fmt][1]:
+        raise ParameterError(
+            "fmt",
+            f" {fmt} writes .{formats[fmt][1]} files, but {out} ends in .{suffix}: "
+            "give a matching name or leave the format to the extension",
+        )
+    return fmt
+
+
 #: Formats with no way to state their input domain: only usable over exactly [0, 1].
 NO_DOMAIN = ("spi3d",)
 _FILM_DEFAULTS = registry.thin_film_space_for_kind("phase-change")
@@ -471,10 +526,7 @@ def export_lut(
         If the file cannot be written.
     """
     display = registry.display_name(display)
-    if fmt is None:
-        fmt = Path(out).suffix.lstrip(".").lower() if out else "clf"
-        if fmt not in FORMATS:
-            raise ParameterError("fmt", f" is needed: no format can be told from {out!r}")
+    fmt = lut_format(out, fmt, FORMATS, "clf")
     size, value_range = _validate(table, kind, display, index, value_range, size, fmt)
     if out is None:
         out = Path(_stem(table, kind, display, index) + "." + FORMATS[fmt][1])

@@ -74,7 +74,7 @@ from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.data import KNOB_NAMES
 from ocio_thinfilm.export import view_fit
-from ocio_thinfilm.export.files import LUT_FORMATS
+from ocio_thinfilm.export.files import LUT_FORMATS, lut_format
 from ocio_thinfilm.export.view_shaper import (
     DEFAULT_VIEW_SIZE,
     SHAPER_SIZE,
@@ -484,12 +484,7 @@ def export_view(
     import PyOpenColorIO as ocio
 
     knob_values = compress_map.check_knobs(compress_threshold, compress_limit, names=KNOB_NAMES)
-    if fmt is None:
-        fmt = Path(out).suffix.lstrip(".").lower() if out else "cube"
-        if fmt not in VIEW_FORMATS:
-            raise ParameterError(
-                "fmt", f" is needed: no format can be told from {out!r} ({', '.join(VIEW_FORMATS)})"
-            )
+    fmt = lut_format(out, fmt, LUT_FORMATS, "cube")
     size, value_range = _validate(source, display, view, size, fmt, value_range)
     assert source is not None and display is not None and view is not None  # _validate
     entry = registry.as_display(display)  # the objects from here on, their names for text
