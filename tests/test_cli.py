@@ -191,3 +191,27 @@ def test_building_the_parser_imports_no_colour_science(tmp_path):
     )
     assert done.returncode == 0, done.stderr
     assert "'colour'" not in done.stdout, done.stdout
+
+
+def _sub_parsers(parser, prefix=()):
+    """(command words, parser) of every sub-command, nested ones included."""
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield (*prefix, name), sub
+                yield from _sub_parsers(sub, (*prefix, name))
+
+
+def test_every_command_help_has_a_description():
+    """``ocio-thinfilm X --help`` says what X does (``demo --help`` had no text), and the
+    spectra option says it writes T too (it did not)."""
+    from ocio_thinfilm.cli.main import build_parser
+
+    commands = dict(_sub_parsers(build_parser()))
+    assert ("demo",) in commands and ("export", "film") in commands
+    for words, sub in commands.items():
+        assert sub.description and len(sub.description) > 20, words
+    film_help = commands[("export", "film")].format_help()
+    assert "transmittance" in " ".join(film_help.split())

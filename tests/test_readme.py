@@ -36,7 +36,7 @@ def test_readme_first_look_is_what_the_demo_prints(tmp_path, capsys):
     assert cli.main(["demo", "--out", str(tmp_path / "strip.png")]) == 0
     printed = capsys.readouterr().out.splitlines()
     assert printed[:-1] == block[:-1]
-    assert printed[-1].replace(str(tmp_path / "strip.png"), "docs/soap_strip.png") == block[-1]
+    assert printed[-1].replace(str(tmp_path / "strip.png"), "soap_strip.png") == block[-1]
 
 
 def _command_lines(text: str) -> list[str]:

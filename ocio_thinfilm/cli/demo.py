@@ -149,10 +149,19 @@ def register(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
         The sub-parsers of the ``ocio-thinfilm`` parser.
     """
     p = sub.add_parser(
-        "demo", help="print a soap film's colour and write a strip of Newton's colours"
+        "demo",
+        help="print a soap film's colour and write a strip of Newton's colours",
+        description="Print a soap film's colour at one thickness (n = 1.33, normal "
+        "incidence: its XYZ, linear sRGB, the constant-lightness clip and the sRGB code) "
+        "and write a PNG strip of soap-film colours for 0-2 um (top: the clip, bottom: a "
+        "channel clamp).",
     )
     p.add_argument(
         "--thickness", type=float, default=300.0, help="physical film thickness in nm (default 300)"
     )
-    p.add_argument("--out", default="docs/soap_strip.png", help="PNG to write")
+    p.add_argument(
+        "--out",
+        default="soap_strip.png",
+        help="PNG to write (default soap_strip.png in the current folder)",
+    )
     p.set_defaults(func=run)

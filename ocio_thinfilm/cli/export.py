@@ -416,7 +416,7 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         default=None,
         metavar="OUT.csv",
         help="with --films: write the film's reflectance spectra R(lambda) at --thickness "
-        "as a CSV (reflectance only)",
+        "as a CSV, and its transmittance T(lambda) too for a free-standing film",
     )
     f.add_argument(
         "--thickness",
