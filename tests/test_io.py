@@ -780,3 +780,36 @@ def test_outputs_never_create_missing_folders_above_them(tmp_path, capsys, comma
     code, _, err = cli_run([*args, "--quiet"], capsys)
     one_line_error(code, err, "does not exist")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_progress_in_a_log_is_plain_lines_after_a_few_seconds(capsys):
+    """Where stderr is not a terminal (a log, CI), a long bake or export prints plain
+    progress lines: none in the first seconds (quick runs stay silent), then one line per
+    interval naming the stage, and a last line; no carriage returns."""
+    from ocio_thinfilm.export.files import LogProgress, progress_bar
+
+    assert isinstance(progress_bar(True, 3, "bake x"), LogProgress)  # capsys: not a tty
+    assert progress_bar(False, 3, "bake x") is None  # --quiet
+    now = [0.0]
+    bar = LogProgress(10, "bake cfg", clock=lambda: now[0])
+    for t, stage in (
+        (1.0, "a.clf"),
+        (2.0, "b.clf"),
+        (6.0, "c.clf"),
+        (8.0, "d.clf"),
+        (22.0, "e.clf"),
+    ):
+        now[0] = t
+        bar.set_postfix_str(stage)
+        bar.update(1)
+    bar.close()
+    lines = capsys.readouterr().err.splitlines()
+    assert lines == [
+        "bake cfg: 3/10 c.clf (6 s)",
+        "bake cfg: 5/10 e.clf (22 s)",
+        "bake cfg: 5/10 e.clf (22 s), done",
+    ]
+    quick = LogProgress(10, "bake cfg", clock=lambda: 1.0)
+    quick.update(10)
+    quick.close()
+    assert capsys.readouterr().err == ""

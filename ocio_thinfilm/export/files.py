@@ -62,6 +62,7 @@ __all__ = [
     "lut_contents",
     "write_lut",
     "export_lut",
+    "LogProgress",
     "progress_bar",
 ]
 
@@ -543,11 +544,60 @@ def export_lut(
     return out
 
 
-def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
-    """Return a tqdm progress bar on stderr, or None.
+class LogProgress:
+    """Progress as plain lines on stderr, for a log or a pipe (no carriage returns).
 
-    None unless ``show`` and stderr is a terminal (a log or a pipe gets no
-    carriage-return residue, only the command's own lines).
+    Silent for the first :attr:`DELAY` seconds (a quick or cached run prints nothing),
+    then one line at most every :attr:`INTERVAL` seconds, ``<desc>: <done>/<total>
+    (<seconds> s)``, and a last line when closed if it printed any. The methods a
+    caller uses of a tqdm bar: ``update``, ``set_postfix_str`` (the stage, shown in the
+    line), ``close``.
+    """
+
+    DELAY = 5.0
+    INTERVAL = 15.0
+
+    def __init__(self, total: float, desc: str, clock: Callable[[], float] | None = None):
+        import time
+
+        self.total, self.desc, self.done, self.stage = total, desc, 0.0, ""
+        self._clock = clock or time.monotonic
+        self._start = self._clock()
+        self._last: float | None = None
+
+    def _line(self) -> str:
+        elapsed = self._clock() - self._start
+        stage = f" {self.stage}" if self.stage else ""
+        if self.total == 1.0:  # a fraction
+            return f"{self.desc}: {100.0 * self.done:.0f} %{stage} ({elapsed:.0f} s)"
+        return f"{self.desc}: {self.done:g}/{self.total:g}{stage} ({elapsed:.0f} s)"
+
+    def set_postfix_str(self, s: str = "", refresh: bool = True) -> None:
+        """Name the current stage (as tqdm's ``set_postfix_str``)."""
+        self.stage = s
+
+    def update(self, n: float = 1.0) -> None:
+        """Advance by ``n``; print a line when one is due."""
+        self.done += n
+        now = self._clock()
+        if now - self._start < self.DELAY:
+            return
+        if self._last is None or now - self._last >= self.INTERVAL:
+            self._last = now
+            print(self._line(), file=sys.stderr, flush=True)
+
+    def close(self) -> None:
+        """Print the last line, if any line was printed."""
+        if self._last is not None:
+            print(self._line() + ", done", file=sys.stderr, flush=True)
+
+
+def progress_bar(show: bool, total: float, desc: str) -> tqdm | LogProgress | None:
+    """Return a progress display on stderr, or None.
+
+    None unless ``show``; a tqdm bar where stderr is a terminal, else
+    :class:`LogProgress` (plain lines after a few seconds, no carriage-return residue in
+    a log).
 
     Parameters
     ----------
@@ -560,11 +610,13 @@ def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
 
     Returns
     -------
-    tqdm.tqdm or None
+    tqdm.tqdm or LogProgress or None
         The bar (the caller closes it), or ``None``.
     """
-    if not show or not sys.stderr.isatty():
+    if not show:
         return None
+    if not sys.stderr.isatty():
+        return LogProgress(total, desc)
     from tqdm import tqdm
 
     return tqdm(
