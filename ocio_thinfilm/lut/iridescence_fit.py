@@ -77,8 +77,8 @@ class IridescenceTarget:
 
 
 def metal_substrate(film: Film) -> bool:
-    """Return whether the layer under the film's varying layer absorbs like a metal."""
-    below = film.stack[film.vary + 2]
+    """Return whether the film's substrate (the last medium of its stack) absorbs like a metal."""
+    below = film.stack[-1]
     return bool(abs(complex(below.index(np.array([550.0]))[0]).imag) > METAL_K)
 
 
@@ -117,7 +117,7 @@ def target_from_table(
         XYZ=colorimetry.RGB_to_XYZ(rgb, "Rec.709"),
         range_nm=(lo * 1000.0, hi * 1000.0),
         film_index=float(film.varying.index(wl)[0].real),
-        substrate=complex(film.stack[film.vary + 2].index(wl)[0]),
+        substrate=complex(film.stack[-1].index(wl)[0]),
         base_rgb=tuple(float(v) for v in np.clip(table[h - 1, 0], 0.0, 1.0)),  # type: ignore[arg-type]
     )
 

@@ -4,6 +4,7 @@ glTF carries one film, ``KHR_materials_iridescence``: a dielectric layer of inde
 ``iridescenceIor`` and thickness ``d`` nm over the material's base. three.js (r187,
 ``iridescence_fragment``, ``lights_fragment_begin``, ``lights_physical_pars_fragment``)
 evaluates it with Belcour & Barla's (2017) Airy sum: Schlick's Fresnel at both interfaces
+(``F_Schlick``: Epic's ``exp2`` form of ``(1 - cos)^5``)
 (the base's index from its F0 as if it were seen from air), phase flips by comparing
 indices, two harmonics of the optical path difference through Gaussian fits of the CIE
 XYZ sensitivities (an implicit illuminant E) and sRGB's matrix, clamped at 0. The
@@ -111,7 +112,9 @@ def eval_sensitivity(opd_nm: npt.ArrayLike, shift: npt.ArrayLike) -> np.ndarray:
 
 
 def _schlick(f0: np.ndarray, cos_theta: np.ndarray) -> np.ndarray:
-    return f0 + (1.0 - f0) * (1.0 - cos_theta) ** 5
+    # three.js's F_Schlick: Epic's (SIGGRAPH 2013) exp2 form of (1 - cos)^5
+    fresnel = np.exp2((-5.55473 * cos_theta - 6.98316) * cos_theta)
+    return f0 * (1.0 - fresnel) + fresnel
 
 
 def iridescence_fresnel(
@@ -176,17 +179,25 @@ def schlick_to_f0(f: npt.ArrayLike, cos_theta: npt.ArrayLike) -> np.ndarray:
     return (np.asarray(f, dtype=np.float64) - x5) / (1.0 - x5)
 
 
-def _lobe(model: KHRIridescence, base_f0: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
-    x5 = ((1.0 - c) ** 5)[..., None]
-    fa, fb = 1.0 - x5, x5
+def _lobe(
+    model: KHRIridescence, base_f0: np.ndarray, c: np.ndarray, d: np.ndarray, fab: np.ndarray
+) -> np.ndarray:
+    fa, fb = fab[..., 0:1], fab[..., 1:2]
     factor = np.where(d == 0.0, 0.0, np.clip(model.factor, 0.0, 1.0))[..., None]
     fresnel = iridescence_fresnel(model.ior, c, d, base_f0)
     fr = base_f0 + (schlick_to_f0(fresnel, c) - base_f0) * factor
-    return fr * fa + fb
+    # computeMultiscatteringIridescence (Fdez-Aguera 2019), uniform light of radiance 1
+    single = fr * fa + fb
+    ems = 1.0 - (fa + fb)
+    favg = fr + (1.0 - fr) * 0.047619
+    return single + single * favg / (1.0 - ems * favg) * ems
 
 
 def mirror_reflectance(
-    model: KHRIridescence, g: npt.ArrayLike, cos_theta: npt.ArrayLike
+    model: KHRIridescence,
+    g: npt.ArrayLike,
+    cos_theta: npt.ArrayLike,
+    fab: npt.ArrayLike | None = None,
 ) -> np.ndarray:
     """Return what three.js shows of a mirror with the film under a uniform white light.
 
@@ -201,6 +212,10 @@ def mirror_reflectance(
         The material.
     g, cos_theta : array_like
         Thickness texture values in [0, 1] and N·V (broadcast together).
+    fab : array_like, optional
+        The split-sum terms ``(f_a, f_b)`` (three.js's ``dfgLUT`` at the pixel's
+        roughness), shape ``broadcast shape + (2,)``; default a mirror's,
+        ``(1 - x^5, x^5)`` with ``x = 1 - N·V``, where the multiple-scattering term is 0.
 
     Returns
     -------
@@ -220,11 +235,16 @@ def mirror_reflectance(
         np.asarray(g, dtype=np.float64), np.clip(np.asarray(cos_theta, dtype=np.float64), 0, 1)
     )
     d = model.thickness(g_arr)
+    if fab is None:
+        x5 = (1.0 - c) ** 5
+        terms = np.stack([1.0 - x5, x5], axis=-1)
+    else:
+        terms = np.broadcast_to(np.asarray(fab, dtype=np.float64), c.shape + (2,))
     f0 = ((model.base_ior - 1.0) / (model.base_ior + 1.0)) ** 2
     out = np.zeros(c.shape + (3,))
     if model.metalness < 1.0:
-        out = out + (1.0 - model.metalness) * _lobe(model, np.full(3, f0), c, d)
+        out = out + (1.0 - model.metalness) * _lobe(model, np.full(3, f0), c, d, terms)
     if model.metalness > 0.0:
         base = np.asarray(model.base_colour, dtype=np.float64)
-        out = out + model.metalness * _lobe(model, base, c, d)
+        out = out + model.metalness * _lobe(model, base, c, d, terms)
     return out
