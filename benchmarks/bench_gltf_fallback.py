@@ -28,7 +28,8 @@ ROOT = Path(__file__).resolve().parents[1]
 def main() -> None:
     films = read_films(ROOT / "docs" / "films.toml")
     print(
-        "| film | fitted (ior, nm, factor, base) | default p50 / p95 / max | fitted p50 / p95 / max | fit |"
+        "| film | fitted (ior, nm, factor, base) | default p50 / p95 / max "
+        "| fitted p50 / p95 / max | fit |"
     )
     print("|---|---|---|---|---|")
     for key, film in films.items():

@@ -79,7 +79,12 @@ def _frames(chromium, three, tmp_path, files, cases):
     gltf_page.write_site(site, three, files, SIZE, cases)
     with browser.serve(site) as url:
         dom, stderr, _ = browser.dump_dom(
-            chromium, url + "index.html", tmp_path / "profile", "--window-size=400,400"
+            chromium,
+            url + "index.html",
+            tmp_path / "profile",
+            "--window-size=400,400",
+            "--virtual-time-budget=180000",  # four programs to compile on SwiftShader
+            timeout=300.0,
         )
     out = browser.page_readback(dom, stderr)
     assert "error" not in out, out.get("error")
