@@ -219,12 +219,19 @@ def _run_film_tables(args: argparse.Namespace) -> int:
 def _run_material(args: argparse.Namespace) -> int:
     """``export material``: a film's reflectance (and transmittance) tables as EXRs."""
     from ocio_thinfilm.export.film_files import pick_film
-    from ocio_thinfilm.export.material import export_material, host_files
+    from ocio_thinfilm.export.material import export_material, gltf_files, host_files
 
     film = pick_film(args.films, args.film)
     hosts = host_files(film, args.space)
+    binaries = gltf_files(film, args.space) if args.gltf else None
     written = export_material(
-        film, args.out, space=args.space, size=args.size, hosts=hosts, gamut=args.gamut
+        film,
+        args.out,
+        space=args.space,
+        size=args.size,
+        hosts=hosts,
+        gamut=args.gamut,
+        binaries=binaries,
     )
     for path in written:
         print(f"wrote {path}")
@@ -547,6 +554,13 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         "or clip them at constant lightness into the space's RGB cube, for renderers that "
         "clamp negative colours (Cycles, MaterialX); clip needs a --space with a display's "
         "primaries (docs/materials.md)",
+    )
+    mat.add_argument(
+        "--gltf",
+        action="store_true",
+        help="also write <stem>.glb (the film on a sample sphere: the exact tables in the "
+        "OCIO_THINFILM_materials_film extension, a fitted KHR_materials_iridescence "
+        "fallback) and ocio_thinfilm_gltf.js, the three.js GLTFLoader plugin (docs/gltf.md)",
     )
     mat.set_defaults(func=_run_material)
 

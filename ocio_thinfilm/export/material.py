@@ -48,10 +48,13 @@ __all__ = [
     "MaterialTable",
     "gamut_display",
     "HostWriter",
+    "BinaryWriter",
+    "GLTF_SPACE",
     "check_space",
     "parse_size",
     "material_table",
     "host_files",
+    "gltf_files",
     "export_material",
 ]
 
@@ -68,6 +71,13 @@ _DATETIME = "2000:01:01 00:00:00"
 #: -> the text of a file for that host (a Blender script, an ES module, a MaterialX
 #: document).
 HostWriter = Callable[[TableFiles], str]
+#: A writer of a binary file from the tables themselves (the ``.glb``): the written
+#: tables' record and the :class:`MaterialTable` -> the file's bytes.
+BinaryWriter = Callable[[TableFiles, "MaterialTable"], bytes]
+#: glTF's colours are linear Rec.709 (sRGB primaries, D65).
+GLTF_SPACE = "Linear Rec.709 (sRGB)"
+#: Table nodes the ``.glb``'s KHR_materials_iridescence fit looks at (thickness x cos theta).
+_GLTF_FIT_NODES = (48, 12)
 
 
 @dataclass(frozen=True)
@@ -330,6 +340,69 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
     return files
 
 
+def gltf_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, BinaryWriter]:
+    """Return the glTF files ``export material --gltf`` writes beside a film's tables.
+
+    - ``<stem>.glb``: the film on a sample sphere
+      (:func:`ocio_thinfilm.export.hosts.gltf.gltf_binary`): the exact tables in the
+      ``OCIO_THINFILM_materials_film`` extension and a ``KHR_materials_iridescence``
+      fallback fitted to them (:func:`ocio_thinfilm.lut.iridescence_fit.fit_iridescence`);
+    - ``ocio_thinfilm_gltf.js``: the three.js ``GLTFLoader`` plugin that draws the
+      extension (:func:`ocio_thinfilm.export.hosts.gltf.plugin_module`).
+
+    Parameters
+    ----------
+    film : Film
+    space : str, optional
+        The tables' space: must be :data:`GLTF_SPACE`.
+
+    Returns
+    -------
+    dict
+        File name -> :data:`BinaryWriter`.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``space``) another space than glTF's linear Rec.709; (``film``) a film not seen
+        from air (glTF's materials sit in a medium of index 1).
+    """
+    from ocio_thinfilm.export.hosts import gltf
+    from ocio_thinfilm.lut import iridescence_fit
+
+    if check_space(space) != GLTF_SPACE:
+        raise ParameterError(
+            "space", f" must be {GLTF_SPACE!r} for --gltf (glTF's colours), got {space!r}"
+        )
+    material_tables.check_film(film)
+    n0 = film.stack[0].index(np.linspace(380.0, 780.0, 81))
+    if not np.allclose(n0, 1.0, rtol=0.0, atol=1e-3):
+        raise ParameterError(
+            "film",
+            f" {film.key}: stack: glTF's materials are seen from air (n = 1); the incident "
+            f"medium {film.stack[0].name!r} has n = {float(n0.real.mean()):.3g}",
+        )
+
+    def glb(files: TableFiles, table: MaterialTable) -> bytes:
+        target = iridescence_fit.target_from_table(
+            film, table.reflectance, table.range_um, *_GLTF_FIT_NODES
+        )
+        fallback = iridescence_fit.fit_iridescence(target)
+        return gltf.gltf_binary(
+            film.key,
+            table.reflectance,
+            table.range_um,
+            fallback,
+            transmittance=table.transmittance,
+            name=film.name,
+        )
+
+    def plugin(files: TableFiles, table: MaterialTable) -> bytes:
+        return gltf.plugin_module().encode("utf-8")
+
+    return {f"{film_lut_stem(film)}.glb": glb, gltf.PLUGIN_NAME: plugin}
+
+
 def export_material(
     film: Film,
     out_dir: StrPath,
@@ -338,6 +411,7 @@ def export_material(
     size: str | tuple[int, int] | None = None,
     hosts: Mapping[str, HostWriter] | None = None,
     gamut: str = "keep",
+    binaries: Mapping[str, BinaryWriter] | None = None,
 ) -> list[Path]:
     """Write a film's material tables (and host files) into the directory ``out_dir``.
 
@@ -362,6 +436,10 @@ def export_material(
         none).
     gamut : str, optional
         ``"keep"`` (default) or ``"clip"`` (:func:`material_table`).
+    binaries : mapping, optional
+        File name -> binary writer (:data:`BinaryWriter`, e.g. :func:`gltf_files`):
+        called with the written tables' record and the table, its bytes written with the
+        tables (default none).
 
     Returns
     -------
@@ -392,11 +470,15 @@ def export_material(
         size=table.size,
         space=table.space,
     )
-    texts = {}
+    texts: dict[str, str | bytes] = {}
     for name, writer in (hosts or {}).items():
         if Path(name).name != name or name in images:
             raise ParameterError("hosts", f" {name!r}: must be a new file name without folders")
         texts[name] = writer(files)
+    for name, binary in (binaries or {}).items():
+        if Path(name).name != name or name in images or name in texts:
+            raise ParameterError("binaries", f" {name!r}: must be a new file name without folders")
+        texts[name] = binary(files, table)
     with atomic_directory(out, parameter="out", keep_others=True) as stage:
         for name, (quantity, pixels) in images.items():
             # the EXR's first scanline is the top: cos theta descending
@@ -408,5 +490,8 @@ def export_material(
                 attributes=_attributes(table, quantity),
             )
         for name, text in texts.items():
-            (stage / name).write_text(text, encoding="utf-8")
+            if isinstance(text, bytes):
+                (stage / name).write_bytes(text)
+            else:
+                (stage / name).write_text(text, encoding="utf-8")
     return [out / name for name in (*images, *texts)]

@@ -5,6 +5,10 @@
 - :mod:`.film_tables` -- the tables of users' films (physical thickness -> XYZ);
 - :mod:`.material_tables` -- a film's colour over thickness x view angle (the
   material tables of ``export material``);
+- :mod:`.khr_iridescence` -- what glTF viewers draw for ``KHR_materials_iridescence``
+  (three.js r187's model in numpy);
+- :mod:`.iridescence_fit` -- its parameters fitted to an exact film (the ``.glb``'s
+  fallback);
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
 - :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
 - :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its
@@ -22,6 +26,8 @@ __all__ = [
     "tables",
     "film_tables",
     "material_tables",
+    "khr_iridescence",
+    "iridescence_fit",
     "display_transforms",
     "grid",
     "node_fit",

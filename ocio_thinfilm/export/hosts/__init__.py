@@ -9,6 +9,9 @@ an axis of ``N`` texels at the texture coordinate ``(f (N - 1) + 0.5) / N``.
   (Cycles, EEVEE);
 - :mod:`.three` -- an ES module for three.js that turns a ``MeshPhysicalMaterial`` into
   the film;
+- :mod:`.gltf` -- a binary glTF of the film on a sample sphere (a fitted
+  ``KHR_materials_iridescence`` fallback and the exact table in a vendor extension) and
+  the three.js ``GLTFLoader`` plugin that reads it;
 - :mod:`.materialx` -- a MaterialX 1.39 document: a node graph reading the table by
   thickness and view angle, feeding a BSDF.
 """
