@@ -280,3 +280,60 @@ def test_an_out_that_is_a_file_is_refused(tmp_path, capsys):
     code, err = _cli([*args, "--out", str(out)], capsys)
     assert code == 2 and len(err.splitlines()) == 1 and "--out" in err, err
     assert out.read_text() == "mine" and list(tmp_path.iterdir()) == [out]
+
+
+#: Run by PyPI bpy's Python: import the .glb with Blender's own glTF importer and report
+#: what it made of the film (materials and the Principled inputs the fallback maps to).
+_BPY_IMPORT = r"""
+import json, sys
+import bpy
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+result = bpy.ops.import_scene.gltf(filepath=sys.argv[1])
+report = {"result": sorted(result), "materials": {}}
+for material in bpy.data.materials:
+    nodes = material.node_tree.nodes if material.node_tree else []
+    principled = next((n for n in nodes if n.type == "BSDF_PRINCIPLED"), None)
+    inputs = {}
+    if principled is not None:
+        for name in ("Metallic", "IOR", "Thin Film IOR", "Thin Film Thickness"):
+            if name in principled.inputs:
+                inputs[name] = principled.inputs[name].default_value
+    report["materials"][material.name] = inputs
+report["meshes"] = len(bpy.data.meshes)
+with open(sys.argv[2], "w") as f:
+    json.dump(report, f)
+"""
+
+
+def test_blender_imports_the_glb(tmp_path):
+    """PyPI bpy's glTF importer reads the .glb without error: the sample sphere and its
+    material, the fallback's iridescence IOR as the Principled BSDF's Thin Film IOR (the
+    vendor extension is ignored, as for every viewer without the plugin)."""
+    import json
+    import subprocess
+
+    from evaluation import blender
+
+    python = blender.bpy_python()
+    if python is None:
+        pytest.skip(f"PyPI bpy {blender.BPY_VERSION} not installed (python -m evaluation.blender)")
+    film, _, fallback, data = _small_glb("SoapFilm", (48, 16), code=140)
+    glb = tmp_path / "soap.glb"
+    glb.write_bytes(data)
+    probe = tmp_path / "probe.py"
+    probe.write_text(_BPY_IMPORT)
+    answer = tmp_path / "answer.json"
+    done = subprocess.run(
+        [str(python), str(probe), str(glb), str(answer)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert done.returncode == 0 and answer.exists(), done.stderr[-2000:]
+    report = json.loads(answer.read_text())
+    assert report["result"] == ["FINISHED"] and report["meshes"] == 1, report
+    (inputs,) = report["materials"].values()
+    print("\nBlender's import of the fallback:", inputs)
+    if "Thin Film IOR" in inputs:  # Blender >= 4.2 maps KHR_materials_iridescence's ior
+        assert inputs["Thin Film IOR"] == pytest.approx(fallback.ior, abs=1e-4)
