@@ -22,7 +22,6 @@ Usage: python benchmarks/bench_ap0_corners.py [--edges 65 73 81]
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import tempfile
 from pathlib import Path
@@ -32,6 +31,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
 sys.path.insert(0, str(ROOT / "benchmarks"))
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 DEFAULT_EDGES = (65, 73, 81)
 WHITE = 53
 
@@ -101,7 +102,7 @@ def main(argv=None):
     from evaluation.colours import ap0_below_white
 
     rows = measure(args.edges, args.displays)
-    (ROOT / "reports" / "bench_ap0_corners.json").write_text(json.dumps(rows, indent=1) + "\n")
+    _reports.write_json("ap0_corners", rows)
     text = markdown(rows, len(ap0_below_white()))
     (ROOT / "reports" / "bench_ap0_corners.md").write_text(text)
     print(text)

@@ -28,7 +28,6 @@ Usage: python benchmarks/bench_clip_size.py [--pairs 49:41 57:45 65:53 65:57 73:
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import tempfile
 import time
@@ -38,6 +37,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 DEFAULT_PAIRS = ("49:41", "57:45", "65:49", "65:53", "65:57", "73:53")
 
 
@@ -284,17 +285,14 @@ def main(argv=None):
     rows = measure(pairs, args.displays)
     parse, cubes = parse_cost(), plain_cube_curve(args.cube_sizes)
     sets = list(rows[0]["accuracy"])
-    (ROOT / "reports" / "bench_clip_size.json").write_text(
-        json.dumps(
-            {
-                "ocio": ocio.__version__,
-                "rows": rows,
-                "parse_cost": parse,
-                "plain_cube": {str(n): v for n, v in cubes.items()},
-            },
-            indent=1,
-        )
-        + "\n"
+    _reports.write_json(
+        "clip_size",
+        {
+            "ocio": ocio.__version__,
+            "rows": rows,
+            "parse_cost": parse,
+            "plain_cube": {str(n): v for n, v in cubes.items()},
+        },
     )
     (ROOT / "reports" / "bench_clip_size.md").write_text(
         markdown(rows, sets, ocio.__version__) + extras_markdown(parse, cubes)

@@ -28,8 +28,6 @@ Usage: python benchmarks/bench_compress.py [--pairs 41:41 49:41 49:49 57:49]
 from __future__ import annotations
 
 import argparse
-import json
-import re
 import sys
 import tempfile
 from pathlib import Path
@@ -38,6 +36,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 DEFAULT_PAIRS = ("33:33", "41:41", "49:41", "49:49", "57:49")
 DOC = ROOT / "docs" / "compress.md"
 BEGIN, END = "<!-- compress-accuracy:begin -->", "<!-- compress-accuracy:end -->"
@@ -213,14 +213,12 @@ def shipped_markdown(result):
     return "\n".join(out)
 
 
-def update_doc(result, path=DOC):
-    text = path.read_text()
-    if BEGIN not in text:
-        raise SystemExit(f"{path} has no {BEGIN} marker")
-    block = f"{BEGIN}\n{shipped_markdown(result)}\n{END}"
-    path.write_text(
-        re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
-    )
+def update_doc(result, path=DOC, update=False):
+    """docs/compress.md's accuracy table from ``result``.
+
+    Written only if ``update``; else says whether it would change.
+    """
+    _reports.update_section(path, BEGIN, END, shipped_markdown(result), update=update)
 
 
 def main(argv=None):
@@ -231,8 +229,16 @@ def main(argv=None):
         default=list(DEFAULT_PAIRS),
         help="edge pairs S_b:S_w of the squeezes' Lut3Ds",
     )
-    parser.add_argument("--plot", default=str(ROOT / "docs" / "compress_ramps.png"))
+    parser.add_argument(
+        "--plot",
+        default=None,
+        help="where to draw the ramps (default: docs/compress_ramps.png with --update-docs, "
+        "else not drawn)",
+    )
+    _reports.add_update_docs(parser)
     args = parser.parse_args(argv)
+    if args.plot is None and args.update_docs:
+        args.plot = str(ROOT / "docs" / "compress_ramps.png")
 
     def progress(text):
         print(text, flush=True)
@@ -247,7 +253,11 @@ def main(argv=None):
     from evaluation.report import ramps
 
     ramp, rgb_out = ramps.ramp_table()
-    ramps.plot(ramp, rgb_out).savefig(args.plot, dpi=110)
+    if args.plot:
+        ramps.plot(ramp, rgb_out).savefig(args.plot, dpi=110)
+        print(f"drew {args.plot}")
+    else:
+        print("docs/compress_ramps.png not redrawn (--update-docs or --plot PATH draws it)")
     report = dict(
         defaults=defaults,
         accuracy=accuracy,
@@ -259,15 +269,12 @@ def main(argv=None):
             if k != "input"
         },
     )
-    (ROOT / "reports" / "bench_compress.json").write_text(json.dumps(report, indent=1) + "\n")
+    _reports.write_json("compress", report)
     text = _markdown(defaults, accuracy, ramp)
     (ROOT / "reports" / "bench_compress.md").write_text(text)
-    update_doc(report)
     print(text)
-    print(
-        f"wrote reports/bench_compress.md, reports/bench_compress.json, {args.plot}, "
-        f"and the accuracy table of {DOC.relative_to(ROOT)}"
-    )
+    print("wrote reports/bench_compress.md")
+    update_doc(report, update=args.update_docs)
 
 
 if __name__ == "__main__":

@@ -33,8 +33,6 @@ Usage: python benchmarks/bench_compress_knobs.py [--pairs 0.6:1.5 0.9:1.2 ...]
 from __future__ import annotations
 
 import argparse
-import json
-import re
 import sys
 import time
 from pathlib import Path
@@ -43,6 +41,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 DOC = ROOT / "docs" / "compress.md"
 JSON = ROOT / "reports" / "bench_compress_knobs.json"
 BEGIN, END = "<!-- compress-knobs:begin -->", "<!-- compress-knobs:end -->"
@@ -289,14 +289,12 @@ def report_markdown(result):
     return "\n".join(lines) + "\n"
 
 
-def update_doc(result, path=DOC):
-    text = path.read_text()
-    if BEGIN not in text:
-        raise SystemExit(f"{path} has no {BEGIN} marker")
-    block = f"{BEGIN}\n{knobs_markdown(result)}\n{END}"
-    path.write_text(
-        re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
-    )
+def update_doc(result, path=DOC, update=False):
+    """docs/compress.md's knob tables from ``result``.
+
+    Written only if ``update``; else says whether it would change.
+    """
+    _reports.update_section(path, BEGIN, END, knobs_markdown(result), update=update)
 
 
 def main(argv=None):
@@ -309,6 +307,7 @@ def main(argv=None):
         help="knob pairs to measure (default: the grid of THRESHOLDS x LIMITS); with "
         "--pairs nothing is written",
     )
+    _reports.add_update_docs(parser)
     args = parser.parse_args(argv)
     pairs = (
         [tuple(float(v) for v in p.split(":")) for p in args.pairs]
@@ -329,13 +328,10 @@ def main(argv=None):
         print(f"pairs inside the tested range that miss a target: {inside_fail}")
     if args.pairs:
         return
-    JSON.write_text(json.dumps(result, indent=1) + "\n")
+    _reports.write_json("compress_knobs", result, path=JSON)
     (ROOT / "reports" / "bench_compress_knobs.md").write_text(report_markdown(result))
-    update_doc(result)
-    print(
-        "wrote reports/bench_compress_knobs.json, reports/bench_compress_knobs.md and the "
-        f"knob tables of {DOC.relative_to(ROOT)}"
-    )
+    print("wrote reports/bench_compress_knobs.md")
+    update_doc(result, update=args.update_docs)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,8 @@
    of out-of-gamut-heavy colours, in Mpixel/s (best of repeats), with the
    per-channel clamp and a memory copy of the same buffer for scale.
 
-Not a timed test: numbers depend on the machine and its load.
+Not a timed test: numbers depend on the machine and its load. Writes
+reports/bench_core.json.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
+from benchmarks import _reports  # noqa: E402  (after the path above)
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.physics import exact, spectra  # noqa: E402
 
@@ -114,13 +115,24 @@ def main(argv=None):
     )
     ratio_closed, ratio_airy = bench_spectra(args.repeats)
     print()
-    bench_clip(max(1, args.repeats // 2))
+    clip_rates = bench_clip(max(1, args.repeats // 2))
     print()
     verdict = "PASS" if ratio_closed >= 20 else "FAIL"
     print(
         f"closed form vs thin_film_tmm: {ratio_closed:.1f}x ({verdict}, goal >= 20x); "
         f"Airy: {ratio_airy:.1f}x"
     )
+    result = {
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "cpus": os.cpu_count(),
+        "repeats": args.repeats,
+        "closed_form_over_tmm": ratio_closed,
+        "airy_over_tmm": ratio_airy,
+        "goal_closed_form_over_tmm": 20.0,
+        "clip_mpix_per_s": clip_rates,
+    }
+    _reports.write_json("core", result)
     return 0
 
 

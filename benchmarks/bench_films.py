@@ -13,7 +13,7 @@
    that they agree), and table size against ΔE2000 (max over 500 thicknesses against
    colour-science at 1 nm) and build time.
 
-Usage: python benchmarks/bench_films.py [--repeat 2]
+Usage: python benchmarks/bench_films.py [--repeat 2]; writes reports/bench_films.json.
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+from benchmarks import _reports  # noqa: E402  (after the path above)
 
 TEN_FILMS = """
 [materials.Oil]
@@ -92,6 +93,7 @@ def main() -> None:
         _bake(tmp / "warm", None)  # fills the disk cache of the default config
         default = min(_bake(tmp / f"d{i}", None) for i in range(args.repeat))
         with_films = min(_bake(tmp / f"f{i}", films) for i in range(args.repeat))
+    result: dict = {"bake_s": {"default": default, "with_10_films": with_films}, "films": {}}
     print(
         f"bake: default {default:.2f} s, with 10 films {with_films:.2f} s "
         f"(+{with_films - default:.2f} s, ratio {with_films / default:.2f})"
@@ -130,13 +132,16 @@ def main() -> None:
             ref = np.array([tmm_RTA(film, x * 1000.0, wl)[:, 0] for x in t]) @ w
             name = "tmm 4 nm"
         dE = _delta_E(table.lookup(t), ref, white)
-        print(
-            f"{key:<14} {table.size:>6} {seconds:>8.2f} {name:>12} "
-            f"{np.percentile(dE, 99):>7.3f} {dE.max():>6.3f}"
+        p99 = float(np.percentile(dE, 99))
+        print(f"{key:<14} {table.size:>6} {seconds:>8.2f} {name:>12} {p99:>7.3f} {dE.max():>6.3f}")
+        result["films"][key] = dict(
+            size=table.size, table_s=seconds, reference=name, dE_p99=p99, dE_max=float(dE.max())
         )
+    result["error_against_time"] = error_against_time()
+    _reports.write_json("films", result)
 
 
-def error_against_time() -> None:
+def error_against_time() -> dict:
     """Section 3 of the module docstring (:func:`evaluation.films.error_against_time`)."""
     from evaluation.films import error_against_time as measure
 
@@ -151,8 +156,8 @@ def error_against_time() -> None:
     for key, rows in result["tables"].items():
         cells = [f"{r['dE_max']:.3f}/{r['seconds']:.2f}s" for r in rows]
         print(f"{key:<14} " + " ".join(f"{v:>11}" for v in cells))
+    return result
 
 
 if __name__ == "__main__":
     main()
-    error_against_time()

@@ -42,6 +42,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 
 
@@ -290,22 +292,18 @@ def status_markdown(result):
     return text
 
 
-def _replace_between(path, begin, end, body):
-    text = Path(path).read_text()
-    head, rest = text.split(begin, 1)
-    _, tail = rest.split(end, 1)
-    Path(path).write_text(f"{head}{begin}\n{body}\n{end}{tail}")
-
-
-def update_markdown(path, result):
+def update_markdown(path, result, update=False):
     """Replace the text between BEGIN and END in ``path`` by :func:`numbers_markdown`,
-    and the README's status line by :func:`status_markdown`."""
-    _replace_between(path, BEGIN, END, numbers_markdown(result))
+    and the README's status line by :func:`status_markdown` -- if ``update``; else say
+    which would change."""
+    _reports.update_section(path, BEGIN, END, numbers_markdown(result), update=update)
     if TARGETS_BEGIN in Path(path).read_text():
-        _replace_between(path, TARGETS_BEGIN, TARGETS_END, targets_markdown(result))
+        body = targets_markdown(result)
+        _reports.update_section(path, TARGETS_BEGIN, TARGETS_END, body, update=update)
     readme = ROOT / "README.md"
     if STATUS_BEGIN in readme.read_text():
-        _replace_between(readme, STATUS_BEGIN, STATUS_END, status_markdown(result))
+        body = status_markdown(result)
+        _reports.update_section(readme, STATUS_BEGIN, STATUS_END, body, update=update)
 
 
 def main(argv=None):
@@ -314,6 +312,7 @@ def main(argv=None):
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--json", default=str(ROOT / "reports" / "bench_gamut_map.json"))
     parser.add_argument("--no-speed", action="store_true", help="accuracy only")
+    _reports.add_update_docs(parser)
     args = parser.parse_args(argv)
     acc = accuracy()
     print(f"{'display':11s} {'set':14s} {'p99':>6s} {'max':>6s} {'|dY|':>8s} {'in-gamut max':>13s}")
@@ -328,11 +327,8 @@ def main(argv=None):
     if args.no_speed and path.exists():  # keep the last speed run
         result["speed"] = json.loads(path.read_text()).get("speed")
     if args.no_speed:
-        path.write_text(json.dumps(result, indent=2) + "\n")
-        print(f"wrote {path}")
-        doc = ROOT / "docs" / "gamut_map.md"
-        if doc.exists():
-            update_markdown(doc, result)
+        _reports.write_json("gamut_map", result, path=path, indent=2)
+        update_markdown(ROOT / "docs" / "gamut_map.md", result, args.update_docs)
         return
     rows = measure(args.size, args.repeats)
     print(
@@ -347,12 +343,8 @@ def main(argv=None):
             f"  {r['clip_over_lut65']:10.2f}"
         )
     result["speed"] = rows
-    path.write_text(json.dumps(result, indent=2) + "\n")
-    print(f"wrote {path}")
-    doc = ROOT / "docs" / "gamut_map.md"
-    if doc.exists():
-        update_markdown(doc, result)
-        print(f"updated {doc}")
+    _reports.write_json("gamut_map", result, path=path, indent=2)
+    update_markdown(ROOT / "docs" / "gamut_map.md", result, args.update_docs)
 
 
 if __name__ == "__main__":

@@ -10,8 +10,8 @@ view against the ACES Gamut Compression view of the same display, through ``oiio
 
 Every job runs ``--repeats`` times in interleaved rounds (machine noise hits all
 alike); the median counts. The view's LUT text (MB) is read from the config. Writes
-``reports/bench_load.json`` and the table in docs/gamut_map.md between its markers
-(a test checks the table against the JSON).
+``reports/bench_load.json`` and, with ``--update-docs``, the table in docs/gamut_map.md
+between its markers (a test checks the table against the JSON).
 
 Usage: python benchmarks/bench_load.py [--repeats 9] [--frame 2048] [--display sRGB]
 """
@@ -19,11 +19,10 @@ Usage: python benchmarks/bench_load.py [--repeats 9] [--frame 2048] [--display s
 from __future__ import annotations
 
 import argparse
-import json
-import re
 import shutil
 import statistics
 import subprocess
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -31,6 +30,9 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the benchmarks' helpers beside this script
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 CONFIG = ROOT / "configs" / "thinfilm" / "config.ocio"
 JSON = ROOT / "reports" / "bench_load.json"
 DOC = ROOT / "docs" / "gamut_map.md"
@@ -159,14 +161,12 @@ def markdown(result):
     return "\n".join(out)
 
 
-def update_doc(result, path=DOC):
-    text = path.read_text()
-    block = f"{BEGIN}\n{markdown(result)}\n{END}"
-    if BEGIN in text:
-        text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
-    else:
-        raise SystemExit(f"{path} has no {BEGIN} marker")
-    path.write_text(text)
+def update_doc(result, path=DOC, update=False):
+    """docs/gamut_map.md's table from ``result``.
+
+    Written only if ``update``; else says whether it would change.
+    """
+    _reports.update_section(path, BEGIN, END, markdown(result), update=update)
 
 
 def main(argv=None):
@@ -174,12 +174,12 @@ def main(argv=None):
     p.add_argument("--repeats", type=int, default=9)
     p.add_argument("--frame", type=int, default=2048)
     p.add_argument("--display", default="sRGB")
+    _reports.add_update_docs(p)
     args = p.parse_args(argv)
     result = measure(args.repeats, args.frame, args.display)
     print(markdown(result))
-    JSON.write_text(json.dumps(result, indent=1) + "\n")
-    update_doc(result)
-    print(f"wrote {JSON} and {DOC}")
+    _reports.write_json("load", result, path=JSON)
+    update_doc(result, update=args.update_docs)
 
 
 if __name__ == "__main__":

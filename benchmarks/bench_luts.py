@@ -21,7 +21,6 @@ this script prints its own measurements (no numbers are typed here).
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import tempfile
 import time
@@ -30,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
+from benchmarks import _reports  # noqa: E402  (after the path above)
 from evaluation.colours import object_colours, spectral_colours  # noqa: E402
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, display_transforms, grid, ocio_ops, tables  # noqa: E402
@@ -266,7 +265,7 @@ def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--quick", action="store_true", help="fewer sizes")
     p.add_argument("--displays", nargs="+", default=["sRGB"], choices=clip.DISPLAYS)
-    p.add_argument("--json", default=None, help="also write the rows as JSON")
+    p.add_argument("--json", default=None, help="where to write the rows (reports/bench_luts.json)")
     args = p.parse_args(argv)
 
     print("## 1D tables (phase-change film; Morpho), max dE2000 vs direct evaluation\n")
@@ -289,10 +288,7 @@ def main(argv=None):
     )
     print("|---|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|")
     rows3 = bench_3d(args.displays, args.quick)
-    if args.json:
-        Path(args.json).write_text(
-            json.dumps({"table1d": rows1, "clip3d": rows3}, indent=1, default=float)
-        )
+    _reports.write_json("luts", {"table1d": rows1, "clip3d": rows3}, path=args.json)
     return 0
 
 

@@ -12,8 +12,8 @@ the cold wall time of the whole ``ocio-thinfilm render SCENE`` command.
 
 Usage: python benchmarks/bench_render.py [--size 1024] [--scenes spectrum,oil,...]
 Target: <= 3 s per scene on the 2-core CI machine. Writes
-reports/bench_render.json and the timing table of docs/render.md (between its
-``bench_render`` markers; a test checks the table against the JSON).
+reports/bench_render.json; with ``--update-docs`` also the timing table of docs/render.md
+(between its ``bench_render`` markers; a test checks the table against the JSON).
 """
 
 from __future__ import annotations
@@ -29,6 +29,8 @@ from pathlib import Path
 
 TARGET_S = 3.0
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the benchmarks' helpers beside this script
+from benchmarks import _reports  # noqa: E402  (after the path above)
 
 
 def _one(scene: str, size: int, out: str) -> dict:
@@ -117,8 +119,9 @@ def main(argv=None) -> int:
     p.add_argument(
         "--json",
         default=str(ROOT / "reports" / "bench_render.json"),
-        help="where to write the results (and docs/render.md's table)",
+        help="where to write the results",
     )
+    _reports.add_update_docs(p)
     p.add_argument("--child", default=None, help=argparse.SUPPRESS)
     p.add_argument("--out", default=None, help=argparse.SUPPRESS)
     args = p.parse_args(argv)
@@ -206,14 +209,10 @@ def main(argv=None) -> int:
         "repeat": max(1, args.repeat),
         "scenes": rows,
     }
-    Path(args.json).write_text(json.dumps(result, indent=2) + "\n")
-    print(f"wrote {args.json}")
-    doc = ROOT / "docs" / "render.md"
-    if doc.exists() and BEGIN in doc.read_text():
-        head, rest = doc.read_text().split(BEGIN, 1)
-        _, tail = rest.split(END, 1)
-        doc.write_text(f"{head}{BEGIN}\n{timings_markdown(result)}\n{END}{tail}")
-        print(f"updated {doc}")
+    _reports.write_json("render", result, path=args.json, indent=2)
+    _reports.update_section(
+        ROOT / "docs" / "render.md", BEGIN, END, timings_markdown(result), update=args.update_docs
+    )
     return 0
 
 

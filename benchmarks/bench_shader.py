@@ -25,7 +25,6 @@ Usage: python benchmarks/bench_shader.py [--pixels 1000000] [--repeats 5] [--dis
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import time
 from pathlib import Path
@@ -34,6 +33,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 REPORT = ROOT / "reports"
 VIEWS = ("Constant-Lightness Clip", "Constant-Lightness Compress")
 #: The flags of the second C++ build: vectorised and with fast math, as GPU compilers
@@ -227,7 +228,7 @@ def main(argv=None):
     rows = measure(args.pixels, args.repeats, args.displays)
     result = dict(pixels=args.pixels, repeats=args.repeats, rows=rows)
     REPORT.mkdir(exist_ok=True)
-    (REPORT / "bench_shader.json").write_text(json.dumps(result, indent=1) + "\n")
+    _reports.write_json("shader", result)
     (REPORT / "bench_shader.md").write_text(markdown(result))
     print(f"wrote {REPORT / 'bench_shader.md'}")
 

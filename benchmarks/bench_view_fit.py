@@ -33,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
+from benchmarks import _reports  # noqa: E402  (after the path above)
 from evaluation.colours import gamut_map_sets, object_colours  # noqa: E402
 from ocio_thinfilm.colour import clip, colorimetry  # noqa: E402
 from ocio_thinfilm.export import view as export_view  # noqa: E402
@@ -137,6 +137,7 @@ def main(argv=None):
     parser.add_argument("--weights", type=float, nargs="+", default=[1.0, 3.0, 10.0, 30.0])
     parser.add_argument("--display", default="sRGB")
     parser.add_argument("--out", default=str(Path(__file__).resolve().parents[1] / "reports"))
+    _reports.add_update_docs(parser)
     args = parser.parse_args(argv)
     display = args.display
     hosts = {"ocio": apply_ocio, "colour": apply_colour}
@@ -174,12 +175,14 @@ def main(argv=None):
             print(json.dumps(rows[-1]))
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    (out / "bench_view_fit.json").write_text(json.dumps(dict(display=display, rows=rows), indent=1))
+    _reports.write_json(
+        "view_fit", dict(display=display, rows=rows), path=out / "bench_view_fit.json"
+    )
     write_markdown(out / "bench_view_fit.md", display, rows, list(hosts))
     plot(out / "bench_view_fit.png", display, rows, list(hosts))
     print(f"wrote {out}/bench_view_fit.{{json,md,png}}")
     if display == "sRGB" and out == DOC.parents[1] / "reports":
-        update_doc(dict(display=display, rows=rows))
+        update_doc(dict(display=display, rows=rows), update=args.update_docs)
 
 
 def _hosts(rows):
@@ -210,15 +213,12 @@ def docs_markdown(result):
     return table(result["rows"], _hosts(result["rows"]))
 
 
-def update_doc(result, path=DOC):
-    import re
+def update_doc(result, path=DOC, update=False):
+    """docs/gamut_map.md's object-colour table from ``result``.
 
-    text = path.read_text()
-    if BEGIN not in text:
-        raise SystemExit(f"{path} has no {BEGIN} marker")
-    block = f"{BEGIN}\n{docs_markdown(result)}\n{END}"
-    text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
-    path.write_text(text)
+    Written only if ``update``; else says whether it would change.
+    """
+    _reports.update_section(path, BEGIN, END, docs_markdown(result), update=update)
 
 
 def write_markdown(path, display, rows, hosts):

@@ -9,7 +9,10 @@
   display LUT of ``luts/`` (the fit that amplifies last-bit differences most);
 - ``shaders/`` -- ``export shader`` output, GLSL and DCTL, for both mapped views on an
   SDR and an HDR display;
-- ``knobs.html`` -- the knob page.
+- ``knobs.html`` -- the knob page;
+- ``render/`` -- ``render all --size 64``: the four scenes' EXRs and PNGs (the noise,
+  the scenes' shading and the config's processors, as the gallery's
+  ``render all --out docs/gallery`` computes them, at a small size).
 
 Run under other ``OPENBLAS_CORETYPE`` and ``NPY_DISABLE_CPU_FEATURES`` settings, with
 ``OCIO_THINFILM_CACHE=0`` so that nothing comes from a disk memo, the files must be the
@@ -32,6 +35,10 @@ SHADERS = (
 CONFIG_DISPLAY = "Display P3"
 #: The display of the luts/ .cube written.
 CUBE_DISPLAY = "Rec.2020"
+#: The size (pixels a side) of the scenes rendered.
+RENDER_SIZE = 64
+#: The render command (``--out DIR`` follows).
+RENDER_ARGV = ("render", "all", "--size", str(RENDER_SIZE), "--quiet")
 
 
 def shader_name(display: str, view: str, language: str) -> str:
@@ -77,6 +84,11 @@ def regenerate(out: Path) -> list[Path]:
         written.append(path)
 
     written.append(knob_page.write_knob_page(out / "knobs.html"))
+
+    (out / "render").mkdir()
+    if cli_main([*RENDER_ARGV, "--out", str(out / "render")]) != 0:
+        raise RuntimeError(f"render failed: {RENDER_ARGV}")
+    written += sorted((out / "render").iterdir())
     return written
 
 

@@ -29,7 +29,11 @@ So the package
   in exact arithmetic become exactly 0;
 - rounds values to :func:`snap` (36 significant bits) before it quantises them, so a
   value that lies on a rounding boundary in exact arithmetic rounds the same way
-  everywhere.
+  everywhere;
+- evaluates transcendental functions of float32 pictures (the renderer's) with
+  :func:`float32_of`: in float64, rounded to float32, because numpy's float32
+  ``sin``/``cos``/``exp``/``log`` differ in the last bit between its AVX-512, AVX2
+  and baseline loops, and float32 is what the renderer computes in.
 
 A value moved by 2e-15 crosses a boundary of :func:`canonical` with probability about
 2e-5, and one of :func:`snap` at a place that changes a 16-bit code with probability
@@ -39,15 +43,18 @@ and SIMD levels and compares their bytes.
 - :func:`matmul` -- ``a @ b`` in a fixed order, no BLAS;
 - :func:`inv3` -- the inverse of 3x3 matrices by the adjugate, no LAPACK;
 - :func:`canonical` -- a table rounded to 32 significant bits, tiny values to 0;
-- :func:`snap` -- values rounded to 36 significant bits.
+- :func:`snap` -- values rounded to 36 significant bits;
+- :func:`float32_of` -- a ufunc evaluated in float64 and rounded to float32.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["TABLE_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap"]
+__all__ = ["TABLE_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap", "float32_of"]
 
 #: Tables are rounded to this many significant bits (:func:`canonical`).
 TABLE_BITS = 32
@@ -196,3 +203,34 @@ def snap(values: npt.ArrayLike, bits: int = SNAP_BITS) -> np.ndarray:
     with np.errstate(invalid="ignore"):
         rounded = np.ldexp(np.round(np.ldexp(mantissa, bits)), exponent - bits)
     return np.where(np.isfinite(a), rounded, a) + 0.0
+
+
+def float32_of(func: Callable[..., npt.ArrayLike], *args: npt.ArrayLike) -> np.ndarray:
+    """Return ``func(*args)`` evaluated in float64 and rounded to float32.
+
+    For a transcendental ufunc (``np.sin``, ``np.exp``, ``np.arccos`` ...) of float32
+    data: numpy's float32 loops of these differ in the last bit between its AVX-512,
+    AVX2 and baseline implementations (``NPY_DISABLE_CPU_FEATURES`` shows it), and a
+    last float32 bit decides an 8-bit code or a half float often enough to change a
+    picture. The float64 loops differ by a few float64 ulps at most, which rounding to
+    float32 removes except with probability about 2^-27 per value.
+
+    Parameters
+    ----------
+    func : callable
+        A numpy ufunc (or any function of float64 arrays).
+    *args : array_like
+        Its arguments, taken as float64.
+
+    Returns
+    -------
+    numpy.ndarray
+        float32, the shape of ``func``'s result.
+
+    Examples
+    --------
+    >>> float32_of(np.exp, np.float32(1.0)).dtype, float(float32_of(np.cos, 0.0))
+    (dtype('float32'), 1.0)
+    """
+    result = func(*(np.asarray(a, dtype=np.float64) for a in args))
+    return np.asarray(result, dtype=np.float64).astype(np.float32)

@@ -27,6 +27,7 @@ __all__ = [
     "smoothstep",
     "optical_thickness_um",
     "grey",
+    "unit",
 ]
 
 
@@ -224,3 +225,15 @@ def optical_thickness_um(t_um: np.ndarray, n: float, theta_deg: np.ndarray) -> n
 def grey(Y: np.ndarray) -> np.ndarray:
     """Return neutral (D65) XYZ of luminance ``Y`` (H, W) -> (H, W, 3)."""
     return np.asarray(Y, np.float32)[..., None] * D65_WHITE
+
+
+def unit(v: np.ndarray) -> np.ndarray:
+    """Return the vectors ``v`` (..., 3) scaled to unit length, float32.
+
+    The length is ``sqrt(x*x + y*y + z*z)`` in that order, elementwise: the same bits
+    on every CPU (``np.linalg.norm`` reduces with whatever loop numpy's SIMD level
+    picks).
+    """
+    v = np.asarray(v, np.float32)
+    length = np.sqrt(v[..., 0] * v[..., 0] + v[..., 1] * v[..., 1] + v[..., 2] * v[..., 2])
+    return v / length[..., None]

@@ -54,6 +54,7 @@ from ocio_thinfilm.render.scene_base import grey as _grey
 from ocio_thinfilm.render.scene_base import optical_thickness_um as _optical_thickness_um
 from ocio_thinfilm.render.scene_base import pixel_grid as _pixel_grid
 from ocio_thinfilm.render.scene_base import smoothstep as _smoothstep
+from ocio_thinfilm.render.scene_base import unit as _unit
 
 __all__ = [
     "TableSpec",
@@ -131,7 +132,7 @@ class SpectrumScene(Scene):
         film = lookup(FILM_TABLE, t_opt[:, None])[:, 0, :]
         a0, a1 = self.ANGLES
         theta = (a0 + (a1 - a0) * frac).astype(np.float32)
-        cos_t = np.cos(np.radians(theta)).astype(np.float32)
+        cos_t = reproducible.float32_of(np.cos, np.radians(theta.astype(np.float64)))
         morpho = MorphoScene.EXPOSURE * lookup(MORPHO_TABLE, cos_t[:, None])[:, 0, :]
 
         columns: list[tuple[np.ndarray, str, np.ndarray]] = [
@@ -235,7 +236,7 @@ class OilScene(Scene):
         up = np.array([0.0, np.sin(p), np.cos(p)], np.float32)
         right = np.array([1.0, 0.0, 0.0], np.float32)
         d = forward + u[..., None] * right + v[..., None] * up
-        d /= np.linalg.norm(d, axis=-1, keepdims=True)
+        d = _unit(d)
         eye = np.array([0.0, -self.CAMERA_HEIGHT / np.tan(p), self.CAMERA_HEIGHT], np.float32)
         pixel_angle = 2 * tan_half / height
         return d, eye, pixel_angle
@@ -250,7 +251,7 @@ class OilScene(Scene):
         gx = eye[0] + s * d[..., 0]
         gy = eye[1] + s * d[..., 1]
         cos_view = -dz  # cos of the view angle
-        theta = np.degrees(np.arccos(np.clip(cos_view, 0.0, 1.0))).astype(np.float32)
+        theta = np.degrees(reproducible.float32_of(np.arccos, np.clip(cos_view, 0.0, 1.0)))
         # Pixel footprint on the road (metres), stretched along the view direction.
         footprint = (s * pixel_angle / np.sqrt(cos_view)).astype(np.float32)
 
@@ -265,7 +266,9 @@ class OilScene(Scene):
             seed=seed,
             filter_width=footprint * (0.9 / self.SLICK_SCALE),
         )
-        t_phys = t_centre * np.exp(-k1 * (sx * sx + sy * sy + self.K2 * (turb - 0.45)))
+        t_phys = t_centre * reproducible.float32_of(
+            np.exp, -k1 * (sx * sx + sy * sy + self.K2 * (turb - 0.45))
+        )
         t_phys = np.minimum(t_phys, np.float32(t_centre)).astype(np.float32)
         # Optical thickness through the refraction angle (paper Eq. 10 form).
         t_opt = _optical_thickness_um(t_phys, self.N_OIL, theta)
@@ -389,7 +392,7 @@ class SoapScene(Scene):
         inside = rho2 < 1.0
         nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))  # towards the (orthographic) viewer
         cos_view = nz
-        theta = np.degrees(np.arccos(np.clip(cos_view, 0.0, 1.0))).astype(np.float32)
+        theta = np.degrees(reproducible.float32_of(np.arccos, np.clip(cos_view, 0.0, 1.0)))
 
         # Height normalised to 0 at the top and 1 at the bottom, plus turbulence (air
         # currents) swirling around the bubble; draining raises the black line.
@@ -429,7 +432,9 @@ class SoapScene(Scene):
         # The normalised two-beam model has no Fresnel growth towards grazing angles;
         # a faint Schlick rim (F0 = 0.02) of the environment keeps the silhouette of
         # the black film visible.
-        rim = 0.02 + 0.98 * (1.0 - cos_view) ** 5
+        grazing = 1.0 - cos_view
+        grazing2 = grazing * grazing  # (1 - cos)^5 by products: np.power's loops differ
+        rim = 0.02 + 0.98 * (grazing2 * grazing2 * grazing)
         if self.film is not None:
             xyz = backdrop + (edge * env)[..., None] * film
             aov = (t_phys, "physical thickness of the film's varying layer in um")
@@ -499,20 +504,23 @@ class MorphoScene(Scene):
         u, v = x / side, y / side
         # Height field: ridges across the wing, bent and varied by noise.
         bend = noise.noise(u * 1.6, v * 1.6, seed=seed + 31)
-        phase = 2 * np.pi * (self.WAVES * (u + 0.18 * np.sin(2 * np.pi * v * 0.8)) + 0.5 * bend)
+        across = 2 * np.pi * v * 0.8
+        wave = reproducible.float32_of(np.sin, across)
+        phase = 2 * np.pi * (self.WAVES * (u + 0.18 * wave) + 0.5 * bend)
         amp = 0.032 * (1.0 + 0.35 * noise.noise(u * 2.3 + 3.7, v * 2.3, seed=seed + 32))
         # Slopes of h = amp sin(phase) (amp's own slope is small and ignored).
         k = 2 * np.pi * self.WAVES
         dphase_du = k
-        dphase_dv = k * 0.18 * 2 * np.pi * 0.8 * np.cos(2 * np.pi * v * 0.8)
+        dphase_dv = k * 0.18 * 2 * np.pi * 0.8 * reproducible.float32_of(np.cos, across)
         grad_bend_v, grad_bend_u = np.gradient(bend * np.float32(np.pi), 1 / side)
-        hu = amp * np.cos(phase) * (dphase_du + grad_bend_u)
-        hv = amp * np.cos(phase) * (dphase_dv + grad_bend_v)
+        cos_phase = reproducible.float32_of(np.cos, phase)
+        hu = amp * cos_phase * (dphase_du + grad_bend_u)
+        hv = amp * cos_phase * (dphase_dv + grad_bend_v)
         # Fine scale texture: the rows of scales.
         fine = noise.noise(u * 90.0, v * 14.0, seed=seed + 33)
         hu = hu + 0.05 * fine
         n = np.stack([-hu, hv, np.ones_like(hu)], axis=-1)  # image v runs down
-        n /= np.linalg.norm(n, axis=-1, keepdims=True)
+        n = _unit(n)
         tilt = np.radians(
             self.TILT + self.TILT_SWING * np.sin(2 * np.pi * (frame - 1) / self.TILT_PERIOD)
         )
@@ -525,7 +533,7 @@ class MorphoScene(Scene):
         light /= np.sqrt(reproducible.matmul(light, light))
         diffuse = np.clip(reproducible.matmul(n, light), 0.0, 1.0)
         xyz = np.float32(self.EXPOSURE) * colour + _grey(self.PIGMENT_Y * (0.4 + 0.6 * diffuse))
-        theta = np.degrees(np.arccos(cos_view)).astype(np.float32)
+        theta = np.degrees(reproducible.float32_of(np.arccos, cos_view))
         return Picture(
             xyz=xyz.astype(np.float32),
             aovs={"cos_theta": cos_view, "angle": theta},
