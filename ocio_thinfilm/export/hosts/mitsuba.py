@@ -66,6 +66,7 @@ from ocio_thinfilm.physics.films import Film, read_films
 __all__ = [
     "PLUGIN",
     "WAVELENGTH_RANGE",
+    "MIN_REFLECTION_PROBABILITY",
     "FilmSampler",
     "film_token",
     "bsdf",
@@ -77,6 +78,9 @@ __all__ = [
 PLUGIN = "thinfilm"
 #: Mitsuba's spectral range (nm): the wavelengths its spectral variants sample.
 WAVELENGTH_RANGE = (360.0, 830.0)
+#: The least probability with which a free-standing film's reflection is sampled (else
+#: mean R / (mean R + mean T)): a bubble reflects ~5 %, and its colours are its reflection.
+MIN_REFLECTION_PROBABILITY = 0.25
 #: Step (nm) of the grid the materials' indices are held on.
 _INDEX_STEP = 0.25
 #: Films passed as objects (:func:`film_token`).
@@ -137,6 +141,8 @@ class FilmSampler:
         self._indices = [self._held(m, grid) for m in film.stack]
         layers = len(film.stack) - 2
         self._reverse = self.free and not self._symmetric()
+        # no medium absorbs: T = 1 - R (half the recursion's work)
+        self._lossless = all(np.all(np.imag(n) == 0) for n in self._indices)
         self._back = (film.thickness_nm[::-1], layers - 1 - film.vary)
 
     @staticmethod
@@ -202,11 +208,20 @@ class FilmSampler:
         n = self.indices(wl)
         film = self.film
         R, T = exact.stack_pointwise(
-            n, film.thickness_nm, film.vary, d, wl, np.abs(c), transmit=self.free
+            n,
+            film.thickness_nm,
+            film.vary,
+            d,
+            wl,
+            np.abs(c),
+            transmit=self.free and not self._lossless,
         )
+        if self.free and self._lossless:
+            T = 1.0 - R
         if self._reverse and np.any(c < 0):
             thick, vary = self._back
             Rb, Tb = exact.stack_pointwise(n[::-1], thick, vary, d, wl, np.abs(c))
+            Tb = 1.0 - Rb if self._lossless else Tb
             R = np.where(c < 0, Rb, R)
             T = np.where(c < 0, Tb, T) if T is not None and Tb is not None else None
         return R, (np.zeros_like(R) if T is None else T)
@@ -371,6 +386,7 @@ def _bsdf_class() -> type:
             r, t = R.mean(axis=0), T.mean(axis=0)
             if has_r and has_t:
                 p_r = np.divide(r, r + t, out=np.ones_like(r), where=r + t > 0)
+                p_r = np.clip(p_r, MIN_REFLECTION_PROBABILITY, 1.0)
             else:
                 p_r = np.full_like(r, 1.0 if has_r else 0.0)
             reflect = np.asarray(sample1, dtype=np.float64) < p_r
