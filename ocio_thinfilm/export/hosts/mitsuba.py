@@ -1,17 +1,16 @@
 """A film as a spectral Mitsuba 3 BSDF: ``thinfilm``, the exact film per sampled wavelength.
 
-Call :func:`register` after ``mi.set_variant(...)`` (a spectral variant; the plugin is
-defined for the variant that is set)::
+Call :func:`register` after ``mi.set_variant(...)`` (a spectral variant; the plugin
+subclasses that variant's ``mi.BSDF``); :func:`bsdf` builds a checked scene dict::
 
     import mitsuba as mi
     mi.set_variant("scalar_spectral")
     import ocio_thinfilm.export.hosts.mitsuba as tfm
     tfm.register()
-    bsdf = {"type": "thinfilm", "filename": "docs/films.toml", "film": "SoapFilm",
-            "thickness": 0.3}
+    plate = {"type": "rectangle", "bsdf": tfm.bsdf("films.toml", "SoapFilm", thickness=0.3)}
 
 At every shading point the film's stack is evaluated exactly at the path's sampled
-wavelengths (``si.wavelengths``) and the angle of incidence:
+wavelengths (``si.wavelengths``) and the angle of incidence by
 :func:`ocio_thinfilm.physics.exact.stack_pointwise` (transfer matrices, s and p averaged,
 dispersive complex indices from the film's materials, held on a 0.25 nm grid over
 360-830 nm and interpolated linearly; outside a material's data its edge value). The
@@ -20,8 +19,9 @@ film is smooth (roughness 0):
 - a free-standing film (:func:`ocio_thinfilm.lut.material_tables.free_standing`: the
   substrate is the incident medium, a soap bubble) reflects (delta reflection) and
   transmits straight through (direction unchanged, like Mitsuba's ``thindielectric``),
-  choosing between them with probability proportional to the mean R and T of the
-  sampled wavelengths; it is two-sided (from the back the stack is reversed);
+  choosing the reflection with probability mean R / (mean R + mean T) over the sampled
+  wavelengths, at least :data:`MIN_REFLECTION_PROBABILITY`; it is two-sided (from the
+  back the stack is reversed);
 - a film on a substrate, metal or dielectric, reflects only (one-sided, as Mitsuba's
   ``conductor``): the light refracted into a dielectric substrate is not traced (the
   substrate's body is black; dispersion would split the wavelengths' paths).
@@ -33,11 +33,12 @@ physical thickness, a float in µm (default: the middle of the film's ``range_um
 nested texture evaluated at the shading point (``eval_1``; give bitmaps
 ``raw = true``); ``thickness_scale``: ``"um"`` (default: the texture's value is µm) or
 ``"range"`` (the value in [0, 1] maps linearly onto the film's ``range_um``);
-``roughness``: 0 only.
+``roughness``: 0 only. A :class:`FilmSampler` holds the numpy side (no Mitsuba type).
 
 Scalar variants call the physics once per shading point (4 wavelengths); JIT variants
-(``llvm_ad_spectral``) need :func:`evaluated_mode` (numpy per wavefront: the symbolic
-loops and calls Mitsuba records by default cannot reach numpy), see docs/mitsuba.md.
+(``llvm_ad_spectral``) render inside :func:`evaluated_mode` (numpy per wavefront: the
+symbolic loops and calls Mitsuba records by default cannot reach numpy). docs/mitsuba.md
+has the measurements.
 """
 
 from __future__ import annotations
