@@ -246,3 +246,41 @@ def test_the_jit_variant_in_evaluated_mode(tfm):
     for angle, XYZ in zip(ANGLES, got, strict=True):
         expected = _exact("SoapFilm", 0.3, angle)
         assert delta_e(np.array(XYZ), expected) < TOLERANCE, (angle, XYZ, expected)
+
+
+def test_docs_quote_the_benchmark(load_benchmark, marked):
+    """docs/mitsuba.md's accuracy and speed tables are benchmarks/fig_mitsuba.py's last
+    run (reports/mitsuba.json) as it renders them."""
+    result = json.loads((ROOT / "reports" / "mitsuba.json").read_text())
+    text = (ROOT / "docs" / "mitsuba.md").read_text()
+    for name, block in load_benchmark("fig_mitsuba").doc_blocks(result).items():
+        quoted = marked(text, f"<!-- mitsuba:{name}:begin -->", f"<!-- mitsuba:{name}:end -->")
+        assert quoted == block.strip(), name
+    worst = max(
+        v for r in result["scalar_spectral accuracy"]["delta_e"].values() for v in r.values()
+    )
+    assert worst < TOLERANCE
+
+
+def test_the_docs_xml_scene_loads(tfm, tmp_path):
+    """docs/mitsuba.md's XML scene, with a thickness EXR beside it, loads (and renders a
+    few pixels)."""
+    import re
+
+    xml = re.search(r"```xml\n(.*?)```", (ROOT / "docs" / "mitsuba.md").read_text(), re.S)[1]
+    xml = xml.replace('value="docs/films.toml"', f'value="{FILMS}"')
+    xml = xml.replace(
+        '<sensor type="perspective"/>',
+        (
+            '<sensor type="perspective"><film type="hdrfilm"><integer name="width" value="4"/>'
+            '<integer name="height" value="4"/></film>'
+            '<sampler type="independent"><integer name="sample_count" value="1"/></sampler>'
+            "</sensor>"
+        ),
+    )
+    mi.Bitmap(np.linspace(0, 1, 16, dtype=np.float32).reshape(4, 4)).write(
+        str(tmp_path / "thickness.exr")
+    )
+    (tmp_path / "scene.xml").write_text(xml)
+    image = np.array(mi.render(mi.load_file(str(tmp_path / "scene.xml"))))
+    assert image.shape == (4, 4, 3) and np.all(np.isfinite(image))
