@@ -133,8 +133,10 @@ def _figure(variant: str, path: Path) -> dict:
         },
         "bubble": {
             "type": "sphere",
-            "center": [-0.75, 0.2, 0],
-            "radius": 0.7,
+            # its pole (texture v = 0) up: the thickness ramp runs from the top down
+            "to_world": T().translate([-0.75, 0.2, 0])
+            @ T().rotate([1, 0, 0], -90)
+            @ T().scale(0.7),
             "bsdf": tfm.bsdf(
                 FILMS,
                 "SoapFilm",
