@@ -360,3 +360,23 @@ def test_a_missing_installed_config_is_an_error_not_a_bake(tmp_path, monkeypatch
     ):
         processors.load_config()
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("module", sorted({m for m, _ in HOSTS.values()}))
+def test_a_host_module_without_its_extra_says_how_to_install_it(module):
+    """Without Mitsuba (hidden here), importing the host's module is an ImportError of one
+    line naming the extra to install."""
+    code = (
+        "import sys\n"
+        "sys.modules['mitsuba'] = sys.modules['drjit'] = None\n"
+        "try:\n"
+        f"    import ocio_thinfilm.export.hosts.{module}\n"
+        "except ImportError as error:\n"
+        "    print(error)\n"
+    )
+    run = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True
+    )
+    assert run.stdout.strip().splitlines() == [
+        f'ocio_thinfilm.export.hosts.{module} needs Mitsuba 3: pip install "ocio-thinfilm[mitsuba]"'
+    ]
