@@ -284,3 +284,27 @@ def test_the_docs_xml_scene_loads(tfm, tmp_path):
     (tmp_path / "scene.xml").write_text(xml)
     image = np.array(mi.render(mi.load_file(str(tmp_path / "scene.xml"))))
     assert image.shape == (4, 4, 3) and np.all(np.isfinite(image))
+
+
+def test_a_free_film_seen_from_the_back_is_the_reversed_stack(tfm):
+    """An asymmetric free film (water over 20 nm of gold, in air): from the back (cos theta
+    < 0) the sampler's R and T are stack_transmittance's of the reversed stack, from the
+    front the stack's own; with the absorbing layer they differ (a lossless stack reflects
+    alike from both sides)."""
+    from ocio_thinfilm.physics import exact
+
+    film = parse_films(
+        '[films.Two]\nstack = ["air", "water", "Au", "air"]\nvary = "water"\n'
+        "thickness_nm = { Au = 20.0 }\n"
+    )["Two"]
+    sampler = tfm.FilmSampler(film)
+    assert sampler.free
+    wl = np.array([410.0, 515.5, 620.0, 733.0])
+    n = np.stack([m.index(wl) for m in film.stack])
+    front = exact.stack_transmittance(n, film.thickness_nm, 0, [250.0], wl, 40.0)
+    back = exact.stack_transmittance(n[::-1], film.thickness_nm[::-1], 1, [250.0], wl, 40.0)
+    c = np.cos(np.radians(40.0))
+    for sign, (R, T) in ((1.0, front), (-1.0, back)):
+        got_R, got_T = sampler.spectra(wl, sign * c, 250.0)
+        assert np.allclose(got_R, R[0], atol=1e-6) and np.allclose(got_T, T[0], atol=1e-6)
+    assert np.abs(front[0] - back[0]).max() > 1e-3
