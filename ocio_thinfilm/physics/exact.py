@@ -6,13 +6,16 @@
 - :func:`transfer_matrix_reflectance` -- a stack of layers by transfer matrices
   (Byrnes 2016, as colour-science's ``multilayer_tmm``), evaluated as a recursion;
 - :func:`stack_reflectance`, :func:`stack_transmittance` -- the same against one
-  layer's thickness with dispersive indices (and the power transmitted).
+  layer's thickness with dispersive indices (and the power transmitted);
+  :func:`stack_pointwise` at independent samples (a renderer's).
 
 Lengths in nanometres, angles in degrees; the wavelength grid is the last axis of the
 result.
 """
 
 from __future__ import annotations
+
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -32,6 +35,7 @@ __all__ = [
     "transfer_matrix_reflectance",
     "stack_reflectance",
     "stack_transmittance",
+    "stack_pointwise",
     "adequate_step",
     "interface_amplitudes",
 ]
@@ -550,18 +554,63 @@ def _stack(
     sin0 = np.sin(np.deg2rad(as_angle(theta))) + 0j
     media = [n[i] for i in range(n.shape[0])]
     cosines = [_cos_refracted(media[0], m, sin0) for m in media]
-    k0 = 2.0 * np.pi / wl
+    z = _phasors(media, cosines, depths, vary, d[..., None], 2.0 * np.pi / wl)
+    return _rouard(media, cosines, z, d.shape + wl.shape, transmit)
+
+
+def _phasors(media: list, cosines: list, depths: np.ndarray, vary: int, d: Any, k0: Any) -> list:
+    """Return ``z_j = exp(2 i k0 n_j cos_j d_j)`` per layer (layer ``vary``: ``d``; 0: none)."""
     z = []
-    for j in range(layers):
+    for j in range(len(media) - 2):
         beta = k0 * media[j + 1] * cosines[j + 1]
-        if j == vary:
-            z.append(np.exp(2j * beta * d[..., None]))
-        elif depths[j] > 0:
-            z.append(np.exp(2j * beta * depths[j]))
-        else:
-            z.append(np.ones(wl.shape, complex))  # an absent layer: a zero path
-    shape = d.shape + wl.shape
-    return _rouard(media, cosines, z, shape, transmit)
+        depth = d if j == vary else depths[j]
+        z.append(np.exp(2j * beta * depth) if j == vary or depth > 0 else np.ones(np.shape(beta)))
+    return z
+
+
+def stack_pointwise(
+    n_media: npt.ArrayLike,
+    thicknesses: npt.ArrayLike,
+    vary: int,
+    thickness: npt.ArrayLike,
+    wavelengths: npt.ArrayLike,
+    cos_theta: npt.ArrayLike,
+    *,
+    transmit: bool = True,
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Exact unpolarised R (and T) of a stack per sample (:func:`stack_transmittance`'s physics).
+
+    Every argument broadcasts elementwise: each sample has its own wavelength, angle and
+    thickness (a renderer's); the caller checks the stack once.
+
+    Parameters
+    ----------
+    n_media : array_like
+        Complex indices, shape ``(media, ...)``, broadcasting against the samples.
+    thicknesses, vary, transmit
+        As :func:`stack_reflectance`; ``transmit``: also T (else None).
+    thickness, wavelengths, cos_theta : array_like
+        Per sample: the varying layer's thickness (nm), the wavelength (nm), cos of the
+        angle of incidence in the (non-absorbing) incident medium.
+
+    Returns
+    -------
+    R, T : numpy.ndarray
+        The samples' shape (T None unless ``transmit``).
+
+    Examples
+    --------
+    >>> R, T = stack_pointwise([[1.0], [1.5], [1.0]], [0.0], 0, [250.0], [555.0], [1.0])
+    >>> R.round(7).tolist(), (R + T).round(12).tolist()
+    ([0.1215919], [1.0])
+    """
+    n, c = np.asarray(n_media, np.complex128), np.clip(np.asarray(cos_theta, np.float64), 0, 1)
+    wl, d = np.asarray(wavelengths, dtype=np.float64), np.asarray(thickness, dtype=np.float64)
+    shape = np.broadcast_shapes(n.shape[1:], c.shape, wl.shape, d.shape)
+    cosines = [_cos_refracted(n[0], m, np.sqrt(1.0 - c * c) + 0j) for m in n]
+    depths = np.asarray(thicknesses, dtype=np.float64).reshape(-1)
+    z = _phasors(list(n), cosines, depths, vary, np.maximum(d, 0.0), 2.0 * np.pi / wl)
+    return _rouard(list(n), cosines, z, shape, transmit)
 
 
 def adequate_step(
