@@ -30,7 +30,7 @@ docs/gallery/rgb_vs_spectral.png (strips at normal incidence: for the soap film,
 and anodised titanium, right, one block per light in the order above, each block the
 spectral truth, the RGB path and the recovered table from top to bottom; every colour
 adapted to D65 as the comparison, exposed so the film's brightest truth under D65 is
-Y = 0.9, constant-lightness clip to sRGB).
+Y = 0.5, constant-lightness clip to sRGB).
 
 Usage: python benchmarks/bench_rgb_vs_spectral.py [--update-docs] [--films A,B]
 """
@@ -60,7 +60,9 @@ THICKNESSES = 200
 COSINES = np.linspace(0.05, 1.0, 20)
 #: The picture: films, columns per strip, rows per strip, gaps.
 PICTURE_FILMS = ("SoapFilm", "AnodisedTitanium")
-STRIP_WIDTH, STRIP_HEIGHT, GAP = 384, 12, 6
+STRIP_WIDTH, STRIP_HEIGHT, GAP = 384, 16, 8
+#: The brightest spectral truth under D65 of a film in the picture is at this Y.
+EXPOSURE_Y = 0.5
 SPACE = "sRGB"  # linear Rec.709: the renderer's working space
 
 
@@ -194,7 +196,7 @@ def strips(film, tabs):
     one = np.ones_like(t)
     truth = film_lights.film_light_XYZ(film, t, [1.0], LIGHTS)[:, 0]
     table_d65 = colorimetry.XYZ_to_RGB(film_lights.table_lookup(tabs["D65"], film.range_um, t, one))
-    exposure = 0.9 / float(truth[0, :, 1].max())
+    exposure = EXPOSURE_Y / float(truth[0, :, 1].max())
     blocks = []
     for k, name in enumerate(LIGHTS):
         A = film_lights.scene_adaptation(name, film.adaptation)

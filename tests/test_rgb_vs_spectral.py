@@ -154,8 +154,9 @@ def test_the_host_read_is_bilinear_between_nodes():
 def test_the_documented_table_is_the_benchmarks(load_benchmark, marked):
     """docs/rgb_vs_spectral.md's table is what benchmarks/bench_rgb_vs_spectral.py wrote
     (reports/bench_rgb_vs_spectral.json); the JSON covers every film of docs/films.toml
-    under every light, the recovered path is within 0.5 everywhere, and the RGB path
-    errs by more than 1 (p95) for every film under at least one light."""
+    under every light, the recovered path is within p95 0.2 / max 1 everywhere (the
+    doc's claims), and the RGB path errs by more than 2 (p95) for every film under every
+    light but D65."""
     bench = load_benchmark("bench_rgb_vs_spectral")
     result = json.loads((ROOT / "reports" / "bench_rgb_vs_spectral.json").read_text())
     doc = (ROOT / "docs" / "rgb_vs_spectral.md").read_text()
@@ -164,6 +165,8 @@ def test_the_documented_table_is_the_benchmarks(load_benchmark, marked):
     assert [f["film"] for f in result["films"]] == keys
     for film in result["films"]:
         assert [r["light"] for r in film["lights"]] == list(bench.LIGHTS)
-        assert max(r["recovered"][2] for r in film["lights"]) < 0.5, film["film"]
-        assert max(r["rgb_path"][1] for r in film["lights"]) > 1.0, film["film"]
+        assert max(r["recovered"][1] for r in film["lights"]) <= 0.2, film["film"]
+        assert max(r["recovered"][2] for r in film["lights"]) < 1.0, film["film"]
+        assert min(r["rgb_path"][1] for r in film["lights"][1:]) > 2.0, film["film"]
+        assert film["lights"][0]["rgb_path"][1] < 0.1, film["film"]
     assert result["led"]["peak_power_ratios"] == list(film_lights.LED_POWER_RATIOS)
