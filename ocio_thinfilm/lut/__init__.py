@@ -5,6 +5,8 @@
 - :mod:`.film_tables` -- the tables of users' films (physical thickness -> XYZ);
 - :mod:`.material_tables` -- a film's colour over thickness x view angle (the
   material tables of ``export material``);
+- :mod:`.film_lights` -- a film under a coloured light: the spectral colour against an
+  RGB renderer's product of RGBs (docs/rgb_vs_spectral.md);
 - :mod:`.khr_iridescence` -- what glTF viewers draw for ``KHR_materials_iridescence``
   (three.js r187's model in numpy);
 - :mod:`.iridescence_fit` -- its parameters fitted to an exact film (the ``.glb``'s
@@ -26,6 +28,7 @@ __all__ = [
     "tables",
     "film_tables",
     "material_tables",
+    "film_lights",
     "khr_iridescence",
     "iridescence_fit",
     "display_transforms",
