@@ -313,7 +313,12 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
 
     def three_file(files: TableFiles) -> str:
         return three.three_module(
-            files.key, files.reflectance, files.range_um, module_name=f"{stem}.js"
+            files.key,
+            files.reflectance,
+            files.range_um,
+            transmittance_exr=files.transmittance,
+            name=files.name,
+            module_name=f"{stem}.js",
         )
 
     def materialx_file(files: TableFiles) -> str:
