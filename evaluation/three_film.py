@@ -126,8 +126,12 @@ def write_site(
 #: checker (``MeshBasicMaterial``, linear colours ``checker[0]`` and ``[1]``, ``squares``
 #: per side, nearest filtering) behind a flat free-standing film (``bubble`` half-width,
 #: thickness ``thickness``) that transmits (the module's T table), under a uniform
-#: environment. With ``badRange`` the page records the Error ``applyThinFilm`` throws for
-#: that thickness map range. sRGB output, no tone mapping.
+#: environment; ``shape: "sphere"`` makes the bubble a double-sided sphere of that
+#: radius, ``codes`` (with ``mapAxis`` ``"u"`` or ``"v"`` and ``thicknessRange``) gives
+#: it a thickness map, ``transmits: false`` keeps it opaque (no T). ``timing``:
+#: ``{scene, frames}``, that many more frames of one scene, each finished by a 1-pixel
+#: ``readPixels``. With ``badRange`` the page records the Error ``applyThinFilm`` throws
+#: for that thickness map range. sRGB output, no tone mapping.
 _FLAT_PAGE = """import * as THREE from "three";
 import { loadThinFilm } from "./__MODULE__";
 
@@ -170,15 +174,21 @@ try {
       out.badRange = error.message;
     }
   }
+  function thicknessMap(codes, axis) {  // one row (axis "u") or column ("v") of G codes
+    const data = new Uint8Array(codes.length * 4);
+    codes.forEach((g, i) => data.set([0, g, 0, 255], 4 * i));
+    const along = axis === "v";
+    const map = new THREE.DataTexture(data, along ? 1 : codes.length, along ? codes.length : 1);
+    map.magFilter = map.minFilter = THREE.LinearFilter;
+    map.needsUpdate = true;
+    return map;
+  }
+  const scenes = [];
   for (const spec of CONFIG.scenes) {
     const scene = new THREE.Scene();
     scene.environment = environment(spec.environment);
     if (spec.kind === "map") {
-      const data = new Uint8Array(spec.codes.length * 4);
-      spec.codes.forEach((g, i) => data.set([0, g, 0, 255], 4 * i));
-      const map = new THREE.DataTexture(data, spec.codes.length, 1);
-      map.magFilter = map.minFilter = THREE.LinearFilter;
-      map.needsUpdate = true;
+      const map = thicknessMap(spec.codes, "u");
       const material = new THREE.MeshPhysicalMaterial({ metalness: 1, roughness: 0 });
       film.apply(material, { thicknessMap: map, thicknessRange: spec.thicknessRange,
         transmittance: null });
@@ -196,12 +206,29 @@ try {
         new THREE.MeshBasicMaterial({ map: checker }));
       back.position.z = -1;
       scene.add(back);
-      const material = new THREE.MeshPhysicalMaterial({ metalness: 0, roughness: 0 });
-      film.apply(material, { thickness: spec.thickness });
+      const sphere = spec.shape === "sphere";
+      const material = new THREE.MeshPhysicalMaterial({ metalness: 0, roughness: 0,
+        side: sphere ? THREE.DoubleSide : THREE.FrontSide });
+      const options = spec.codes
+        ? { thicknessMap: thicknessMap(spec.codes, spec.mapAxis),
+          thicknessRange: spec.thicknessRange }
+        : { thickness: spec.thickness };
+      if (spec.transmits === false) options.transmittance = null;  // a black-backed mirror
+      film.apply(material, options);
       const w = 2 * spec.bubble;
-      scene.add(new THREE.Mesh(new THREE.PlaneGeometry(w, w), material));
+      const geometry = sphere ? new THREE.SphereGeometry(spec.bubble, 256, 128)
+        : new THREE.PlaneGeometry(w, w);
+      scene.add(new THREE.Mesh(geometry, material));
     }
+    scenes.push(scene);
     out.frames.push(frame(scene));
+  }
+  if (CONFIG.timing) {  // CONFIG.timing.frames more frames of scene CONFIG.timing.scene
+    const one = new Uint8Array(4);
+    for (let i = 0; i < CONFIG.timing.frames; i++) {
+      renderer.render(scenes[CONFIG.timing.scene], camera);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);  // the frame is finished
+    }
   }
 } catch (error) {
   out.error = String(error && error.stack || error);
