@@ -7,6 +7,12 @@ pixel's angle: colour-science's transfer matrices (s and p averaged), CIE 1931 2
 sRGB (:mod:`evaluation.materials`), never the package's own physics. The table the page
 loads is written by :mod:`evaluation.materials` in the film-as-material layout.
 
+A second page (:func:`evaluation.three_film.write_flat_site`) draws flat films facing the
+camera: a mirror plane whose thickness map is a ramp of G codes across the canvas, held
+to the exact colours of those thicknesses, and a free-standing film over a checker,
+held to R·L + T·background (three.js's ``NoToneMapping`` and sRGB output; R and T from
+colour-science); it also checks that a thickness map range outside the table is refused.
+
 Skips, with the reason, without Chromium or where three.js cannot be installed.
 """
 
