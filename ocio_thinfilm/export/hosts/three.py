@@ -14,7 +14,18 @@ is the table's R at the thickness (a uniform, µm) and the angle:
   Fresnel of the microfacet's angle, in place of Schlick's;
 - the light the film does not reflect reaches the base colour's diffuse lobe as before
   (three.js's energy conservation, ``1 - F``): a film whose substrate is in its stack
-  (anodised titanium, a bubble) wants ``metalness = 1`` or a black ``color``.
+  (anodised titanium) wants ``metalness = 1`` or a black ``color``;
+- the thickness: the uniform ``thinFilmThickness`` (µm), or a thickness map's G channel
+  mapped to ``mix(min, max, G)`` µm (glTF ``KHR_materials_iridescence``'s convention for
+  ``iridescenceThicknessTexture``), read with the mesh's ``uv`` through the texture's
+  matrix; a map range outside the table's is refused (a JS Error naming
+  ``thicknessRange`` and the allowed range);
+- a free-standing film (a transmittance table): three.js's transmission pass
+  (``transmission = 1``, ``ior = 1``, volume ``thickness = 0``: the pixel behind), its
+  transmitted light multiplied by ``T(thickness, N·V)`` in place of three.js's
+  ``(1 - F) · diffuseColor``: the bubble shows ``R · L + T · behind``. Chosen over
+  premultiplied blending (``dst *= T``, ``dst += R L``), which in an 8-bit sRGB canvas
+  blends encoded values (``benchmarks/bench_three_bubble.py``).
 
 Textures are addressed as OpenGL does (v = 0 at the texture's first row) and
 ``EXRLoader`` puts the file's last scanline first, so the table's y axis is cos θ
