@@ -128,10 +128,9 @@ def write_site(
 #: thickness ``thickness``) that transmits (the module's T table), under a uniform
 #: environment; ``shape: "sphere"`` makes the bubble a double-sided sphere of that
 #: radius, ``codes`` (with ``mapAxis`` ``"u"`` or ``"v"`` and ``thicknessRange``) gives
-#: it a thickness map, ``transmits: false`` keeps it opaque (no T). ``timing``:
-#: ``{scene, frames}``, that many more frames of one scene, each finished by a 1-pixel
-#: ``readPixels``. With ``badRange`` the page records the Error ``applyThinFilm`` throws
-#: for that thickness map range. sRGB output, no tone mapping.
+#: it a thickness map, ``transmits: false`` keeps it opaque (no T). With ``badRange`` the
+#: page records the Error ``applyThinFilm`` throws for that thickness map range. sRGB
+#: output, no tone mapping.
 _FLAT_PAGE = """import * as THREE from "three";
 import { loadThinFilm } from "./__MODULE__";
 
@@ -183,7 +182,6 @@ try {
     map.needsUpdate = true;
     return map;
   }
-  const scenes = [];
   for (const spec of CONFIG.scenes) {
     const scene = new THREE.Scene();
     scene.environment = environment(spec.environment);
@@ -220,15 +218,7 @@ try {
         : new THREE.PlaneGeometry(w, w);
       scene.add(new THREE.Mesh(geometry, material));
     }
-    scenes.push(scene);
     out.frames.push(frame(scene));
-  }
-  if (CONFIG.timing) {  // CONFIG.timing.frames more frames of scene CONFIG.timing.scene
-    const one = new Uint8Array(4);
-    for (let i = 0; i < CONFIG.timing.frames; i++) {
-      renderer.render(scenes[CONFIG.timing.scene], camera);
-      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, one);  // the frame is finished
-    }
   }
 } catch (error) {
   out.error = String(error && error.stack || error);

@@ -44,7 +44,7 @@ RADIUS = 0.9  # away from the silhouette: N·V >= 0.44
 #: Linear reflectance, absolute (MaterialX's mirror: 16 importance samples of a GGX lobe
 #: of alpha 1e-4; the table's bilinear lookup).
 TOLERANCE = 0.005
-MATERIAL = "ThinFilm_Soap"
+MATERIAL = "Soap"
 
 
 #: The free-standing film's documents draw a dyed soap film (n = 1.33 + 0.02i), absorbing,
@@ -54,7 +54,7 @@ DYED = materials.Stack.single(1.33 + 0.02j)
 #: The free-standing film's document: its name, material and the environment's colours
 #: in front of the sphere (what its reflection sees) and behind it (what it transmits).
 BUBBLE_NAME = "Soap bubble"
-BUBBLE = "ThinFilm_Soap_bubble"
+BUBBLE = "Soap_bubble"
 FRONT, BEHIND = np.array([0.3, 0.35, 0.4]), np.array([0.9, 0.5, 0.15])
 #: Pixels whose reflection stays in the front half of the environment (N·V >= 0.8).
 FRONT_RADIUS = 0.6
@@ -80,7 +80,7 @@ def _noise_document():
     ET.SubElement(noise, "input", name="position", type="vector3", nodename="P4")
     ET.SubElement(noise, "input", name="amplitude", type="float", value="0.2")
     ET.SubElement(noise, "input", name="pivot", type="float", value="0.45")
-    film = doc.find("thinfilm_Soap_bubble")
+    film = doc.find("Soap_bubble")
     ET.SubElement(film, "input", name="thickness", type="float", nodename="thickness_noise")
     return ET.tostring(doc, encoding="unicode")
 
@@ -128,7 +128,7 @@ def test_the_document_validates(which):
     doc = _loaded(make())
     valid, message = doc.validate()
     assert valid, message
-    graph = doc.getChild("NG_thinfilm_Soap" if which == "reflection" else "NG_thinfilm_Soap_bubble")
+    graph = doc.getChild("NG_Soap" if which == "reflection" else "NG_Soap_bubble")
     image = graph.getNode("reflectance")
     assert image.getInputValue("file") == "Soap_R.exr"
     assert [image.getInputValue(k) for k in ("uaddressmode", "vaddressmode", "filtertype")] == [
@@ -149,11 +149,11 @@ def test_the_document_validates(which):
 
 def test_the_film_is_a_node_with_a_connectable_thickness():
     doc = _loaded(_noise_document())
-    nodedef = doc.getNodeDef("ND_thinfilm_Soap_bubble")
-    assert nodedef is not None and nodedef.getNodeString() == "thinfilm_Soap_bubble"
+    nodedef = doc.getNodeDef("ND_Soap_bubble")
+    assert nodedef is not None and nodedef.getNodeString() == "Soap_bubble"
     assert nodedef.getInput("thickness").getType() == "float"
-    assert nodedef.getImplementation().getName() == "NG_thinfilm_Soap_bubble"
-    film = doc.getNode("SS_ThinFilm_Soap_bubble")
+    assert nodedef.getImplementation().getName() == "NG_Soap_bubble"
+    film = doc.getNode("SS_Soap_bubble")
     assert film.getInput("thickness").getConnectedNode().getCategory() == "noise3d"
 
 
@@ -236,7 +236,7 @@ def _render(ctx, sources, tables, thickness=THICKNESS, environment=None):
     try:
         program["u_viewProjectionMatrix"].write(_ortho_view_projection().T.astype("f4").tobytes())
         program["u_viewPosition"].value = (0.0, 0.0, 1.0e4)  # rays all but parallel
-        for name in ("SS_ThinFilm_Soap_thickness", "SS_ThinFilm_Soap_bubble_thickness"):
+        for name in ("SS_Soap_thickness", "SS_Soap_bubble_thickness"):
             if thickness is not None and program.get(name, None) is not None:
                 program[name].value = thickness
         env.use(location=0)
@@ -375,9 +375,9 @@ def test_bad_arguments_name_the_parameter(kwargs, match):
 def test_the_names_come_from_the_film_s_name():
     text = materialx_document("Oil", "Oil_R.exr", (0.0, 1.0), size=(64, 32), name="Oil slick 2")
     for element in (
-        '<nodedef name="ND_thinfilm_Oil_slick_2" node="thinfilm_Oil_slick_2"',
-        '<nodegraph name="NG_thinfilm_Oil_slick_2" nodedef="ND_thinfilm_Oil_slick_2">',
-        '<thinfilm_Oil_slick_2 name="SS_ThinFilm_Oil_slick_2" type="surfaceshader"',
-        '<surfacematerial name="ThinFilm_Oil_slick_2" type="material">',
+        '<nodedef name="ND_Oil_slick_2" node="Oil_slick_2"',
+        '<nodegraph name="NG_Oil_slick_2" nodedef="ND_Oil_slick_2">',
+        '<Oil_slick_2 name="SS_Oil_slick_2" type="surfaceshader"',
+        '<surfacematerial name="Oil_slick_2" type="material">',
     ):
         assert element in text, element

@@ -3,12 +3,12 @@
 :func:`materialx_document` writes a ``.mtlx`` document (MaterialX Specification 1.39,
 standard library nodes only) that defines the film as a node and uses it:
 
-- the node definition ``ND_thinfilm_<name>`` (node ``thinfilm_<name>``, output
-  ``surfaceshader``; ``<name>`` the film's name with the characters MaterialX names do not
-  allow as ``_``) with the inputs ``thickness`` (float, µm, default the middle of the
+- the node definition ``ND_<name>`` (node ``<name>``, output ``surfaceshader``;
+  ``<name>`` the film's name with the characters MaterialX names do not allow as ``_``:
+  :func:`materialx_identifier`) with the inputs ``thickness`` (float, µm, default the middle of the
   film's range; connectable: a ``noise3d``, a texture, any float node) and ``roughness``
   (vector2, default 0: a mirror);
-- its implementation, the node graph ``NG_thinfilm_<name>``: the tables' node-centred
+- its implementation, the node graph ``NG_<name>``: the tables' node-centred
   axes read at ``(f (N - 1) + 0.5) / N`` for fraction ``f``: ``u`` = ``remap(thickness,
   lo, hi, 0.5 / W, 1 - 0.5 / W)``, ``v`` = ``remap(cos θ, 0, 1, 0.5 / H, 1 - 0.5 / H)``
   with cos θ = ``clamp(-dotproduct(viewdirection, normal), 0, 1)`` = N·V (MaterialX's
@@ -21,8 +21,8 @@ standard library nodes only) that defines the film as a node and uses it:
   white, which adds no F82 tint); for a free-standing film, ``add`` of that and a
   ``dielectric_bsdf`` with ``scatter_mode`` ``T``, ``ior`` 1 (no bending, no Fresnel
   of its own) and ``tint`` = T: the energy is R + T, the table's; then ``surface``;
-- an instance ``SS_ThinFilm_<name>`` of the node and the ``surfacematerial``
-  ``ThinFilm_<name>``.
+- an instance ``SS_<name>`` of the node and the ``surfacematerial``
+  ``<name>``.
 
 Without a transmittance table the material is the film's reflection over an opaque,
 black substrate (or a metal in the film's stack).
@@ -61,7 +61,9 @@ def _node(parent: ET.Element, category: str, name: str, kind: str, **inputs) -> 
 def materialx_identifier(name: str) -> str:
     """Return ``name`` as a MaterialX name.
 
-    Characters other than ASCII letters, digits and ``_`` become ``_``.
+    Characters other than ASCII letters, digits and ``_`` become ``_``; a name that would
+    start with a digit (not an identifier in the generated GLSL and OSL) gets ``film_``
+    in front.
 
     Parameters
     ----------
@@ -71,14 +73,16 @@ def materialx_identifier(name: str) -> str:
     Returns
     -------
     str
-        The name for ``ND_thinfilm_<name>``, ``thinfilm_<name>``, ``ThinFilm_<name>``.
+        The node and material name ``<name>`` (and ``ND_<name>``, ``NG_<name>``,
+        ``SS_<name>``).
 
     Examples
     --------
-    >>> materialx_identifier("Soap bubble (n = 1.33)")
-    'Soap_bubble__n___1_33_'
+    >>> materialx_identifier("Soap bubble (n = 1.33)"), materialx_identifier("3M film")
+    ('Soap_bubble__n___1_33_', 'film_3M_film')
     """
-    return re.sub(r"[^A-Za-z0-9_]", "_", name)
+    ident = re.sub(r"[^A-Za-z0-9_]", "_", name)
+    return f"film_{ident}" if ident[:1].isdigit() else ident
 
 
 def materialx_document(
@@ -112,8 +116,8 @@ def materialx_document(
         ``dielectric_bsdf`` of ior 1 tinted by T, added to the reflection).
     name : str, optional
         The film's name (``TableFiles.name``, as in the tables' ImageDescription):
-        names the node ``thinfilm_<name>``, its definition ``ND_thinfilm_<name>``, its
-        graph ``NG_thinfilm_<name>`` and the material ``ThinFilm_<name>``
+        names the node (category) and the material ``<name>``, the node's definition
+        ``ND_<name>``, its graph ``NG_<name>`` and the instance ``SS_<name>``
         (:func:`materialx_identifier`). Default ``key``.
 
     Returns
@@ -130,7 +134,7 @@ def materialx_document(
     Examples
     --------
     >>> text = materialx_document("Soap", "ThinFilm_User_Soap_R.exr", (0.0, 1.0), size=(64, 32))
-    >>> '<surfacematerial name="ThinFilm_Soap" type="material">' in text
+    >>> '<surfacematerial name="Soap" type="material">' in text
     True
     """
     if not isinstance(key, str) or not key:
@@ -158,17 +162,17 @@ def materialx_document(
         )
     )
     _nodedef(root, ident, (lo, hi))
-    graph = ET.SubElement(root, "nodegraph", name=f"NG_thinfilm_{ident}")
-    graph.set("nodedef", f"ND_thinfilm_{ident}")
+    graph = ET.SubElement(root, "nodegraph", name=f"NG_{ident}")
+    graph.set("nodedef", f"ND_{ident}")
     _table_reads(graph, tables, colorspace, (lo, hi), (width, height))
     _bsdfs(graph, "transmittance" in tables)
-    _node(root, f"thinfilm_{ident}", f"SS_ThinFilm_{ident}", "surfaceshader")
+    _node(root, ident, f"SS_{ident}", "surfaceshader")
     _node(
         root,
         "surfacematerial",
-        f"ThinFilm_{ident}",
+        ident,
         "material",
-        surfaceshader=("surfaceshader", {"nodename": f"SS_ThinFilm_{ident}"}),
+        surfaceshader=("surfaceshader", {"nodename": f"SS_{ident}"}),
     )
     ET.indent(root, "  ")
     return '<?xml version="1.0"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
@@ -180,8 +184,8 @@ def _nodedef(root: ET.Element, ident: str, range_um: tuple[float, float]) -> Non
     nodedef = ET.SubElement(
         root,
         "nodedef",
-        name=f"ND_thinfilm_{ident}",
-        node=f"thinfilm_{ident}",
+        name=f"ND_{ident}",
+        node=ident,
         nodegroup="pbr",
         doc="A thin film's exact reflectance (and transmittance) from its tables.",
     )
