@@ -295,11 +295,15 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
       :func:`ocio_thinfilm.export.hosts.blender.blender_script`; reflection, and
       transmission for a free-standing film);
     - ``<stem>.js``: an ES module for three.js
-      (:func:`ocio_thinfilm.export.hosts.three.three_module`), for tables in three.js's
-      working space (linear Rec.709: the registry's ``threejs`` name);
+      (:func:`ocio_thinfilm.export.hosts.three.three_module`; reflection, thickness maps,
+      and transmission for a free-standing film), for tables in three.js's working space
+      (linear Rec.709: the registry's ``threejs`` name);
     - ``<stem>.mtlx``: a MaterialX 1.39 document
-      (:func:`ocio_thinfilm.export.hosts.materialx.materialx_document`), for the spaces
+      (:func:`ocio_thinfilm.export.hosts.materialx.materialx_document`; the film as a
+      node with a connectable thickness, reflection and transmission), for the spaces
       MaterialX names.
+
+    Each names the film by its ``name`` (``TableFiles.name``).
 
     Parameters
     ----------
@@ -323,12 +327,23 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
 
     def three_file(files: TableFiles) -> str:
         return three.three_module(
-            files.key, files.reflectance, files.range_um, module_name=f"{stem}.js"
+            files.key,
+            files.reflectance,
+            files.range_um,
+            transmittance_exr=files.transmittance,
+            name=files.name,
+            module_name=f"{stem}.js",
         )
 
     def materialx_file(files: TableFiles) -> str:
         return materialx.materialx_document(
-            files.key, files.reflectance, files.range_um, space=space, size=files.size
+            files.key,
+            files.reflectance,
+            files.range_um,
+            space=space,
+            size=files.size,
+            transmittance_exr=files.transmittance,
+            name=files.name,
         )
 
     entry = registry.SCENE_LINEAR_BY_NAME[space]

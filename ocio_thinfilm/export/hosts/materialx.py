@@ -1,25 +1,30 @@
-"""The film in MaterialX 1.39: a node graph reading the table, feeding a BSDF.
-
-The graph reads the reflectance table by thickness and view angle.
+"""The film in MaterialX 1.39: a node of its own, reading the tables, feeding BSDFs.
 
 :func:`materialx_document` writes a ``.mtlx`` document (MaterialX Specification 1.39,
-standard library nodes only):
+standard library nodes only) that defines the film as a node and uses it:
 
-- the node graph ``NG_ThinFilm_<key>`` with one input, ``thickness`` (µm, default the
-  middle of the film's range), and one output, ``reflectance`` (color3): the table's
-  node-centred axes read at ``(f (N - 1) + 0.5) / N`` for fraction ``f``: ``u`` =
-  ``remap(thickness, lo, hi, 0.5 / W, 1 - 0.5 / W)``, ``v`` = ``remap(cos θ, 0, 1, 0.5 /
-  H, 1 - 0.5 / H)`` with cos θ = ``clamp(-dotproduct(viewdirection, normal), 0, 1)`` = N·V
-  (MaterialX's view direction points from the eye to the surface; both in world
-  space), ``image`` of the table at ``(u, v)`` with
+- the node definition ``ND_<name>`` (node ``<name>``, output ``surfaceshader``;
+  ``<name>`` the film's name with the characters MaterialX names do not allow as ``_``:
+  :func:`materialx_identifier`) with the inputs ``thickness`` (float, µm, default the middle of the
+  film's range; connectable: a ``noise3d``, a texture, any float node) and ``roughness``
+  (vector2, default 0: a mirror);
+- its implementation, the node graph ``NG_<name>``: the tables' node-centred
+  axes read at ``(f (N - 1) + 0.5) / N`` for fraction ``f``: ``u`` = ``remap(thickness,
+  lo, hi, 0.5 / W, 1 - 0.5 / W)``, ``v`` = ``remap(cos θ, 0, 1, 0.5 / H, 1 - 0.5 / H)``
+  with cos θ = ``clamp(-dotproduct(viewdirection, normal), 0, 1)`` = N·V (MaterialX's
+  view direction points from the eye to the surface; both in world space), ``image``
+  of the reflectance table (and of the transmittance table) at ``(u, v)`` with
   ``uaddressmode``/``vaddressmode`` ``clamp`` and ``filtertype`` ``linear`` (MaterialX
   addresses images with v = 0 at the bottom row, the table's cos θ near 0);
-- ``generalized_schlick_bsdf`` with ``color0`` = ``color90`` = the reflectance (the
-  Fresnel term is R at the shading point's N·V over the whole lobe; ``color82`` left at
-  its default white, which adds no F82 tint), ``roughness`` an input of the BSDF
-  (default 0: a mirror), then ``surface`` and the ``surfacematerial`` ``ThinFilm_<key>``.
+  ``generalized_schlick_bsdf`` with ``color0`` = ``color90`` = R (the Fresnel term is R
+  at the shading point's N·V over the whole lobe; ``color82`` left at its default
+  white, which adds no F82 tint); for a free-standing film, ``add`` of that and a
+  ``dielectric_bsdf`` with ``scatter_mode`` ``T``, ``ior`` 1 (no bending, no Fresnel
+  of its own) and ``tint`` = T: the energy is R + T, the table's; then ``surface``;
+- an instance ``SS_<name>`` of the node and the ``surfacematerial``
+  ``<name>``.
 
-The light the film transmits is not in the document: it is the film on an opaque,
+Without a transmittance table the material is the film's reflection over an opaque,
 black substrate (or a metal in the film's stack).
 """
 
@@ -33,7 +38,7 @@ from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_count
 from ocio_thinfilm.export.hosts import table_name, thickness_range
 
-__all__ = ["MATERIALX_COLORSPACES", "materialx_document"]
+__all__ = ["MATERIALX_COLORSPACES", "materialx_document", "materialx_identifier"]
 
 #: The table's scene space -> MaterialX's colour space name (its default colour
 #: management system's names, MaterialX Specification 1.39, "Color Spaces"), from the
@@ -53,6 +58,33 @@ def _node(parent: ET.Element, category: str, name: str, kind: str, **inputs) -> 
     return node
 
 
+def materialx_identifier(name: str) -> str:
+    """Return ``name`` as a MaterialX name.
+
+    Characters other than ASCII letters, digits and ``_`` become ``_``; a name that would
+    start with a digit (not an identifier in the generated GLSL and OSL) gets ``film_``
+    in front.
+
+    Parameters
+    ----------
+    name : str
+        The film's name (``TableFiles.name``).
+
+    Returns
+    -------
+    str
+        The node and material name ``<name>`` (and ``ND_<name>``, ``NG_<name>``,
+        ``SS_<name>``).
+
+    Examples
+    --------
+    >>> materialx_identifier("Soap bubble (n = 1.33)"), materialx_identifier("3M film")
+    ('Soap_bubble__n___1_33_', 'film_3M_film')
+    """
+    ident = re.sub(r"[^A-Za-z0-9_]", "_", name)
+    return f"film_{ident}" if ident[:1].isdigit() else ident
+
+
 def materialx_document(
     key: str,
     reflectance_exr: str | PathLike[str],
@@ -60,24 +92,33 @@ def materialx_document(
     *,
     size: tuple[int, int],
     space: str = "Linear Rec.709 (sRGB)",
+    transmittance_exr: str | PathLike[str] | None = None,
+    name: str | None = None,
 ) -> str:
-    """Return a MaterialX 1.39 document (text) of the film as a material.
+    """Return a MaterialX 1.39 document (text) of the film as a node and a material.
 
     Parameters
     ----------
     key : str
-        The film's key: names the node graph ``NG_ThinFilm_<key>`` and the material
-        ``ThinFilm_<key>`` (characters MaterialX names do not allow become ``_``).
+        The film's key in its film file (in the document's comment).
     reflectance_exr : str or os.PathLike
         The reflectance table; the document names its file (resolved beside the
         document, as MaterialX resolves relative file names).
     range_um : tuple of float
         The table's thickness axis ``(lo, hi)`` in µm (the film's ``range_um``).
     size : tuple of int
-        The table's ``(width, height)`` in texels, each >= 2: its axes are node-centred,
-        read at ``(f (N - 1) + 0.5) / N``.
+        The tables' ``(width, height)`` in texels, each >= 2: their axes are
+        node-centred, read at ``(f (N - 1) + 0.5) / N``.
     space : str, optional
-        The table's scene space (a key of :data:`MATERIALX_COLORSPACES`).
+        The tables' scene space (a key of :data:`MATERIALX_COLORSPACES`).
+    transmittance_exr : str or os.PathLike, optional
+        The transmittance table of a free-standing film: the node transmits T (a
+        ``dielectric_bsdf`` of ior 1 tinted by T, added to the reflection).
+    name : str, optional
+        The film's name (``TableFiles.name``, as in the tables' ImageDescription):
+        names the node (category) and the material ``<name>``, the node's definition
+        ``ND_<name>``, its graph ``NG_<name>`` and the instance ``SS_<name>``
+        (:func:`materialx_identifier`). Default ``key``.
 
     Returns
     -------
@@ -93,31 +134,63 @@ def materialx_document(
     Examples
     --------
     >>> text = materialx_document("Soap", "ThinFilm_User_Soap_R.exr", (0.0, 1.0), size=(64, 32))
-    >>> '<surfacematerial name="ThinFilm_Soap" type="material">' in text
+    >>> '<surfacematerial name="Soap" type="material">' in text
     True
     """
     if not isinstance(key, str) or not key:
         raise TypeError(f"key must be a non-empty string, got {key!r}")
-    table = table_name("reflectance_exr", reflectance_exr)
+    name = key if name is None else name
+    if not isinstance(name, str) or not name:
+        raise TypeError(f"name must be a non-empty string, got {name!r}")
+    tables = {"reflectance": table_name("reflectance_exr", reflectance_exr)}
+    if transmittance_exr is not None:
+        tables["transmittance"] = table_name("transmittance_exr", transmittance_exr)
     lo, hi = thickness_range(range_um)
     if not isinstance(size, (tuple, list)) or len(size) != 2:
         raise ParameterError("size", f" must be (width, height), got {size!r}")
     width, height = (as_count("size", n, 2) for n in size)
     colorspace = MATERIALX_COLORSPACES[as_choice("space", space, MATERIALX_COLORSPACES)]
-    name = re.sub(r"[^A-Za-z0-9_]", "_", key)
-    graph_name = f"NG_ThinFilm_{name}"
+    ident = materialx_identifier(name)
 
     root = ET.Element("materialx", version="1.39", colorspace=colorspace)
     root.append(
         ET.Comment(
-            f" Thin film {key.replace('--', '- -')}: reflectance R(thickness, angle) from "
-            f"{table} (x: thickness {lo}-{hi} um, y: cos theta; written by ocio-thinfilm "
+            f" Thin film {name.replace('--', '- -')} ({key.replace('--', '- -')}): "
+            f"{' and '.join(tables)} (thickness, angle) from {', '.join(tables.values())} "
+            f"(x: thickness {lo}-{hi} um, y: cos theta; written by ocio-thinfilm "
             f"{__version__}) "
         )
     )
-    graph = ET.SubElement(root, "nodegraph", name=graph_name)
+    _nodedef(root, ident, (lo, hi))
+    graph = ET.SubElement(root, "nodegraph", name=f"NG_{ident}")
+    graph.set("nodedef", f"ND_{ident}")
+    _table_reads(graph, tables, colorspace, (lo, hi), (width, height))
+    _bsdfs(graph, "transmittance" in tables)
+    _node(root, ident, f"SS_{ident}", "surfaceshader")
+    _node(
+        root,
+        "surfacematerial",
+        ident,
+        "material",
+        surfaceshader=("surfaceshader", {"nodename": f"SS_{ident}"}),
+    )
+    ET.indent(root, "  ")
+    return '<?xml version="1.0"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
+
+
+def _nodedef(root: ET.Element, ident: str, range_um: tuple[float, float]) -> None:
+    """Add the film's node definition: inputs thickness and roughness, a surfaceshader."""
+    lo, hi = range_um
+    nodedef = ET.SubElement(
+        root,
+        "nodedef",
+        name=f"ND_{ident}",
+        node=ident,
+        nodegroup="pbr",
+        doc="A thin film's exact reflectance (and transmittance) from its tables.",
+    )
     ET.SubElement(
-        graph,
+        nodedef,
         "input",
         name="thickness",
         type="float",
@@ -127,106 +200,124 @@ def materialx_document(
         uiname="Thickness (um)",
         doc="Physical thickness of the film's varying layer, in micrometres.",
     )
+    ET.SubElement(
+        nodedef,
+        "input",
+        name="roughness",
+        type="vector2",
+        value="0.0, 0.0",
+        uiname="Roughness",
+        doc="The lobes' roughness (alpha in u and v); 0 is a mirror.",
+    )
+    ET.SubElement(nodedef, "output", name="out", type="surfaceshader")
+
+
+def _table_reads(
+    graph: ET.Element,
+    tables: dict[str, str],
+    colorspace: str,
+    range_um: tuple[float, float],
+    size: tuple[int, int],
+) -> None:
+    """Add the nodes reading each table at (thickness, N·V), images named by quantity."""
+    (lo, hi), (width, height) = range_um, size
     world = {"space": ("string", {"value": "world"})}
     _node(graph, "normal", "N", "vector3", **world)
     _node(graph, "viewdirection", "I", "vector3", **world)
-    _node(
-        graph,
-        "dotproduct",
-        "I_dot_N",
-        "float",
-        in1=("vector3", {"nodename": "I"}),
-        in2=("vector3", {"nodename": "N"}),
-    )
-    _node(
-        graph,
-        "multiply",
-        "N_dot_V",
-        "float",
-        in1=("float", {"nodename": "I_dot_N"}),
-        in2=("float", {"value": "-1.0"}),
-    )
+    _node(graph, "dotproduct", "I_dot_N", "float", in1=_from("I"), in2=_from("N"))
+    _node(graph, "multiply", "N_dot_V", "float", in1=_from("I_dot_N"), in2=_value("-1.0"))
     _node(
         graph,
         "clamp",
         "cos_theta",
         "float",
-        **{
-            "in": ("float", {"nodename": "N_dot_V"}),
-            "low": ("float", {"value": "0.0"}),
-            "high": ("float", {"value": "1.0"}),
-        },
+        **{"in": _from("N_dot_V"), "low": _value("0.0"), "high": _value("1.0")},
     )
-    _node(
-        graph,
-        "remap",
-        "thickness_u",
-        "float",
-        **{
-            "in": ("float", {"interfacename": "thickness"}),
-            "inlow": ("float", {"value": repr(lo)}),
-            "inhigh": ("float", {"value": repr(hi)}),
-            "outlow": ("float", {"value": repr(0.5 / width)}),
-            "outhigh": ("float", {"value": repr(1.0 - 0.5 / width)}),
-        },
-    )
-    _node(
-        graph,
-        "remap",
-        "cos_theta_v",
-        "float",
-        **{
-            "in": ("float", {"nodename": "cos_theta"}),
-            "inlow": ("float", {"value": "0.0"}),
-            "inhigh": ("float", {"value": "1.0"}),
-            "outlow": ("float", {"value": repr(0.5 / height)}),
-            "outhigh": ("float", {"value": repr(1.0 - 0.5 / height)}),
-        },
-    )
+    _remap(graph, "thickness_u", ("float", {"interfacename": "thickness"}), (lo, hi), width)
+    _remap(graph, "cos_theta_v", _from("cos_theta"), (0.0, 1.0), height)
     _node(
         graph,
         "combine2",
         "uv",
         "vector2",
-        in1=("float", {"nodename": "thickness_u"}),
-        in2=("float", {"nodename": "cos_theta_v"}),
+        in1=_from("thickness_u"),
+        in2=_from("cos_theta_v"),
     )
+    for quantity, table in tables.items():
+        _node(
+            graph,
+            "image",
+            quantity,
+            "color3",
+            file=("filename", {"value": table, "colorspace": colorspace}),
+            texcoord=("vector2", {"nodename": "uv"}),
+            uaddressmode=("string", {"value": "clamp"}),
+            vaddressmode=("string", {"value": "clamp"}),
+            filtertype=("string", {"value": "linear"}),
+        )
+
+
+def _bsdfs(graph: ET.Element, transmits: bool) -> None:
+    """Add the BSDFs (R's reflection; plus T's transmission), the surface and the output."""
+    roughness = ("vector2", {"interfacename": "roughness"})
+    reflectance = ("color3", {"nodename": "reflectance"})
     _node(
         graph,
-        "image",
-        "table",
-        "color3",
-        file=("filename", {"value": table, "colorspace": colorspace}),
-        texcoord=("vector2", {"nodename": "uv"}),
-        uaddressmode=("string", {"value": "clamp"}),
-        vaddressmode=("string", {"value": "clamp"}),
-        filtertype=("string", {"value": "linear"}),
-    )
-    ET.SubElement(graph, "output", name="reflectance", type="color3", nodename="table")
-
-    reflectance = ("color3", {"nodegraph": graph_name, "output": "reflectance"})
-    _node(
-        root,
         "generalized_schlick_bsdf",
-        f"BSDF_ThinFilm_{name}",
+        "reflection",
         "BSDF",
         color0=reflectance,
         color90=reflectance,
-        roughness=("vector2", {"value": "0.0, 0.0"}),
+        roughness=roughness,
     )
+    bsdf = "reflection"
+    if transmits:
+        _node(
+            graph,
+            "dielectric_bsdf",
+            "transmission",
+            "BSDF",
+            tint=("color3", {"nodename": "transmittance"}),
+            ior=_value("1.0"),
+            roughness=roughness,
+            scatter_mode=("string", {"value": "T"}),
+        )
+        _node(graph, "add", "film", "BSDF", in1=_bsdf("reflection"), in2=_bsdf("transmission"))
+        bsdf = "film"
+    _node(graph, "surface", "shader", "surfaceshader", bsdf=_bsdf(bsdf))
+    ET.SubElement(graph, "output", name="out", type="surfaceshader", nodename="shader")
+
+
+def _from(node: str, kind: str = "float") -> tuple[str, dict[str, str]]:
+    return ("vector3" if node in ("I", "N") else kind, {"nodename": node})
+
+
+def _bsdf(node: str) -> tuple[str, dict[str, str]]:
+    return ("BSDF", {"nodename": node})
+
+
+def _value(value: str) -> tuple[str, dict[str, str]]:
+    return ("float", {"value": value})
+
+
+def _remap(
+    graph: ET.Element,
+    name: str,
+    source: tuple[str, dict[str, str]],
+    range_in: tuple[float, float],
+    texels: int,
+) -> None:
+    """Add ``remap`` of ``source`` from ``range_in`` to the texel centres of an axis."""
     _node(
-        root,
-        "surface",
-        f"SS_ThinFilm_{name}",
-        "surfaceshader",
-        bsdf=("BSDF", {"nodename": f"BSDF_ThinFilm_{name}"}),
+        graph,
+        "remap",
+        name,
+        "float",
+        **{
+            "in": source,
+            "inlow": _value(repr(range_in[0])),
+            "inhigh": _value(repr(range_in[1])),
+            "outlow": _value(repr(0.5 / texels)),
+            "outhigh": _value(repr(1.0 - 0.5 / texels)),
+        },
     )
-    _node(
-        root,
-        "surfacematerial",
-        f"ThinFilm_{name}",
-        "material",
-        surfaceshader=("surfaceshader", {"nodename": f"SS_ThinFilm_{name}"}),
-    )
-    ET.indent(root, "  ")
-    return '<?xml version="1.0"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
