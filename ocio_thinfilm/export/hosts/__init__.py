@@ -12,8 +12,10 @@ an axis of ``N`` texels at the texture coordinate ``(f (N - 1) + 0.5) / N``.
 - :mod:`.gltf` -- a binary glTF of the film on a sample sphere (a fitted
   ``KHR_materials_iridescence`` fallback and the exact table in a vendor extension) and
   the three.js ``GLTFLoader`` plugin that reads it;
-- :mod:`.materialx` -- a MaterialX 1.39 document: a node graph reading the table by
-  thickness and view angle, feeding a BSDF.
+- :mod:`.materialx` -- a MaterialX 1.39 document: the film as a node reading the tables
+  by thickness and view angle, feeding BSDFs;
+- :mod:`.mitsuba` -- no table: a spectral Mitsuba 3 BSDF evaluating the film's stack
+  exactly per sampled wavelength (the optional extra ``mitsuba``).
 """
 
 from __future__ import annotations

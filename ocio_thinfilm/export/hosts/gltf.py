@@ -438,18 +438,18 @@ def plugin_module(module_name: str = PLUGIN_NAME) -> str:
     True
     """
     declarations = _swap(
-        three_host._DECLARATIONS,
+        three_host.SHADER_DECLARATIONS,
         "uniform float thinFilmThickness;\n",
         "float thinFilmThickness;\nuniform sampler2D thinFilmThicknessMap;\n",
     )
     at_lights = (
         "thinFilmThickness = mix( thinFilmRange.x, thinFilmRange.y, "
-        "texture2D( thinFilmThicknessMap, vUv ).g );\n" + three_host._AT_LIGHTS
+        "texture2D( thinFilmThicknessMap, vUv ).g );\n" + three_host.SHADER_AT_LIGHTS
     )
     fields = {
         "__EXTENSION_JSON__": json.dumps(EXTENSION),
         "__DECLARATIONS__": json.dumps(declarations),
-        "__REPLACEMENTS__": json.dumps(three_host._REPLACEMENTS, indent=2),
+        "__REPLACEMENTS__": json.dumps(three_host.SHADER_REPLACEMENTS, indent=2),
         "__AT_LIGHTS__": json.dumps(at_lights),
         "__EXTENSION__": EXTENSION,
         "__SELF__": module_name,

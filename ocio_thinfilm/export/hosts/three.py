@@ -48,7 +48,13 @@ from ocio_thinfilm import __version__
 from ocio_thinfilm.checks import ParameterError, as_pair
 from ocio_thinfilm.export.hosts import table_name, thickness_range
 
-__all__ = ["THREE_REVISION", "three_module"]
+__all__ = [
+    "THREE_REVISION",
+    "SHADER_DECLARATIONS",
+    "SHADER_REPLACEMENTS",
+    "SHADER_AT_LIGHTS",
+    "three_module",
+]
 
 #: The three.js release whose shader chunks the module patches (and the tests run).
 THREE_REVISION = "187"
@@ -56,7 +62,7 @@ THREE_REVISION = "187"
 #: GLSL declared ahead of three.js's physical lighting: the tables, the thickness (a
 #: uniform, or a thickness map's G channel mapped to a range), and R (and T) at the shading
 #: point's N·V (set in ``main`` before the lights).
-_DECLARATIONS = """uniform sampler2D thinFilmTable;
+SHADER_DECLARATIONS = """uniform sampler2D thinFilmTable;
 uniform float thinFilmThickness;
 uniform vec2 thinFilmRange;
 #ifdef THIN_FILM_THICKNESS_MAP
@@ -84,7 +90,7 @@ vec3 thinFilmT;
 """
 
 #: (three.js's line, the film's line) in ``lights_physical_pars_fragment``.
-_REPLACEMENTS = [
+SHADER_REPLACEMENTS = [
     (
         "vec3 F = F_Schlick( f0, f90, dotVH );",
         "vec3 F = thinFilmReflectance( dotVH );",
@@ -108,7 +114,7 @@ _TRANSMISSION = (
 )
 
 #: Set in ``main`` ahead of ``lights_fragment_begin`` (three.js's view direction).
-_AT_LIGHTS = """#ifdef THIN_FILM_THICKNESS_MAP
+SHADER_AT_LIGHTS = """#ifdef THIN_FILM_THICKNESS_MAP
 thinFilmD = mix( thinFilmThicknessRange.x, thinFilmThicknessRange.y,
 	texture( thinFilmThicknessMap, vThinFilmUv ).g );
 #else
@@ -361,10 +367,10 @@ def three_module(
         "__TTABLE_URL__": "null"
         if t_table is None
         else f"new URL({json.dumps(t_table)}, import.meta.url).href",
-        "__DECLARATIONS__": json.dumps(_DECLARATIONS),
-        "__REPLACEMENTS__": json.dumps(_REPLACEMENTS, indent=2),
+        "__DECLARATIONS__": json.dumps(SHADER_DECLARATIONS),
+        "__REPLACEMENTS__": json.dumps(SHADER_REPLACEMENTS, indent=2),
         "__TRANSMISSION__": json.dumps(_TRANSMISSION),
-        "__AT_LIGHTS__": json.dumps(_AT_LIGHTS),
+        "__AT_LIGHTS__": json.dumps(SHADER_AT_LIGHTS),
         "__VERTEX__": json.dumps(_VERTEX, indent=2),
         "__KEY__": name.replace("\n", " "),
         "__TTABLE__": "none" if t_table is None else t_table,
