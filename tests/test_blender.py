@@ -21,7 +21,7 @@ import pytest
 
 from evaluation import blender, materials
 from ocio_thinfilm.checks import ParameterError
-from ocio_thinfilm.export.hosts.blender import blender_name, blender_script
+from ocio_thinfilm.export.hosts.blender import BlenderTables, blender_name, blender_script
 
 #: The renders' tables (evaluation.blender.render_film) are 256 x 128 over 0-1 um: their
 #: bilinear lookup is within DeltaE2000 0.52 of the exact film at the test's pixels,
@@ -86,10 +86,96 @@ def test_blender_script_refuses_a_range_that_is_no_pair_of_numbers():
 def test_blender_script_is_python_with_the_constants():
     text = blender_script('Odd "key"', "sub/a_R.exr", "sub/a_T.exr", (0.25, 2))
     compile(text, "film.py", "exec")
-    assert 'NAME = "Thin Film Odd \\"key\\""' in text
-    assert 'REFLECTANCE = "sub/a_R.exr"' in text and 'TRANSMITTANCE = "sub/a_T.exr"' in text
+    # quoted as ruff format quotes it (single quotes around a name holding double ones)
+    assert """NAME = 'Thin Film Odd "key"'""" in text
+    names = {}
+    exec(text.split("\n\ndef ")[0].replace("import bpy", ""), names)
+    assert names["NAME"] == 'Thin Film Odd "key"'
+    assert '"reflectance": "sub/a_R.exr"' in text and '"transmittance": "sub/a_T.exr"' in text
+    assert '"space": "Linear Rec.709 (sRGB)"' in text and '"outside": (0.0, 0.0)' in text
     assert "RANGE_UM = (0.25, 2.0)" in text
     assert blender_name("Soap") == "Thin Film Soap"
+
+
+@pytest.mark.parametrize(
+    ("options", "parameter"),
+    [
+        ({"name": ""}, "name"),
+        ({"name": "two\nlines"}, "name"),
+        ({"space": "sRGB"}, "space"),
+        ({"outside": (1.5, -0.1)}, "outside"),
+        ({"outside": (0.1, 0.2)}, "outside"),
+        ({"alternates": [BlenderTables("Linear Rec.709 (sRGB)", "b_R.exr")]}, "alternates"),
+        ({"alternates": [BlenderTables("Linear Rec.2020", "b_R.exr", "b_T.exr")]}, "alternates"),
+        ({"alternates": [BlenderTables("Linear Rec.2020", "../b_R.exr")]}, "alternates"),
+    ],
+)
+def test_blender_script_names_the_bad_option(options, parameter):
+    with pytest.raises(ParameterError) as error:
+        blender_script("Soap", "a_R.exr", None, (0, 1), **options)
+    assert error.value.parameter == parameter
+    assert "\n" not in str(error.value)
+
+
+def test_the_script_is_named_by_the_film_name_like_the_exr_header(tmp_path):
+    """``export material``'s script names the node group and material by the film's
+    ``name`` (the film file's, e.g. "Thin Film Oil on Water" for key OilOnWater), the
+    name the EXR header starts with; without a name, ``Thin Film <key>``."""
+    import OpenImageIO as oiio
+
+    from ocio_thinfilm.cli.main import main as cli_main
+
+    films = tmp_path / "films.toml"
+    films.write_text(
+        "[materials.Soapy]\nn = 1.33\n\n"
+        '[films.Wall]\nstack = ["air", "Soapy", "air"]\nrange_um = [0, 1]\n'
+        'name = "Bubble wall"\n\n'
+        '[films.Plain]\nstack = ["air", "Soapy", "air"]\nrange_um = [0, 1]\n'
+    )
+    for key, name in (("Wall", "Bubble wall"), ("Plain", "Thin Film Plain")):
+        out = tmp_path / key
+        argv = ["export", "material", "--films", str(films), "--film", key, "--out", str(out)]
+        assert cli_main([*argv, "--size", "8x4"]) == 0
+        text = (out / f"ThinFilm_User_{key}.py").read_text()
+        header = oiio.ImageInput.open(str(out / f"ThinFilm_User_{key}_R.exr"))
+        description = header.spec().getattribute("ImageDescription")
+        header.close()
+        assert description.startswith(f"{name}: ")
+        assert f'NAME = "{name}"' in text
+
+
+def test_the_written_script_passes_the_repository_ruff(tmp_path):
+    """The script ``export material`` writes passes ``ruff check`` and ``ruff format
+    --check`` with the repository's configuration (no per-file ignores: as if saved in a
+    checked folder), with several spaces' tables and odd names."""
+    ruff = shutil.which("ruff")
+    if ruff is None:
+        pytest.skip("ruff not installed")
+    from pathlib import Path
+
+    config = Path(__file__).resolve().parents[1] / "pyproject.toml"
+    text = blender_script(
+        "Soap",
+        "ThinFilm_User_Soap_R.exr",
+        "ThinFilm_User_Soap_T.exr",
+        (0.0, 1.0),
+        name='A "quoted" film',
+        outside=(0.1234, -0.05),
+        alternates=[
+            BlenderTables(
+                "Linear Rec.2020",
+                "ThinFilm_User_Soap_LinearRec2020_R.exr",
+                "ThinFilm_User_Soap_LinearRec2020_T.exr",
+            )
+        ],
+    )
+    script = tmp_path / "ThinFilm_User_Soap.py"
+    script.write_text(text)
+    for command in (["check"], ["format", "--check"]):
+        done = subprocess.run(
+            [ruff, *command, "--config", str(config), str(script)], capture_output=True, text=True
+        )
+        assert done.returncode == 0, done.stdout + done.stderr
 
 
 # --------------------------------------------------------------------------- #
