@@ -158,8 +158,29 @@ def _tables_entry(tables: BlenderTables, parameters: tuple[str, str, str, str]) 
         f'        "reflectance": {_quote(reflectance)},\n'
         f'        "transmittance": {transmittance},\n'
         f'        "outside": ({fraction!r}, {lowest!r}),\n'
+        f'        "advice": {_quote(_advice(tables.space))},\n'
         "    },\n"
     )
+
+
+def _advice(space: str) -> str:
+    """Return what to do about colours outside ``space``'s gamut, for the script to say.
+
+    A wider working space of Blender 5 with tables of that space, where there is one;
+    ``--gamut clip`` where the space has a display's primaries.
+    """
+    wider = {
+        "Linear Rec.709 (sRGB)": ("Linear Rec.2020", "ACEScg"),
+        "Linear P3-D65": ("Linear Rec.2020", "ACEScg"),
+        "Linear Rec.2020": ("ACEScg",),
+    }.get(space, ())
+    ways = []
+    if wider:
+        options = " or ".join(f"--space '{s}'" for s in wider)
+        ways.append(f"export with {options} for a scene in that working space (Blender 5)")
+    if space in ("Linear Rec.709 (sRGB)", "Linear P3-D65", "Linear Rec.2020"):
+        ways.append("with --gamut clip")
+    return "; or ".join(ways) if ways else "no wider working space of Blender holds them"
 
 
 def blender_script(
@@ -377,9 +398,8 @@ def _report(entry, found):
     if fraction > 0:
         print(
             f"{NAME}: {100 * fraction:.1f} % of the table's texels lie outside {space}'s "
-            f"gamut (a channel down to {lowest:.3f}); Cycles clamps them per channel. "
-            "Export with --space 'Linear Rec.2020' or ACEScg for a scene in that working "
-            "space (Blender 5), or with --gamut clip"
+            f"gamut (a channel down to {lowest:.3f}); Cycles clamps them per channel: "
+            f"{entry['advice']}"
         )
 
 
