@@ -408,6 +408,19 @@ def test_docs_quote_the_benchmark(load_benchmark, marked):
     assert result["ratio"] <= 1.3
 
 
+@pytest.mark.parametrize("name", ["bench_bubbles", "bench_blender_spaces"])
+def test_docs_quote_the_bubble_and_space_benchmarks(load_benchmark, marked, name):
+    """docs/blender.md's bubble noise and working-space tables are the benchmarks' last
+    runs (reports/<name>.json) as their markdown renders them."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    result = json.loads((root / "reports" / f"{name}.json").read_text())
+    text = (root / "docs" / "blender.md").read_text()
+    block = marked(text, f"<!-- {name}:begin -->", f"<!-- {name}:end -->")
+    assert block == load_benchmark(name).markdown(result).strip()
+
+
 def test_a_missing_table_changes_nothing(tmp_path):
     """The script checks every table before it touches Blender's data: with the
     transmittance table gone it fails naming the path, and the group and material of an
