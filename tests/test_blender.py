@@ -630,10 +630,13 @@ def test_export_material_refuses_bad_spaces(tmp_path, capsys, spaces, says):
 # --------------------------------------------------------------------------- #
 # Noise: a bubble against Blender's own nearest bubble
 # --------------------------------------------------------------------------- #
-#: How much noisier than Principled's bubble ours may measure and still pass: the
-#: RMSE of one 32-sample render against a 512-sample one moves by MARGIN between
-#: seeds (benchmarks/bench_bubbles.py: docs/blender.md), so a material exactly as noisy
-#: as Principled's passes; one twice as noisy does not.
+#: How much noisier than Principled's bubble ours may measure and still pass. Measured
+#: (benchmarks/bench_bubbles.py, docs/blender.md; 64 px, 3 seeds): one material's RMSE
+#: moves by about +-2 % between seeds, ours / Principled's is 0.99 at 32 samples and
+#: 1.03 at 128. On the test's 48 px frame (half the pixels) the ratio of two renders
+#: moves by about 5 % (one sigma): 1.15 is three sigma, so a material as noisy as
+#: Principled's passes and one 1.3 times as noisy (or the twice-as-noisy pixels of a
+#: wrong closure choice) fails.
 MARGIN = 1.15
 
 
@@ -661,23 +664,39 @@ def _bubble_noise(tmp_path, material, engine, samples, reference, size=48, **job
     return float(np.sqrt(np.mean(difference**2)))
 
 
-@pytest.mark.parametrize(
-    ("engine", "samples", "reference"), [("CYCLES", 32, 512), ("BLENDER_EEVEE", 16, 32)]
-)
-def test_a_bubble_is_no_noisier_than_principled(tmp_path, engine, samples, reference):
-    """The free-standing soap film's material, as the script builds it (Cycles: Glossy R
-    + Transparent T; EEVEE: Blended), in the bubble scene (a sphere of film before a
-    checker, under a varying world): its RMSE against its own converged render is at
-    most Principled's bubble's (transmission 1, IOR 1.0, thin film; EEVEE Dithered, its
-    default) at equal samples, within MARGIN. The script's former EEVEE mode (Dithered)
-    measured 0.04 against Blended's 0.0 (docs/blender.md)."""
-    _bpy()
+def _bubble_materials(tmp_path):
     script = materials.write_film_folder(
         tmp_path / "Bubble", materials.SOAP_BUBBLE, "Bubble", RANGE, 64, 32, transmittance=True
     )
     ours = {"kind": "script", "script": str(script), "name": blender_name("Bubble")}
-    principled = {"kind": "principled_bubble", "film_ior": 1.33}
-    mine = _bubble_noise(tmp_path / "ours", ours, engine, samples, reference)
-    theirs = _bubble_noise(tmp_path / "principled", principled, engine, samples, reference)
-    assert theirs > 0.002, theirs  # the measure sees noise
+    return ours, {"kind": "principled_bubble", "film_ior": 1.33}
+
+
+def test_a_cycles_bubble_is_no_noisier_than_principled(tmp_path):
+    """The free-standing soap film's material as the script builds it (Glossy R +
+    Transparent T), in the bubble scene (a sphere of film before a checker, under a
+    varying world): its RMSE against its own converged render (32 samples against 512)
+    is at most MARGIN times Principled's bubble's (transmission 1, IOR 1.0, thin film)
+    at equal samples."""
+    _bpy()
+    ours, principled = _bubble_materials(tmp_path)
+    mine = _bubble_noise(tmp_path / "ours", ours, "CYCLES", 32, 512)
+    theirs = _bubble_noise(tmp_path / "principled", principled, "CYCLES", 32, 512)
+    assert theirs > 0.005, theirs  # the measure sees a bubble's noise
     assert mine <= MARGIN * theirs, (mine, theirs)
+
+
+def test_an_eevee_bubble_is_noise_free(tmp_path):
+    """EEVEE, 16 samples against 32: the script's render method (Blended) draws the
+    bubble without noise, no noisier than Principled's bubble (whose refraction EEVEE
+    does not sample at random either); the script's former method, Dithered, is
+    speckled (the measure can tell: measured 0.04 on the benchmark's frame)."""
+    _bpy()
+    ours, principled = _bubble_materials(tmp_path)
+    mine = _bubble_noise(tmp_path / "ours", ours, "BLENDER_EEVEE", 16, 32)
+    theirs = _bubble_noise(tmp_path / "principled", principled, "BLENDER_EEVEE", 16, 32)
+    dithered = _bubble_noise(
+        tmp_path / "dithered", ours, "BLENDER_EEVEE", 16, 32, render_method="DITHERED"
+    )
+    assert dithered > 0.01, dithered
+    assert mine <= max(MARGIN * theirs, 0.1 * dithered), (mine, theirs, dithered)
