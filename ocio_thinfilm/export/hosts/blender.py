@@ -3,11 +3,13 @@
 :func:`blender_script` returns the text of a Python script that, run in Blender 3.4 or
 later (``blender --python FILE``, or the Text Editor's *Run Script*), builds
 
-- the shader node group ``Thin Film <KEY>``: inputs ``Thickness`` (the film's physical
-  thickness in micrometres, default the middle of the table's range) and ``Roughness``;
+- a shader node group named by the film's ``name`` (the film file's, default ``Thin
+  Film <key>``; the EXR header's and the other hosts' name): inputs ``Thickness`` (the
+  film's physical thickness in micrometres, default the middle of the table's range)
+  and ``Roughness``;
   outputs ``BSDF`` (the film as a shader), ``Reflectance`` and, for a free-standing film,
   ``Transmittance`` (the tables' colours at the shading point, to feed other shaders);
-- the material ``Thin Film <KEY>``: that group into the material output.
+- a material of the same name: that group into the material output.
 
 Inside the group the cosine of the incidence angle is ``|N . I|`` clamped to [0, 1] (the
 Geometry node's shading ``Normal`` and ``Incoming``, the unit vector towards the ray's
@@ -26,7 +28,17 @@ with the nodes).
 The shader is a Glossy BSDF (multiscatter GGX, the ``Roughness`` input) tinted by the
 reflectance R, plus, where a transmittance table is given, a Transparent BSDF tinted by
 the transmittance T: light goes straight through a film far thinner than the object, and
-the two weights add to R + T, the film's energy.
+the two weights add to R + T, the film's energy. Cycles picks one of the two closures
+per sample by its weight, as it does for Principled BSDF's thin-film bubble: measured
+equally noisy (``benchmarks/bench_bubbles.py``; a Mix Shader with the same weights
+renders the same bits). EEVEE's render method is Blended (3.x: Alpha Blend): noise-free,
+where Dithered speckles.
+
+The script lists the film's tables in one or more spaces (:class:`BlenderTables`) and
+loads those of the scene's working space (Blender 5's ``bpy.data.colorspace``; Linear
+Rec.709 before, Blender's own config), else the first; it says in one line when the
+spaces differ, and once how much of the loaded table lies outside its space's gamut
+(counted at export) and what to do about it.
 
 The script finds the tables beside itself (their paths are relative to the script's
 folder, so the folder can be moved) and is idempotent: run again, it rebuilds the node
