@@ -170,29 +170,28 @@ def _tables_entry(tables: BlenderTables, parameters: tuple[str, str, str, str]) 
         f'        "reflectance": {_quote(reflectance)},\n'
         f'        "transmittance": {transmittance},\n'
         f'        "outside": ({fraction!r}, {lowest!r}),\n'
-        f'        "advice": {_quote(_advice(tables.space))},\n'
+        f'        "wider": {_tuple(_WIDER.get(tables.space, ()))},\n'
+        f'        "clip": {tables.space in _CLIPPABLE},\n'
         "    },\n"
     )
 
 
-def _advice(space: str) -> str:
-    """Return what to do about colours outside ``space``'s gamut, for the script to say.
+#: The wider working spaces of Blender 5 for tables of a space, and the spaces with a
+#: display's primaries (``--gamut clip``): what the script advises for colours outside
+#: the loaded tables' gamut.
+_WIDER = {
+    "Linear Rec.709 (sRGB)": ("Linear Rec.2020", "ACEScg"),
+    "Linear P3-D65": ("Linear Rec.2020", "ACEScg"),
+    "Linear Rec.2020": ("ACEScg",),
+}
+_CLIPPABLE = ("Linear Rec.709 (sRGB)", "Linear P3-D65", "Linear Rec.2020")
 
-    A wider working space of Blender 5 with tables of that space, where there is one;
-    ``--gamut clip`` where the space has a display's primaries.
-    """
-    wider = {
-        "Linear Rec.709 (sRGB)": ("Linear Rec.2020", "ACEScg"),
-        "Linear P3-D65": ("Linear Rec.2020", "ACEScg"),
-        "Linear Rec.2020": ("ACEScg",),
-    }.get(space, ())
-    ways = []
-    if wider:
-        options = " or ".join(f"--space '{s}'" for s in wider)
-        ways.append(f"export with {options} for a scene in that working space (Blender 5)")
-    if space in ("Linear Rec.709 (sRGB)", "Linear P3-D65", "Linear Rec.2020"):
-        ways.append("with --gamut clip")
-    return "; or ".join(ways) if ways else "no wider working space of Blender holds them"
+
+def _tuple(names: Sequence[str]) -> str:
+    """Return ``names`` as a Python tuple literal of strings."""
+    if len(names) == 1:
+        return f"({_quote(names[0])},)"
+    return "(" + ", ".join(_quote(n) for n in names) + ")"
 
 
 def blender_script(
@@ -411,8 +410,19 @@ def _report(entry, found):
         print(
             f"{NAME}: {100 * fraction:.1f} % of the table's texels lie outside {space}'s "
             f"gamut (a channel down to {lowest:.3f}); Cycles clamps them per channel: "
-            f"{entry['advice']}"
+            f"{_advice(entry)}"
         )
+
+
+def _advice(entry):
+    """Return what to do about the colours outside the tables' gamut."""
+    ways = []
+    if entry["wider"]:
+        options = " or ".join(f"--space '{space}'" for space in entry["wider"])
+        ways.append(f"export with {options} for a scene in that working space (Blender 5)")
+    if entry["clip"]:
+        ways.append("with --gamut clip")
+    return "; or ".join(ways) or "no wider working space of Blender holds them"
 
 
 def _clear_sockets(group):
