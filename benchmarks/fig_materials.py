@@ -31,7 +31,6 @@ def render_film(key: str, work: Path, size: int, samples: int) -> np.ndarray:
     """Export the film's material with the package and render it in Cycles (linear RGB)."""
     from evaluation import blender
     from ocio_thinfilm.export import material
-    from ocio_thinfilm.export.hosts.blender import blender_name
     from ocio_thinfilm.physics import films
 
     film = films.read_films(ROOT / "docs" / "films.toml")[key]
@@ -39,7 +38,8 @@ def render_film(key: str, work: Path, size: int, samples: int) -> np.ndarray:
     written = material.export_material(film, out, hosts=material.host_files(film), gamut="clip")
     script = next(p for p in written if p.suffix == ".py")
     exr = work / f"{key}.exr"
-    job = {"kind": "script", "script": str(script), "name": blender_name(key)}
+    # the script names the node group and material by the film's name (the EXR header's)
+    job = {"kind": "script", "script": str(script), "name": film.name}
     blender.render(
         {
             "engine": "CYCLES",

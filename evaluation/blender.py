@@ -160,6 +160,8 @@ def render_film(
     size: int = 96,
     engine: str = "CYCLES",
     transmittance: bool = False,
+    name: str | None = None,
+    spaces=("Linear Rec.709 (sRGB)",),
     **job,
 ):
     """Render the sphere with film ``stack`` as the generated material and return
@@ -167,16 +169,26 @@ def render_film(
 
     The tables (``table_size`` = width, height over ``range_um``) and the script go to
     ``folder / key`` (:func:`evaluation.materials.write_film_folder`); the film's
-    thickness ramps over ``ramp_um`` from object x = -1 to +1.
+    thickness ramps over ``ramp_um`` from object x = -1 to +1. ``name``: the node group's
+    and material's (default ``Thin Film <key>``); ``spaces``: the tables' spaces (the
+    script loads the scene's working space's); ``job``'s further keys go to :func:`render`
+    (e.g. ``working_space``). The exact R is linear BT.709.
     """
     from evaluation import materials
     from ocio_thinfilm.export.hosts.blender import blender_name
 
     script = materials.write_film_folder(
-        Path(folder) / key, stack, key, range_um, *table_size, transmittance=transmittance
+        Path(folder) / key,
+        stack,
+        key,
+        range_um,
+        *table_size,
+        transmittance=transmittance,
+        name=name,
+        spaces=spaces,
     )
     out = Path(folder) / f"{key}_{engine}.exr"
-    material = {"kind": "script", "script": str(script), "name": blender_name(key)}
+    material = {"kind": "script", "script": str(script), "name": name or blender_name(key)}
     answer = render(
         {
             "engine": engine,

@@ -37,6 +37,7 @@ __all__ = [
     "table",
     "write_table",
     "write_film_folder",
+    "COLOUR_SPACES",
 ]
 
 Index = complex | float | Sequence[complex] | np.ndarray
@@ -197,6 +198,14 @@ def write_table(
     return Path(path)
 
 
+#: colour-science's names of the registry's scene-linear spaces the tests render in.
+COLOUR_SPACES = {
+    "Linear Rec.709 (sRGB)": "ITU-R BT.709",
+    "Linear Rec.2020": "ITU-R BT.2020",
+    "ACEScg": "ACEScg",
+}
+
+
 def write_film_folder(
     folder: Path,
     stack: Stack,
@@ -206,23 +215,56 @@ def write_film_folder(
     height: int,
     *,
     transmittance: bool = False,
+    name: str | None = None,
+    spaces: Sequence[str] = ("Linear Rec.709 (sRGB)",),
 ) -> Path:
     """Write ``ThinFilm_User_<key>_R.exr`` (and ``_T.exr``) and the Blender script
-    ``ThinFilm_User_<key>.py`` (:func:`ocio_thinfilm.export.hosts.blender.blender_script`)
-    into ``folder``; return the script's path."""
-    from ocio_thinfilm.export.hosts.blender import blender_script
+    ``ThinFilm_User_<key>.py`` (:func:`ocio_thinfilm.export.hosts.blender.blender_script`,
+    the node group and material named ``name``, default ``Thin Film <key>``) into
+    ``folder``; return the script's path. Further ``spaces`` (keys of
+    :data:`COLOUR_SPACES`) get their own tables, ``ThinFilm_User_<key>_<Space>_R.exr``
+    (the space's name without spaces or punctuation), as ``export material --space A
+    --space B`` lays them out; each table's share of texels with a negative channel and
+    its lowest value go into the script."""
+    import re
+
+    from ocio_thinfilm.export.hosts.blender import BlenderTables, blender_script
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    names = {"reflectance": f"ThinFilm_User_{key}_R.exr"}
-    if transmittance:
-        names["transmittance"] = f"ThinFilm_User_{key}_T.exr"
-    for quantity, name in names.items():
-        rgb = table(stack, range_um, width, height, quantity=quantity)
-        write_table(folder / name, rgb, key=key, quantity=quantity, range_um=range_um)
+    entries = []
+    for i, space in enumerate(spaces):
+        stem = f"ThinFilm_User_{key}" + ("" if i == 0 else "_" + re.sub(r"[^A-Za-z0-9]", "", space))
+        names = {"reflectance": f"{stem}_R.exr"}
+        if transmittance:
+            names["transmittance"] = f"{stem}_T.exr"
+        values = []
+        for quantity, file_name in names.items():
+            rgb = table(
+                stack, range_um, width, height, quantity=quantity, space=COLOUR_SPACES[space]
+            )
+            write_table(
+                folder / file_name, rgb, key=key, quantity=quantity, range_um=range_um, space=space
+            )
+            values.append(rgb.reshape(-1, 3))
+        rgb = np.concatenate(values)
+        outside = (float(np.mean((rgb < 0).any(axis=1))), min(float(rgb.min()), 0.0))
+        entries.append(
+            BlenderTables(space, names["reflectance"], names.get("transmittance"), outside)
+        )
     script = folder / f"ThinFilm_User_{key}.py"
+    first = entries[0]
     script.write_text(
-        blender_script(key, names["reflectance"], names.get("transmittance"), range_um)
+        blender_script(
+            key,
+            first.reflectance,
+            first.transmittance,
+            range_um,
+            name=name,
+            space=first.space,
+            outside=first.outside,
+            alternates=entries[1:],
+        )
     )
     return script
 

@@ -219,15 +219,22 @@ def _run_film_tables(args: argparse.Namespace) -> int:
 def _run_material(args: argparse.Namespace) -> int:
     """``export material``: a film's reflectance (and transmittance) tables as EXRs."""
     from ocio_thinfilm.export.film_files import pick_film
-    from ocio_thinfilm.export.material import export_material, gltf_files, host_files
+    from ocio_thinfilm.export.material import (
+        DEFAULT_SPACE,
+        export_material,
+        gltf_files,
+        host_files,
+    )
 
     film = pick_film(args.films, args.film)
-    hosts = host_files(film, args.space)
-    binaries = gltf_files(film, args.space) if args.gltf else None
+    spaces = args.space or [DEFAULT_SPACE]
+    hosts = host_files(film, spaces)
+    # the .glb carries the first space's tables (glTF's linear Rec.709)
+    binaries = gltf_files(film, spaces[0]) if args.gltf else None
     written = export_material(
         film,
         args.out,
-        space=args.space,
+        space=spaces,
         size=args.size,
         hosts=hosts,
         gamut=args.gamut,
@@ -534,10 +541,14 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
 
     mat.add_argument(
         "--space",
-        default=DEFAULT_SPACE,
+        action="append",
+        default=None,
         metavar="SPACE",
         help=f"scene-linear space of the RGB ({', '.join(registry.SCENE_LINEAR_SPACES)}; "
-        f"default {DEFAULT_SPACE})",
+        f"default {DEFAULT_SPACE}); repeat it for tables in several spaces in one folder: "
+        "the first keeps the plain file names, the others carry the space "
+        "(<stem>_LinearRec2020_R.exr), and the Blender script loads the tables of the "
+        "scene's working space (docs/blender.md)",
     )
     mat.add_argument(
         "--size",

@@ -23,8 +23,9 @@ the tables as float OpenEXR images (docs/materials.md):
 
 from __future__ import annotations
 
+import dataclasses
 import re
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -50,7 +51,10 @@ __all__ = [
     "HostWriter",
     "BinaryWriter",
     "GLTF_SPACE",
+    "outside_gamut",
     "check_space",
+    "check_spaces",
+    "space_stem",
     "parse_size",
     "material_table",
     "host_files",
@@ -152,6 +156,51 @@ def check_space(space: str) -> str:
             f"got {space!r}",
         )
     return space
+
+
+def check_spaces(space: str | Sequence[str]) -> list[str]:
+    """Return the tables' spaces: one name, or several, each a scene-linear space once.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``space``) an empty list, a space named twice or one that is not scene-linear.
+    """
+    spaces = [space] if isinstance(space, str) else list(space)
+    if not spaces:
+        raise ParameterError("space", " needs at least one scene-linear space")
+    for i, name in enumerate(spaces):
+        check_space(name)
+        if name in spaces[:i]:
+            raise ParameterError("space", f" names {name!r} twice")
+    return spaces
+
+
+def space_stem(stem: str, space: str, first: bool) -> str:
+    """Return the file stem of a film's tables in ``space``.
+
+    The first space's tables keep the film's stem (``<stem>_R.exr``: one space's file
+    names are those of a single-space export); a further space's carry its name without
+    spaces and punctuation (``<stem>_LinearRec2020_R.exr``, ``<stem>_ACEScg_R.exr``).
+
+    Examples
+    --------
+    >>> space_stem("ThinFilm_User_Soap", "Linear Rec.2020", first=False)
+    'ThinFilm_User_Soap_LinearRec2020'
+    """
+    return stem if first else f"{stem}_{re.sub(r'[^A-Za-z0-9]+', '', space)}"
+
+
+def outside_gamut(table: MaterialTable) -> tuple[float, float]:
+    """Return the fraction of a table's texels outside its space's gamut, and the lowest value.
+
+    A texel of the reflectance or transmittance table is outside where a channel is
+    negative; the lowest value is the most negative channel (0.0 where none is).
+    """
+    images = [table.reflectance] + ([] if table.transmittance is None else [table.transmittance])
+    rgb = np.concatenate([image.reshape(-1, 3) for image in images])
+    fraction = float(np.mean((rgb < 0).any(axis=1)))
+    return round(fraction, 4), round(min(float(rgb.min()), 0.0), 4)
 
 
 def parse_size(size: str | tuple[int, int] | None) -> tuple[int, int] | None:
@@ -288,12 +337,13 @@ def _attributes(table: MaterialTable, quantity: str) -> dict[str, Any]:
     }
 
 
-def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
+def host_files(film: Film, space: str | Sequence[str] = DEFAULT_SPACE) -> dict[str, HostWriter]:
     """Return the host files ``export material`` writes beside a film's tables.
 
-    - ``<stem>.py``: a Python script Blender runs (the node group and material,
-      :func:`ocio_thinfilm.export.hosts.blender.blender_script`; reflection, and
-      transmission for a free-standing film);
+    - ``<stem>.py``: a Python script Blender runs (the node group and material named
+      by the film's name, :func:`ocio_thinfilm.export.hosts.blender.blender_host`;
+      reflection, and transmission for a free-standing film; it loads the tables of
+      the scene's working space where several spaces were written);
     - ``<stem>.js``: an ES module for three.js
       (:func:`ocio_thinfilm.export.hosts.three.three_module`; reflection, thickness maps,
       and transmission for a free-standing film), for tables in three.js's working space
@@ -308,8 +358,9 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
     Parameters
     ----------
     film : Film
-    space : str, optional
-        The tables' scene-linear space (default the config's scene_linear).
+    space : str or sequence of str, optional
+        The tables' scene-linear space (default the config's scene_linear), or spaces:
+        the three.js and MaterialX files use the first.
 
     Returns
     -------
@@ -319,11 +370,7 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
     from ocio_thinfilm.export.hosts import blender, materialx, three
 
     stem = film_lut_stem(film)
-    space = check_space(space)
-
-    def blender_file(files: TableFiles) -> str:
-        t_name = None if files.transmittance is None else files.transmittance.name
-        return blender.blender_script(files.key, files.reflectance.name, t_name, files.range_um)
+    space = check_spaces(space)[0]
 
     def three_file(files: TableFiles) -> str:
         return three.three_module(
@@ -347,7 +394,7 @@ def host_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, HostWriter]:
         )
 
     entry = registry.SCENE_LINEAR_BY_NAME[space]
-    files: dict[str, HostWriter] = {f"{stem}.py": blender_file}
+    files: dict[str, HostWriter] = {f"{stem}.py": blender.blender_host}
     if entry.threejs is not None:
         files[f"{stem}.js"] = three_file
     if entry.materialx is not None:
@@ -422,7 +469,7 @@ def export_material(
     film: Film,
     out_dir: StrPath,
     *,
-    space: str = DEFAULT_SPACE,
+    space: str | Sequence[str] = DEFAULT_SPACE,
     size: str | tuple[int, int] | None = None,
     hosts: Mapping[str, HostWriter] | None = None,
     gamut: str = "keep",
@@ -438,8 +485,11 @@ def export_material(
         The output directory: created if missing; an existing one must be empty or hold
         files of earlier runs only (:func:`ocio_thinfilm.io.ownership.claim_directory`,
         its files from other films are kept).
-    space : str, optional
-        A scene-linear space of the registry (default the config's scene_linear).
+    space : str or sequence of str, optional
+        A scene-linear space of the registry (default the config's scene_linear), or
+        several: one set of tables each, the first named ``<stem>_R.exr`` (``_T.exr``),
+        the others by :func:`space_stem` (``<stem>_LinearRec2020_R.exr``); the host
+        writers get the first's record with the others in ``others``.
     size : str or tuple of int, optional
         ``"WxH"`` or ``(W, H)`` (default the measured
         :func:`~ocio_thinfilm.lut.material_tables.default_resolution`).
@@ -469,22 +519,34 @@ def export_material(
     """
     dims = parse_size(size)
     width, height = (None, None) if dims is None else dims
-    table = material_table(film, space=space, width=width, height=height, gamut=gamut)
+    spaces = check_spaces(space)
     stem = film_lut_stem(film)
-    images = {f"{stem}_R.exr": ("reflectance", table.reflectance)}
-    if table.transmittance is not None:
-        images[f"{stem}_T.exr"] = ("transmittance", table.transmittance)
     out = Path(out_dir)
-    paths = {name: out / name for name in images}
-    files = TableFiles(
-        key=film.key,
-        name=film.name,
-        reflectance=paths[f"{stem}_R.exr"],
-        transmittance=paths.get(f"{stem}_T.exr"),
-        range_um=table.range_um,
-        size=table.size,
-        space=table.space,
-    )
+    images: dict[str, tuple[str, np.ndarray, MaterialTable]] = {}
+    records = []
+    first_table: MaterialTable | None = None
+    for i, name in enumerate(spaces):
+        table = material_table(film, space=name, width=width, height=height, gamut=gamut)
+        first_table = first_table or table
+        tables_stem = space_stem(stem, name, first=i == 0)
+        images[f"{tables_stem}_R.exr"] = ("reflectance", table.reflectance, table)
+        if table.transmittance is not None:
+            images[f"{tables_stem}_T.exr"] = ("transmittance", table.transmittance, table)
+        records.append(
+            TableFiles(
+                key=film.key,
+                name=film.name,
+                reflectance=out / f"{tables_stem}_R.exr",
+                transmittance=(
+                    None if table.transmittance is None else out / f"{tables_stem}_T.exr"
+                ),
+                range_um=table.range_um,
+                size=table.size,
+                space=table.space,
+                outside=outside_gamut(table),
+            )
+        )
+    files = dataclasses.replace(records[0], others=tuple(records[1:]))
     texts: dict[str, str | bytes] = {}
     for name, writer in (hosts or {}).items():
         if Path(name).name != name or name in images:
@@ -493,9 +555,10 @@ def export_material(
     for name, binary in (binaries or {}).items():
         if Path(name).name != name or name in images or name in texts:
             raise ParameterError("binaries", f" {name!r}: must be a new file name without folders")
-        texts[name] = binary(files, table)
+        assert first_table is not None  # check_spaces gives at least one space
+        texts[name] = binary(files, first_table)
     with atomic_directory(out, parameter="out", keep_others=True) as stage:
-        for name, (quantity, pixels) in images.items():
+        for name, (quantity, pixels, table) in images.items():
             # the EXR's first scanline is the top: cos theta descending
             write_image(
                 stage / name,

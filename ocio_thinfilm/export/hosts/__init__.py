@@ -37,7 +37,10 @@ class TableFiles:
     gives none); ``reflectance``, ``transmittance``: the EXRs' paths (``transmittance``
     None unless the film is free-standing); ``range_um``: the thickness axis ``(lo,
     hi)``; ``size``: ``(width, height)`` in texels; ``space``: the tables' scene-linear
-    space.
+    space; ``outside``: ``(fraction, lowest)``, the fraction of the tables' texels with a
+    negative channel (outside the space's gamut) and the most negative channel value;
+    ``others``: the same film's tables in further spaces, written beside these (their
+    own ``others`` empty).
     """
 
     key: str
@@ -47,6 +50,8 @@ class TableFiles:
     range_um: tuple[float, float]
     size: tuple[int, int]
     space: str
+    outside: tuple[float, float] = (0.0, 0.0)
+    others: tuple[TableFiles, ...] = ()
 
 
 def thickness_range(range_um: object) -> tuple[float, float]:

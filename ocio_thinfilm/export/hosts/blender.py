@@ -3,11 +3,13 @@
 :func:`blender_script` returns the text of a Python script that, run in Blender 3.4 or
 later (``blender --python FILE``, or the Text Editor's *Run Script*), builds
 
-- the shader node group ``Thin Film <KEY>``: inputs ``Thickness`` (the film's physical
-  thickness in micrometres, default the middle of the table's range) and ``Roughness``;
+- a shader node group named by the film's ``name`` (the film file's, default ``Thin
+  Film <key>``; the EXR header's and the other hosts' name): inputs ``Thickness`` (the
+  film's physical thickness in micrometres, default the middle of the table's range)
+  and ``Roughness``;
   outputs ``BSDF`` (the film as a shader), ``Reflectance`` and, for a free-standing film,
   ``Transmittance`` (the tables' colours at the shading point, to feed other shaders);
-- the material ``Thin Film <KEY>``: that group into the material output.
+- a material of the same name: that group into the material output.
 
 Inside the group the cosine of the incidence angle is ``|N . I|`` clamped to [0, 1] (the
 Geometry node's shading ``Normal`` and ``Incoming``, the unit vector towards the ray's
@@ -26,7 +28,17 @@ with the nodes).
 The shader is a Glossy BSDF (multiscatter GGX, the ``Roughness`` input) tinted by the
 reflectance R, plus, where a transmittance table is given, a Transparent BSDF tinted by
 the transmittance T: light goes straight through a film far thinner than the object, and
-the two weights add to R + T, the film's energy.
+the two weights add to R + T, the film's energy. Cycles picks one of the two closures
+per sample by its weight, as it does for Principled BSDF's thin-film bubble: measured
+equally noisy (``benchmarks/bench_bubbles.py``; a Mix Shader with the same weights
+renders the same bits). EEVEE's render method is Blended (3.x: Alpha Blend): noise-free,
+where Dithered speckles.
+
+The script lists the film's tables in one or more spaces (:class:`BlenderTables`) and
+loads those of the scene's working space (Blender 5's ``bpy.data.colorspace``; Linear
+Rec.709 before, Blender's own config), else the first; it says in one line when the
+spaces differ, and once how much of the loaded table lies outside its space's gamut
+(counted at export) and what to do about it.
 
 The script finds the tables beside itself (their paths are relative to the script's
 folder, so the folder can be moved) and is idempotent: run again, it rebuilds the node
@@ -36,17 +48,61 @@ keep doing so) and reloads the images from disk; it touches no other data.
 
 from __future__ import annotations
 
+import math
 import os
+from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import PurePosixPath
 
 from ocio_thinfilm.checks import ParameterError
-from ocio_thinfilm.export.hosts import thickness_range
+from ocio_thinfilm.export.hosts import TableFiles, thickness_range
 
-__all__ = ["blender_script", "blender_name"]
+__all__ = [
+    "BLENDER_SPACES",
+    "DEFAULT_SPACE",
+    "BlenderTables",
+    "blender_script",
+    "blender_host",
+    "blender_name",
+]
+
+#: The tables' space when none is named: ``export material``'s default (the config's
+#: scene_linear role), Blender's default working space.
+DEFAULT_SPACE = "Linear Rec.709 (sRGB)"
+
+#: Blender's names of the registry's scene-linear spaces: the registry's name -> (the
+#: colour space's name in Blender's OCIO config, its OCIO interop id). Blender 5's
+#: working space (``bpy.data.colorspace.working_space``, set in the Properties' Color
+#: Management panel or by ``bpy.ops.wm.set_working_color_space``) is one of the first
+#: three; the script matches the scene's working space to a table by either name.
+BLENDER_SPACES: dict[str, tuple[str, str]] = {
+    "Linear Rec.709 (sRGB)": ("Linear Rec.709", "lin_rec709_scene"),
+    "Linear Rec.2020": ("Linear Rec.2020", "lin_rec2020_scene"),
+    "ACEScg": ("ACEScg", "lin_ap1_scene"),
+    "Linear P3-D65": ("Linear DCI-P3 D65", "lin_p3d65_scene"),
+    "ACES2065-1": ("ACES2065-1", "lin_ap0_scene"),
+}
+
+
+@dataclass(frozen=True)
+class BlenderTables:
+    """One space's tables of a film, as the script loads them.
+
+    ``space``: the registry's scene-linear space of the tables' RGB; ``reflectance``,
+    ``transmittance``: the EXRs' paths relative to the script's folder (``transmittance``
+    None unless the film is free-standing); ``outside``: ``(fraction, lowest)``, the
+    fraction of the tables' texels with a negative channel (outside the space's gamut)
+    and the most negative channel value, ``(0.0, 0.0)`` for tables inside the gamut.
+    """
+
+    space: str
+    reflectance: str | os.PathLike[str]
+    transmittance: str | os.PathLike[str] | None = None
+    outside: tuple[float, float] = (0.0, 0.0)
 
 
 def blender_name(key: str) -> str:
-    """Return the name of the node group and the material of film ``key``.
+    """Return the default name of film ``key``: the film file's default ``name``.
 
     Parameters
     ----------
@@ -75,18 +131,86 @@ def _relative(parameter: str, path: str | os.PathLike[str]) -> str:
     return str(pure)
 
 
+def _one_line(parameter: str, text: object) -> str:
+    if not isinstance(text, str) or not text.strip() or any(c in text for c in "\r\n\0"):
+        raise ParameterError(parameter, f" must be a non-empty one-line string, got {text!r}")
+    return text
+
+
+def _tables_entry(tables: BlenderTables, parameters: tuple[str, str, str, str]) -> str:
+    """Return one table set as the script's dict literal (ruff-formatted).
+
+    ``parameters`` names, for the error messages, the parameters of the space, of
+    ``outside``, of the reflectance and of the transmittance path.
+    """
+    space_parameter, outside_parameter, r_parameter, t_parameter = parameters
+    if tables.space not in BLENDER_SPACES:
+        raise ParameterError(
+            space_parameter,
+            f" space must be one of {', '.join(BLENDER_SPACES)} (Blender's scene-linear "
+            f"spaces), got {tables.space!r}",
+        )
+    fraction, lowest = (float(v) for v in tables.outside)
+    if not (0.0 <= fraction <= 1.0 and math.isfinite(lowest) and lowest <= 0.0):
+        raise ParameterError(
+            outside_parameter,
+            f" must be (fraction in [0, 1], value <= 0), got {tables.outside}",
+        )
+    reflectance = _relative(r_parameter, tables.reflectance)
+    transmittance = (
+        "None"
+        if tables.transmittance is None
+        else _quote(_relative(t_parameter, tables.transmittance))
+    )
+    name, interop = BLENDER_SPACES[tables.space]
+    return (
+        "    {\n"
+        f'        "space": {_quote(tables.space)},\n'
+        f'        "blender": ({_quote(name)}, {_quote(interop)}),\n'
+        f'        "reflectance": {_quote(reflectance)},\n'
+        f'        "transmittance": {transmittance},\n'
+        f'        "outside": ({fraction!r}, {lowest!r}),\n'
+        f'        "wider": {_tuple(_WIDER.get(tables.space, ()))},\n'
+        f'        "clip": {tables.space in _CLIPPABLE},\n'
+        "    },\n"
+    )
+
+
+#: The wider working spaces of Blender 5 for tables of a space, and the spaces with a
+#: display's primaries (``--gamut clip``): what the script advises for colours outside
+#: the loaded tables' gamut.
+_WIDER = {
+    "Linear Rec.709 (sRGB)": ("Linear Rec.2020", "ACEScg"),
+    "Linear P3-D65": ("Linear Rec.2020", "ACEScg"),
+    "Linear Rec.2020": ("ACEScg",),
+}
+_CLIPPABLE = ("Linear Rec.709 (sRGB)", "Linear P3-D65", "Linear Rec.2020")
+
+
+def _tuple(names: Sequence[str]) -> str:
+    """Return ``names`` as a Python tuple literal of strings."""
+    if len(names) == 1:
+        return f"({_quote(names[0])},)"
+    return "(" + ", ".join(_quote(n) for n in names) + ")"
+
+
 def blender_script(
     key: str,
     reflectance_exr: str | os.PathLike[str],
     transmittance_exr: str | os.PathLike[str] | None,
     range_um: tuple[float, float],
+    *,
+    name: str | None = None,
+    space: str = DEFAULT_SPACE,
+    outside: tuple[float, float] = (0.0, 0.0),
+    alternates: Sequence[BlenderTables] = (),
 ) -> str:
     """Return a Blender Python script that builds film ``key``'s node group and material.
 
     Parameters
     ----------
     key : str
-        The film's key: the node group and the material are called ``Thin Film <key>``.
+        The film's key (the script's messages name the film by ``name``).
     reflectance_exr : str or os.PathLike
         The reflectance table (the material table's ``_R.exr``), relative to the folder
         the script is written to (usually its file name).
@@ -96,17 +220,32 @@ def blender_script(
         an opaque or semi-infinite substrate): the material then reflects only.
     range_um : tuple of float
         The tables' thickness range ``(lo, hi)`` in micrometres, ``0 <= lo < hi``.
+    name : str, optional
+        The film's name, the name of the node group and the material (the EXR header's
+        and the other hosts' name); default :func:`blender_name` of ``key``, the film
+        file's default.
+    space : str, optional
+        The tables' scene-linear space (a key of :data:`BLENDER_SPACES`; default
+        :data:`DEFAULT_SPACE`).
+    outside : tuple of float, optional
+        ``(fraction, lowest)`` of the tables' texels outside the space's gamut
+        (:class:`BlenderTables`); the script reports them where it loads these tables.
+    alternates : sequence of BlenderTables, optional
+        The same film's tables in other spaces (each space once): the script loads the
+        tables whose space is the scene's working space, else the first.
 
     Returns
     -------
     str
-        The script's text (Python 3, no imports beyond ``bpy`` and ``os``).
+        The script's text (Python 3, no imports beyond ``bpy`` and ``os``; it passes the
+        repository's ruff lint and format rules).
 
     Raises
     ------
     ParameterError
-        For an empty key, a path that is absolute, leaves the folder or is no ``.exr``,
-        or a range that is not ``0 <= lo < hi`` (finite).
+        For an empty key or name, a path that is absolute, leaves the folder or is no
+        ``.exr``, a range that is not ``0 <= lo < hi`` (finite), a space Blender does
+        not name or named twice, or an ``outside`` that is no fraction and value <= 0.
 
     Examples
     --------
@@ -114,42 +253,93 @@ def blender_script(
     >>> 'NAME = "Thin Film Soap"' in text, "RANGE_UM = (0.0, 1.0)" in text
     (True, True)
     """
-    if not isinstance(key, str) or not key.strip() or any(c in key for c in "\r\n\0"):
-        raise ParameterError("key", f" must be a non-empty one-line string, got {key!r}")
-    reflectance = _relative("reflectance_exr", reflectance_exr)
-    transmittance = (
-        None if transmittance_exr is None else _relative("transmittance_exr", transmittance_exr)
-    )
+    _one_line("key", key)
+    title = _one_line("name", blender_name(key) if name is None else name)
+    first = BlenderTables(space, reflectance_exr, transmittance_exr, outside)
+    entries = [_tables_entry(first, ("space", "outside", "reflectance_exr", "transmittance_exr"))]
+    spaces = [space]
+    for other in alternates:
+        if other.space in spaces:
+            raise ParameterError("alternates", f" names space {other.space!r} twice")
+        if (other.transmittance is None) != (transmittance_exr is None):
+            raise ParameterError("alternates", " must all have a transmittance table or none")
+        spaces.append(other.space)
+        entries.append(_tables_entry(other, ("alternates",) * 4))
     lo, hi = thickness_range(range_um)
     from ocio_thinfilm import __version__
 
     head = (
-        f'"""{blender_name(key)}: the film as a Blender node group and material.\n\n'
+        f'"""{_docstring(title)}: the film as a Blender node group and material.\n\n'
         f"Written by ocio-thinfilm {__version__}. Run it in Blender 3.4 or later: "
         "blender --python THIS_FILE,\nor open it in the Text Editor and Run Script. "
         "The tables are read from this file's folder.\n"
         '"""\n\n'
         "import os\n\n"
         "import bpy\n\n"
-        f"NAME = {_quote(blender_name(key))}\n"
-        f"REFLECTANCE = {_quote(reflectance)}\n"
-        f"TRANSMITTANCE = {'None' if transmittance is None else _quote(transmittance)}\n"
+        f"NAME = {_quote(title)}\n"
         f"RANGE_UM = ({lo!r}, {hi!r})\n"
+        "#: The film's tables, one entry per space: the first is loaded where the scene's\n"
+        "#: working space is none of them; outside = (fraction of texels with a negative\n"
+        "#: channel, the most negative value).\n"
+        "TABLES = [\n" + "".join(entries) + "]\n"
     )
     return head + _BODY
 
 
+def blender_host(files: TableFiles) -> str:
+    """Return the Blender script of ``export material``'s written tables.
+
+    Parameters
+    ----------
+    files : TableFiles
+        The written tables (their file names are kept: the script lies beside them),
+        with the same film's tables in further spaces in ``files.others``.
+
+    Returns
+    -------
+    str
+        :func:`blender_script`'s text, the node group and material named ``files.name``.
+    """
+
+    def tables(record: TableFiles) -> BlenderTables:
+        t_name = None if record.transmittance is None else record.transmittance.name
+        return BlenderTables(record.space, record.reflectance.name, t_name, record.outside)
+
+    first = tables(files)
+    return blender_script(
+        files.key,
+        first.reflectance,
+        first.transmittance,
+        files.range_um,
+        name=files.name,
+        space=files.space,
+        outside=files.outside,
+        alternates=[tables(other) for other in files.others],
+    )
+
+
 def _quote(text: str) -> str:
-    """Return ``text`` as a Python string literal in double quotes."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """Return ``text`` as a Python string literal, quoted as ruff format quotes it.
+
+    Double quotes, unless the text holds more double quotes than single ones.
+    """
+    quote = "'" if text.count('"') > text.count("'") else '"'
+    return quote + text.replace("\\", "\\\\").replace(quote, "\\" + quote) + quote
+
+
+def _docstring(text: str) -> str:
+    """Return ``text`` safe inside the script's triple-quoted docstring."""
+    return text.replace("\\", "\\\\").replace('"', "'")
 
 
 #: The script after its constants: plain Blender Python, 3.4 to 5.x (the node group's
-#: sockets through ``interface`` from 4.0, ``inputs``/``outputs`` before).
+#: sockets through ``interface`` from 4.0, ``inputs``/``outputs`` before). Its helpers
+#: are private (``_``) and its docstrings numpydoc-clean: the script passes the
+#: repository's ruff rules wherever it is saved.
 _BODY = r'''
 
-def folder():
-    """The folder of this script: __file__, else the Text Editor's file."""
+def _folder():
+    """Return the folder of this script: __file__, else the Text Editor's file."""
     path = globals().get("__file__")
     if path and os.path.isfile(path):
         return os.path.dirname(os.path.abspath(path))
@@ -162,16 +352,16 @@ def folder():
     )
 
 
-def table_path(relative):
-    path = os.path.join(folder(), *relative.split("/"))
+def _table_path(relative):
+    path = os.path.join(_folder(), *relative.split("/"))
     if not os.path.isfile(path):
         raise FileNotFoundError(NAME + ": no table at " + path + " (nothing was changed)")
     return path
 
 
-def table(relative):
-    """The EXR table as an image, reloaded from disk, read as data (Non-Color)."""
-    image = bpy.data.images.load(table_path(relative), check_existing=True)
+def _table(relative):
+    """Return the EXR table as an image, reloaded from disk, read as data (Non-Color)."""
+    image = bpy.data.images.load(_table_path(relative), check_existing=True)
     image.reload()
     for space in ("Non-Color", "Raw", "Utility - Raw", "Data"):
         try:
@@ -182,7 +372,60 @@ def table(relative):
     return image
 
 
-def clear_sockets(group):
+def _working_space():
+    """Return the scene's working space as (name, interop id), or None if unknown.
+
+    Blender 5: the blend file's working colour space. Before: the scene_linear role of
+    Blender's own colour config, Linear Rec.709, unless $OCIO names another config.
+    """
+    colorspace = getattr(bpy.data, "colorspace", None)
+    if getattr(colorspace, "working_space", None):
+        return colorspace.working_space, getattr(colorspace, "working_space_interop_id", "")
+    if os.environ.get("OCIO"):
+        return None
+    return "Linear Rec.709", "lin_rec709_scene"
+
+
+def _choose(found):
+    """Return the entry of TABLES for the working space ``found`` (else the first)."""
+    for entry in TABLES:
+        if found is not None and (found[0] in entry["blender"] or found[1] in entry["blender"]):
+            return entry
+    return TABLES[0]
+
+
+def _report(entry, found):
+    """Print, once each, the space mismatch and the share of the table out of gamut."""
+    space = entry["space"]
+    if found is None:
+        print(f"{NAME}: cannot tell the scene's working space ($OCIO); using the {space} tables")
+    elif found[0] not in entry["blender"] and found[1] not in entry["blender"]:
+        print(
+            f"{NAME}: the tables are in {space} but the scene's working space is "
+            f"{found[0]}: colours will be wrong; export the film with --space for it "
+            f"(tables here: {', '.join(e['space'] for e in TABLES)})"
+        )
+    fraction, lowest = entry["outside"]
+    if fraction > 0:
+        print(
+            f"{NAME}: {100 * fraction:.1f} % of the table's texels lie outside {space}'s "
+            f"gamut (a channel down to {lowest:.3f}); Cycles clamps them per channel: "
+            f"{_advice(entry)}"
+        )
+
+
+def _advice(entry):
+    """Return what to do about the colours outside the tables' gamut."""
+    ways = []
+    if entry["wider"]:
+        options = " or ".join(f"--space '{space}'" for space in entry["wider"])
+        ways.append(f"export with {options} for a scene in that working space (Blender 5)")
+    if entry["clip"]:
+        ways.append("with --gamut clip")
+    return "; or ".join(ways) or "no wider working space of Blender holds them"
+
+
+def _clear_sockets(group):
     if hasattr(group, "interface"):
         group.interface.clear()
     else:
@@ -190,34 +433,35 @@ def clear_sockets(group):
         group.outputs.clear()
 
 
-def socket(group, in_out, kind, name):
+def _socket(group, in_out, kind, name):
     if hasattr(group, "interface"):
         return group.interface.new_socket(name, in_out=in_out, socket_type=kind)
     return (group.inputs if in_out == "INPUT" else group.outputs).new(kind, name)
 
 
-def build_group():
-    for relative in (REFLECTANCE, TRANSMITTANCE):
+def _build_group(entry):
+    reflectance, transmittance = entry["reflectance"], entry["transmittance"]
+    for relative in (reflectance, transmittance):
         if relative is not None:
-            table_path(relative)  # every table is there before anything changes
+            _table_path(relative)  # every table is there before anything changes
     group = bpy.data.node_groups.get(NAME)
     if group is None or group.bl_idname != "ShaderNodeTree":
         group = bpy.data.node_groups.new(NAME, "ShaderNodeTree")
     group.nodes.clear()
-    clear_sockets(group)
+    _clear_sockets(group)
     lo, hi = RANGE_UM
-    thickness = socket(group, "INPUT", "NodeSocketFloat", "Thickness")
+    thickness = _socket(group, "INPUT", "NodeSocketFloat", "Thickness")
     thickness.default_value = 0.5 * (lo + hi)
     thickness.min_value, thickness.max_value = 0.0, max(10.0 * hi, 1.0)
     if hasattr(thickness, "description"):
-        thickness.description = "Film thickness in micrometres (table: %g to %g)" % (lo, hi)
-    roughness = socket(group, "INPUT", "NodeSocketFloat", "Roughness")
+        thickness.description = f"Film thickness in micrometres (table: {lo:g} to {hi:g})"
+    roughness = _socket(group, "INPUT", "NodeSocketFloat", "Roughness")
     roughness.default_value = 0.0
     roughness.min_value, roughness.max_value = 0.0, 1.0
-    socket(group, "OUTPUT", "NodeSocketShader", "BSDF")
-    socket(group, "OUTPUT", "NodeSocketColor", "Reflectance")
-    if TRANSMITTANCE is not None:
-        socket(group, "OUTPUT", "NodeSocketColor", "Transmittance")
+    _socket(group, "OUTPUT", "NodeSocketShader", "BSDF")
+    _socket(group, "OUTPUT", "NodeSocketColor", "Reflectance")
+    if transmittance is not None:
+        _socket(group, "OUTPUT", "NodeSocketColor", "Transmittance")
 
     nodes, links = group.nodes, group.links
 
@@ -244,10 +488,13 @@ def build_group():
     u.inputs[2].default_value = -lo / (hi - lo)
 
     def neighbours(value, size, x, y):
-        """The texel centres of the two samples around value (0-1) on a node-centred
-        axis of size texels, and the weight of the second: p = value * (size - 1),
-        centres (floor(p) + 0.5) / size and the next, weight p - floor(p) (EXTEND: a
-        centre off the edge reads the edge, so values outside 0-1 read the end)."""
+        """Return the texel centres around ``value`` on a node-centred axis, and a weight.
+
+        The texel centres of the two samples around value (0-1) on an axis of size
+        texels, and the weight of the second: p = value * (size - 1), centres
+        (floor(p) + 0.5) / size and the next, weight p - floor(p) (EXTEND: a centre off
+        the edge reads the edge, so values outside 0-1 read the end).
+        """
         p = node("ShaderNodeMath", x, y, operation="MULTIPLY_ADD")
         links.new(value, p.inputs[0])
         p.inputs[1].default_value = float(size - 1)
@@ -277,10 +524,12 @@ def build_group():
         return result.outputs[0]
 
     def texture(relative, y, label):
-        """Bilinear lookup of the table from four Closest reads at its samples, the
-        same on every engine (a GPU's filtered read picks a mipmap level from the
-        screen-space derivatives of (u, v): it blurs the table across thicknesses)."""
-        image = table(relative)
+        """Return the table's bilinear lookup from four Closest reads at its samples.
+
+        The same on every engine (a GPU's filtered read picks a mipmap level from the
+        screen-space derivatives of (u, v): it blurs the table across thicknesses).
+        """
+        image = _table(relative)
         width, height = image.size
         u0, u1, wu = neighbours(u.outputs[0], width, -300, y + 300)
         v0, v1, wv = neighbours(cosine.outputs[0], height, -300, y)
@@ -310,12 +559,12 @@ def build_group():
     except TypeError:
         glossy.distribution = "GGX"
     links.new(inputs.outputs["Roughness"], glossy.inputs["Roughness"])
-    r = texture(REFLECTANCE, 300, "Reflectance R")
+    r = texture(reflectance, 300, "Reflectance R")
     links.new(r, glossy.inputs["Color"])
     links.new(r, outputs.inputs["Reflectance"])
     bsdf = glossy.outputs[0]
-    if TRANSMITTANCE is not None:
-        t = texture(TRANSMITTANCE, -500, "Transmittance T")
+    if transmittance is not None:
+        t = texture(transmittance, -500, "Transmittance T")
         transparent = node("ShaderNodeBsdfTransparent", 1400, -150)
         links.new(t, transparent.inputs["Color"])
         links.new(t, outputs.inputs["Transmittance"])
@@ -327,7 +576,7 @@ def build_group():
     return group
 
 
-def build_material(group):
+def _build_material(group, transmits):
     material = bpy.data.materials.get(NAME) or bpy.data.materials.new(NAME)
     if getattr(material, "node_tree", None) is None:
         material.use_nodes = True
@@ -341,17 +590,25 @@ def build_material(group):
     output = tree.nodes.new("ShaderNodeOutputMaterial")
     output.location = (300, 0)
     tree.links.new(film.outputs["BSDF"], output.inputs["Surface"])
-    if TRANSMITTANCE is not None:
-        # EEVEE: the transparent part needs a see-through render method
+    if transmits:
+        # EEVEE: Blended shows the coloured transmission without noise (measured:
+        # docs/blender.md); Dithered (Alpha Hashed in 3.x) is stochastic and speckles
         if hasattr(material, "surface_render_method"):
-            material.surface_render_method = "DITHERED"
+            material.surface_render_method = "BLENDED"
         elif hasattr(material, "blend_method"):
-            material.blend_method = "HASHED"
+            material.blend_method = "BLEND"
             if hasattr(material, "shadow_method"):
                 material.shadow_method = "HASHED"
     return material
 
 
-build_material(build_group())
-print(NAME + ": node group and material built from " + folder())
+def _main():
+    found = _working_space()
+    entry = _choose(found)
+    _build_material(_build_group(entry), entry["transmittance"] is not None)
+    _report(entry, found)
+    print(f"{NAME}: node group and material built from {_folder()} ({entry['space']} tables)")
+
+
+_main()
 '''
