@@ -53,6 +53,7 @@ __all__ = [
     "read_films",
     "check_names",
     "film_wavelengths",
+    "fringe_sharpness",
     "paper_parameters",
     "film_reflectance",
 ]
@@ -74,11 +75,21 @@ def _optical_path_nm(film: Film, max_thickness_nm: float) -> float:
     return total
 
 
-def _sharpness(film: Film) -> float:
+def fringe_sharpness(film: Film) -> float:
     """Return ``max |r_a r_b|`` of the varying layer's two interfaces.
 
     The maximum is over the visible and both polarisations: how sharp the layer's Airy
-    fringes get (:func:`exact.adequate_step`).
+    fringes get (:func:`exact.adequate_step`), at the film's ``angle_deg``.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+
+    Returns
+    -------
+    float
+        In [0, 1].
     """
     wl = np.linspace(*VISIBLE_NM, 41)
     n = np.stack([m.index(wl) for m in film.stack])
@@ -88,7 +99,11 @@ def _sharpness(film: Film) -> float:
 
 
 def film_wavelengths(
-    film: Film, max_thickness_nm: float | None = None, max_sharpness: float = 1.0
+    film: Film,
+    max_thickness_nm: float | None = None,
+    max_sharpness: float = 1.0,
+    *,
+    sharpness: float | None = None,
 ) -> np.ndarray:
     """Return the wavelength grid (nm) a film's spectra are evaluated on.
 
@@ -107,6 +122,9 @@ def film_wavelengths(
     max_sharpness : float, optional
         A cap on the fringes' sharpness the step resolves (the material tables' measured
         choice, :mod:`ocio_thinfilm.lut.material_tables`).
+    sharpness : float, optional
+        The film's :func:`fringe_sharpness`, if the caller has it (it depends on the
+        angle only; the material tables ask for several thicknesses at each angle).
 
     Returns
     -------
@@ -117,8 +135,9 @@ def film_wavelengths(
         start = 360.0 if all(m.covers(360.0, 780.0) for m in film.stack) else 380.0
         return wavelength_grid(start, 780.0, 5.0)
     top = film.range_um[1] * 1000.0 if max_thickness_nm is None else float(max_thickness_nm)
+    sharp = fringe_sharpness(film) if sharpness is None else float(sharpness)
     step = exact.adequate_step(
-        _optical_path_nm(film, top), VISIBLE_NM[0], sharpness=min(_sharpness(film), max_sharpness)
+        _optical_path_nm(film, top), VISIBLE_NM[0], sharpness=min(sharp, max_sharpness)
     )
     count = int(math.ceil((VISIBLE_NM[1] - VISIBLE_NM[0]) / step)) + 1
     return check_wavelengths(np.linspace(VISIBLE_NM[0], VISIBLE_NM[1], count))
