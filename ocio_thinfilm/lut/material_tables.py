@@ -68,6 +68,9 @@ MAX_SHARPNESS = 0.5
 _COLUMN_BLOCKS = 8
 #: Columns per run of one exponential (uniform thickness axes, :func:`_phasors`).
 _RUN = 64
+#: Rows (and their samples: wavelengths x blocks) per unit of work of a thread.
+_GROUP_ROWS = 16
+_GROUP_SAMPLES = 1 << 14
 #: Wavelengths per slice of a run's spectra (a run x a slice stays in cache), and of
 #: the integration's sums by halves (:func:`_weigh`).
 _SLICE = 256
@@ -248,6 +251,7 @@ class _Block:
     wl: np.ndarray
     wT: np.ndarray
     n: np.ndarray | None
+    white: np.ndarray
 
 
 def _plan(film: Film, d: np.ndarray, c: np.ndarray) -> list[list[_Block]]:
@@ -259,11 +263,13 @@ def _plan(film: Film, d: np.ndarray, c: np.ndarray) -> list[list[_Block]]:
     """
     order = np.argsort(d, kind="stable")
     blocks = [b for b in np.array_split(order, max(1, min(_COLUMN_BLOCKS, d.size // 64))) if b.size]
-    known: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray | None]] = {}
+    known: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]] = {}
     plan = []
-    for cosine in c:
+    angles = np.degrees(np.arccos(c))
+    sharpness = None if film.model == "paper" else films_module.fringe_sharpness(film, angles)
+    for j, cosine in enumerate(c):
         row_film = _row_film(film, float(cosine))
-        sharp = None if film.model == "paper" else films_module.fringe_sharpness(row_film)
+        sharp = None if sharpness is None else float(sharpness[j])
         row = []
         for cols in blocks:
             wl = _grid(row_film, float(d[cols].max()), sharp)
@@ -271,9 +277,9 @@ def _plan(film: Film, d: np.ndarray, c: np.ndarray) -> list[list[_Block]]:
             if key not in known:
                 n = None if film.model == "paper" else np.stack([m.index(wl) for m in film.stack])
                 wT = np.ascontiguousarray(film_tables.film_weights(film, wl).T)
-                known[key] = (wl, wT, n)
-            wl, wT, n = known[key]
-            row.append(_Block(cols, wl, wT, n))
+                known[key] = (wl, wT, n, _weigh(np.ones((1, wl.size)), wT)[:, 0])
+            wl, wT, n, white = known[key]
+            row.append(_Block(cols, wl, wT, n, white))
         plan.append(row)
     return plan
 
@@ -282,17 +288,21 @@ def _row_film(film: Film, cosine: float) -> Film:
     return dataclasses.replace(film, angle_deg=float(np.degrees(np.arccos(cosine))))
 
 
-def _runs(dd: np.ndarray) -> int:
+def _axis_step(d: np.ndarray) -> float:
+    """Return the step of the thickness axis (sorted): its phasors are anchors times
+    powers of one step's phasor (:func:`_runs`)."""
+    ds = np.sort(d)
+    return float((ds[-1] - ds[0]) / max(ds.size - 1, 1))
+
+
+def _runs(dd: np.ndarray, step: float) -> int:
     """Columns per run: one exponential per run when the (sorted) thicknesses are uniform.
 
-    Runs of about :data:`_RUN` columns (equal lengths); 1 (every column its own
-    exponential) when the axis is not uniform to :data:`_UNIFORM_NM`.
+    Runs of about :data:`_RUN` columns (equal lengths) when ``dd`` is ``dd[0] + k step``
+    to :data:`_UNIFORM_NM`; else 1 (every column its own exponential).
     """
     m = dd.size
-    if m < 3:
-        return 1
-    step = (dd[-1] - dd[0]) / (m - 1)
-    if np.abs(dd - (dd[0] + step * np.arange(m))).max() > _UNIFORM_NM:
+    if m < 3 or np.abs(dd - (dd[0] + step * np.arange(m))).max() > _UNIFORM_NM:
         return 1
     return -(-m // -(-m // _RUN))
 
@@ -317,37 +327,73 @@ def _powers(phase: np.ndarray, step: float, run: int) -> np.ndarray:
     return W
 
 
-class _BlockCoefficients:
-    """A row-block's coefficients (:class:`~ocio_thinfilm.physics.phasor.StackCoefficients`
-    on its wavelengths), real where they can be, and whether the expanded form holds."""
+class _GroupCoefficients:
+    """The coefficients of a group of rows (all their blocks' wavelengths), real where
+    they can be: 0.5 |P z + Q|^2 = q0 + q2 |z|^2 + Re(X z), |S z + U|^2 = u0 + u2 |z|^2 +
+    Re(Y z), and the gaps ``|U| - |S|`` that bound the denominators from below."""
 
-    def __init__(self, k: phasor.StackCoefficients, sl: slice, lossless: bool) -> None:
-        self.lossless = lossless
-        pairs = [(k.S[i][sl], k.U[i][sl]) for i in (0, 1)]
-        pairs += [(S[sl], U[sl]) for above in k.above for S, U in above]
+    def __init__(self, k: phasor.StackCoefficients) -> None:
+        self.k = k
+        self.X = [phasor.cmul(k.P[i], np.conj(k.Q[i])) for i in (0, 1)]
+        self.Y = [2.0 * phasor.cmul(k.S[i], np.conj(k.U[i])) for i in (0, 1)]
+        self.q = [(0.5 * phasor.abs2(k.Q[i]), 0.5 * phasor.abs2(k.P[i])) for i in (0, 1)]
+        self.u = [(phasor.abs2(k.U[i]), phasor.abs2(k.S[i])) for i in (0, 1)]
+        pairs = [*zip(k.S, k.U, strict=True), *(pair for above in k.above for pair in above)]
+        self.gaps = [np.sqrt(phasor.abs2(U)) - np.sqrt(phasor.abs2(S)) for S, U in pairs]
 
-        def gap(S: np.ndarray, U: np.ndarray) -> float:
-            # |S z + U| >= |U| - |S| |z| >= |U| - |S| for |z| <= 1; ||U| - |S|| for |z| = 1
-            diff = np.sqrt(phasor.abs2(U)) - np.sqrt(phasor.abs2(S))
-            return float((np.abs(diff) if lossless else diff).min())
 
-        # denominators at least _MARGIN^2 from 0: the expanded form loses nothing there
-        self.direct = not min(gap(S, U) for S, U in pairs) >= _MARGIN
-        self.power = [k.power[i][sl] for i in (0, 1)]
-        self.P = [k.P[i][sl] for i in (0, 1)]
-        self.Q = [k.Q[i][sl] for i in (0, 1)]
-        self.S = [k.S[i][sl] for i in (0, 1)]
-        self.U = [k.U[i][sl] for i in (0, 1)]
-        self.above = [[(S[sl], U[sl]) for S, U in k.above[i]] for i in (0, 1)]
-        # 0.5 |P z + Q|^2 = q0 + q2 |z|^2 + Re(X z), |S z + U|^2 = u0 + u2 |z|^2 + Re(Y z)
-        self.X = [phasor.cmul(self.P[i], np.conj(self.Q[i])) for i in (0, 1)]
-        self.Y = [2.0 * phasor.cmul(self.S[i], np.conj(self.U[i])) for i in (0, 1)]
-        self.q = [(0.5 * phasor.abs2(self.Q[i]), 0.5 * phasor.abs2(self.P[i])) for i in (0, 1)]
-        self.u = [(phasor.abs2(self.U[i]), phasor.abs2(self.S[i])) for i in (0, 1)]
+def _prepare(
+    g: _GroupCoefficients, part: slice, dd: np.ndarray, run: int, W: np.ndarray, A: np.ndarray
+) -> tuple[list[_Run], np.ndarray, np.ndarray, np.ndarray | None]:
+    """Return a row-block's runs and its powers (real, imaginary, ``|w|^2`` or None).
 
-    def run(self, anchor: np.ndarray) -> _Run:
-        """Return the coefficients of a run whose first column's phasor is ``anchor``."""
-        return _Run(self, anchor)
+    ``part``: its wavelengths among the group's; ``W``: the powers ``w^j`` (>= ``run``
+    rows) and ``A``: the runs' anchors (>= the block's runs), on those wavelengths. The
+    expanded form holds where every denominator is at least :data:`_MARGIN` from 0:
+    ``|S z + U| >= |U| - |S| |z| >= |U| - |S|`` for ``|z| <= 1``, ``||U| - |S||`` for
+    ``|z| = 1`` (a lossless layer).
+    """
+    k = g.k
+    lossless = not np.any(k.phase[part].imag)
+    gap = min(float((np.abs(x[part]) if lossless else x[part]).min()) for x in g.gaps)
+    direct = not gap >= _MARGIN
+    count = -(-dd.size // run)
+    A = A[:count]
+    Wr, Wi = np.ascontiguousarray(W[:run].real), np.ascontiguousarray(W[:run].imag)
+    W2 = None if lossless else Wr * Wr + Wi * Wi
+    size2 = None if lossless else phasor.abs2(A)
+    power = [
+        k.power[i][part] if size2 is None else k.power[i][part] * np.sqrt(size2) for i in (0, 1)
+    ]
+    forms: list[tuple] = []
+    for i in (0, 1):
+        if direct:
+            above = [(phasor.cmul(Sj[part], A), Uj[part]) for Sj, Uj in k.above[i]]
+            P, S = phasor.cmul(k.P[i][part], A), phasor.cmul(k.S[i][part], A)
+            forms.append((P, k.Q[i][part], S, k.U[i][part], above))
+            continue
+        X, Y = phasor.cmul(g.X[i][part], A), phasor.cmul(g.Y[i][part], A)
+        (q0, q2), (u0, u2) = g.q[i], g.u[i]
+        q0, q2, u0, u2 = q0[part], q2[part], u0[part], u2[part]
+        if size2 is None:  # |z| = 1
+            q0, u0 = q0 + q2, u0 + u2
+            q2s = u2s = q2  # unused
+        else:
+            q2s, u2s = q2 * size2, u2 * size2
+        forms.append((q0, q2s, X.real.copy(), -X.imag, u0, u2s, Y.real.copy(), -Y.imag))
+    runs = []
+    for r in range(count):
+        co = _Run()
+        co.direct = direct
+        co.power = [p[r] if p.ndim == 2 else p for p in power]
+        if direct:
+            co.complex = [
+                (P[r], Q, S[r], U, [(Sj[r], Uj) for Sj, Uj in above]) for P, Q, S, U, above in forms
+            ]
+        else:
+            co.real = [tuple(x[r] if x.ndim == 2 else x for x in f) for f in forms]
+        runs.append(co)
+    return runs, Wr, Wi, W2
 
 
 class _Run:
@@ -355,28 +401,10 @@ class _Run:
     powers ``w^j`` with the anchor's phasor folded into the coefficients
     (``z = anchor w^j``: ``P z = (P anchor) w^j``), :func:`_spectra`."""
 
-    def __init__(self, b: _BlockCoefficients, anchor: np.ndarray) -> None:
-        self.direct, self.lossless = b.direct, b.lossless
-        self.power = b.power
-        size2 = None if b.lossless else phasor.abs2(anchor)
-        if size2 is not None:
-            size = np.sqrt(size2)
-            self.power = [p * size for p in b.power]
-        self.complex = []  # (P A, Q, S A, U, [(S_j A, U_j)]): the direct form
-        self.real = []  # the expanded form
-        for i in (0, 1):
-            if self.direct:
-                above = [(phasor.cmul(Sj, anchor), Uj) for Sj, Uj in b.above[i]]
-                P, S = phasor.cmul(b.P[i], anchor), phasor.cmul(b.S[i], anchor)
-                self.complex.append((P, b.Q[i], S, b.U[i], above))
-                continue
-            X, Y = phasor.cmul(b.X[i], anchor), phasor.cmul(b.Y[i], anchor)
-            (q0, q2), (u0, u2) = b.q[i], b.u[i]
-            if size2 is None:  # |z| = 1
-                q0, u0 = q0 + q2, u0 + u2
-            else:
-                q2, u2 = q2 * size2, u2 * size2
-            self.real.append((q0, q2, X.real.copy(), -X.imag, u0, u2, Y.real.copy(), -Y.imag))
+    direct: bool
+    power: list[np.ndarray]
+    complex: list[tuple]  # (P A, Q, S A, U, [(S_j A, U_j)]): the direct form
+    real: list[tuple]  # (q0, q2, Re X, -Im X, u0, u2, Re Y, -Im Y): the expanded form
 
 
 def _spectra(
@@ -396,6 +424,8 @@ def _spectra(
     """
     bad = None
     tmp = np.empty_like(Wr)
+    num_buf = np.empty_like(Wr)
+    den_buf = np.empty_like(Wr)
     for i in (0, 1):
         if co.direct:
             P, Q, S, U, above = co.complex[i]
@@ -410,27 +440,25 @@ def _spectra(
                 den[zero] = 1.0
         else:
             q0, q2, xr, xi, u0, u2, yr, yi = co.real[i]
-            num = np.multiply(Wr, xr[sl])
+            num = np.multiply(Wr, xr[sl], out=num_buf)
             num += np.multiply(Wi, xi[sl], out=tmp)
             num += q0[sl]
-            den = np.multiply(Wr, yr[sl])
+            den = np.multiply(Wr, yr[sl], out=den_buf)
             den += np.multiply(Wi, yi[sl], out=tmp)
             den += u0[sl]
             if W2 is not None:
                 num += np.multiply(W2, q2[sl], out=tmp)
                 den += np.multiply(W2, u2[sl], out=tmp)
         np.reciprocal(den, out=den)
-        num *= den
         if i == 0:
-            R[...] = num
+            np.multiply(num, den, out=R)
         else:
-            R += num
+            R += np.multiply(num, den, out=num)
         if T is not None:
-            den *= co.power[i][sl]
             if i == 0:
-                T[...] = den
+                np.multiply(den, co.power[i][sl], out=T)
             else:
-                T += den
+                T += np.multiply(den, co.power[i][sl], out=den)
     np.clip(R, 0.0, 1.0, out=R)
     if T is not None:
         if W2 is not None:
@@ -453,11 +481,87 @@ def _abs2_of(S: np.ndarray, U: np.ndarray, zr: np.ndarray, zi: np.ndarray) -> np
     return re
 
 
+def _rows(
+    film: Film,
+    c: np.ndarray,
+    d: np.ndarray,
+    plan: list[list[_Block]],
+    transmit: bool,
+    out_R: np.ndarray,
+    out_T: np.ndarray | None,
+) -> None:
+    """Evaluate a group of rows into ``out_R`` (and ``out_T``), (rows, W, 3) views.
+
+    The stack's coefficients of all the group's rows and blocks are computed together
+    (elementwise: each value is what it would be alone), then each row by :func:`_row`.
+    """
+    g = None
+    if film.model != "paper":
+        n_all = np.concatenate([blk.n for row in plan for blk in row if blk.n is not None], axis=1)
+        wl_all = np.concatenate([blk.wl for row in plan for blk in row])
+        c_all = np.concatenate(
+            [np.full(blk.wl.size, c[j]) for j, row in enumerate(plan) for blk in row]
+        )
+        g = _GroupCoefficients(
+            phasor.stack_coefficients(n_all, film.thickness_nm, film.vary, wl_all, c_all, transmit)
+        )
+    prepared: list[list] = [[] for _ in plan]
+    if g is not None:
+        # the blocks' columns are the same in every row: their runs, anchors and powers
+        # for all the group's wavelengths at once
+        blocks = plan[0]
+        dds = [d[blk.cols] for blk in blocks]
+        step = _axis_step(d)
+        run_of = [_runs(dd, step) for dd in dds]
+        phase = g.k.phase
+        offsets = np.cumsum([0] + [blk.wl.size for row in plan for blk in row])
+        if min(run_of) > 1:  # a uniform axis: one set of powers
+            W_all = _powers(phase, step, max(run_of))
+            starts = [dd[::run] for dd, run in zip(dds, run_of, strict=True)]
+            count = max(a.size for a in starts)
+            L = np.empty((count, phase.size))
+            for s_, (j, b) in enumerate(
+                (j, b) for j in range(len(plan)) for b in range(len(blocks))
+            ):
+                anchor_d = starts[b]
+                L[:, offsets[s_] : offsets[s_ + 1]] = np.pad(
+                    anchor_d, (0, count - anchor_d.size), mode="edge"
+                )[:, None]
+            A_all = phasor.cexp_i(phase, L)
+            for s_, (j, b) in enumerate(
+                (j, b) for j in range(len(plan)) for b in range(len(blocks))
+            ):
+                part = slice(offsets[s_], offsets[s_ + 1])
+                prepared[j].append(
+                    _prepare(g, part, dds[b], run_of[b], W_all[:, part], A_all[:, part])
+                )
+        else:
+            for s_, (j, b) in enumerate(
+                (j, b) for j in range(len(plan)) for b in range(len(blocks))
+            ):
+                part = slice(offsets[s_], offsets[s_ + 1])
+                W = _powers(phase[part], step, run_of[b])
+                A = phasor.cexp_i(phase[part], dds[b][:: run_of[b], None])
+                prepared[j].append(_prepare(g, part, dds[b], run_of[b], W, A))
+    for j, row in enumerate(plan):
+        _row(
+            film,
+            float(c[j]),
+            d,
+            row,
+            prepared[j],
+            transmit,
+            out_R[j],
+            None if out_T is None else out_T[j],
+        )
+
+
 def _row(
     film: Film,
     cosine: float,
     d: np.ndarray,
     blocks: list[_Block],
+    prepared: list,
     transmit: bool,
     out_R: np.ndarray,
     out_T: np.ndarray | None,
@@ -482,29 +586,20 @@ def _row(
                 if out_T is not None and T is not None:
                     out_T[blk.cols[part]] = _weigh(T, blk.wT).T
         return
-    n_all = np.concatenate([blk.n for blk in blocks if blk.n is not None], axis=1)
-    wl_all = np.concatenate([blk.wl for blk in blocks])
-    k = phasor.stack_coefficients(n_all, film.thickness_nm, film.vary, wl_all, cosine, transmit)
-    offset = 0
-    for blk in blocks:
+    for blk, (runs, Wr, Wi, W2) in zip(blocks, prepared, strict=True):
         size = blk.wl.size
-        part = slice(offset, offset + size)
-        offset += size
-        phase = k.phase[part]
-        lossless = not np.any(phase.imag)
         dd = d[blk.cols]
-        run = _runs(dd)
-        W = _powers(phase, float((dd[-1] - dd[0]) / max(dd.size - 1, 1)), run)
-        Wr, Wi = np.ascontiguousarray(W.real), np.ascontiguousarray(W.imag)
-        W2 = None if lossless else Wr * Wr + Wi * Wi
+        run = Wr.shape[0]
+        # a lossless stack conserves energy: T = 1 - R (Byrnes 2016, Section 4), so its
+        # colour is the white minus R's (the same sums by halves: T = 0 where R = 1)
+        conserving = transmit and blk.n is not None and not np.any(blk.n.imag)
         R_buf = np.empty((run, min(_SLICE, size)))
-        T_buf = np.empty_like(R_buf) if transmit else None
-        coefficients = _BlockCoefficients(k, part, lossless)
-        for start in range(0, dd.size, run):
+        T_buf = np.empty_like(R_buf) if transmit and not conserving else None
+        white = blk.white if conserving else None
+        for start, co in zip(range(0, dd.size, run), runs, strict=True):
             cols = blk.cols[start : start + run]
-            co = coefficients.run(phasor.cexp_i(phase, float(dd[start])))
             acc_R = np.zeros((3, run))
-            acc_T = np.zeros((3, run)) if transmit else None
+            acc_T = np.zeros((3, run)) if T_buf is not None else None
             for lo in range(0, size, _SLICE):
                 sl = slice(lo, min(lo + _SLICE, size))
                 R = R_buf[:, : sl.stop - lo]
@@ -516,7 +611,7 @@ def _row(
                     # Rouard's recursion divides by 0 there: its own rule (stack_transmittance)
                     redo = np.flatnonzero(bad[: cols.size])
                     R_old, T_old = film_spectra(
-                        _row_film(film, cosine), dd[start + redo], blk.wl[sl], transmit
+                        _row_film(film, cosine), dd[start + redo], blk.wl[sl], T is not None
                     )
                     R[redo] = R_old
                     if T is not None and T_old is not None:
@@ -525,7 +620,9 @@ def _row(
                 if acc_T is not None and T is not None:
                     acc_T += _weigh(T, blk.wT[:, sl])
             out_R[cols] = acc_R.T[: cols.size]
-            if out_T is not None and acc_T is not None:
+            if out_T is not None and white is not None:
+                out_T[cols] = white - out_R[cols]
+            elif out_T is not None and acc_T is not None:
                 out_T[cols] = acc_T.T[: cols.size]
 
 
@@ -619,28 +716,35 @@ def film_angle_XYZ(
     out_R = np.empty((c.size, d.size, 3))
     out_T = np.empty((c.size, d.size, 3)) if transmittance else None
     plan = _plan(film, d, c)
+    # groups of consecutive rows: one coefficient call each, the unit of work of a thread
+    groups, start, samples = [], 0, 0
+    for j, row in enumerate(plan):
+        samples += sum(blk.wl.size for blk in row)
+        if samples >= _GROUP_SAMPLES or j + 1 - start >= _GROUP_ROWS or j + 1 == len(plan):
+            groups.append(slice(start, j + 1))
+            start, samples = j + 1, 0
 
-    def run(row: int) -> int:
-        _row(
+    def run(rows: slice) -> int:
+        _rows(
             film,
-            float(c[row]),
+            c[rows],
             d,
-            plan[row],
+            plan[rows],
             transmittance,
-            out_R[row],
-            None if out_T is None else out_T[row],
+            out_R[rows],
+            None if out_T is None else out_T[rows],
         )
-        return row
+        return rows.stop - rows.start
 
-    if workers == 1 or c.size == 1:
-        for row in range(c.size):
-            run(row)
+    if workers == 1 or len(groups) == 1:
+        for rows in groups:
+            done = run(rows)
             if progress is not None:
-                progress(1)
+                progress(done)
     else:
-        with concurrent.futures.ThreadPoolExecutor(min(workers, c.size)) as pool:
-            for future in concurrent.futures.as_completed([pool.submit(run, r) for r in range(c.size)]):
-                future.result()
+        with concurrent.futures.ThreadPoolExecutor(min(workers, len(groups))) as pool:
+            for future in concurrent.futures.as_completed([pool.submit(run, g) for g in groups]):
+                done = future.result()
                 if progress is not None:
-                    progress(1)
+                    progress(done)
     return out_R, out_T

@@ -649,4 +649,3 @@ def interface_amplitudes(
     return [
         _fresnel(media[i], cosines[i], media[i + 1], cosines[i + 1]) for i in range(len(media) - 1)
     ]
-

@@ -75,27 +75,30 @@ def _optical_path_nm(film: Film, max_thickness_nm: float) -> float:
     return total
 
 
-def fringe_sharpness(film: Film) -> float:
+def fringe_sharpness(film: Film, angles_deg: npt.ArrayLike | None = None) -> np.ndarray:
     """Return ``max |r_a r_b|`` of the varying layer's two interfaces.
 
     The maximum is over the visible and both polarisations: how sharp the layer's Airy
-    fringes get (:func:`exact.adequate_step`), at the film's ``angle_deg``.
+    fringes get (:func:`exact.adequate_step`).
 
     Parameters
     ----------
     film : Film
         The film.
+    angles_deg : array_like, optional
+        Angles of incidence (degrees), default the film's ``angle_deg``.
 
     Returns
     -------
-    float
-        In [0, 1].
+    numpy.ndarray
+        In [0, 1], the shape of ``angles_deg`` (0-d without it).
     """
     wl = np.linspace(*VISIBLE_NM, 41)
     n = np.stack([m.index(wl) for m in film.stack])
-    amplitudes = exact.interface_amplitudes(n, film.angle_deg)
+    angles = np.asarray(film.angle_deg if angles_deg is None else angles_deg, dtype=np.float64)
+    amplitudes = exact.interface_amplitudes(n, angles[..., None])
     above, below = amplitudes[film.vary], amplitudes[film.vary + 1]
-    return float(max(np.abs(above[p] * below[p]).max() for p in (0, 1)))
+    return np.maximum(*(np.abs(above[p] * below[p]).max(axis=-1) for p in (0, 1)))
 
 
 def film_wavelengths(
@@ -135,7 +138,7 @@ def film_wavelengths(
         start = 360.0 if all(m.covers(360.0, 780.0) for m in film.stack) else 380.0
         return wavelength_grid(start, 780.0, 5.0)
     top = film.range_um[1] * 1000.0 if max_thickness_nm is None else float(max_thickness_nm)
-    sharp = fringe_sharpness(film) if sharpness is None else float(sharpness)
+    sharp = float(fringe_sharpness(film) if sharpness is None else sharpness)
     step = exact.adequate_step(
         _optical_path_nm(film, top), VISIBLE_NM[0], sharpness=min(sharp, max_sharpness)
     )

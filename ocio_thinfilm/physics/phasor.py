@@ -73,8 +73,8 @@ def _cdiv(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
     return out
 
 
-def cexp_i(phase: np.ndarray, length: float) -> np.ndarray:
-    """Return ``exp(i phase length)`` for a complex ``phase`` and a real ``length``.
+def cexp_i(phase: np.ndarray, length: npt.ArrayLike) -> np.ndarray:
+    """Return ``exp(i phase length)`` for a complex ``phase`` and real ``length``.
 
     The argument is formed in real arithmetic; the exponential is libm's (numpy's
     complex exp has no SIMD variant: the same bits on every SIMD level).
@@ -83,13 +83,13 @@ def cexp_i(phase: np.ndarray, length: float) -> np.ndarray:
     ----------
     phase : numpy.ndarray
         Complex phase per unit length.
-    length : float
-        The length.
+    length : float or array_like
+        The length (broadcast against ``phase``).
 
     Returns
     -------
     numpy.ndarray
-        complex128, the shape of ``phase``.
+        complex128, the broadcast shape.
 
     Examples
     --------
@@ -97,9 +97,9 @@ def cexp_i(phase: np.ndarray, length: float) -> np.ndarray:
     [1j]
     """
     phase = np.asarray(phase, dtype=np.complex128)
-    arg = np.empty(phase.shape, dtype=np.complex128)
-    arg.real = -phase.imag * length
-    arg.imag = phase.real * length
+    re = -phase.imag * np.asarray(length, dtype=np.float64)
+    arg = np.empty(re.shape, dtype=np.complex128)
+    arg.real, arg.imag = re, phase.real * length
     return np.exp(arg)
 
 
@@ -154,7 +154,7 @@ class StackCoefficients(NamedTuple):
     above: tuple[tuple[tuple[np.ndarray, np.ndarray], ...], ...]
 
 
-def _snell(n0: np.ndarray, n: np.ndarray, sin0: float) -> np.ndarray:
+def _snell(n0: np.ndarray, n: np.ndarray, sin0: np.ndarray) -> np.ndarray:
     """:func:`_cos_refracted` in real arithmetic (the same branch)."""
     x = np.empty(n0.shape, dtype=np.complex128)
     x.real, x.imag = n0.real * sin0, n0.imag * sin0
@@ -170,7 +170,7 @@ def stack_coefficients(
     thicknesses: npt.ArrayLike,
     vary: int,
     wavelengths: npt.ArrayLike,
-    cos_theta: float,
+    cos_theta: npt.ArrayLike,
     transmit: bool = False,
 ) -> StackCoefficients:
     r"""Return a stack at one angle as coefficients of its varying layer's phasor.
@@ -206,8 +206,10 @@ def stack_coefficients(
         The varying layer (0-based among the layers).
     wavelengths : array_like
         Wavelengths in nm, > 0, in any order (each is evaluated by itself).
-    cos_theta : float
-        Cosine of the angle of incidence in the incident medium, in [0, 1].
+    cos_theta : float or array_like
+        Cosine of the angle of incidence in the incident medium, in [0, 1]: one, or one
+        per wavelength (several angles' grids evaluated together; each value is what
+        it would be alone).
     transmit : bool, optional
         Also the transmitted power (else ``power`` is zeros).
 
@@ -250,10 +252,10 @@ def stack_coefficients(
     if depths.shape != (layers,):
         raise ParameterError("thicknesses", f" must give one thickness per layer ({layers})")
     vary = as_count("vary", vary, 0, layers - 1)
-    c = float(as_array("cos_theta", cos_theta, minimum=0.0, maximum=1.0))
-    sin0 = float(np.sqrt(1.0 - c * c))
+    c = np.broadcast_to(as_array("cos_theta", cos_theta, minimum=0.0, maximum=1.0), wl.shape)
+    sin0 = np.sqrt(1.0 - c * c)
     media = [n[i] for i in range(n.shape[0])]
-    cosines = [np.full(wl.shape, c, dtype=np.complex128)]
+    cosines = [c.astype(np.complex128)]
     cosines += [_snell(media[0], m, sin0) for m in media[1:]]
     k0 = 2.0 * np.pi / wl
     # 2 k0 n_j cos_j per medium: z_j = exp(i phase_j d_j)
