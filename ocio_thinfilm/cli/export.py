@@ -224,7 +224,14 @@ def _run_material(args: argparse.Namespace) -> int:
     film = pick_film(args.films, args.film)
     hosts = host_files(film, args.space)
     written = export_material(
-        film, args.out, space=args.space, size=args.size, hosts=hosts, gamut=args.gamut
+        film,
+        args.out,
+        space=args.space,
+        size=args.size,
+        hosts=hosts,
+        gamut=args.gamut,
+        workers=args.jobs,
+        show_progress=not args.quiet,
     )
     for path in written:
         print(f"wrote {path}")
@@ -548,6 +555,16 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         "clamp negative colours (Cycles, MaterialX); clip needs a --space with a display's "
         "primaries (docs/materials.md)",
     )
+    mat.add_argument(
+        "--jobs",
+        "-j",
+        type=int,
+        default=None,
+        metavar="N",
+        help="threads that compute the tables, N >= 1 (default: the CPUs this process may "
+        "use); the files are the same bytes for any N",
+    )
+    mat.add_argument("--quiet", action="store_true", help="no progress bar")
     mat.set_defaults(func=_run_material)
 
 

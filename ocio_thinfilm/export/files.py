@@ -491,7 +491,9 @@ def export_lut(
     return out
 
 
-def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
+def progress_bar(
+    show: bool, total: float, desc: str, *, unit: str = "file", delay: float = 0.0
+) -> tqdm | None:
     """Return a tqdm progress bar on stderr, or None.
 
     None unless ``show`` and stderr is a terminal (a log or a pipe gets no
@@ -505,6 +507,10 @@ def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
         The bar's total (a count of steps, or 1.0 for fractions).
     desc : str
         Its label.
+    unit : str, optional
+        What a step is (default ``"file"``).
+    delay : float, optional
+        Seconds before the bar appears (tqdm's ``delay``): a shorter run prints nothing.
 
     Returns
     -------
@@ -518,7 +524,8 @@ def progress_bar(show: bool, total: float, desc: str) -> tqdm | None:
     return tqdm(
         total=total,
         desc=desc,
-        unit="file",
+        unit=unit,
+        delay=delay,
         leave=False,
         file=sys.stderr,
         mininterval=0.2,

@@ -19,6 +19,8 @@ the tables as float OpenEXR images (docs/materials.md):
 
 from __future__ import annotations
 
+import math
+import os
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -32,7 +34,7 @@ from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_count
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config.data import ROLES, film_lut_stem
-from ocio_thinfilm.io import StrPath, atomic_directory, write_image
+from ocio_thinfilm.io import StrPath, atomic_directory, claim_directory, write_image
 from ocio_thinfilm.lut import material_tables
 from ocio_thinfilm.physics.films import Film
 
@@ -43,8 +45,13 @@ __all__ = [
     "MaterialTable",
     "gamut_display",
     "HostWriter",
+    "MAX_SECONDS",
+    "NS_PER_SAMPLE",
     "check_space",
     "parse_size",
+    "available_memory",
+    "table_cost",
+    "check_size",
     "material_table",
     "host_files",
     "export_material",
@@ -56,6 +63,22 @@ DEFAULT_SPACE = ROLES["scene_linear"]
 GAMUTS = ("keep", "clip")
 #: Largest width or height of a table.
 MAX_SIZE = 16384
+#: The longest an export may be estimated to take (s): a larger ``size`` is refused
+#: before anything is computed (:func:`check_size`).
+MAX_SECONDS = 600.0
+#: CPU time per sample (a texel at one wavelength, ns) of
+#: :func:`~ocio_thinfilm.lut.material_tables.film_angle_XYZ`, measured by
+#: benchmarks/bench_material.py on the development machine (docs/materials.md): the
+#: time estimate of :func:`check_size`.
+NS_PER_SAMPLE = 25.0
+#: Bytes per texel of one table while it is made and written: its XYZ, RGB and clipped
+#: RGB (float64) and the EXR's float32 pixels.
+_BYTES_PER_TEXEL = 3 * (8 + 8 + 8 + 4)
+#: Bytes a worker's block of work holds (coefficients, powers and spectra of a group of
+#: rows, :mod:`ocio_thinfilm.lut.material_tables`).
+_WORKER_BYTES = 96 << 20
+#: Fraction of the available memory an export may plan to use.
+_MEMORY_SHARE = 0.8
 #: A fixed EXR timestamp: equal inputs give equal bytes.
 _DATETIME = "2000:01:01 00:00:00"
 
@@ -159,6 +182,129 @@ def parse_size(size: str | tuple[int, int] | None) -> tuple[int, int] | None:
     return as_count("size", w, 2, MAX_SIZE), as_count("size", h, 2, MAX_SIZE)
 
 
+def available_memory() -> int:
+    """Return the memory (bytes) available to a new allocation without swapping.
+
+    ``MemAvailable`` of /proc/meminfo (Linux), else the free physical pages
+    (``os.sysconf``), else 0 (unknown: no memory bound).
+
+    Returns
+    -------
+    int
+        Bytes.
+    """
+    try:
+        with open("/proc/meminfo", encoding="ascii") as f:
+            for line in f:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return int(os.sysconf("SC_AVPHYS_PAGES")) * int(os.sysconf("SC_PAGE_SIZE"))
+    except (OSError, ValueError, AttributeError):
+        return 0
+
+
+def table_cost(film: Film, width: int, height: int, workers: int) -> tuple[float, float, float]:
+    """Estimate what a film's table of ``width`` x ``height`` texels costs to make.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    width, height : int
+        The table's size.
+    workers : int
+        Threads that evaluate it.
+
+    Returns
+    -------
+    memory : float
+        Bytes: the tables (R, and T for a free-standing film) while made and written, and
+        each worker's block of work.
+    seconds : float
+        Wall time on the development machine: the samples
+        (:func:`~ocio_thinfilm.lut.material_tables.sample_count`) times
+        :data:`NS_PER_SAMPLE`, over the workers.
+    samples : float
+        The samples.
+    """
+    quantities = 2 if material_tables.free_standing(film) else 1
+    samples = material_tables.sample_count(film, width, height)
+    memory = float(width) * height * quantities * _BYTES_PER_TEXEL + workers * _WORKER_BYTES
+    return memory, samples * NS_PER_SAMPLE * 1e-9 / workers, samples
+
+
+def _amount(value: float, unit: str) -> str:
+    return f"{value:.2g} {unit}" if value < 10 else f"{value:.0f} {unit}"
+
+
+def _bytes(n: float) -> str:
+    for unit, scale in (("GB", 1e9), ("MB", 1e6)):
+        if n >= scale:
+            return _amount(n / scale, unit)
+    return _amount(n / 1e3, "kB")
+
+
+def _duration(seconds: float) -> str:
+    for unit, scale in (("h", 3600.0), ("min", 60.0)):
+        if seconds >= scale:
+            return _amount(seconds / scale, unit)
+    return _amount(seconds, "s")
+
+
+def check_size(
+    film: Film, width: int, height: int, workers: int, parameter: str = "size"
+) -> tuple[int, int]:
+    """Refuse a table the machine cannot hold or finish in :data:`MAX_SECONDS`.
+
+    The estimates of :func:`table_cost` against :func:`available_memory` (at most 80 %
+    of it) and :data:`MAX_SECONDS`; milliseconds, before anything is computed.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    width, height : int
+        The table's size.
+    workers : int
+        Threads that would evaluate it.
+    parameter : str, optional
+        The parameter named in the message (default ``"size"``).
+
+    Returns
+    -------
+    tuple of int
+        (width, height).
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``parameter``) with the estimates and about the most texels allowed.
+    """
+    memory, seconds, samples = table_cost(film, width, height, workers)
+    available = available_memory() * _MEMORY_SHARE
+    texels = float(width) * height
+    fits = available <= 0 or memory <= available
+    if fits and seconds <= MAX_SECONDS:
+        return width, height
+    per_texel_memory = (memory - workers * _WORKER_BYTES) / texels
+    limits = [MAX_SECONDS / (seconds / texels)]
+    if available > 0:
+        limits.append(max(0.0, available - workers * _WORKER_BYTES) / per_texel_memory)
+    most = min(limits)
+    side = max(2, int(math.sqrt(most)))
+    where = f"{_bytes(available / _MEMORY_SHARE)} available" if available > 0 else ""
+    raise ParameterError(
+        parameter,
+        f" {width}x{height}: needs about {_bytes(memory)} of memory"
+        f"{f' ({where})' if where else ''} and {_duration(seconds)} here with {workers} "
+        f"worker{'s' if workers != 1 else ''} (at most {_duration(MAX_SECONDS)}); at most "
+        f"about {most / 1e6:.3g} million texels (e.g. {side}x{side})",
+    )
+
+
 def gamut_display(space: str) -> registry.Display | None:
     """Return the SDR display whose gamut (primaries and white) is the scene space's.
 
@@ -180,6 +326,8 @@ def material_table(
     width: int | None = None,
     height: int | None = None,
     gamut: str = "keep",
+    workers: int | None = None,
+    progress: Callable[[int], object] | None = None,
 ) -> MaterialTable:
     """Return a film's reflectance (and transmittance) table over thickness x cos theta.
 
@@ -199,6 +347,11 @@ def material_table(
         hue line kept), for renderers that clamp negative colours per channel (Cycles,
         MaterialX's generated code); only for a space with a display's primaries
         (:func:`gamut_display`).
+    workers : int, optional
+        Threads (default :func:`~ocio_thinfilm.lut.material_tables.available_workers`);
+        the table is the same bits for any number.
+    progress : callable, optional
+        Called with the number of rows finished, as they finish.
 
     Returns
     -------
@@ -208,11 +361,26 @@ def material_table(
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
-        (``film``, ``space``, ``width``, ``height``, ``gamut``) a film whose incident
-        medium absorbs or whose range has zero width, a space that is not scene-linear, a
-        size out of range, a gamut choice not in :data:`GAMUTS` or a clip in a space
-        without a display's primaries.
+        (``film``, ``space``, ``width``, ``height``, ``gamut``, ``workers``) a film whose
+        incident medium absorbs or whose range has zero width, a space that is not
+        scene-linear, a size out of range or beyond what the machine can hold or finish
+        (:func:`check_size`), a gamut choice not in :data:`GAMUTS` or a clip in a space
+        without a display's primaries, a worker count below 1.
     """
+    w, h, workers = _check_table(film, space, width, height, gamut, workers, "width")
+    return _table(film, space, w, h, gamut, workers, progress)
+
+
+def _check_table(
+    film: Film,
+    space: str,
+    width: int | None,
+    height: int | None,
+    gamut: str,
+    workers: int | None,
+    parameter: str,
+) -> tuple[int, int, int]:
+    """Check :func:`material_table`'s arguments; return the size and the workers."""
     material_tables.check_film(film)
     space = check_space(space)
     gamut = as_choice("gamut", gamut, GAMUTS)
@@ -229,11 +397,33 @@ def material_table(
     w0, h0 = material_tables.default_resolution(film)
     w = w0 if width is None else as_count("width", width, 2, MAX_SIZE)
     h = h0 if height is None else as_count("height", height, 2, MAX_SIZE)
+    workers = (
+        material_tables.available_workers()
+        if workers is None
+        else as_count("workers", workers, 1, 4096)
+    )
+    check_size(film, w, h, workers, parameter)
+    return w, h, workers
+
+
+def _table(
+    film: Film,
+    space: str,
+    w: int,
+    h: int,
+    gamut: str,
+    workers: int,
+    progress: Callable[[int], object] | None,
+) -> MaterialTable:
+    """Compute :func:`material_table` with checked arguments."""
+    display = gamut_display(space)
     lo, hi = film.range_um
     t = material_tables.texel_centres(lo, hi, w)
     c = material_tables.texel_centres(0.0, 1.0, h)
     transmit = material_tables.free_standing(film)
-    XYZ_R, XYZ_T = material_tables.film_angle_XYZ(film, t, c, transmittance=transmit)
+    XYZ_R, XYZ_T = material_tables.film_angle_XYZ(
+        film, t, c, transmittance=transmit, workers=workers, progress=progress
+    )
     colorimetry_name = registry.SCENE_LINEAR_BY_NAME[space].colorimetry
     R = colorimetry.XYZ_to_RGB(XYZ_R, colorimetry_name)
     T = None if XYZ_T is None else colorimetry.XYZ_to_RGB(XYZ_T, colorimetry_name)
@@ -241,6 +431,13 @@ def material_table(
         R = clip.clip_RGB(R, display)
         T = None if T is None else clip.clip_RGB(T, display)
     return MaterialTable(R, T, (lo, hi), space, film)
+
+
+def _progress_bar(show: bool, rows: int, key: str) -> Any:
+    """Return a tqdm bar over the table's rows, shown after 2 s (short runs print nothing)."""
+    from ocio_thinfilm.export.files import progress_bar
+
+    return progress_bar(show, total=rows, desc=f"export material {key}", unit="row", delay=2.0)
 
 
 def _attributes(table: MaterialTable, quantity: str) -> dict[str, Any]:
@@ -327,6 +524,8 @@ def export_material(
     size: str | tuple[int, int] | None = None,
     hosts: Mapping[str, HostWriter] | None = None,
     gamut: str = "keep",
+    workers: int | None = None,
+    show_progress: bool = False,
 ) -> list[Path]:
     """Write a film's material tables (and host files) into the directory ``out_dir``.
 
@@ -349,6 +548,10 @@ def export_material(
         and its text is written to ``out_dir / name`` with the tables (default none).
     gamut : str, optional
         ``"keep"`` (default) or ``"clip"`` (:func:`material_table`).
+    workers : int, optional
+        Threads (:func:`material_table`).
+    show_progress : bool, optional
+        A progress bar on stderr (a terminal only) for an export longer than about 2 s.
 
     Returns
     -------
@@ -358,22 +561,49 @@ def export_material(
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
-        The errors of :func:`material_table` and :func:`parse_size` (``size``), and
-        (``out``) an output directory holding files this tool did not write.
+        The errors of :func:`material_table` and :func:`parse_size` (``size``, also a
+        size beyond what the machine can hold or finish: :func:`check_size`), and
+        (``out``) an output directory holding files this tool did not write, a file
+        in its place.
+    ValueError
+        If ``out_dir`` cannot be created or written.
+
+    Notes
+    -----
+    Everything that can be checked is checked before the table is computed (in well
+    under a second, nothing written): the film, the space, the gamut, the size and its
+    cost, the workers, the host file names and the output directory.
     """
     dims = parse_size(size)
     width, height = (None, None) if dims is None else dims
-    table = material_table(film, space=space, width=width, height=height, gamut=gamut)
+    w, h, workers = _check_table(film, space, width, height, gamut, workers, "size")
     stem = film_lut_stem(film)
+    names = [f"{stem}_R.exr"]
+    if material_tables.free_standing(film):
+        names.append(f"{stem}_T.exr")
+    for name in hosts or {}:
+        if Path(name).name != name or name in names:
+            raise ParameterError("hosts", f" {name!r}: must be a new file name without folders")
+    out = Path(out_dir)
+    # the output directory: refused now, not after the computation (nothing is written)
+    try:
+        claim_directory(out, parameter="out", keep_others=True)
+    except ParameterError:
+        raise
+    except ValueError as error:  # not writable: name the parameter too
+        raise ParameterError("out", f" {error}") from None
+    bar = _progress_bar(show_progress, h, film.key)
+    try:
+        table = _table(film, space, w, h, gamut, workers, None if bar is None else bar.update)
+    finally:
+        if bar is not None:
+            bar.close()
     images = {f"{stem}_R.exr": ("reflectance", table.reflectance)}
     if table.transmittance is not None:
         images[f"{stem}_T.exr"] = ("transmittance", table.transmittance)
-    out = Path(out_dir)
     paths = {name: out / name for name in images}
     texts = {}
     for name, writer in (hosts or {}).items():
-        if Path(name).name != name or name in images:
-            raise ParameterError("hosts", f" {name!r}: must be a new file name without folders")
         t_path = paths.get(f"{stem}_T.exr")
         texts[name] = writer(film.key, paths[f"{stem}_R.exr"], t_path, table.range_um)
     with atomic_directory(out, parameter="out", keep_others=True) as stage:

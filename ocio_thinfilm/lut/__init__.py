@@ -5,6 +5,8 @@
 - :mod:`.film_tables` -- the tables of users' films (physical thickness -> XYZ);
 - :mod:`.material_tables` -- a film's colour over thickness x view angle (the
   material tables of ``export material``);
+- :mod:`.material_engine` -- their numeric core: a group of rows evaluated from the
+  stack's phasor coefficients, on any number of threads with the same bits;
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
 - :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
 - :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its
@@ -22,6 +24,7 @@ __all__ = [
     "tables",
     "film_tables",
     "material_tables",
+    "material_engine",
     "display_transforms",
     "grid",
     "node_fit",

@@ -61,7 +61,7 @@ def cmul(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
 
 
 def _cdiv(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
-    """``a / b`` in real arithmetic (``a conj(b) / |b|^2``), 0 where ``b == 0``."""
+    """Return ``a / b`` in real arithmetic (``a conj(b) / |b|^2``), 0 where ``b == 0``."""
     a, b = np.asarray(a), np.asarray(b)
     den = b.real * b.real + b.imag * b.imag
     ok = den != 0
@@ -283,7 +283,7 @@ def stack_coefficients(
             for i in range(len(media) - 1)
         ]
 
-        def tau(j: int) -> np.ndarray:
+        def tau(j: int, rho: list = rho, polarisation: int = polarisation) -> np.ndarray:
             # the Fresnel transmission amplitude into media[j]; p: (1 + r_p) n_i / n_j
             t = 1.0 + rho[j - 1]
             return cmul(t, _cdiv(media[j - 1], media[j])) if polarisation == 1 else t
@@ -320,7 +320,7 @@ def stack_coefficients(
         out["above"].append(tuple(above))
     return StackCoefficients(
         phases[v],
-        *(tuple(out[key]) for key in ("P", "Q", "S", "U", "power", "above")),  # type: ignore[arg-type]
+        *(tuple(out[key]) for key in ("P", "Q", "S", "U", "power", "above")),
     )
 
 
