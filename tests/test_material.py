@@ -461,3 +461,48 @@ def test_size_bound_names_the_estimates(monkeypatch):
         material.check_size(film, 4000, 4000, 2)
     with pytest.raises(ParameterError, match=r"^width 4000x4000: "):
         material.material_table(film, width=4000, height=4000)
+
+
+class _Terminal:
+    """A stderr that says it is a terminal, keeping what is written."""
+
+    def __init__(self):
+        self.text = ""
+
+    def write(self, s):
+        self.text += s
+        return len(s)
+
+    def flush(self):
+        pass
+
+    def isatty(self):
+        return True
+
+
+def test_progress_bar_only_for_long_exports(tmp_path, monkeypatch):
+    """On a terminal: nothing for a short export (tqdm's delay of 2 s), and a bar over the
+    table's rows that reaches them all when it shows."""
+    import sys
+
+    from ocio_thinfilm.export import files
+
+    terminal = _Terminal()
+    monkeypatch.setattr(sys, "stderr", terminal)
+    material.export_material(FILMS["ARCoating"], tmp_path / "a", size="16x12", show_progress=True)
+    assert terminal.text == ""
+    shown = []
+    original = files.progress_bar
+
+    def at_once(show, total, desc, *, unit="file", delay=0.0):
+        bar = original(show, total, desc, unit=unit, delay=0.0)
+        shown.append(bar)
+        return bar
+
+    monkeypatch.setattr(files, "progress_bar", at_once)
+    material.export_material(FILMS["ARCoating"], tmp_path / "b", size="16x12", show_progress=True)
+    assert shown[0].n == shown[0].total == 12
+    assert "export material ARCoating" in terminal.text
+    terminal.text = ""
+    material.export_material(FILMS["ARCoating"], tmp_path / "c", size="16x12")  # not asked
+    assert terminal.text == ""
