@@ -146,7 +146,13 @@ class _GroupCoefficients:
 
 
 def _prepare(
-    g: _GroupCoefficients, part: slice, dd: np.ndarray, run: int, W: np.ndarray, A: np.ndarray
+    g: _GroupCoefficients,
+    part: slice,
+    dd: np.ndarray,
+    run: int,
+    W: np.ndarray,
+    A: np.ndarray,
+    shared: tuple | None = None,
 ) -> tuple[list[_Run], np.ndarray, np.ndarray, np.ndarray | None]:
     """Return a row-block's runs and its powers (real, imaginary, ``|w|^2`` or None).
 
@@ -154,17 +160,25 @@ def _prepare(
     rows) and ``A``: the runs' anchors (>= the block's runs), on those wavelengths. The
     expanded form holds where every denominator is at least :data:`_MARGIN` from 0:
     ``|S z + U| >= |U| - |S| |z| >= |U| - |S|`` for ``|z| <= 1``, ``||U| - |S||`` for
-    ``|z| = 1`` (a lossless layer).
+    ``|z| = 1`` (a lossless layer). ``shared``: the group's (lossless, direct, Wr, Wi,
+    W2, X A, Y A, |A|^2) on those wavelengths, when the group computed them at once.
     """
     k = g.k
-    lossless = not np.any(k.phase[part].imag)
-    gap = min(float((np.abs(x[part]) if lossless else x[part]).min()) for x in g.gaps)
-    direct = not gap >= _MARGIN
     count = -(-dd.size // run)
+    if shared is None:
+        lossless = not np.any(k.phase[part].imag)
+        gap = min(float((np.abs(x[part]) if lossless else x[part]).min()) for x in g.gaps)
+        direct = not gap >= _MARGIN
+        Wr, Wi = np.ascontiguousarray(W[:run].real), np.ascontiguousarray(W[:run].imag)
+        W2 = None if lossless else Wr * Wr + Wi * Wi
+        XA = YA = None
+        size2 = None if lossless else phasor.abs2(A[:count])
+    else:
+        lossless, direct, Wr, Wi, W2, XA, YA, size2 = shared
+        Wr, Wi = Wr[:run], Wi[:run]
+        W2 = None if lossless or W2 is None else W2[:run]
+        size2 = None if lossless or size2 is None else size2[:count]
     A = A[:count]
-    Wr, Wi = np.ascontiguousarray(W[:run].real), np.ascontiguousarray(W[:run].imag)
-    W2 = None if lossless else Wr * Wr + Wi * Wi
-    size2 = None if lossless else phasor.abs2(A)
     power = [
         k.power[i][part] if size2 is None else k.power[i][part] * np.sqrt(size2) for i in (0, 1)
     ]
@@ -175,7 +189,12 @@ def _prepare(
             P, S = phasor.cmul(k.P[i][part], A), phasor.cmul(k.S[i][part], A)
             forms.append((P, k.Q[i][part], S, k.U[i][part], above))
             continue
-        X, Y = phasor.cmul(g.X[i][part], A), phasor.cmul(g.Y[i][part], A)
+        if XA is None or YA is None:
+            X, Y = phasor.cmul(g.X[i][part], A), phasor.cmul(g.Y[i][part], A)
+            xr, xi, yr, yi = X.real.copy(), -X.imag, Y.real.copy(), -Y.imag
+        else:
+            (xr, xi), (yr, yi) = XA[i], YA[i]
+            xr, xi, yr, yi = xr[:count], xi[:count], yr[:count], yi[:count]
         (q0, q2), (u0, u2) = g.q[i], g.u[i]
         q0, q2, u0, u2 = q0[part], q2[part], u0[part], u2[part]
         if size2 is None:  # |z| = 1
@@ -183,7 +202,7 @@ def _prepare(
             q2s = u2s = q2  # unused
         else:
             q2s, u2s = q2 * size2, u2 * size2
-        forms.append((q0, q2s, X.real.copy(), -X.imag, u0, u2s, Y.real.copy(), -Y.imag))
+        forms.append((q0, q2s, xr, xi, u0, u2s, yr, yi))
     runs = []
     for r in range(count):
         co = _Run()
@@ -365,12 +384,37 @@ def evaluate_rows(
                     anchor_d, (0, count - anchor_d.size), mode="edge"
                 )[:, None]
             A_all = phasor.cexp_i(phase, L)
+            # what every segment needs, for the whole group at once
+            Wr_all, Wi_all = np.ascontiguousarray(W_all.real), np.ascontiguousarray(W_all.imag)
+            lossy = phase.imag != 0
+            any_lossy = bool(lossy.any())
+            W2_all = Wr_all * Wr_all + Wi_all * Wi_all if any_lossy else None
+            size2_all = phasor.abs2(A_all) if any_lossy else None
+            # real, contiguous: (Re X A, -Im X A) and (Re Y A, -Im Y A) per polarisation
+            XA = [(x.real.copy(), -x.imag) for x in (phasor.cmul(g.X[i], A_all) for i in (0, 1))]
+            YA = [(y.real.copy(), -y.imag) for y in (phasor.cmul(g.Y[i], A_all) for i in (0, 1))]
+            starts_at = offsets[:-1]
+            seg_lossy = np.maximum.reduceat(lossy, starts_at)
+            gap = np.minimum.reduceat(np.minimum.reduce(g.gaps), starts_at)
+            gap_abs = np.minimum.reduceat(np.minimum.reduce(np.abs(g.gaps)), starts_at)
             for s_, (j, b) in enumerate(
                 (j, b) for j in range(len(plan)) for b in range(len(blocks))
             ):
                 part = slice(offsets[s_], offsets[s_ + 1])
+                lossless = not seg_lossy[s_]
+                direct = not (gap_abs[s_] if lossless else gap[s_]) >= _MARGIN
+                shared = (
+                    lossless,
+                    direct,
+                    Wr_all[:, part],
+                    Wi_all[:, part],
+                    None if W2_all is None else W2_all[:, part],
+                    [(xr[:, part], xi[:, part]) for xr, xi in XA],
+                    [(yr[:, part], yi[:, part]) for yr, yi in YA],
+                    None if size2_all is None else size2_all[:, part],
+                )
                 prepared[j].append(
-                    _prepare(g, part, dds[b], run_of[b], W_all[:, part], A_all[:, part])
+                    _prepare(g, part, dds[b], run_of[b], W_all[:, part], A_all[:, part], shared)
                 )
         else:
             for s_, (j, b) in enumerate(
