@@ -189,12 +189,20 @@ def _grid(film: Film, top_nm: float, sharpness: float | None = None) -> np.ndarr
     few grids serve every film and angle, so their colorimetric weights are computed
     once (and cached on disk, :func:`ocio_thinfilm.colour.colorimetry.spectral_weights`).
     """
-    wl = films_module.film_wavelengths(film, top_nm, MAX_SHARPNESS, sharpness=sharpness)
     if film.model == "paper":
-        return wl
-    m = max(0, math.ceil(2.0 * math.log2(max(wl.size - 1, 1) / 50.0) - 1e-9))
-    count = 1 + round(50 * 2 ** (m / 2))
-    return np.linspace(wl[0], wl[-1], count)
+        return films_module.film_wavelengths(film, top_nm, MAX_SHARPNESS)
+    return _grids(film, [top_nm], sharpness)[0]
+
+
+def _grids(film: Film, tops_nm: npt.ArrayLike, sharpness: float | None) -> list[np.ndarray]:
+    """:func:`_grid` of the exact model for several blocks' tops at once."""
+    out = []
+    for size in films_module.film_wavelength_counts(
+        film, tops_nm, MAX_SHARPNESS, sharpness=sharpness
+    ):
+        m = max(0, math.ceil(2.0 * math.log2(max(size - 1, 1) / 50.0) - 1e-9))
+        out.append(np.linspace(*VISIBLE_NM, 1 + round(50 * 2 ** (m / 2))))
+    return out
 
 
 def film_spectra(
@@ -248,8 +256,12 @@ def _plan(film: Film, d: np.ndarray, c: np.ndarray) -> list[list[material_engine
         row_film = material_engine.row_film(film, float(cosine))
         sharp = None if sharpness is None else float(sharpness[j])
         row = []
-        for cols in blocks:
-            wl = _grid(row_film, float(d[cols].max()), sharp)
+        tops = [float(d[cols].max()) for cols in blocks]
+        if film.model == "paper":
+            grids = [_grid(row_film, top) for top in tops]
+        else:
+            grids = _grids(row_film, tops, sharp)
+        for cols, wl in zip(blocks, grids, strict=True):
             key = wl.tobytes()
             if key not in known:
                 n = None if film.model == "paper" else np.stack([m.index(wl) for m in film.stack])
@@ -301,9 +313,12 @@ def sample_count(film: Film, width: int, height: int, *, rows: int = 9) -> float
     for cosine in c:
         row_film = material_engine.row_film(film, float(cosine))
         sharp = None if film.model == "paper" else float(films_module.fringe_sharpness(row_film))
-        total += sum(
-            b.size * _grid(row_film, top, sharp).size for b, top in zip(blocks, tops, strict=True)
+        grids = (
+            [_grid(row_film, top) for top in tops]
+            if film.model == "paper"
+            else _grids(row_film, tops, sharp)
         )
+        total += sum(b.size * wl.size for b, wl in zip(blocks, grids, strict=True))
     return total / c.size * height
 
 
