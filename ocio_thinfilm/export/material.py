@@ -66,11 +66,12 @@ MAX_SIZE = 16384
 #: The longest an export may be estimated to take (s): a larger ``size`` is refused
 #: before anything is computed (:func:`check_size`).
 MAX_SECONDS = 600.0
-#: CPU time per sample (a texel at one wavelength, ns) of
+#: Time per sample (a texel at one wavelength, ns) of one worker of
 #: :func:`~ocio_thinfilm.lut.material_tables.film_angle_XYZ`, measured by
-#: benchmarks/bench_material.py on the development machine (docs/materials.md): the
-#: time estimate of :func:`check_size`.
-NS_PER_SAMPLE = 25.0
+#: benchmarks/bench_material.py on the development machine (the 10 um soap film, where
+#: per-row costs are amortised, on a busy 2-core machine: an upper estimate;
+#: docs/materials.md): the time estimate of :func:`check_size`.
+NS_PER_SAMPLE = 45.0
 #: Bytes per texel of one table while it is made and written: its XYZ, RGB and clipped
 #: RGB (float64) and the EXR's float32 pixels.
 _BYTES_PER_TEXEL = 3 * (8 + 8 + 8 + 4)
