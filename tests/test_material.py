@@ -373,3 +373,186 @@ def test_gamut_clip_needs_a_display_gamut():
     with pytest.raises(ParameterError) as e:
         material.material_table(FILMS["SoapFilm"], gamut="squash")
     assert e.value.parameter == "gamut"
+
+
+# --------------------------------------------------------------------------- #
+# The fast engine: any axis, any worker count, the same bits
+# --------------------------------------------------------------------------- #
+@pytest.mark.parametrize("key", ["SoapFilm", "CoatedGold", "Temper"])
+def test_tables_are_the_same_bits_on_any_number_of_workers(key):
+    """Rows split among 1, 2 or 3 threads (and grouped differently by the pool's order):
+    the tables are equal bit for bit."""
+    film = FILMS[key]
+    t = material_tables.axis_nodes(*film.range_um, 200)
+    c = np.linspace(0.0, 1.0, 37)  # node-centred: grazing and normal incidence are rows
+    transmit = material_tables.free_standing(film)
+    one = material_tables.film_angle_XYZ(film, t, c, transmittance=transmit, workers=1)
+    for workers in (2, 3):
+        many = material_tables.film_angle_XYZ(film, t, c, transmittance=transmit, workers=workers)
+        assert np.array_equal(one[0], many[0]), (key, workers)
+        if transmit:
+            assert np.array_equal(one[1], many[1]), (key, workers)
+
+
+@pytest.mark.parametrize("key", ["SoapFilm", "OilOnWater", "AnodisedTitanium"])
+def test_node_centred_rows_include_grazing_and_normal_incidence(key):
+    """cos theta exactly 0 and 1 as rows (and an uneven thickness axis with 0): the colours
+    of an independent exact TMM (colour-science / PyPI tmm) at normal incidence and the
+    perfect reflector (R = 1, T = 0) at grazing incidence."""
+    import colour
+
+    film = FILMS[key]
+    lo, hi = film.range_um
+    t = np.array([0.0, 0.013, 0.25 * hi, 0.71 * hi, hi])  # not uniform: one exponential each
+    R, T = material_tables.film_angle_XYZ(film, t, [0.0, 0.5, 1.0], transmittance=True)
+    XYZ, white = _reference_XYZ(film, t[1:], np.ones(4))
+    dE = delta_E(R[2, 1:], XYZ, white)
+    assert dE.max() <= 0.2, (key, dE)
+    XYZ, white = _reference_XYZ(film, t[1:], np.full(4, 0.5))
+    assert delta_E(R[1, 1:], XYZ, white).max() <= 0.2
+    white_XYZ = colour.xy_to_XYZ(white)
+    np.testing.assert_allclose(R[0], np.broadcast_to(white_XYZ, R[0].shape), atol=2e-3)
+    np.testing.assert_allclose(T[0], 0.0, atol=1e-12)
+    assert np.all(np.isfinite(R)) and np.all(np.isfinite(T))
+
+
+def test_a_zero_thickness_column_at_grazing_incidence_keeps_the_recursions_rule():
+    """At cos theta = 0 and d = 0 Rouard's recursion divides 0 by 0 for a free-standing
+    film (|r01| = |r12| = 1, r01 r12 = -1); the interface's own reflection is kept there:
+    R = 1 (the white), T = 0, no NaN."""
+    film = FILMS["SoapFilm"]
+    R, T = material_tables.film_angle_XYZ(film, [0.0, 0.5], [0.0], transmittance=True)
+    assert np.all(np.isfinite(R)) and np.all(np.isfinite(T))
+    np.testing.assert_allclose(R[0, 0], R[0, 1], rtol=1e-12)
+    assert np.all(T == 0.0)
+
+
+# --------------------------------------------------------------------------- #
+# Fail fast: refused in under a second, before any computation, nothing written
+# --------------------------------------------------------------------------- #
+def _refusal(tmp_path, capsys, args, starts):
+    """Run ``export material`` with ``args``; it must be refused: exit 2, one line that
+    starts with ``starts``, quickly, with nothing written under ``tmp_path``."""
+    import time
+
+    before = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*"))
+    start = time.perf_counter()
+    code, err = _cli(["--films", "docs/films.toml", "--film", "SoapFilm", *args], capsys)
+    elapsed = time.perf_counter() - start
+    assert code == 2 and len(err.splitlines()) == 1, err
+    assert err.split("error: ", 1)[1].startswith(starts), err
+    # measured 0.05-0.2 s on the development machine (docs/materials.md); generous here
+    assert elapsed < 3.0, elapsed
+    assert sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*")) == before
+    return err
+
+
+def test_refuses_an_out_that_is_a_file(tmp_path, capsys):
+    (tmp_path / "a_file").write_text("x")
+    _refusal(tmp_path, capsys, ["--out", str(tmp_path / "a_file")], "--out ")
+
+
+def test_refuses_an_out_with_someone_elses_files(tmp_path, capsys):
+    (tmp_path / "theirs").mkdir()
+    (tmp_path / "theirs" / "notes.txt").write_text("a user's file")
+    err = _refusal(tmp_path, capsys, ["--out", str(tmp_path / "theirs")], "--out ")
+    assert "not written by ocio-thinfilm" in err
+
+
+def test_refuses_an_out_that_cannot_be_written(tmp_path, capsys):
+    # /proc refuses new files even to root (a chmod'ed directory does not)
+    err = _refusal(tmp_path, capsys, ["--out", "/proc/ocio-thinfilm-test"], "--out ")
+    assert "not writable" in err
+
+
+def test_refuses_a_read_only_parent(tmp_path, capsys):
+    import os
+
+    parent = tmp_path / "read-only"
+    parent.mkdir()
+    parent.chmod(0o555)
+    try:
+        if os.access(parent, os.W_OK):
+            pytest.skip("this user may write a read-only directory (root)")
+        _refusal(tmp_path, capsys, ["--out", str(parent / "out")], "--out ")
+    finally:
+        parent.chmod(0o755)
+
+
+@pytest.mark.parametrize(
+    ("extra", "starts"),
+    [
+        (["--size", "16384x16384", "--jobs", "1"], "--size 16384x16384: needs about "),
+        (["--jobs", "0"], "--jobs must be an integer in [1, "),
+        (["--jobs", "two"], "--jobs must be an integer, got 'two'"),
+        (["--space", "XYZ"], "--space must be a scene-linear space"),
+        (["--film", "Nope"], "--film must be one of"),
+    ],
+)
+def test_refuses_what_it_can_check_before_computing(tmp_path, capsys, extra, starts):
+    out = tmp_path / "out"
+    args = ["--out", str(out), *extra]
+    if "--film" in extra:  # replaces the film chosen by _refusal
+        args = ["--out", str(out), "--film", "Nope"]
+    err = _refusal(tmp_path, capsys, args, starts)
+    if extra[0] == "--size":  # the estimate: memory, time and the most texels allowed
+        assert " GB of memory" in err and " worker " in err and "million texels" in err
+
+
+def test_size_bound_names_the_estimates(monkeypatch):
+    """The library refuses a table larger than the memory or the time cap allow, with the
+    parameter's name; a size within both passes."""
+    film = FILMS["SoapFilm"]
+    from ocio_thinfilm.export import material_cost
+
+    assert material_cost.check_size(film, 432, 192, 1) == (432, 192)
+    monkeypatch.setattr(material_cost, "available_memory", lambda: 200 << 20)
+    with pytest.raises(ParameterError, match=r"^size 4000x4000: needs about 2.\d GB of memory"):
+        material_cost.check_size(film, 4000, 4000, 2)
+    with pytest.raises(ParameterError, match=r"^width 4000x4000: "):
+        material.material_table(film, width=4000, height=4000)
+
+
+class _Terminal:
+    """A stderr that says it is a terminal, keeping what is written."""
+
+    def __init__(self):
+        self.text = ""
+
+    def write(self, s):
+        self.text += s
+        return len(s)
+
+    def flush(self):
+        pass
+
+    def isatty(self):
+        return True
+
+
+def test_progress_bar_only_for_long_exports(tmp_path, monkeypatch):
+    """On a terminal: nothing for a short export (tqdm's delay of 2 s), and a bar over the
+    table's rows that reaches them all when it shows."""
+    import sys
+
+    from ocio_thinfilm.export import files
+
+    terminal = _Terminal()
+    monkeypatch.setattr(sys, "stderr", terminal)
+    material.export_material(FILMS["ARCoating"], tmp_path / "a", size="16x12", show_progress=True)
+    assert terminal.text == ""
+    shown = []
+    original = files.progress_bar
+
+    def at_once(show, total, desc, *, unit="file", delay=0.0):
+        bar = original(show, total, desc, unit=unit, delay=0.0)
+        shown.append(bar)
+        return bar
+
+    monkeypatch.setattr(files, "progress_bar", at_once)
+    material.export_material(FILMS["ARCoating"], tmp_path / "b", size="16x12", show_progress=True)
+    assert shown[0].n == shown[0].total == 12
+    assert "export material ARCoating" in terminal.text
+    terminal.text = ""
+    material.export_material(FILMS["ARCoating"], tmp_path / "c", size="16x12")  # not asked
+    assert terminal.text == ""

@@ -68,6 +68,26 @@ def test_matmul_is_one_fixed_order():
     assert reproducible.matmul(a[:, ::-1], np.ones(3)).tolist() == [1.0]
 
 
+def test_pairwise_sum_is_one_fixed_tree():
+    # halves: (1e16 + -1e16) + (1 + 1) = 2, where the sequential order (matmul's) gives 1
+    assert reproducible.pairwise_sum([1e16, 1.0, -1e16, 1.0]).tolist() == 2.0
+    assert reproducible.matmul([[1e16, 1.0, -1e16, 1.0]], np.ones(4)).tolist() == [1.0]
+    # an odd count folds the last term into the first: (1e16 + -1e16) + 1
+    assert reproducible.pairwise_sum([1e16, 1.0, -1e16]).tolist() == 1.0
+
+
+def test_pairwise_sum_agrees_with_numpy_and_rows_are_independent():
+    rng = np.random.default_rng(5)
+    a = rng.normal(size=(40, 421))
+    total = reproducible.pairwise_sum(a)
+    np.testing.assert_allclose(total, a.sum(axis=-1), rtol=0, atol=1e-12)
+    # a row's sum does not depend on the rows beside it (a table split among workers)
+    assert np.array_equal(reproducible.pairwise_sum(a[7:11]), total[7:11])
+    kept = a.copy()
+    reproducible.pairwise_sum(a)
+    assert np.array_equal(a, kept)  # a copy unless overwrite=True
+
+
 def test_canonical_removes_last_bit_noise_and_false_zeros():
     # colour-science's CMF at one wavelength under two OpenBLAS kernels, and the
     # interpolation noise around an exact zero
@@ -184,3 +204,48 @@ def test_renders_are_the_same_bytes_under_other_cpus(regenerated, tmp_path):
             if (directory / "render" / name).read_bytes() != (tmp_path / name).read_bytes()
         ]
         assert differ == [], f"{variant}: rendered files differ from this process's"
+
+
+#: A material table (the exact engine's fast path: coefficients, phasor powers, sums by
+#: halves) as bytes, for the regenerations below.
+_MATERIAL_SCRIPT = """
+import hashlib, sys
+import numpy as np
+from ocio_thinfilm.lut import material_tables
+from ocio_thinfilm.physics import films
+fs = films.read_films("docs/films.toml")
+digest = hashlib.sha256()
+for key in ("SoapFilm", "CoatedGold", "Temper"):
+    film = fs[key]
+    t = material_tables.axis_nodes(*film.range_um, 96)
+    c = np.linspace(0.0, 1.0, 13)
+    R, T = material_tables.film_angle_XYZ(film, t, c, transmittance=key == "SoapFilm", workers=2)
+    digest.update(R.tobytes())
+    if T is not None:
+        digest.update(T.tobytes())
+print(digest.hexdigest())
+"""
+
+
+def test_material_tables_are_the_same_bits_under_other_cpus():
+    # the float64 tables themselves (not only their float32 EXRs): every operation of the
+    # engine is correctly rounded or libm's
+    def run(extra_env):
+        env = dict(os.environ, **extra_env)
+        env["PYTHONPATH"] = str(ROOT) + os.pathsep + env.get("PYTHONPATH", "")
+        return subprocess.Popen(
+            [sys.executable, "-c", _MATERIAL_SCRIPT],
+            cwd=ROOT,
+            env=env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+
+    procs = {name: run(env) for name, env in {"default": {}, **VARIANTS}.items()}
+    digests = {}
+    for name, proc in procs.items():
+        stdout, stderr = proc.communicate(timeout=600)
+        assert proc.returncode == 0, f"{name}: {stderr[-2000:]}"
+        digests[name] = stdout.strip()
+    assert len(set(digests.values())) == 1, digests

@@ -239,6 +239,8 @@ def _run_material(args: argparse.Namespace) -> int:
         hosts=hosts,
         gamut=args.gamut,
         binaries=binaries,
+        workers=args.jobs,
+        show_progress=not args.quiet,
     )
     for path in written:
         print(f"wrote {path}")
@@ -573,6 +575,16 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
         "OCIO_THINFILM_materials_film extension, a fitted KHR_materials_iridescence "
         "fallback) and ocio_thinfilm_gltf.js, the three.js GLTFLoader plugin (docs/gltf.md)",
     )
+    mat.add_argument(
+        "--jobs",
+        "-j",
+        type=int,
+        default=None,
+        metavar="N",
+        help="threads that compute the tables, N >= 1 (default: the CPUs this process may "
+        "use); the files are the same bytes for any N",
+    )
+    mat.add_argument("--quiet", action="store_true", help="no progress bar")
     mat.set_defaults(func=_run_material)
 
 

@@ -187,7 +187,7 @@ def build_parser() -> argparse.ArgumentParser:
 PARAMETER_DEST = {
     None: {"value_range": "range", "fmt": "format", "out_dir": "out", "shaper": "resolve_shaper"},
     "bake": {"source": "into"},
-    "export": {"path": "out", "thickness_um": "thickness"},
+    "export": {"path": "out", "thickness_um": "thickness", "workers": "jobs"},
 }
 
 

@@ -13,9 +13,11 @@ objects).
   through the exported GLSL, to choose the compression's knobs (its style sheet and
   script: :mod:`.knob_page_script`);
 - :mod:`.hosts` -- a film's material tables in renderers: a Blender script, a three.js
-  module, a MaterialX document;
+  module, a glTF binary, a MaterialX document, a Mitsuba 3 BSDF;
 - :mod:`.material` -- a film as a renderer's material: its reflectance (and
   transmittance) over thickness x view angle as float EXRs (``export material``);
+- :mod:`.material_cost` -- what such a table costs (memory, time), checked before it
+  is computed;
 - :mod:`.bake` -- the config folder and the ``luts/`` set, written safely (``bake``);
 - :mod:`.merged` -- a studio config with the additions (``bake --into``) and ``.ocioz``
   archives.

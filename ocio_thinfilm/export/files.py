@@ -592,7 +592,9 @@ class LogProgress:
             print(self._line() + ", done", file=sys.stderr, flush=True)
 
 
-def progress_bar(show: bool, total: float, desc: str) -> tqdm | LogProgress | None:
+def progress_bar(
+    show: bool, total: float, desc: str, *, unit: str = "file", delay: float = 0.0
+) -> tqdm | LogProgress | None:
     """Return a progress display on stderr, or None.
 
     None unless ``show``; a tqdm bar where stderr is a terminal, else
@@ -607,6 +609,10 @@ def progress_bar(show: bool, total: float, desc: str) -> tqdm | LogProgress | No
         The bar's total (a count of steps, or 1.0 for fractions).
     desc : str
         Its label.
+    unit : str, optional
+        What a step is (default ``"file"``).
+    delay : float, optional
+        Seconds before the bar appears (tqdm's ``delay``): a shorter run prints nothing.
 
     Returns
     -------
@@ -622,7 +628,8 @@ def progress_bar(show: bool, total: float, desc: str) -> tqdm | LogProgress | No
     return tqdm(
         total=total,
         desc=desc,
-        unit="file",
+        unit=unit,
+        delay=delay,
         leave=False,
         file=sys.stderr,
         mininterval=0.2,

@@ -38,7 +38,8 @@ from ocio_thinfilm.checks import ParameterError, as_choice, as_count
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.config.data import ROLES, film_lut_stem
 from ocio_thinfilm.export.hosts import TableFiles
-from ocio_thinfilm.io import StrPath, atomic_directory, write_image
+from ocio_thinfilm.export.material_cost import check_size
+from ocio_thinfilm.io import StrPath, atomic_directory, claim_directory, write_image
 from ocio_thinfilm.lut import material_tables
 from ocio_thinfilm.physics.films import Film
 
@@ -245,6 +246,8 @@ def material_table(
     width: int | None = None,
     height: int | None = None,
     gamut: str = "keep",
+    workers: int | None = None,
+    progress: Callable[[int], object] | None = None,
 ) -> MaterialTable:
     """Return a film's reflectance (and transmittance) table over thickness x cos theta.
 
@@ -264,6 +267,11 @@ def material_table(
         hue line kept), for renderers that clamp negative colours per channel (Cycles,
         MaterialX's generated code); only for a space with a display's primaries
         (:func:`gamut_display`).
+    workers : int, optional
+        Threads (default :func:`~ocio_thinfilm.lut.material_tables.available_workers`);
+        the table is the same bits for any number.
+    progress : callable, optional
+        Called with the number of rows finished, as they finish.
 
     Returns
     -------
@@ -273,11 +281,27 @@ def material_table(
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
-        (``film``, ``space``, ``width``, ``height``, ``gamut``) a film whose incident
-        medium absorbs or whose range has zero width, a space that is not scene-linear, a
-        size out of range, a gamut choice not in :data:`GAMUTS` or a clip in a space
-        without a display's primaries.
+        (``film``, ``space``, ``width``, ``height``, ``gamut``, ``workers``) a film whose
+        incident medium absorbs or whose range has zero width, a space that is not
+        scene-linear, a size out of range or beyond what the machine can hold or finish
+        (:func:`~ocio_thinfilm.export.material_cost.check_size`), a gamut choice not in
+        :data:`GAMUTS` or a clip in a space without a display's primaries, a worker
+        count below 1.
     """
+    w, h, workers = _check_table(film, space, width, height, gamut, workers, "width")
+    return _in_space(film, _film_XYZ(film, w, h, workers, progress), space, gamut)
+
+
+def _check_table(
+    film: Film,
+    space: str,
+    width: int | None,
+    height: int | None,
+    gamut: str,
+    workers: int | None,
+    parameter: str,
+) -> tuple[int, int, int]:
+    """Check :func:`material_table`'s arguments; return the size and the workers."""
     material_tables.check_film(film)
     space = check_space(space)
     gamut = as_choice("gamut", gamut, GAMUTS)
@@ -294,18 +318,47 @@ def material_table(
     w0, h0 = material_tables.default_resolution(film)
     w = w0 if width is None else as_count("width", width, 2, MAX_SIZE)
     h = h0 if height is None else as_count("height", height, 2, MAX_SIZE)
+    workers = (
+        material_tables.available_workers()
+        if workers is None
+        else as_count("workers", workers, 1, 4096)
+    )
+    check_size(film, w, h, workers, parameter)
+    return w, h, workers
+
+
+def _film_XYZ(
+    film: Film, w: int, h: int, workers: int, progress: Callable[[int], object] | None
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Return the film's XYZ (R, and T or None) on the table's node-centred axes."""
     lo, hi = film.range_um
     t = material_tables.axis_nodes(lo, hi, w)
     c = material_tables.axis_nodes(0.0, 1.0, h)
     transmit = material_tables.free_standing(film)
-    XYZ_R, XYZ_T = material_tables.film_angle_XYZ(film, t, c, transmittance=transmit)
+    return material_tables.film_angle_XYZ(
+        film, t, c, transmittance=transmit, workers=workers, progress=progress
+    )
+
+
+def _in_space(
+    film: Film, XYZ: tuple[np.ndarray, np.ndarray | None], space: str, gamut: str
+) -> MaterialTable:
+    """Return the table of the film's XYZ in ``space`` (clipped into it for ``"clip"``)."""
+    display = gamut_display(space)
     colorimetry_name = registry.SCENE_LINEAR_BY_NAME[space].colorimetry
-    R = colorimetry.XYZ_to_RGB(XYZ_R, colorimetry_name)
-    T = None if XYZ_T is None else colorimetry.XYZ_to_RGB(XYZ_T, colorimetry_name)
+    R, T = (None if v is None else colorimetry.XYZ_to_RGB(v, colorimetry_name) for v in XYZ)
+    assert R is not None
     if gamut == "clip" and display is not None:
         R = clip.clip_RGB(R, display)
         T = None if T is None else clip.clip_RGB(T, display)
-    return MaterialTable(R, T, (lo, hi), space, film)
+    return MaterialTable(R, T, film.range_um, space, film)
+
+
+def _progress_bar(show: bool, rows: int, key: str) -> Any:
+    """Return a tqdm bar over the table's rows, shown after 2 s (short runs print nothing)."""
+    from ocio_thinfilm.export.files import progress_bar
+
+    return progress_bar(show, total=rows, desc=f"export material {key}", unit="row", delay=2.0)
 
 
 def _attributes(table: MaterialTable, quantity: str) -> dict[str, Any]:
@@ -474,6 +527,8 @@ def export_material(
     hosts: Mapping[str, HostWriter] | None = None,
     gamut: str = "keep",
     binaries: Mapping[str, BinaryWriter] | None = None,
+    workers: int | None = None,
+    show_progress: bool = False,
 ) -> list[Path]:
     """Write a film's material tables (and host files) into the directory ``out_dir``.
 
@@ -503,8 +558,13 @@ def export_material(
         ``"keep"`` (default) or ``"clip"`` (:func:`material_table`).
     binaries : mapping, optional
         File name -> binary writer (:data:`BinaryWriter`, e.g. :func:`gltf_files`):
-        called with the written tables' record and the table, its bytes written with the
-        tables (default none).
+        called with the written tables' record and the first space's table, its bytes
+        written with the tables (default none).
+    workers : int, optional
+        Threads (:func:`material_table`).
+    show_progress : bool, optional
+        Progress on stderr for an export longer than about 2 s: a bar on a terminal,
+        plain lines in a log (:func:`ocio_thinfilm.export.files.progress_bar`).
 
     Returns
     -------
@@ -514,21 +574,52 @@ def export_material(
     Raises
     ------
     ocio_thinfilm.checks.ParameterError
-        The errors of :func:`material_table` and :func:`parse_size` (``size``), and
-        (``out``) an output directory holding files this tool did not write.
+        The errors of :func:`material_table` and :func:`parse_size` (``size``, also a
+        size beyond what the machine can hold or finish:
+        :func:`~ocio_thinfilm.export.material_cost.check_size`), and
+        (``out``) an output directory holding files this tool did not write, a file
+        in its place.
+    ValueError
+        If ``out_dir`` cannot be created or written.
+
+    Notes
+    -----
+    Everything that can be checked is checked before the table is computed (in well
+    under a second, nothing written): the film, the space, the gamut, the size and its
+    cost, the workers, the host file names and the output directory.
     """
     dims = parse_size(size)
     width, height = (None, None) if dims is None else dims
     spaces = check_spaces(space)
+    checked = [_check_table(film, name, width, height, gamut, workers, "size") for name in spaces]
+    w, h, workers = checked[0]
     stem = film_lut_stem(film)
     out = Path(out_dir)
+    transmit = material_tables.free_standing(film)
+    stems = [space_stem(stem, name, first=i == 0) for i, name in enumerate(spaces)]
+    names = [f"{s}_{q}.exr" for s in stems for q in ("R", "T")[: 1 + transmit]]
+    for kind, writers in (("hosts", hosts), ("binaries", binaries)):
+        for name in writers or {}:
+            if Path(name).name != name or name in names:
+                raise ParameterError(kind, f" {name!r}: must be a new file name without folders")
+            names.append(name)
+    # the output directory: refused now, not after the computation (nothing is written)
+    try:
+        claim_directory(out, parameter="out", keep_others=True)
+    except ParameterError:
+        raise
+    except ValueError as error:  # not writable: name the parameter too
+        raise ParameterError("out", f" {error}") from None
+    bar = _progress_bar(show_progress, h, film.key)
+    try:  # the film's colours once, then each space's RGB
+        XYZ = _film_XYZ(film, w, h, workers, None if bar is None else bar.update)
+    finally:
+        if bar is not None:
+            bar.close()
+    tables = [_in_space(film, XYZ, name, gamut) for name in spaces]
     images: dict[str, tuple[str, np.ndarray, MaterialTable]] = {}
     records = []
-    first_table: MaterialTable | None = None
-    for i, name in enumerate(spaces):
-        table = material_table(film, space=name, width=width, height=height, gamut=gamut)
-        first_table = first_table or table
-        tables_stem = space_stem(stem, name, first=i == 0)
+    for table, tables_stem in zip(tables, stems, strict=True):
         images[f"{tables_stem}_R.exr"] = ("reflectance", table.reflectance, table)
         if table.transmittance is not None:
             images[f"{tables_stem}_T.exr"] = ("transmittance", table.transmittance, table)
@@ -547,16 +638,9 @@ def export_material(
             )
         )
     files = dataclasses.replace(records[0], others=tuple(records[1:]))
-    texts: dict[str, str | bytes] = {}
-    for name, writer in (hosts or {}).items():
-        if Path(name).name != name or name in images:
-            raise ParameterError("hosts", f" {name!r}: must be a new file name without folders")
-        texts[name] = writer(files)
+    texts: dict[str, str | bytes] = {name: writer(files) for name, writer in (hosts or {}).items()}
     for name, binary in (binaries or {}).items():
-        if Path(name).name != name or name in images or name in texts:
-            raise ParameterError("binaries", f" {name!r}: must be a new file name without folders")
-        assert first_table is not None  # check_spaces gives at least one space
-        texts[name] = binary(files, first_table)
+        texts[name] = binary(files, tables[0])
     with atomic_directory(out, parameter="out", keep_others=True) as stage:
         for name, (quantity, pixels, table) in images.items():
             # the EXR's first scanline is the top: cos theta descending

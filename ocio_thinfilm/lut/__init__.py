@@ -5,6 +5,8 @@
 - :mod:`.film_tables` -- the tables of users' films (physical thickness -> XYZ);
 - :mod:`.material_tables` -- a film's colour over thickness x view angle (the
   material tables of ``export material``);
+- :mod:`.material_engine` -- their numeric core: a group of rows evaluated from the
+  stack's phasor coefficients, on any number of threads with the same bits;
 - :mod:`.film_lights` -- a film under a coloured light: the spectral colour against an
   RGB renderer's product of RGBs (docs/rgb_vs_spectral.md);
 - :mod:`.khr_iridescence` -- what glTF viewers draw for ``KHR_materials_iridescence``
@@ -28,6 +30,7 @@ __all__ = [
     "tables",
     "film_tables",
     "material_tables",
+    "material_engine",
     "film_lights",
     "khr_iridescence",
     "iridescence_fit",

@@ -22,15 +22,16 @@ both ends of the thickness range are table values, not extrapolations),
 
 from __future__ import annotations
 
-import dataclasses
+import concurrent.futures
 import math
+import os
+from collections.abc import Callable
 
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import reproducible
-from ocio_thinfilm.checks import ParameterError, as_array
-from ocio_thinfilm.lut import film_tables
+from ocio_thinfilm.checks import ParameterError, as_array, as_count
+from ocio_thinfilm.lut import film_tables, material_engine
 from ocio_thinfilm.physics import exact
 from ocio_thinfilm.physics import films as films_module
 from ocio_thinfilm.physics.films import INCIDENT_MAX_K, Film
@@ -47,6 +48,8 @@ __all__ = [
     "axis_nodes",
     "texture_coordinate",
     "default_resolution",
+    "available_workers",
+    "sample_count",
     "film_angle_XYZ",
 ]
 
@@ -66,8 +69,9 @@ DEFAULT_HEIGHT = 192
 MAX_SHARPNESS = 0.5
 #: Blocks of columns (by thickness) with a wavelength grid each.
 _COLUMN_BLOCKS = 8
-#: Spectral samples per block of spectra (thicknesses x wavelengths).
-_BLOCK_SAMPLES = 1 << 20
+#: Rows (and their samples: wavelengths x blocks) per unit of work of a thread.
+_GROUP_ROWS = 16
+_GROUP_SAMPLES = 1 << 14
 
 
 def _visible_index(material) -> np.ndarray:
@@ -215,7 +219,7 @@ def default_resolution(film: Film) -> tuple[int, int]:
     return int(min(MAX_WIDTH, max(MIN_WIDTH, width))), DEFAULT_HEIGHT
 
 
-def _grid(film: Film, top_nm: float) -> np.ndarray:
+def _grid(film: Film, top_nm: float, sharpness: float | None = None) -> np.ndarray:
     """Return the wavelengths of one block: the film's grid, its count rounded up on a ladder.
 
     :func:`~ocio_thinfilm.physics.films.film_wavelengths` for the block's thickest
@@ -223,12 +227,20 @@ def _grid(film: Film, top_nm: float) -> np.ndarray:
     few grids serve every film and angle, so their colorimetric weights are computed
     once (and cached on disk, :func:`ocio_thinfilm.colour.colorimetry.spectral_weights`).
     """
-    wl = films_module.film_wavelengths(film, top_nm, MAX_SHARPNESS)
     if film.model == "paper":
-        return wl
-    m = max(0, math.ceil(2.0 * math.log2(max(wl.size - 1, 1) / 50.0) - 1e-9))
-    count = 1 + round(50 * 2 ** (m / 2))
-    return np.linspace(wl[0], wl[-1], count)
+        return films_module.film_wavelengths(film, top_nm, MAX_SHARPNESS)
+    return _grids(film, [top_nm], sharpness)[0]
+
+
+def _grids(film: Film, tops_nm: npt.ArrayLike, sharpness: float | None) -> list[np.ndarray]:
+    """:func:`_grid` of the exact model for several blocks' tops at once."""
+    out = []
+    for size in films_module.film_wavelength_counts(
+        film, tops_nm, MAX_SHARPNESS, sharpness=sharpness
+    ):
+        m = max(0, math.ceil(2.0 * math.log2(max(size - 1, 1) / 50.0) - 1e-9))
+        out.append(np.linspace(*VISIBLE_NM, 1 + round(50 * 2 ** (m / 2))))
+    return out
 
 
 def film_spectra(
@@ -251,14 +263,127 @@ def film_spectra(
     return exact.stack_reflectance(n, film.thickness_nm, film.vary, d_nm, wl, film.angle_deg), None
 
 
+def available_workers() -> int:
+    """Return the CPUs this process may run on (its affinity, else ``os.cpu_count()``).
+
+    Returns
+    -------
+    int
+        At least 1.
+    """
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _plan(film: Film, d: np.ndarray, c: np.ndarray) -> list[list[material_engine.Block]]:
+    """Return each row's blocks: the serial, cheap part (grids, weights, indices).
+
+    Columns in blocks of thickness (:data:`_COLUMN_BLOCKS`), each on the grid its
+    thickest column needs at the row's angle (:func:`_grid`); grids, weights and indices
+    are computed once per distinct grid.
+    """
+    order = np.argsort(d, kind="stable")
+    blocks = [b for b in np.array_split(order, max(1, min(_COLUMN_BLOCKS, d.size // 64))) if b.size]
+    known: dict[bytes, tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray]] = {}
+    plan = []
+    angles = np.degrees(np.arccos(c))
+    sharpness = None if film.model == "paper" else films_module.fringe_sharpness(film, angles)
+    for j, cosine in enumerate(c):
+        row_film = material_engine.row_film(film, float(cosine))
+        sharp = None if sharpness is None else float(sharpness[j])
+        row = []
+        tops = [float(d[cols].max()) for cols in blocks]
+        if film.model == "paper":
+            grids = [_grid(row_film, top) for top in tops]
+        else:
+            grids = _grids(row_film, tops, sharp)
+        for cols, wl in zip(blocks, grids, strict=True):
+            key = wl.tobytes()
+            if key not in known:
+                n = None if film.model == "paper" else np.stack([m.index(wl) for m in film.stack])
+                wT = np.ascontiguousarray(film_tables.film_weights(film, wl).T)
+                known[key] = (wl, wT, n, material_engine.weigh(np.ones((1, wl.size)), wT)[:, 0])
+            wl, wT, n, white = known[key]
+            row.append(material_engine.Block(cols, wl, wT, n, white))
+        plan.append(row)
+    return plan
+
+
+def sample_count(film: Film, width: int, height: int, *, rows: int = 9) -> float:
+    r"""Estimate the (thickness, wavelength) samples :func:`film_angle_XYZ` evaluates.
+
+    A table of ``width`` x ``height`` texels (node-centred axes) evaluates each column
+    block on its own wavelength grid per row; the grids of ``rows`` rows spread over
+    cos theta stand for all (their mean per row, times ``height``). For the cost checks
+    of :func:`ocio_thinfilm.export.material_cost.check_size`: milliseconds for any size.
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    width, height : int
+        The table's size.
+    rows : int, optional
+        Rows sampled.
+
+    Returns
+    -------
+    float
+        Estimated samples (texels x wavelengths).
+
+    Examples
+    --------
+    >>> from ocio_thinfilm.physics.films import parse_films
+    >>> film = parse_films('[films.S]\nstack = ["air", "MgF2", "BK7"]\nrange_um = [0, 0.5]')["S"]
+    >>> samples = sample_count(film, 160, 192)  # 380-780 nm: at least 51 a texel
+    >>> bool(160 * 192 * 51 <= samples <= 160 * 192 * 20001)
+    True
+    """
+    lo, hi = film.range_um
+    d = axis_nodes(lo, hi, width) * 1000.0
+    c = axis_nodes(0.0, 1.0, max(2, min(rows, height)))
+    order = np.argsort(d, kind="stable")
+    blocks = [b for b in np.array_split(order, max(1, min(_COLUMN_BLOCKS, d.size // 64))) if b.size]
+    tops = [float(d[b].max()) for b in blocks]
+    total = 0.0
+    for cosine in c:
+        row_film = material_engine.row_film(film, float(cosine))
+        sharp = None if film.model == "paper" else float(films_module.fringe_sharpness(row_film))
+        grids = (
+            [_grid(row_film, top) for top in tops]
+            if film.model == "paper"
+            else _grids(row_film, tops, sharp)
+        )
+        total += sum(b.size * wl.size for b, wl in zip(blocks, grids, strict=True))
+    return total / c.size * height
+
+
 def film_angle_XYZ(
     film: Film,
     thickness_um: npt.ArrayLike,
     cos_theta: npt.ArrayLike,
     *,
     transmittance: bool = False,
+    workers: int | None = None,
+    progress: Callable[[int], object] | None = None,
 ) -> tuple[np.ndarray, np.ndarray | None]:
     r"""Return CIE XYZ of a film's reflectance (and transmittance) over thickness x cos theta.
+
+    The exact model is evaluated through
+    :func:`~ocio_thinfilm.physics.phasor.stack_coefficients`: per row (cos theta) and
+    wavelength grid the stack reduces to coefficients that do not depend on the
+    varying thickness, and each (thickness, wavelength) sample costs a few real
+    operations on the layer's phasor ``z = exp(i phase d)``; on a uniform thickness
+    axis ``z`` is one exponential per run of :data:`_RUN` columns times powers of one
+    step's phasor. Where Rouard's recursion would divide by zero (grazing incidence on
+    an absentee layer) the sample is evaluated by
+    :func:`~ocio_thinfilm.physics.exact.stack_transmittance` and its rule. Every
+    operation is elementwise and correctly rounded, or libm's complex exponential, and
+    the integration is :func:`ocio_thinfilm.reproducible.matmul`: the same bits on every
+    CPU, and for any ``workers`` (rows are split among threads, a row's arithmetic
+    never depends on the split).
 
     Parameters
     ----------
@@ -268,9 +393,15 @@ def film_angle_XYZ(
         1-D physical thicknesses of the varying layer, um, >= 0 (the columns).
     cos_theta : array_like
         1-D cosines of the angle of incidence in the incident medium, in [0, 1] (the
-        rows).
+        rows; 0 and 1 exactly are grazing and normal incidence).
     transmittance : bool, optional
         Also the transmittance (the incident medium must not absorb).
+    workers : int, optional
+        Threads that evaluate rows (numpy releases the GIL in its loops); default
+        :func:`available_workers`.
+    progress : callable, optional
+        Called with the number of rows finished, as they finish (a progress bar's
+        ``update``).
 
     Returns
     -------
@@ -279,6 +410,11 @@ def film_angle_XYZ(
         D65 white with Y = 1 (the film's illuminant adapted to D65).
     XYZ_T : numpy.ndarray or None
         The same for the transmittance, or None.
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        (``thickness_um``, ``cos_theta``, ``workers``) out of range or not 1-D.
 
     Examples
     --------
@@ -294,24 +430,41 @@ def film_angle_XYZ(
     c = np.atleast_1d(as_array("cos_theta", cos_theta, minimum=0.0, maximum=1.0))
     if t.ndim != 1 or c.ndim != 1:
         raise ParameterError("thickness_um", " and cos_theta must be 1-D")
+    workers = available_workers() if workers is None else as_count("workers", workers, 1, 4096)
     d = t * 1000.0
     out_R = np.empty((c.size, d.size, 3))
     out_T = np.empty((c.size, d.size, 3)) if transmittance else None
-    # columns in blocks of thickness, each on the grid its thickest column needs
-    order = np.argsort(d, kind="stable")
-    blocks = np.array_split(order, max(1, min(_COLUMN_BLOCKS, d.size // 64)))
-    for row, cosine in enumerate(c):
-        row_film = dataclasses.replace(film, angle_deg=float(np.degrees(np.arccos(cosine))))
-        for cols in blocks:
-            if cols.size == 0:
-                continue
-            wl = _grid(row_film, float(d[cols].max()))
-            w = film_tables.film_weights(film, wl)
-            step = max(1, _BLOCK_SAMPLES // wl.size)
-            for start in range(0, cols.size, step):
-                part = cols[start : start + step]
-                R, T = film_spectra(row_film, d[part], wl, transmittance)
-                out_R[row, part] = reproducible.matmul(R, w)
-                if out_T is not None and T is not None:
-                    out_T[row, part] = reproducible.matmul(T, w)
+    plan = _plan(film, d, c)
+    # groups of consecutive rows: one coefficient call each, the unit of work of a thread
+    groups, start, samples = [], 0, 0
+    for j, row in enumerate(plan):
+        samples += sum(blk.wl.size for blk in row)
+        if samples >= _GROUP_SAMPLES or j + 1 - start >= _GROUP_ROWS or j + 1 == len(plan):
+            groups.append(slice(start, j + 1))
+            start, samples = j + 1, 0
+
+    def run(rows: slice) -> int:
+        material_engine.evaluate_rows(
+            film,
+            c[rows],
+            d,
+            plan[rows],
+            transmittance,
+            out_R[rows],
+            None if out_T is None else out_T[rows],
+            film_spectra,
+        )
+        return rows.stop - rows.start
+
+    if workers == 1 or len(groups) == 1:
+        for rows in groups:
+            done = run(rows)
+            if progress is not None:
+                progress(done)
+    else:
+        with concurrent.futures.ThreadPoolExecutor(min(workers, len(groups))) as pool:
+            for future in concurrent.futures.as_completed([pool.submit(run, g) for g in groups]):
+                done = future.result()
+                if progress is not None:
+                    progress(done)
     return out_R, out_T

@@ -664,7 +664,7 @@ def adequate_step(
 
 
 def interface_amplitudes(
-    n_media: npt.ArrayLike, theta: float = 0.0
+    n_media: npt.ArrayLike, theta: npt.ArrayLike = 0.0
 ) -> list[tuple[np.ndarray, np.ndarray]]:
     """Return the Fresnel amplitudes ``(r_s, r_p)`` of every interface of a stack.
 
@@ -675,8 +675,8 @@ def interface_amplitudes(
     ----------
     n_media : array_like
         Complex indices, shape ``(media, ...)``: the incident medium first.
-    theta : float, optional
-        Angle of incidence, degrees in [0, 90].
+    theta : float or array_like, optional
+        Angle of incidence, degrees in [0, 90] (an array broadcasts with the indices).
 
     Returns
     -------

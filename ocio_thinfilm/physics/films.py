@@ -53,6 +53,8 @@ __all__ = [
     "read_films",
     "check_names",
     "film_wavelengths",
+    "film_wavelength_counts",
+    "fringe_sharpness",
     "paper_parameters",
     "film_reflectance",
 ]
@@ -61,34 +63,93 @@ __all__ = [
 # --------------------------------------------------------------------------- #
 # Spectra
 # --------------------------------------------------------------------------- #
-def _optical_path_nm(film: Film, max_thickness_nm: float) -> float:
-    """Return the stack's longest round-trip optical path (nm), for the wavelength step."""
+def _optical_path_nm(film: Film, max_thickness_nm: npt.ArrayLike) -> np.ndarray:
+    """Return the stack's longest round-trip optical path (nm), for the wavelength step.
+
+    For each of ``max_thickness_nm`` (the varying layer's), in the same order of
+    additions for each: the values do not depend on how many are asked for.
+    """
     wl = np.array([VISIBLE_NM[0]])
     sin0 = film.stack[0].index(wl).real * np.sin(np.deg2rad(film.angle_deg))
-    total = 0.0
+    total: np.ndarray = np.zeros(np.shape(max_thickness_nm))
     for j, layer in enumerate(film.layers):
         n = layer.index(wl)
         ncos = np.sqrt(n * n - sin0 * sin0 + 0j)
-        d = max_thickness_nm if j == film.vary else film.thickness_nm[j]
-        total += 2.0 * float(np.abs(ncos.real).max()) * d
+        d = np.asarray(max_thickness_nm, float) if j == film.vary else film.thickness_nm[j]
+        total = total + 2.0 * float(np.abs(ncos.real).max()) * d
     return total
 
 
-def _sharpness(film: Film) -> float:
+def film_wavelength_counts(
+    film: Film,
+    max_thickness_nm: npt.ArrayLike,
+    max_sharpness: float = 1.0,
+    *,
+    sharpness: float | None = None,
+) -> list[int]:
+    """Return how many wavelengths :func:`film_wavelengths` takes for several thicknesses.
+
+    The exact model's counts for each of ``max_thickness_nm`` at once (the material tables
+    plan several blocks of thickness at each angle); the grid is
+    ``numpy.linspace(380, 780, count)``.
+
+    Parameters
+    ----------
+    film : Film
+        The film (exact model).
+    max_thickness_nm : array_like
+        1-D, the thickest the varying layer gets, nm.
+    max_sharpness : float, optional
+        As :func:`film_wavelengths`.
+    sharpness : float, optional
+        As :func:`film_wavelengths`.
+
+    Returns
+    -------
+    list of int
+        One count per thickness.
+    """
+    sharp = float(fringe_sharpness(film) if sharpness is None else sharpness)
+    paths = np.atleast_1d(_optical_path_nm(film, np.atleast_1d(max_thickness_nm)))
+    counts = []
+    for path in paths.tolist():
+        step = exact.adequate_step(path, VISIBLE_NM[0], sharpness=min(sharp, max_sharpness))
+        counts.append(int(math.ceil((VISIBLE_NM[1] - VISIBLE_NM[0]) / step)) + 1)
+    return counts
+
+
+def fringe_sharpness(film: Film, angles_deg: npt.ArrayLike | None = None) -> np.ndarray:
     """Return ``max |r_a r_b|`` of the varying layer's two interfaces.
 
     The maximum is over the visible and both polarisations: how sharp the layer's Airy
     fringes get (:func:`exact.adequate_step`).
+
+    Parameters
+    ----------
+    film : Film
+        The film.
+    angles_deg : array_like, optional
+        Angles of incidence (degrees), default the film's ``angle_deg``.
+
+    Returns
+    -------
+    numpy.ndarray
+        In [0, 1], the shape of ``angles_deg`` (0-d without it).
     """
     wl = np.linspace(*VISIBLE_NM, 41)
     n = np.stack([m.index(wl) for m in film.stack])
-    amplitudes = exact.interface_amplitudes(n, film.angle_deg)
+    angles = np.asarray(film.angle_deg if angles_deg is None else angles_deg, dtype=np.float64)
+    amplitudes = exact.interface_amplitudes(n, angles[..., None])
     above, below = amplitudes[film.vary], amplitudes[film.vary + 1]
-    return float(max(np.abs(above[p] * below[p]).max() for p in (0, 1)))
+    return np.maximum(*(np.abs(above[p] * below[p]).max(axis=-1) for p in (0, 1)))
 
 
 def film_wavelengths(
-    film: Film, max_thickness_nm: float | None = None, max_sharpness: float = 1.0
+    film: Film,
+    max_thickness_nm: float | None = None,
+    max_sharpness: float = 1.0,
+    *,
+    sharpness: float | None = None,
 ) -> np.ndarray:
     """Return the wavelength grid (nm) a film's spectra are evaluated on.
 
@@ -107,6 +168,9 @@ def film_wavelengths(
     max_sharpness : float, optional
         A cap on the fringes' sharpness the step resolves (the material tables' measured
         choice, :mod:`ocio_thinfilm.lut.material_tables`).
+    sharpness : float, optional
+        The film's :func:`fringe_sharpness`, if the caller has it (it depends on the
+        angle only; the material tables ask for several thicknesses at each angle).
 
     Returns
     -------
@@ -117,10 +181,7 @@ def film_wavelengths(
         start = 360.0 if all(m.covers(360.0, 780.0) for m in film.stack) else 380.0
         return wavelength_grid(start, 780.0, 5.0)
     top = film.range_um[1] * 1000.0 if max_thickness_nm is None else float(max_thickness_nm)
-    step = exact.adequate_step(
-        _optical_path_nm(film, top), VISIBLE_NM[0], sharpness=min(_sharpness(film), max_sharpness)
-    )
-    count = int(math.ceil((VISIBLE_NM[1] - VISIBLE_NM[0]) / step)) + 1
+    (count,) = film_wavelength_counts(film, [top], max_sharpness, sharpness=sharpness)
     return check_wavelengths(np.linspace(VISIBLE_NM[0], VISIBLE_NM[1], count))
 
 
