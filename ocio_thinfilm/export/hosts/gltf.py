@@ -4,7 +4,8 @@
 
 - ``KHR_materials_iridescence`` (with ``KHR_materials_ior`` and the base colour /
   metalness), the fallback every viewer draws, its parameters fitted to the film
-  (:mod:`ocio_thinfilm.lut.iridescence_fit`);
+  (:mod:`ocio_thinfilm.lut.iridescence_fit`); for a free-standing film also
+  ``KHR_materials_transmission`` (factor 1, the base colour the tint of the film's T);
 - :data:`EXTENSION`, the exact film: its reflectance (and transmittance) table as float
   data in the binary chunk, node-centred, over ``range_um`` x cos theta, and the same
   thickness texture; listed in ``extensionsUsed`` only, so viewers without it fall back;
@@ -176,7 +177,7 @@ def _material(
     name: str, fallback: KHRIridescence, film: dict[str, Any], texture: int
 ) -> dict[str, Any]:
     lo_nm, hi_nm = fallback.thickness_nm
-    return {
+    out: dict[str, Any] = {
         "name": name,
         "pbrMetallicRoughness": {
             "baseColorFactor": [*[float(c) for c in fallback.base_colour], 1.0],
@@ -195,6 +196,11 @@ def _material(
             EXTENSION: film,
         },
     }
+    if fallback.transmission > 0.0:
+        out["extensions"]["KHR_materials_transmission"] = {
+            "transmissionFactor": float(fallback.transmission)
+        }
+    return out
 
 
 def gltf_binary(
@@ -259,6 +265,8 @@ def gltf_binary(
         accessors.append(_table_accessor(buffer, T))
         film["transmittance"] = len(accessors) - 1
     used = ["KHR_materials_ior", "KHR_materials_iridescence", EXTENSION]
+    if fallback.transmission > 0.0:
+        used.insert(2, "KHR_materials_transmission")
     document = {
         "asset": {"version": "2.0", "generator": f"ocio-thinfilm {__version__}"},
         "extensionsUsed": used,
