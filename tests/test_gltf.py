@@ -39,6 +39,8 @@ TOLERANCE = 2.0  # 8-bit codes
 FILMS = read_films("docs/films.toml")
 #: (film, table size, thickness texture value g (8-bit code))
 GLB_FILMS = [("SoapFilm", (96, 32), 140), ("AnodisedTitanium", (64, 32), 100)]
+#: The linear colours of the checker behind a free-standing film (8 squares a side).
+CHECKER = [[0.8, 0.25, 0.05], [0.05, 0.4, 0.9]]
 
 
 @pytest.fixture(scope="module")
@@ -60,7 +62,9 @@ def validator():
 def _small_glb(key, size, code=None):
     film = FILMS[key]
     table = material.material_table(film, width=size[0], height=size[1])
-    target = iridescence_fit.target_from_table(film, table.reflectance, table.range_um, 24, 8)
+    target = iridescence_fit.target_from_table(
+        film, table.reflectance, table.range_um, 24, 8, transmittance=table.transmittance
+    )
     fallback = iridescence_fit.fit_iridescence(target, keep=1, halvings=3)
     thickness = None if code is None else np.full((4, 4), code, np.uint8)
     data = gltf.gltf_binary(
@@ -171,21 +175,29 @@ def test_the_port_draws_what_threejs_draws(chromium, three, tmp_path):
 
 @pytest.mark.parametrize(("key", "size", "code"), GLB_FILMS)
 def test_the_glb_in_threejs(chromium, three, tmp_path, key, size, code):
+    """With the plugin the .glb is the film module's film (R, and for a free-standing film
+    T times the checker behind it); without it three.js's own KHR materials."""
     film, table, fallback, data = _small_glb(key, size, code)
     out = tmp_path / "tables"
-    hosts = {"film.js": lambda f: three_module(f.key, f.reflectance, f.range_um)}
+    hosts = {
+        "film.js": lambda f: three_module(
+            f.key, f.reflectance, f.range_um, transmittance_exr=f.transmittance
+        )
+    }
     written = material.export_material(film, out, size=size, hosts=hosts)
     files = {p.name: p.read_bytes() for p in written}
     files.update({"film.glb": data, gltf.PLUGIN_NAME: gltf.plugin_module().encode()})
     g = code / 255.0
     lo, hi = table.range_um
     hand = replace(fallback, thickness_nm=(fallback.thickness(g),) * 2)  # type: ignore[arg-type]
+    back = {} if table.transmittance is None else {"checker": CHECKER}
     cases = [
-        {"kind": "gltf", "url": "film.glb", "plugin": True},
+        {"kind": "gltf", "url": "film.glb", "plugin": True, **back},
         {"kind": "module", "url": "film.glb", "module": "film.js", "thickness": lo + g * (hi - lo)},
-        {"kind": "gltf", "url": "film.glb", "plugin": False},
-        _by_hand(hand, kind="hand", url="film.glb"),
+        {"kind": "gltf", "url": "film.glb", "plugin": False, **back},
+        _by_hand(hand, kind="hand", url="film.glb", transmission=hand.transmission, **back),
     ]
+    cases[1].update(back)
     plugin, module, fallback_frame, by_hand = (
         f[:, :, :3].astype(int) for f in _frames(chromium, three, tmp_path, files, cases)
     )
@@ -196,6 +208,21 @@ def test_the_glb_in_threejs(chromium, three, tmp_path, key, size, code):
     assert d_plugin <= TOLERANCE and d_fallback <= TOLERANCE
     # the plugin does replace the fallback
     assert np.abs(plugin - fallback_frame)[inside].max() > 10
+    if back:
+        # the checker shows through the film: its squares differ inside the sphere
+        _assert_transmits(plugin, inside)
+
+
+def _assert_transmits(frame, inside):
+    """The film transmits the checker: inside the sphere the two squares' pixels differ
+    as T times the checker's difference does (a black-backed mirror would not)."""
+    n = 8
+    cells = (np.arange(SIZE) * n // SIZE)[:, None] + (np.arange(SIZE) * n // SIZE)[None, :]
+    even = (cells % 2 == 0) & inside
+    odd = (cells % 2 == 1) & inside
+    gap = np.abs(frame[even].mean(axis=0) - frame[odd].mean(axis=0))
+    print(f"checker squares through the film, mean code difference {gap.round(1)}")
+    assert gap.max() > 40, gap
 
 
 def test_the_validator_finds_no_errors_or_warnings(validator, tmp_path):
