@@ -17,9 +17,11 @@ Skips, with the reason, without Chromium, node or npm.
 from __future__ import annotations
 
 import base64
+import json
 import re
 import struct
 from dataclasses import replace
+from pathlib import Path
 
 import colour
 import numpy as np
@@ -33,6 +35,7 @@ from ocio_thinfilm.export.hosts.three import three_module
 from ocio_thinfilm.lut import iridescence_fit, khr_iridescence
 from ocio_thinfilm.physics.films import read_films
 
+ROOT = Path(__file__).resolve().parents[1]
 SIZE = 256
 RADIUS = 0.9  # N·V >= 0.44, as tests/test_three_material.py
 TOLERANCE = 2.0  # 8-bit codes
@@ -326,6 +329,48 @@ def test_the_fit_is_never_worse_than_the_defaults(key):
     assert np.percentile(errors[1], 95) < np.percentile(errors[0], 95)
 
 
+def _document(data):
+    length = struct.unpack_from("<I", data, 12)[0]
+    return json.loads(data[20 : 20 + length])
+
+
+def test_a_free_standing_film_transmits_in_the_fallback():
+    """A bubble's fallback carries KHR_materials_transmission (factor 1) with the base
+    colour the least-squares tint of its T under three.js's (1 - F) weight (base ior 1:
+    F the mirror's (1 - N·V)^5); a film on a metal carries none."""
+    film, table, fallback, data = _small_glb("SoapFilm", (48, 16))
+    document = _document(data)
+    (mat,) = document["materials"]
+    assert "KHR_materials_transmission" in document["extensionsUsed"]
+    assert mat["extensions"]["KHR_materials_transmission"] == {"transmissionFactor": 1.0}
+    assert mat["extensions"]["KHR_materials_ior"]["ior"] == 1.0
+    # the tint, from the table: the fit's 24 x 8 nodes
+    h, w = table.reflectance.shape[:2]
+    cols = np.round(np.linspace(0, w - 1, 24)).astype(int)
+    rows = np.round(np.linspace(0, h - 1, 8)).astype(int)
+    T = table.transmittance[rows][:, cols].reshape(-1, 3)
+    weight = np.repeat(1.0 - (1.0 - rows / (h - 1)) ** 5, len(cols))[:, None]
+    tint = (weight * T).sum(axis=0) / (weight**2).sum()
+    base = mat["pbrMetallicRoughness"]["baseColorFactor"]
+    assert base[:3] == pytest.approx(tint, abs=1e-4) and base[3] == 1.0
+    assert 0.85 < min(tint) and max(tint) < 1.0  # a nearly clear film
+    metal = _document(_small_glb("AnodisedTitanium", (48, 16))[3])
+    assert "KHR_materials_transmission" not in metal["extensionsUsed"]
+    assert "KHR_materials_transmission" not in metal["materials"][0]["extensions"]
+
+
+def test_the_doc_quotes_the_benchmark(load_benchmark, marked):
+    """docs/gltf.md's fallback tables are what benchmarks/bench_gltf_fallback.py wrote
+    (reports/bench_gltf_fallback.json), every film of docs/films.toml."""
+    bench = load_benchmark("bench_gltf_fallback")
+    result = json.loads((ROOT / "reports" / "bench_gltf_fallback.json").read_text())
+    assert [r["film"] for r in result["rows"]] == list(FILMS)
+    doc = (ROOT / "docs" / "gltf.md").read_text()
+    assert marked(doc, bench.BEGIN, bench.END) == bench.markdown(result)
+    free = [r["film"] for r in result["rows"] if "transmission_on_grey" in r]
+    assert free == ["SoapFilm"]
+
+
 # --------------------------------------------------------------------------- #
 # Bad input: one line naming the option or key, exit 2, nothing written
 # --------------------------------------------------------------------------- #
@@ -377,9 +422,11 @@ for material in bpy.data.materials:
     principled = next((n for n in nodes if n.type == "BSDF_PRINCIPLED"), None)
     inputs = {}
     if principled is not None:
-        for name in ("Metallic", "IOR", "Thin Film IOR", "Thin Film Thickness"):
+        for name in ("Metallic", "IOR", "Thin Film IOR", "Thin Film Thickness",
+                     "Transmission Weight", "Base Color"):
             if name in principled.inputs:
-                inputs[name] = principled.inputs[name].default_value
+                value = principled.inputs[name].default_value
+                inputs[name] = value if isinstance(value, float) else list(value)
     report["materials"][material.name] = inputs
 report["meshes"] = len(bpy.data.meshes)
 with open(sys.argv[2], "w") as f:
@@ -389,9 +436,9 @@ with open(sys.argv[2], "w") as f:
 
 def test_blender_imports_the_glb(tmp_path):
     """PyPI bpy's glTF importer reads the .glb without error: the sample sphere and its
-    material, the fallback's iridescence IOR as the Principled BSDF's Thin Film IOR (the
-    vendor extension is ignored, as for every viewer without the plugin)."""
-    import json
+    material, the fallback's iridescence IOR as the Principled BSDF's Thin Film IOR and
+    its transmission as Transmission Weight over the base colour (the vendor extension is
+    ignored, as for every viewer without the plugin)."""
     import subprocess
 
     from evaluation import blender
@@ -418,3 +465,6 @@ def test_blender_imports_the_glb(tmp_path):
     print("\nBlender's import of the fallback:", inputs)
     if "Thin Film IOR" in inputs:  # Blender >= 4.2 maps KHR_materials_iridescence's ior
         assert inputs["Thin Film IOR"] == pytest.approx(fallback.ior, abs=1e-4)
+    if "Transmission Weight" in inputs:  # Blender 4: KHR_materials_transmission
+        assert inputs["Transmission Weight"] == pytest.approx(fallback.transmission, abs=1e-4)
+        assert inputs["Base Color"][:3] == pytest.approx(fallback.base_colour, abs=1e-4)
