@@ -13,7 +13,12 @@ read back bottom row first into ``<pre id="readback">``:
 - ``{"kind": "module", "url": ..., "module": ..., "thickness": µm}``: the ``.glb``'s mesh
   with the three.js film module's ``applyThinFilm`` (its EXR table) instead;
 - ``{"kind": "hand", "url": ..., ...}``: the ``.glb``'s mesh with a
-  ``MeshPhysicalMaterial`` whose iridescence is set by hand as for ``physical``.
+  ``MeshPhysicalMaterial`` whose iridescence is set by hand as for ``physical`` (and
+  ``transmission``, if given: ``KHR_materials_transmission``'s factor).
+
+A case with ``"checker": [[r, g, b], [r, g, b]]`` (linear) has a checker of those colours
+(``squares`` a side, ``MeshBasicMaterial``, nearest filtering) on a plane behind the
+sphere filling the view: what a free-standing film transmits.
 """
 
 from __future__ import annotations
@@ -78,7 +83,22 @@ try {
     return new THREE.MeshPhysicalMaterial({ roughness: 0, metalness: c.metalness,
       color: new THREE.Color().setRGB(...c.color, THREE.LinearSRGBColorSpace), ior: c.ior,
       iridescence: c.factor, iridescenceIOR: c.film_ior,
-      iridescenceThicknessMinimum: c.thickness, iridescenceThicknessMaximum: c.thickness });
+      iridescenceThicknessMinimum: c.thickness, iridescenceThicknessMaximum: c.thickness,
+      transmission: c.transmission || 0 });
+  }
+  function checker(c) {
+    const n = c.squares || 8;
+    const data = new Float32Array(n * n * 4);
+    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+      data.set([...c.checker[(i + j) % 2], 1], 4 * (j * n + i));
+    }
+    const texture = new THREE.DataTexture(data, n, n, THREE.RGBAFormat, THREE.FloatType);
+    texture.magFilter = texture.minFilter = THREE.NearestFilter;
+    texture.needsUpdate = true;
+    const back = new THREE.Mesh(new THREE.PlaneGeometry(2, 2),
+      new THREE.MeshBasicMaterial({ map: texture }));
+    back.position.z = -2;
+    return back;
   }
   for (const c of cases) {
     let object;
@@ -100,9 +120,12 @@ try {
       object.matrix.copy(mesh.matrixWorld);
       object.matrixAutoUpdate = false;
     }
+    const back = c.checker ? checker(c) : null;
+    if (back) scene.add(back);
     scene.add(object);
     out.frames.push(frame());
     scene.remove(object);
+    if (back) scene.remove(back);
   }
   out.size = SIZE;
 } catch (error) {

@@ -17,9 +17,11 @@ Skips, with the reason, without Chromium, node or npm.
 from __future__ import annotations
 
 import base64
+import json
 import re
 import struct
 from dataclasses import replace
+from pathlib import Path
 
 import colour
 import numpy as np
@@ -33,12 +35,15 @@ from ocio_thinfilm.export.hosts.three import three_module
 from ocio_thinfilm.lut import iridescence_fit, khr_iridescence
 from ocio_thinfilm.physics.films import read_films
 
+ROOT = Path(__file__).resolve().parents[1]
 SIZE = 256
 RADIUS = 0.9  # N·V >= 0.44, as tests/test_three_material.py
 TOLERANCE = 2.0  # 8-bit codes
 FILMS = read_films("docs/films.toml")
 #: (film, table size, thickness texture value g (8-bit code))
 GLB_FILMS = [("SoapFilm", (96, 32), 140), ("AnodisedTitanium", (64, 32), 100)]
+#: The linear colours of the checker behind a free-standing film (8 squares a side).
+CHECKER = [[0.8, 0.25, 0.05], [0.05, 0.4, 0.9]]
 
 
 @pytest.fixture(scope="module")
@@ -60,7 +65,9 @@ def validator():
 def _small_glb(key, size, code=None):
     film = FILMS[key]
     table = material.material_table(film, width=size[0], height=size[1])
-    target = iridescence_fit.target_from_table(film, table.reflectance, table.range_um, 24, 8)
+    target = iridescence_fit.target_from_table(
+        film, table.reflectance, table.range_um, 24, 8, transmittance=table.transmittance
+    )
     fallback = iridescence_fit.fit_iridescence(target, keep=1, halvings=3)
     thickness = None if code is None else np.full((4, 4), code, np.uint8)
     data = gltf.gltf_binary(
@@ -108,9 +115,10 @@ def _dfg_lut(three):
     return np.array([int(w, 16) for w in words], np.uint16).view(np.float16).reshape(16, 16, 2)
 
 
-def _fab(three):
+def _fab(three, cos_view=None):
     """(f_a, f_b) of every held pixel: the DFG table read bilinearly (texel centres, clamped)
-    at three.js's roughness, 0.045 plus the geometry's (the normal's change per pixel)."""
+    at three.js's roughness, 0.045 plus the geometry's (the normal's change per pixel), and
+    N·V (default the orthographic view's; ``cos_view``: another, one per held pixel)."""
     lut = _dfg_lut(three).astype(np.float64)
     centres = (np.arange(SIZE) + 0.5) / SIZE * 2.0 - 1.0
     x, y = np.meshgrid(centres, centres)
@@ -118,7 +126,7 @@ def _fab(three):
     nz = np.maximum(cos_theta, 1e-6)
     geometry = 2.0 / SIZE * np.maximum(1.0, np.maximum(np.abs(x), np.abs(y)) / nz)
     u = np.clip(0.045 + geometry, 0.0, 1.0)[inside] * 16 - 0.5
-    v = cos_theta[inside] * 16 - 0.5
+    v = (cos_theta[inside] if cos_view is None else cos_view) * 16 - 0.5
     u0, v0 = np.clip(np.floor(u), 0, 14).astype(int), np.clip(np.floor(v), 0, 14).astype(int)
     fu, fv = np.clip(u - u0, 0, 1)[:, None], np.clip(v - v0, 0, 1)[:, None]
     low = lut[v0, u0] * (1 - fu) + lut[v0, u0 + 1] * fu
@@ -169,23 +177,84 @@ def test_the_port_draws_what_threejs_draws(chromium, three, tmp_path):
     assert np.abs(frames[0].astype(int) - frames[1]).max() > 40
 
 
+#: A free-standing film's fallback with KHR_materials_transmission (base ior 1: a film in
+#: air; the base colour tints what it transmits), over the checker.
+TRANSMITTING = khr_iridescence.KHRIridescence(
+    1.33, (610.0, 610.0), 1.0, 1.0, 0.0, (0.93, 0.9, 0.8), transmission=1.0
+)
+#: Pixels this far from a checker edge are held (three.js's transmission pass reads its
+#: render target with a bicubic B-spline).
+MARGIN = 3
+
+
+def _checker_colours():
+    """The checker's linear colour at every pixel (bottom row first, as read back) and
+    the pixels at least MARGIN from a square's edge."""
+    n = 8
+    square = np.arange(SIZE) * n // SIZE
+    cells = square[:, None] + square[None, :]
+    colours = np.where((cells % 2 == 0)[..., None], CHECKER[0], CHECKER[1])
+    edge = np.abs(((np.arange(SIZE) + 0.5) * n / SIZE) % 1.0 - 0.5) * SIZE / n
+    away = np.maximum(edge[:, None], edge[None, :]) <= SIZE / n / 2 - MARGIN
+    return colours, away
+
+
+def test_the_port_transmits_what_threejs_transmits(chromium, three, tmp_path):
+    """three.js's MeshPhysicalMaterial with iridescence and transmission over a checker:
+    the port's R + T · checker (:func:`khr_iridescence.mirror_transmittance`)."""
+    files = {gltf.PLUGIN_NAME: gltf.plugin_module().encode()}
+    case = _by_hand(TRANSMITTING, transmission=1.0, checker=CHECKER)
+    (rgba,) = _frames(chromium, three, tmp_path, files, [case])
+    inside, cos_theta = _inside()
+    colours, away = _checker_colours()
+    held = away[inside]
+    c = cos_theta[inside]
+    mirror = khr_iridescence.mirror_reflectance(TRANSMITTING, 1.0, c, _fab(three))
+    # the transmission pass takes its N·V from cameraPosition - position, even for an
+    # orthographic camera: the camera sits at z = 5
+    centres = (np.arange(SIZE) + 0.5) / SIZE * 2.0 - 1.0
+    x, y = np.meshgrid(centres, centres)
+    p = np.stack([x[inside], y[inside], c], -1)
+    v = np.array([0.0, 0.0, 5.0]) - p
+    c_view = np.sum(p * v, -1) / np.linalg.norm(v, axis=-1)
+    weight = khr_iridescence.mirror_transmittance(TRANSMITTING, c_view, _fab(three, c_view))
+    linear = mirror + weight * colours[inside]
+    error = np.abs(rgba[inside][:, :3] - _codes(linear)).max(axis=1)[held]
+    # the check can fail: the frame is not the black-backed mirror
+    black_backed = np.abs(rgba[inside][:, :3] - _codes(mirror)).max()
+    print(
+        f"\nport vs three.js with transmission (1/255) max {error.max():.2f}, "
+        f"p99 {np.percentile(error, 99):.2f}"
+    )
+    assert error.max() <= TOLERANCE
+    assert black_backed > 40
+
+
 @pytest.mark.parametrize(("key", "size", "code"), GLB_FILMS)
 def test_the_glb_in_threejs(chromium, three, tmp_path, key, size, code):
+    """With the plugin the .glb is the film module's film (R, and for a free-standing film
+    T times the checker behind it); without it three.js's own KHR materials."""
     film, table, fallback, data = _small_glb(key, size, code)
     out = tmp_path / "tables"
-    hosts = {"film.js": lambda f: three_module(f.key, f.reflectance, f.range_um)}
+    hosts = {
+        "film.js": lambda f: three_module(
+            f.key, f.reflectance, f.range_um, transmittance_exr=f.transmittance
+        )
+    }
     written = material.export_material(film, out, size=size, hosts=hosts)
     files = {p.name: p.read_bytes() for p in written}
     files.update({"film.glb": data, gltf.PLUGIN_NAME: gltf.plugin_module().encode()})
     g = code / 255.0
     lo, hi = table.range_um
     hand = replace(fallback, thickness_nm=(fallback.thickness(g),) * 2)  # type: ignore[arg-type]
+    back = {} if table.transmittance is None else {"checker": CHECKER}
     cases = [
-        {"kind": "gltf", "url": "film.glb", "plugin": True},
+        {"kind": "gltf", "url": "film.glb", "plugin": True, **back},
         {"kind": "module", "url": "film.glb", "module": "film.js", "thickness": lo + g * (hi - lo)},
-        {"kind": "gltf", "url": "film.glb", "plugin": False},
-        _by_hand(hand, kind="hand", url="film.glb"),
+        {"kind": "gltf", "url": "film.glb", "plugin": False, **back},
+        _by_hand(hand, kind="hand", url="film.glb", transmission=hand.transmission, **back),
     ]
+    cases[1].update(back)
     plugin, module, fallback_frame, by_hand = (
         f[:, :, :3].astype(int) for f in _frames(chromium, three, tmp_path, files, cases)
     )
@@ -196,6 +265,21 @@ def test_the_glb_in_threejs(chromium, three, tmp_path, key, size, code):
     assert d_plugin <= TOLERANCE and d_fallback <= TOLERANCE
     # the plugin does replace the fallback
     assert np.abs(plugin - fallback_frame)[inside].max() > 10
+    if back:
+        # the checker shows through the film: its squares differ inside the sphere
+        _assert_transmits(plugin, inside)
+
+
+def _assert_transmits(frame, inside):
+    """The film transmits the checker: inside the sphere the two squares' pixels differ
+    as T times the checker's difference does (a black-backed mirror would not)."""
+    n = 8
+    cells = (np.arange(SIZE) * n // SIZE)[:, None] + (np.arange(SIZE) * n // SIZE)[None, :]
+    even = (cells % 2 == 0) & inside
+    odd = (cells % 2 == 1) & inside
+    gap = np.abs(frame[even].mean(axis=0) - frame[odd].mean(axis=0))
+    print(f"checker squares through the film, mean code difference {gap.round(1)}")
+    assert gap.max() > 40, gap
 
 
 def test_the_validator_finds_no_errors_or_warnings(validator, tmp_path):
@@ -220,9 +304,10 @@ def test_the_validator_finds_no_errors_or_warnings(validator, tmp_path):
     assert gltf_validator.validate(bad)["issues"]["numErrors"] > 0
 
 
-def test_the_same_bytes_on_every_run():
-    first = _small_glb("OilOnWater", (48, 16))[3]
-    assert first == _small_glb("OilOnWater", (48, 16))[3]
+@pytest.mark.parametrize("key", ["OilOnWater", "SoapFilm"])  # SoapFilm: with transmission
+def test_the_same_bytes_on_every_run(key):
+    first = _small_glb(key, (48, 16))[3]
+    assert first == _small_glb(key, (48, 16))[3]
     assert struct.unpack_from("<III", first) == (0x46546C67, 2, len(first))
 
 
@@ -243,6 +328,48 @@ def test_the_fit_is_never_worse_than_the_defaults(key):
     )
     assert errors[1].mean() < errors[0].mean()
     assert np.percentile(errors[1], 95) < np.percentile(errors[0], 95)
+
+
+def _document(data):
+    length = struct.unpack_from("<I", data, 12)[0]
+    return json.loads(data[20 : 20 + length])
+
+
+def test_a_free_standing_film_transmits_in_the_fallback():
+    """A bubble's fallback carries KHR_materials_transmission (factor 1) with the base
+    colour the least-squares tint of its T under three.js's (1 - F) weight (base ior 1:
+    F the mirror's (1 - N·V)^5); a film on a metal carries none."""
+    film, table, fallback, data = _small_glb("SoapFilm", (48, 16))
+    document = _document(data)
+    (mat,) = document["materials"]
+    assert "KHR_materials_transmission" in document["extensionsUsed"]
+    assert mat["extensions"]["KHR_materials_transmission"] == {"transmissionFactor": 1.0}
+    assert mat["extensions"]["KHR_materials_ior"]["ior"] == 1.0
+    # the tint, from the table: the fit's 24 x 8 nodes
+    h, w = table.reflectance.shape[:2]
+    cols = np.round(np.linspace(0, w - 1, 24)).astype(int)
+    rows = np.round(np.linspace(0, h - 1, 8)).astype(int)
+    T = table.transmittance[rows][:, cols].reshape(-1, 3)
+    weight = np.repeat(1.0 - (1.0 - rows / (h - 1)) ** 5, len(cols))[:, None]
+    tint = (weight * T).sum(axis=0) / (weight**2).sum()
+    base = mat["pbrMetallicRoughness"]["baseColorFactor"]
+    assert base[:3] == pytest.approx(tint, abs=1e-4) and base[3] == 1.0
+    assert 0.85 < min(tint) and max(tint) < 1.0  # a nearly clear film
+    metal = _document(_small_glb("AnodisedTitanium", (48, 16))[3])
+    assert "KHR_materials_transmission" not in metal["extensionsUsed"]
+    assert "KHR_materials_transmission" not in metal["materials"][0]["extensions"]
+
+
+def test_the_doc_quotes_the_benchmark(load_benchmark, marked):
+    """docs/gltf.md's fallback tables are what benchmarks/bench_gltf_fallback.py wrote
+    (reports/bench_gltf_fallback.json), every film of docs/films.toml."""
+    bench = load_benchmark("bench_gltf_fallback")
+    result = json.loads((ROOT / "reports" / "bench_gltf_fallback.json").read_text())
+    assert [r["film"] for r in result["rows"]] == list(FILMS)
+    doc = (ROOT / "docs" / "gltf.md").read_text()
+    assert marked(doc, bench.BEGIN, bench.END) == bench.markdown(result)
+    free = [r["film"] for r in result["rows"] if "transmission_on_grey" in r]
+    assert free == ["SoapFilm"]
 
 
 # --------------------------------------------------------------------------- #
@@ -296,9 +423,11 @@ for material in bpy.data.materials:
     principled = next((n for n in nodes if n.type == "BSDF_PRINCIPLED"), None)
     inputs = {}
     if principled is not None:
-        for name in ("Metallic", "IOR", "Thin Film IOR", "Thin Film Thickness"):
+        for name in ("Metallic", "IOR", "Thin Film IOR", "Thin Film Thickness",
+                     "Transmission Weight", "Base Color"):
             if name in principled.inputs:
-                inputs[name] = principled.inputs[name].default_value
+                value = principled.inputs[name].default_value
+                inputs[name] = value if isinstance(value, float) else list(value)
     report["materials"][material.name] = inputs
 report["meshes"] = len(bpy.data.meshes)
 with open(sys.argv[2], "w") as f:
@@ -308,9 +437,9 @@ with open(sys.argv[2], "w") as f:
 
 def test_blender_imports_the_glb(tmp_path):
     """PyPI bpy's glTF importer reads the .glb without error: the sample sphere and its
-    material, the fallback's iridescence IOR as the Principled BSDF's Thin Film IOR (the
-    vendor extension is ignored, as for every viewer without the plugin)."""
-    import json
+    material, the fallback's iridescence IOR as the Principled BSDF's Thin Film IOR and
+    its transmission as Transmission Weight over the base colour (the vendor extension is
+    ignored, as for every viewer without the plugin)."""
     import subprocess
 
     from evaluation import blender
@@ -337,3 +466,6 @@ def test_blender_imports_the_glb(tmp_path):
     print("\nBlender's import of the fallback:", inputs)
     if "Thin Film IOR" in inputs:  # Blender >= 4.2 maps KHR_materials_iridescence's ior
         assert inputs["Thin Film IOR"] == pytest.approx(fallback.ior, abs=1e-4)
+    if "Transmission Weight" in inputs:  # Blender 4: KHR_materials_transmission
+        assert inputs["Transmission Weight"] == pytest.approx(fallback.transmission, abs=1e-4)
+        assert inputs["Base Color"][:3] == pytest.approx(fallback.base_colour, abs=1e-4)

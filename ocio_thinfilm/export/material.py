@@ -500,7 +500,11 @@ def gltf_files(film: Film, space: str = DEFAULT_SPACE) -> dict[str, BinaryWriter
 
     def glb(files: TableFiles, table: MaterialTable) -> bytes:
         target = iridescence_fit.target_from_table(
-            film, table.reflectance, table.range_um, *_GLTF_FIT_NODES
+            film,
+            table.reflectance,
+            table.range_um,
+            *_GLTF_FIT_NODES,
+            transmittance=table.transmittance,
         )
         fallback = iridescence_fit.fit_iridescence(target)
         return gltf.gltf_binary(

@@ -7,7 +7,9 @@ texture's value ``g`` is the exact film's thickness ``lo + g (hi - lo)`` of its
 ``range_um``), ``iridescenceFactor`` and the base (``KHR_materials_ior`` for a dielectric
 substrate; the base colour at metalness 1 for an absorbing one) -- for the least mean
 CIE Delta E 2000 between what the viewer shows on a mirror and the exact film's
-reflectance, over thickness x cos theta.
+reflectance, over thickness x cos theta. For a free-standing film (a transmittance
+table) :func:`fit_transmission` adds ``KHR_materials_transmission``: factor 1 and the
+base colour that tints the transmitted light most like the film's T.
 
 The search is coarse to fine and deterministic: a grid of film indices and optical
 thickness scales around the exact film's own, then a compass search (each parameter
@@ -29,6 +31,7 @@ from ocio_thinfilm.lut.khr_iridescence import (
     DEFAULT_IRIDESCENCE,
     KHRIridescence,
     mirror_reflectance,
+    mirror_transmittance,
 )
 from ocio_thinfilm.physics.films import Film
 
@@ -40,6 +43,8 @@ __all__ = [
     "unfitted",
     "fallback_errors",
     "fit_iridescence",
+    "fit_transmission",
+    "scene_errors",
 ]
 
 #: A substrate whose extinction coefficient at 550 nm exceeds this is a metal (the
@@ -74,6 +79,7 @@ class IridescenceTarget:
     film_index: float
     substrate: complex
     base_rgb: tuple[float, float, float]
+    transmittance: np.ndarray | None = None
 
 
 def metal_substrate(film: Film) -> bool:
@@ -83,7 +89,12 @@ def metal_substrate(film: Film) -> bool:
 
 
 def target_from_table(
-    film: Film, reflectance: npt.ArrayLike, range_um: tuple[float, float], columns: int, rows: int
+    film: Film,
+    reflectance: npt.ArrayLike,
+    range_um: tuple[float, float],
+    columns: int,
+    rows: int,
+    transmittance: npt.ArrayLike | None = None,
 ) -> IridescenceTarget:
     """Return a fitting target: ``columns`` x ``rows`` nodes of a material table.
 
@@ -98,6 +109,8 @@ def target_from_table(
         The table's thickness axis.
     columns, rows : int
         Nodes taken along thickness and cos theta (evenly spaced, both ends included).
+    transmittance : array_like, optional
+        A free-standing film's transmittance table, like ``reflectance``.
 
     Returns
     -------
@@ -111,6 +124,9 @@ def target_from_table(
     rgb = table[rr.ravel(), cc.ravel()]
     wl = np.array([550.0])
     lo, hi = range_um
+    t_rgb = None
+    if transmittance is not None:
+        t_rgb = np.asarray(transmittance, dtype=np.float64)[rr.ravel(), cc.ravel()]
     return IridescenceTarget(
         g=cc.ravel() / (w - 1),
         cos_theta=rr.ravel() / (h - 1),
@@ -119,6 +135,7 @@ def target_from_table(
         film_index=float(film.varying.index(wl)[0].real),
         substrate=complex(film.stack[-1].index(wl)[0]),
         base_rgb=tuple(float(v) for v in np.clip(table[h - 1, 0], 0.0, 1.0)),  # type: ignore[arg-type]
+        transmittance=t_rgb,
     )
 
 
@@ -250,4 +267,59 @@ def fit_iridescence(
     default = _vector(unfitted(target), metal)
     results.append((default, cost(default)))
     best = min(results, key=lambda r: r[1])[0]
-    return _model(_round(best, metal), metal)
+    return fit_transmission(_model(_round(best, metal), metal), target)
+
+
+def fit_transmission(model: KHRIridescence, target: IridescenceTarget) -> KHRIridescence:
+    """Return ``model`` transmitting like a free-standing film (unchanged without T).
+
+    three.js (and glTF's ``KHR_materials_transmission``) transmits the background times
+    ``transmission (1 - F) base_colour`` (:func:`mirror_transmittance`), ``F`` the base's
+    Schlick Fresnel, whatever the iridescence; the transmitted light replaces the diffuse
+    lobe. So: ``transmission`` 1 (less would bring back a diffuse lobe of the base colour),
+    metalness 0, and the base colour, per channel, the least-squares tint ``c`` of
+    ``(1 - F) c`` against the film's T over the target's points (clamped to [0, 1],
+    rounded to 1e-4). The reflection is untouched: a dielectric's specular lobe does not
+    depend on the base colour.
+
+    Parameters
+    ----------
+    model : KHRIridescence
+        The fitted reflection (:func:`fit_iridescence`), a dielectric base.
+    target : IridescenceTarget
+        With ``transmittance`` (:func:`target_from_table`).
+
+    Returns
+    -------
+    KHRIridescence
+    """
+    if target.transmittance is None or model.metalness > 0.0:
+        return model
+    clear = replace(model, transmission=1.0, base_colour=(1.0, 1.0, 1.0))
+    w = mirror_transmittance(clear, target.cos_theta)
+    tint = np.sum(w * target.transmittance, axis=0) / np.maximum(np.sum(w * w, axis=0), 1e-12)
+    colour = tuple(round(float(v), 4) for v in np.clip(tint, 0.0, 1.0))
+    return replace(clear, base_colour=colour)  # type: ignore[arg-type]
+
+
+def scene_errors(
+    model: KHRIridescence, target: IridescenceTarget, background: npt.ArrayLike
+) -> np.ndarray:
+    """Return Delta E 2000 of what a viewer shows of a film over a uniform background.
+
+    The viewer's mirror under a uniform white environment of radiance 1 in front of a
+    background of linear Rec.709 colour ``background``: ``R + T b``
+    (:func:`mirror_reflectance`, :func:`mirror_transmittance`) against the exact film's
+    ``R + T b`` (``T`` 0 for a film without ``transmittance``); CIELAB with the D65 white
+    at Y = 1.
+    """
+    b = np.asarray(background, dtype=np.float64)
+    shown = mirror_reflectance(model, target.g, target.cos_theta)
+    shown = shown + mirror_transmittance(model, target.cos_theta) * b
+    exact = colorimetry.RGB_to_XYZ(
+        np.zeros(3) if target.transmittance is None else target.transmittance * b, "Rec.709"
+    )
+    from colour.difference import delta_E_CIE2000
+
+    lab = _lab(target.XYZ + exact)
+    return delta_E_CIE2000(_lab(colorimetry.RGB_to_XYZ(shown, "Rec.709")), lab)

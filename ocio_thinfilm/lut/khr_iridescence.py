@@ -40,6 +40,7 @@ __all__ = [
     "iridescence_fresnel",
     "schlick_to_f0",
     "mirror_reflectance",
+    "mirror_transmittance",
 ]
 
 #: three.js's ``XYZ_TO_REC709`` (row-major here; the GLSL ``mat3`` lists its columns).
@@ -59,7 +60,9 @@ class KHRIridescence:
     ``ior``: the film's ``iridescenceIor``; ``thickness_nm``: ``iridescenceThicknessMinimum``
     and ``Maximum`` (the thickness texture's G channel maps [0, 1] onto them); ``factor``:
     ``iridescenceFactor``; ``base_ior``: the material's ``KHR_materials_ior``; ``metalness``
-    and ``base_colour`` (linear RGB): ``pbrMetallicRoughness``.
+    and ``base_colour`` (linear RGB): ``pbrMetallicRoughness``; ``transmission``:
+    ``KHR_materials_transmission``'s ``transmissionFactor`` (0: none; thin-walled, no
+    ``KHR_materials_volume``).
     """
 
     ior: float = 1.3
@@ -68,6 +71,7 @@ class KHRIridescence:
     base_ior: float = 1.5
     metalness: float = 0.0
     base_colour: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    transmission: float = 0.0
 
     def thickness(self, g: npt.ArrayLike) -> np.ndarray:
         """Return the film thickness (nm) at the thickness texture's value ``g``."""
@@ -248,3 +252,49 @@ def mirror_reflectance(
         base = np.asarray(model.base_colour, dtype=np.float64)
         out = out + model.metalness * _lobe(model, base, c, d, terms)
     return out
+
+
+def mirror_transmittance(
+    model: KHRIridescence, cos_theta: npt.ArrayLike, fab: npt.ArrayLike | None = None
+) -> np.ndarray:
+    """Return what three.js r187 transmits of the background through a thin-walled mirror.
+
+    ``transmission_fragment`` / ``getIBLVolumeRefraction`` with ``KHR_materials_transmission``
+    and no volume (thickness 0: the pixel straight behind): the background times
+    ``transmission (1 - metalness) base_colour (1 - F)``, ``F = F0 f_a + f_b`` the split-sum
+    Fresnel of the base's own F0 (``KHR_materials_ior``). The iridescence does not reach
+    it: three.js weighs the transmitted light by the base's Schlick Fresnel only. The
+    transmitted light replaces the diffuse lobe (``mix(diffuse, transmitted,
+    transmission)``), which :func:`mirror_reflectance` leaves out.
+
+    Parameters
+    ----------
+    model : KHRIridescence
+        The material.
+    cos_theta : array_like
+        N·V.
+    fab : array_like, optional
+        The split-sum terms, as for :func:`mirror_reflectance` (default a mirror's).
+
+    Returns
+    -------
+    numpy.ndarray
+        The factor on the background's linear Rec.709 RGB, shape ``cos_theta.shape + (3,)``.
+
+    Examples
+    --------
+    >>> from dataclasses import replace
+    >>> clear = replace(DEFAULT_IRIDESCENCE, transmission=1.0, base_colour=(1.0, 1.0, 1.0))
+    >>> mirror_transmittance(clear, 1.0).round(6).tolist()
+    [0.96, 0.96, 0.96]
+    """
+    c = np.clip(np.asarray(cos_theta, dtype=np.float64), 0.0, 1.0)
+    if fab is None:
+        x5 = (1.0 - c) ** 5
+        terms = np.stack([1.0 - x5, x5], axis=-1)
+    else:
+        terms = np.broadcast_to(np.asarray(fab, dtype=np.float64), c.shape + (2,))
+    f0 = ((model.base_ior - 1.0) / (model.base_ior + 1.0)) ** 2
+    fresnel = f0 * terms[..., 0] + terms[..., 1]
+    weight = model.transmission * (1.0 - model.metalness) * (1.0 - fresnel)
+    return weight[..., None] * np.asarray(model.base_colour, dtype=np.float64)

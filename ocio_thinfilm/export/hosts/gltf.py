@@ -4,7 +4,8 @@
 
 - ``KHR_materials_iridescence`` (with ``KHR_materials_ior`` and the base colour /
   metalness), the fallback every viewer draws, its parameters fitted to the film
-  (:mod:`ocio_thinfilm.lut.iridescence_fit`);
+  (:mod:`ocio_thinfilm.lut.iridescence_fit`); for a free-standing film also
+  ``KHR_materials_transmission`` (factor 1, the base colour the tint of the film's T);
 - :data:`EXTENSION`, the exact film: its reflectance (and transmittance) table as float
   data in the binary chunk, node-centred, over ``range_um`` x cos theta, and the same
   thickness texture; listed in ``extensionsUsed`` only, so viewers without it fall back;
@@ -176,7 +177,7 @@ def _material(
     name: str, fallback: KHRIridescence, film: dict[str, Any], texture: int
 ) -> dict[str, Any]:
     lo_nm, hi_nm = fallback.thickness_nm
-    return {
+    out: dict[str, Any] = {
         "name": name,
         "pbrMetallicRoughness": {
             "baseColorFactor": [*[float(c) for c in fallback.base_colour], 1.0],
@@ -195,6 +196,11 @@ def _material(
             EXTENSION: film,
         },
     }
+    if fallback.transmission > 0.0:
+        out["extensions"]["KHR_materials_transmission"] = {
+            "transmissionFactor": float(fallback.transmission)
+        }
+    return out
 
 
 def gltf_binary(
@@ -259,6 +265,8 @@ def gltf_binary(
         accessors.append(_table_accessor(buffer, T))
         film["transmittance"] = len(accessors) - 1
     used = ["KHR_materials_ior", "KHR_materials_iridescence", EXTENSION]
+    if fallback.transmission > 0.0:
+        used.insert(2, "KHR_materials_transmission")
     document = {
         "asset": {"version": "2.0", "generator": f"ocio-thinfilm {__version__}"},
         "extensionsUsed": used,
@@ -307,9 +315,12 @@ def _container(document: dict[str, Any], binary: bytes) -> bytes:
 
 _PLUGIN = """// ocio-thinfilm __VERSION__: a three.js GLTFLoader plugin for __EXTENSION__
 // (tested with three.js r__REVISION__). It draws the exact film a .glb carries: the
-// material's specular reflectance is the film's table R(thickness, angle), the thickness
-// read from the extension's thickness texture (G channel: the fraction of
-// thicknessRange), in place of three.js's KHR_materials_iridescence (docs/gltf.md).
+// material's specular reflectance is the film's table R(thickness, angle) and, for a
+// free-standing film (a transmittance table), what it transmits of the scene behind it is
+// T(thickness, angle) times that (three.js's transmission pass), the thickness read from
+// the extension's thickness texture (G channel: the fraction of thicknessRange), in place
+// of three.js's KHR_materials_iridescence and KHR_materials_transmission (docs/gltf.md).
+// The shader parts are the three.js film module's (ocio-thinfilm's thinfilm.js).
 //
 //   import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 //   import { ThinFilmGLTFPlugin } from "./__SELF__";
@@ -321,7 +332,9 @@ export const EXTENSION = __EXTENSION_JSON__;
 
 const DECLARATIONS = __DECLARATIONS__;
 const REPLACEMENTS = __REPLACEMENTS__;
+const TRANSMISSION = __TRANSMISSION__;
 const AT_LIGHTS = __AT_LIGHTS__;
+const VERTEX = __VERTEX__;
 
 function patched(chunk, from, to) {
   if (!chunk.includes(from)) {
@@ -331,16 +344,26 @@ function patched(chunk, from, to) {
   return chunk.split(from).join(to);
 }
 
-// three.js's physical lighting with the table's R as its Fresnel term.
+// three.js's physical lighting with the table's R as its Fresnel term and (with
+// THIN_FILM_TRANSMITTANCE defined) T as its transmission: the film module's shader.
 export function thinFilmGLTFShader(fragmentShader) {
   let lights = THREE.ShaderChunk.lights_physical_pars_fragment;
   for (const [from, to] of REPLACEMENTS) lights = patched(lights, from, to);
-  const shader = patched(fragmentShader, "#include <lights_physical_pars_fragment>",
+  let shader = patched(fragmentShader, "#include <lights_physical_pars_fragment>",
     DECLARATIONS + lights);
-  return "#define USE_UV\\n" + patched(shader, "#include <lights_fragment_begin>", AT_LIGHTS);
+  shader = patched(shader, "#include <transmission_pars_fragment>",
+    patched(THREE.ShaderChunk.transmission_pars_fragment, ...TRANSMISSION));
+  return patched(shader, "#include <lights_fragment_begin>", AT_LIGHTS);
 }
 
-// The table (float RGB, row-major, row 0 at cos(theta) = 0) as a half-float texture:
+// The vertex shader: the thickness texture's uv (through its matrix).
+export function thinFilmGLTFVertexShader(vertexShader) {
+  let shader = vertexShader;
+  for (const [from, to] of VERTEX) shader = patched(shader, from, to);
+  return shader;
+}
+
+// A table (float RGB, row-major, row 0 at cos(theta) = 0) as a half-float texture:
 // linear filtering, clamp to edge, no mipmaps.
 export function thinFilmTableTexture(values, width, height) {
   const data = new Uint16Array(width * height * 4);
@@ -367,20 +390,38 @@ function fullThickness() {
   return texture;
 }
 
-// Make `material` (a MeshPhysicalMaterial) the film of `extension` (its definition).
-export function applyThinFilmGLTF(material, table, thicknessMap, thicknessRange) {
+// Make `material` (a MeshPhysicalMaterial) the film: `table` its R texture,
+// `transmittance` its T texture or null, the thickness mix(range[0], range[1], G) of
+// `thicknessMap` (null: range[1]); with T the material transmits what is behind it times
+// T (transmission 1, ior 1, thickness 0, as the film module does).
+export function applyThinFilmGLTF(material, table, thicknessMap, thicknessRange,
+  transmittance = null) {
+  const map = thicknessMap || fullThickness();
+  map.updateMatrix();
   const uniforms = {
     thinFilmTable: { value: table },
-    thinFilmThicknessMap: { value: thicknessMap || fullThickness() },
+    thinFilmThickness: { value: thicknessRange[1] },
     thinFilmRange: { value: new THREE.Vector2(...thicknessRange) },
+    thinFilmThicknessMap: { value: map },
+    thinFilmThicknessRange: { value: new THREE.Vector2(...thicknessRange) },
+    thinFilmThicknessMapTransform: { value: map.matrix },
+    thinFilmTransmittanceTable: { value: transmittance },
   };
+  const defines = { ...material.defines, THIN_FILM_THICKNESS_MAP: "" };
+  delete defines.THIN_FILM_TRANSMITTANCE;
+  if (transmittance) {
+    defines.THIN_FILM_TRANSMITTANCE = "";
+    Object.assign(material, { transmission: 1, ior: 1, thickness: 0 });
+  }
+  material.defines = defines;
   material.iridescence = 0;
   material.onBeforeCompile = (shader) => {
     Object.assign(shader.uniforms, uniforms);
-    shader.vertexShader = "#define USE_UV\\n" + shader.vertexShader;
+    shader.vertexShader = thinFilmGLTFVertexShader(shader.vertexShader);
     shader.fragmentShader = thinFilmGLTFShader(shader.fragmentShader);
   };
-  material.customProgramCacheKey = () => "ocio-thinfilm-gltf";
+  const key = `ocio-thinfilm-gltf${transmittance ? "-t" : ""}`;
+  material.customProgramCacheKey = () => key;
   material.userData.thinFilm = uniforms;
   material.needsUpdate = true;
   return uniforms;
@@ -392,13 +433,21 @@ export class ThinFilmGLTFPlugin {
     this.name = EXTENSION;
   }
 
+  async table(extension, accessor) {
+    const values = await this.parser.getDependency("accessor", accessor);
+    return thinFilmTableTexture(values.array, extension.width, extension.height);
+  }
+
   async film(materialIndex) {
     const extension = this.parser.json.materials[materialIndex].extensions[EXTENSION];
-    const values = await this.parser.getDependency("accessor", extension.reflectance);
-    const table = thinFilmTableTexture(values.array, extension.width, extension.height);
-    const map = extension.thicknessTexture === undefined ? null
-      : await this.parser.getDependency("texture", extension.thicknessTexture.index);
-    return { table, map, range: extension.thicknessRange };
+    const [table, transmittance, map] = await Promise.all([
+      this.table(extension, extension.reflectance),
+      extension.transmittance === undefined ? null
+        : this.table(extension, extension.transmittance),
+      extension.thicknessTexture === undefined ? null
+        : this.parser.getDependency("texture", extension.thicknessTexture.index),
+    ]);
+    return { table, transmittance, map, range: extension.thicknessRange };
   }
 
   async afterRoot(result) {
@@ -412,8 +461,8 @@ export class ThinFilmGLTFPlugin {
           const definition = this.parser.json.materials?.[index];
           if (!definition?.extensions?.[EXTENSION] || !material.isMeshPhysicalMaterial) continue;
           if (!films.has(index)) films.set(index, this.film(index));
-          jobs.push(films.get(index).then(({ table, map, range }) =>
-            applyThinFilmGLTF(material, table, map, range)));
+          jobs.push(films.get(index).then(({ table, transmittance, map, range }) =>
+            applyThinFilmGLTF(material, table, map, range, transmittance)));
         }
       });
     }
@@ -427,30 +476,25 @@ def plugin_module(module_name: str = PLUGIN_NAME) -> str:
     """Return the three.js ``GLTFLoader`` plugin (ES module text) for :data:`EXTENSION`.
 
     It exports ``ThinFilmGLTFPlugin`` (register it with ``GLTFLoader.register``),
-    ``applyThinFilmGLTF``, ``thinFilmTableTexture``, ``thinFilmGLTFShader`` and
-    ``EXTENSION``; the shader is the three.js film module's
-    (:mod:`ocio_thinfilm.export.hosts.three`: R in place of Schlick's Fresnel), with the
-    thickness read per pixel from the extension's thickness texture.
+    ``applyThinFilmGLTF``, ``thinFilmTableTexture``, ``thinFilmGLTFShader``,
+    ``thinFilmGLTFVertexShader`` and ``EXTENSION``; the shader is the three.js film
+    module's, its public parts reused as they are (:mod:`ocio_thinfilm.export.hosts.three`:
+    R in place of Schlick's Fresnel, T in place of three.js's transmission for a
+    free-standing film, the thickness map read through its matrix), the thickness read per
+    pixel from the extension's thickness texture.
 
     Examples
     --------
     >>> "class ThinFilmGLTFPlugin" in plugin_module()
     True
     """
-    declarations = _swap(
-        three_host.SHADER_DECLARATIONS,
-        "uniform float thinFilmThickness;\n",
-        "float thinFilmThickness;\nuniform sampler2D thinFilmThicknessMap;\n",
-    )
-    at_lights = (
-        "thinFilmThickness = mix( thinFilmRange.x, thinFilmRange.y, "
-        "texture2D( thinFilmThicknessMap, vUv ).g );\n" + three_host.SHADER_AT_LIGHTS
-    )
     fields = {
         "__EXTENSION_JSON__": json.dumps(EXTENSION),
-        "__DECLARATIONS__": json.dumps(declarations),
+        "__DECLARATIONS__": json.dumps(three_host.SHADER_DECLARATIONS),
         "__REPLACEMENTS__": json.dumps(three_host.SHADER_REPLACEMENTS, indent=2),
-        "__AT_LIGHTS__": json.dumps(at_lights),
+        "__TRANSMISSION__": json.dumps(three_host.SHADER_TRANSMISSION),
+        "__AT_LIGHTS__": json.dumps(three_host.SHADER_AT_LIGHTS),
+        "__VERTEX__": json.dumps(three_host.SHADER_VERTEX, indent=2),
         "__EXTENSION__": EXTENSION,
         "__SELF__": module_name,
         "__VERSION__": __version__,
@@ -460,9 +504,3 @@ def plugin_module(module_name: str = PLUGIN_NAME) -> str:
     for field, value in fields.items():
         text = text.replace(field, value)
     return text
-
-
-def _swap(text: str, old: str, new: str) -> str:
-    if old not in text:
-        raise RuntimeError(f"the three.js film module no longer declares {old.strip()!r}")
-    return text.replace(old, new)

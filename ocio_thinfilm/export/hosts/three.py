@@ -53,6 +53,8 @@ __all__ = [
     "SHADER_DECLARATIONS",
     "SHADER_REPLACEMENTS",
     "SHADER_AT_LIGHTS",
+    "SHADER_TRANSMISSION",
+    "SHADER_VERTEX",
     "three_module",
 ]
 
@@ -108,7 +110,7 @@ SHADER_REPLACEMENTS = [
 
 #: (three.js's line, the film's line) in ``transmission_pars_fragment``: with a
 #: transmittance table, what three.js's transmission pass saw behind the film, times T.
-_TRANSMISSION = (
+SHADER_TRANSMISSION = (
     "return vec4( ( 1.0 - F ) * attenuatedColor,",
     "return vec4( THIN_FILM_TRANSMITTED( F, attenuatedColor, transmittedLight.rgb ),",
 )
@@ -131,7 +133,7 @@ thinFilmT = texture( thinFilmTransmittanceTable,
 
 #: The vertex shader's share: the thickness map's uv (the mesh's ``uv``, through the
 #: map's ``matrix``: offset, repeat, rotation), as three.js passes its own maps' uvs.
-_VERTEX = (
+SHADER_VERTEX = (
     (
         "#include <uv_pars_vertex>",
         """#include <uv_pars_vertex>
@@ -369,9 +371,9 @@ def three_module(
         else f"new URL({json.dumps(t_table)}, import.meta.url).href",
         "__DECLARATIONS__": json.dumps(SHADER_DECLARATIONS),
         "__REPLACEMENTS__": json.dumps(SHADER_REPLACEMENTS, indent=2),
-        "__TRANSMISSION__": json.dumps(_TRANSMISSION),
+        "__TRANSMISSION__": json.dumps(SHADER_TRANSMISSION),
         "__AT_LIGHTS__": json.dumps(SHADER_AT_LIGHTS),
-        "__VERTEX__": json.dumps(_VERTEX, indent=2),
+        "__VERTEX__": json.dumps(SHADER_VERTEX, indent=2),
         "__KEY__": name.replace("\n", " "),
         "__TTABLE__": "none" if t_table is None else t_table,
         "__TABLE__": table,
