@@ -110,6 +110,25 @@ def page_readback(dom: str, stderr: str = "") -> dict:
     return json.loads(html.unescape(match.group(1)))
 
 
+def run_page(
+    browser: str, url: str, profile: Path, *flags: str, timeout: float = 120.0, attempts: int = 2
+) -> dict:
+    """Open ``url`` (:func:`dump_dom`) and return its readback (:func:`page_readback`).
+
+    A page whose GPU work outlasts Chromium's virtual time budget under load (SwiftShader
+    compiling several programs while other processes take the cores) is dumped before it
+    wrote its readback: the page is deterministic, so it is run again, up to
+    ``attempts`` times, each with a fresh profile.
+    """
+    for attempt in range(attempts):
+        dom, stderr, _ = dump_dom(
+            browser, url, profile.with_name(f"{profile.name}-{attempt}"), *flags, timeout=timeout
+        )
+        if re.search(r'<pre id="readback">.+?</pre>', dom, re.S) or attempt == attempts - 1:
+            return page_readback(dom, stderr)
+    raise AssertionError("unreachable")
+
+
 class _Quiet(http.server.SimpleHTTPRequestHandler):
     """Serves files with JavaScript's MIME type (module scripts require it), silently."""
 

@@ -85,7 +85,7 @@ def _frames(chromium, three, tmp_path, files, cases):
     site = tmp_path / "site"
     gltf_page.write_site(site, three, files, SIZE, cases)
     with browser.serve(site) as url:
-        dom, stderr, _ = browser.dump_dom(
+        out = browser.run_page(
             chromium,
             url + "index.html",
             tmp_path / "profile",
@@ -93,7 +93,6 @@ def _frames(chromium, three, tmp_path, files, cases):
             "--virtual-time-budget=180000",  # four programs to compile on SwiftShader
             timeout=300.0,
         )
-    out = browser.page_readback(dom, stderr)
     assert "error" not in out, out.get("error")
     return [
         np.frombuffer(base64.b64decode(f), np.uint8).reshape(SIZE, SIZE, 4) for f in out["frames"]

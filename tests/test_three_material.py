@@ -67,10 +67,9 @@ def test_the_mirror_sphere_shows_the_exact_reflectance(chromium, three, tmp_path
         site / "Soap_R.exr", rgb, key="Soap", quantity="reflectance", range_um=RANGE_UM
     )
     with browser.serve(site) as url:
-        dom, stderr, _ = browser.dump_dom(
+        out = browser.run_page(
             chromium, url + "index.html", tmp_path / "profile", "--window-size=400,400"
         )
-    out = browser.page_readback(dom, stderr)
     assert "error" not in out, out.get("error")
     centres = (np.arange(SIZE) + 0.5) / SIZE * 2.0 - 1.0
     x, y = np.meshgrid(centres, centres)  # GL's rows: bottom first, as read back
@@ -153,10 +152,9 @@ def flat_frames(chromium, three, tmp_path_factory):
             range_um=RANGE_UM,
         )
     with browser.serve(tmp / "site") as url:
-        dom, stderr, _ = browser.dump_dom(
+        out = browser.run_page(
             chromium, url + "index.html", tmp / "profile", "--window-size=300,300"
         )
-    out = browser.page_readback(dom, stderr)
     assert "error" not in out, out.get("error")
     frames = [
         np.frombuffer(base64.b64decode(f), np.uint8).reshape(FLAT, FLAT, 4)[:, :, :3]
