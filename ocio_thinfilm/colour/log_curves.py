@@ -82,7 +82,8 @@ def decode(curve: LogCurve, code: npt.ArrayLike) -> np.ndarray:
     >>> from ocio_thinfilm.registry import find_curve
     >>> float(decode(find_curve("S-Log3"), 420 / 1023)).__round__(6)
     0.18
-    >>> [float(decode(c, c.black)) for c in (find_curve("Panasonic V-Log"), find_curve("Apple Log"))]
+    >>> curves = [find_curve(n) for n in ("Panasonic V-Log", "Apple Log")]
+    >>> [float(decode(c, c.black)) for c in curves]
     [0.0, 0.0]
     """
     y = np.asarray(code, dtype=np.float64)

@@ -99,10 +99,13 @@ def _log_camera(
 
 
 def _log_part(curve: registry.LogCurve, toe_slope: float) -> ocio_ops.Transform:
-    """Codes -> linear by the curve's log part, below its break a line through the toe's
-    code there (OCIO's continuity): the gap of a published toe (V-Log's 3.1e-7, at most
-    ``curve.continuity``) moves into the log side's offset, so the toe, and black, decode
-    exactly."""
+    """Return codes -> linear by the curve's log part, below its break a line.
+
+    The line passes through the toe's code at the break (OCIO derives its offset from
+    continuity): the gap of a published toe (V-Log's 3.1e-7, at most
+    ``curve.continuity``) moves into the log side's offset, so the toe, and black,
+    decode exactly.
+    """
     c = curve
     offset = c.log_offset - c.gap
     return _log_camera(
@@ -111,16 +114,19 @@ def _log_part(curve: registry.LogCurve, toe_slope: float) -> ocio_ops.Transform:
 
 
 def _log_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
-    """A ``"log"`` curve: one inverse ``LogCameraTransform`` (or OCIO's built-in)."""
+    """Return a ``"log"`` curve's decoding: an inverse ``LogCameraTransform`` or a built-in."""
     if curve.ocio_builtin is not None:
         return _builtin_decoding(curve)
     return [_log_part(curve, curve.toe_slope)]
 
 
 def _mirrored_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
-    """A ``"mirrored-log"`` curve: the log part and toe, then below ``-lin_break`` the
-    mirrored log part, as identity-toed ``LogCameraTransform`` on the negated values
-    (``P(u) = u`` for ``u <= lin_break``, else ``U^-1(black + s u)``)."""
+    """Return a ``"mirrored-log"`` curve's decoding (Canon Log 3's three segments).
+
+    The log part and toe, then below ``-lin_break`` the mirrored log part, as an
+    identity-toed ``LogCameraTransform`` on the negated values (``P(u) = u`` for ``u <=
+    lin_break``, else ``U^-1(black + s u)``).
+    """
     c = curve
     s = c.toe_slope
     negate = ocio_ops.matrix(-np.eye(3))
@@ -132,11 +138,14 @@ def _mirrored_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
 
 
 def _quadratic_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
-    """A ``"quadratic-toe"`` curve: the log part with a line below its break (slope
-    ``s``, the quadratic's there, through its code ``P_t``), then for ``u = R_t - w >
-    0`` the square root ``R_t - q_t (1 - sqrt(1 - s u / P_t))`` as two identity-toed
-    ``LogCameraTransform`` (a natural log, then its exponential halved), ``q_t = R_t -
-    toe_origin``: exactly ``toe_origin + sqrt(code / toe_slope)``."""
+    """Return a ``"quadratic-toe"`` curve's decoding (Apple Log) in OCIO 2.1 ops.
+
+    The log part with a line below its break (slope ``s``, the quadratic's there,
+    through its code ``P_t``), then for ``u = R_t - w > 0`` the square root ``R_t - q_t
+    (1 - sqrt(1 - s u / P_t))`` as two identity-toed ``LogCameraTransform`` (a natural
+    log, then its exponential halved), ``q_t = R_t - toe_origin``: exactly
+    ``toe_origin + sqrt(code / toe_slope)``.
+    """
     c = curve
     q_t = c.lin_break - c.toe_origin
     s = 2.0 * c.toe_slope * q_t
@@ -159,8 +168,9 @@ def encoded_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
     """Return an encoded space -> CIE-XYZ-D65: its curve's decoding, then its gamut's matrix.
 
     The code values are limited first to those of linear +-:data:`ocio_ops.LIMIT` (the
-    curve's encoding of them, ``LogCurve.encode_one``, in float64, printed to 7 significant digits), so the curve's exponential never
-    overflows to Inf (and Inf - Inf to NaN in a matrix) at any optimisation level.
+    curve's encoding of them, ``LogCurve.encode_one``, in float64, printed to 7
+    significant digits), so the curve's exponential never overflows to Inf (and Inf -
+    Inf to NaN in a matrix) at any optimisation level.
 
     Parameters
     ----------

@@ -35,8 +35,7 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry, compress, encodings
-from ocio_thinfilm.colour import log_curves
+from ocio_thinfilm.colour import clip, colorimetry, compress, encodings, log_curves
 from ocio_thinfilm.colour.views import analytic_map
 from ocio_thinfilm.lut import lattice_fit, ocio_ops
 

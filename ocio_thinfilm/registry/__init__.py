@@ -26,6 +26,7 @@ from __future__ import annotations
 from typing import Literal, TypeAlias, overload
 
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.registry.curves import BLACK_TOLERANCE, CURVE_KINDS
 from ocio_thinfilm.registry.displays import (
     CLIP_FILE_STEM,
     COMPRESS_FILE_STEM,
@@ -37,7 +38,6 @@ from ocio_thinfilm.registry.displays import (
     Encoding,
     HDRDisplay,
 )
-from ocio_thinfilm.registry.curves import BLACK_TOLERANCE, CURVE_KINDS
 from ocio_thinfilm.registry.spaces import (
     ENCODED_LIST,
     GAMUT_LIST,

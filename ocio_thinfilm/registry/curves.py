@@ -107,6 +107,7 @@ class LogCurve:
     ocio_builtin: tuple[str, str] | None = None
 
     def __post_init__(self) -> None:
+        """Check the model's assumptions (raise ``ValueError`` naming each broken one)."""
         problems = []
         if self.kind not in CURVE_KINDS:
             problems.append(f"kind must be one of {CURVE_KINDS}")

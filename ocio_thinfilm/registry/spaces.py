@@ -319,8 +319,7 @@ ENCODED_LIST = (
         linear=_SGAMUT3CINE_SPACE,
         curve=LogCurve(
             name="S-Log3",
-            reference="Sony, Technical Summary for S-Gamut3.Cine/S-Log3 and "
-            "S-Gamut3/S-Log3 (2016)",
+            reference="Sony, Technical Summary for S-Gamut3.Cine/S-Log3 and S-Gamut3/S-Log3 (2016)",
             kind="log",
             base=10.0,
             log_slope=261.5 / 1023.0,
@@ -443,7 +442,7 @@ ENCODED_LIST = (
 
 #: The scene-linear spaces: the working and display gamuts, then each encoded space's
 #: linear space (in the order of :data:`ENCODED_LIST`, once each).
-SCENE_LINEAR_LIST = (
+SCENE_LINEAR_LIST: tuple[SceneSpace, ...] = (
     SceneSpace(
         name="ACES2065-1",
         gamut=_AP0,
