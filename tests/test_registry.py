@@ -407,6 +407,14 @@ def test_every_space_of_the_registry_has_one_kind():
     assert registry.space_kind(None) is None  # type: ignore[arg-type]
 
 
+def test_the_readme_lists_the_registrys_log_spaces():
+    """README's list of the log input spaces names every encoded space of the registry."""
+    text = (ROOT / "README.md").read_text()
+    start = text.index("The config, `export view` and `export shader` take the camera")
+    listed = text[start : text.index("\n\n", start)]
+    assert [n for n in registry.ENCODED_SPACES if f"`{n}`" not in listed] == []
+
+
 def test_the_config_page_lists_the_registrys_views_and_spaces():
     """docs/config.md names every view, scene-linear space and log space of the registry."""
     text = (ROOT / "docs" / "config.md").read_text()
