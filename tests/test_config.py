@@ -292,8 +292,9 @@ def test_blender_loads_config_without_colour_management_errors(tmp_path):
 #: The relative tolerance of OCIO's float32 CPU processor against colour-science's
 #: decoding of each log curve (the function the registry's curve names,
 #: ``LogCurve.colour_science``) and its gamut (``Gamut.colour_science``): OCIO's log/exp
-#: are approximations good to ~1e-5; measured max 1.9e-5 S-Log3 .. 6.7e-5 DaVinci
-#: Intermediate, LogC4. Relative to the larger of 1 and the magnitude of the terms each
+#: are approximations good to ~1e-5; measured max 3.1e-6 (DaVinci Intermediate) ..
+#: 2.9e-5 (V-Log; 1.9e-5 S-Log3 .. 6.7e-5 DaVinci Intermediate, LogC4 relative to the
+#: components alone). Relative to the larger of 1 and the magnitude of the terms each
 #: XYZ component sums (:func:`_term_scale`: a float dot product's error bound), which is
 #: the component's own magnitude unless its terms cancel: Z of REDWideGamutRGB at
 #: Log3G10's high codes (linear up to 184) sums +-50 to 0.5, where float32 decoding

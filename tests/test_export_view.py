@@ -192,12 +192,15 @@ def _resolve_cube_meets_target(path, XYZ, codes, source, limits=(1.0, 3.0, 0.5))
     return p99, worst
 
 
-#: The camera and grading log spaces (the encoded spaces besides ACEScct) on a lighter
+#: The camera and grading log spaces (every encoded space of the registry whose codes
+#: need a shaper: all but ACEScct) on a lighter
 #: sample: one display (sRGB), the clip, the default .cube (their Resolve form: a shaper
 #: over the linear gamut), one fit each (~18 s, memoised). Their wide gamuts spread the
 #: 65^3 grid over a larger volume than AP1 (and their shaper reaches below 0), so on all
 #: object colours they reach p99 / max / in-gamut p99 (measured) DaVinci Intermediate
-#: 1.41 / 4.83 / 0.50, LogC4 1.17 / 4.03 / 0.39, S-Log3 1.24 / 3.89 / 0.42 against
+#: 1.41 / 4.83 / 0.50, LogC4 1.17 / 4.03 / 0.39, S-Log3 1.24 / 3.89 / 0.42, V-Log
+#: 1.00 / 3.73 / 0.39, Canon Log 3 1.21 / 4.42 / 0.44, Log3G10 1.31 / 5.51 / 0.46, Apple
+#: Log 0.86 / 4.23 / 0.25 against
 #: ACEScct's 0.60 / 2.39 / 0.36 (a shaper from 0, as AP1's, measured worse: max 5.4-6.3);
 #: held with a margin.
 CAMERA_LOGS = [e for e in registry.ENCODED_LIST if not e.plain]
