@@ -130,8 +130,14 @@ def test_functions_take_a_display_object_as_they_take_its_name():
 def test_the_colorimetry_knows_the_registrys_spaces_and_kinds():
     """The registry imports nothing of the pipeline, so the names it gives the
     colorimetry are checked here: every display's RGB space and every film table's kind."""
+    import colour
+
     for d in registry.ALL_DISPLAY_LIST:
         assert d.colorimetry in registry.RGB_COLORIMETRY
+    for g in registry.GAMUT_LIST:  # each gamut names a colourspace colour-science has
+        assert g.colour_science in colour.RGB_COLOURSPACES, g
+        assert registry.RGB_COLORIMETRY[g.name] == g.colour_science
+    assert {s.gamut for s in registry.SCENE_LINEAR_LIST} <= set(registry.GAMUT_LIST)
     for s in registry.THIN_FILM_LIST:
         assert s.kind in colorimetry.FILM_KINDS + ("morpho",)
 
