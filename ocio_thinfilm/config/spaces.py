@@ -98,6 +98,13 @@ def _log_camera(
     return t
 
 
+def _gap(curve: registry.LogCurve) -> float:
+    """Return the curve's gap at its break to 12 decimals (libm's last bits do not reach
+    the file; a continuous curve's round-off gives 0).
+    """
+    return float(ocio_ops.quantize(curve.gap, 12))
+
+
 def _log_part(curve: registry.LogCurve, toe_slope: float) -> ocio_ops.Transform:
     """Return codes -> linear by the curve's log part, below its break a line.
 
@@ -107,7 +114,7 @@ def _log_part(curve: registry.LogCurve, toe_slope: float) -> ocio_ops.Transform:
     decode exactly.
     """
     c = curve
-    offset = c.log_offset - c.gap
+    offset = c.log_offset - _gap(c)
     return _log_camera(
         c.base, c.log_slope, offset, c.lin_slope, c.lin_offset, c.lin_break, toe_slope
     )
@@ -130,7 +137,7 @@ def _mirrored_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
     c = curve
     s = c.toe_slope
     negate = ocio_ops.matrix(-np.eye(3))
-    offset = (c.log_offset - c.gap - c.black) / s
+    offset = (c.log_offset - _gap(c) - c.black) / s
     mirror = _log_camera(
         c.base, c.log_slope / s, offset, c.lin_slope, c.lin_offset, c.lin_break, 1.0
     )
