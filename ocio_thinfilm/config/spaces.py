@@ -99,8 +99,9 @@ def _log_camera(
 
 
 def _gap(curve: registry.LogCurve) -> float:
-    """Return the curve's gap at its break to 12 decimals (libm's last bits do not reach
-    the file; a continuous curve's round-off gives 0).
+    """Return the curve's gap at its break, rounded to 12 decimals.
+
+    libm's last bits do not reach the file; a continuous curve's round-off gives 0.
     """
     return float(ocio_ops.quantize(curve.gap, 12))
 
