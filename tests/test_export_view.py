@@ -174,16 +174,19 @@ def test_acescct_srgb_resolve_cube_meets_target_in_colour_science(acescct_luts, 
     assert dE_grey.max() <= 0.5
 
 
-def _resolve_cube_meets_target(path, XYZ, codes, source, limits=(1.0, 3.0, 0.5)):
-    """ΔE2000 of the .cube applied by colour-science to ``codes`` against the analytic
-    clip of ``XYZ`` into sRGB: ``limits`` p99, max, in-gamut p99 (the target 1.0, 3.0,
-    0.5)."""
-    code = _colour_apply([path], codes)
+def _resolve_cube_meets_target(
+    path, XYZ, codes, source, limits=(1.0, 3.0, 0.5), consumer="colour-science"
+):
+    """ΔE2000 of the .cube applied by ``consumer`` (colour-science, or OCIO's
+    FileTransform) to ``codes`` against the analytic clip of ``XYZ`` into sRGB:
+    ``limits`` p99, max, in-gamut p99 (the target 1.0, 3.0, 0.5)."""
+    apply = _colour_apply if consumer == "colour-science" else apply_lut_files
+    code = apply([path], codes)
     dE = _dE(code, XYZ, "sRGB")
     mean, p99, worst = _stats(dE)
     inside = clip.in_gamut(colorimetry.XYZ_to_RGB(XYZ, "sRGB"))
     print(
-        f"{source}->sRGB .cube (colour-science): mean {mean:.3f} p99 {p99:.3f} "
+        f"{source}->sRGB .cube ({consumer}): mean {mean:.3f} p99 {p99:.3f} "
         f"max {worst:.3f}; in gamut p99 {np.percentile(dE[inside], 99):.3f} "
         f"max {dE[inside].max():.3f}"
     )
@@ -210,13 +213,17 @@ CAMERA_LOG_LIMITS = (1.8, 6.0, 0.6)
 @pytest.mark.parametrize("encoded", CAMERA_LOGS, ids=lambda e: e.name)
 def test_camera_log_srgb_cube_meets_the_target(tmp_path, object_XYZ, encoded):
     """Object colours as codes of the log space (colour-science's encoding of its curve
-    and gamut, the Bradford-adapted XYZ -> RGB), through the default .cube, near the
-    analytic clip (:data:`CAMERA_LOG_LIMITS`)."""
+    and gamut, the Bradford-adapted XYZ -> RGB), through the default .cube applied by
+    colour-science and by OCIO's FileTransform, near the analytic clip
+    (:data:`CAMERA_LOG_LIMITS`)."""
     (path,) = export_view.export_view(encoded.name, "sRGB", CLC, tmp_path / "view.cube")
     assert "LUT_1D_INPUT_RANGE" in path.read_text()  # the Resolve form (not plain)
     linear = colour_science_rgb(object_XYZ, encoded.gamut.colour_science)
     codes = log_encoding(linear, encoded.curve)
-    _resolve_cube_meets_target(path, object_XYZ, codes, encoded.name, CAMERA_LOG_LIMITS)
+    for consumer in ("colour-science", "OCIO"):
+        _resolve_cube_meets_target(
+            path, object_XYZ, codes, encoded.name, CAMERA_LOG_LIMITS, consumer
+        )
 
 
 def colour_acescct(linear):
