@@ -1,7 +1,7 @@
 """Running the exported shaders where no host is installed, and the truth they are held to.
 
 - :func:`analytic_view` -- the double-precision view: the input decoded with
-  colour-science's own function of its log curve (:data:`LOG_DECODINGS`) and the
+  colour-science's own function of its log curve (the one the registry's curve names) and the
   package's colorimetry matrices, components limited to
   +-1e6 as the config does, the analytic map (``colour.clip.clip_XYZ``,
   ``colour.compress.compress_XYZ``) in the display's gamut (for HDR scaled into its
@@ -35,7 +35,6 @@ from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
 
 __all__ = [
     "LIMIT",
-    "LOG_DECODINGS",
     "log_encoding",
     "log_decoding",
     "PEAK",
@@ -56,31 +55,24 @@ LIMIT = ocio_ops.LIMIT
 #: The HDR displays' reference white and peak, cd/m2 (ITU-R BT.2408; the registry's).
 WHITE = registry.HDR_REFERENCE_WHITE
 PEAK = 1000.0
-#: Log curve (:data:`ocio_thinfilm.registry.LOG_CURVES`) -> colour-science's names of
-#: its encoding and decoding (``colour.models``): the truth the config's colour spaces
-#: and the shaders are held to.
-LOG_DECODINGS = {
-    "ACEScct": ("log_encoding_ACEScct", "log_decoding_ACEScct"),
-    "DaVinci Intermediate": ("oetf_DaVinciIntermediate", "oetf_inverse_DaVinciIntermediate"),
-    "ARRI LogC4": ("log_encoding_ARRILogC4", "log_decoding_ARRILogC4"),
-    "S-Log3": ("log_encoding_SLog3", "log_decoding_SLog3"),
-}
 
 
-def log_encoding(linear: npt.ArrayLike, curve: str) -> np.ndarray:
-    """Scene-linear values -> codes of the log ``curve``, by colour-science."""
+def log_encoding(linear: npt.ArrayLike, curve: registry.LogCurve) -> np.ndarray:
+    """Scene-linear values -> codes of the log ``curve``, by colour-science (the function
+    the curve names, ``curve.colour_science[0]``, with its defaults)."""
     import colour
 
     with np.errstate(divide="ignore", invalid="ignore"):  # log of the masked negatives
-        return np.asarray(getattr(colour.models, LOG_DECODINGS[curve][0])(linear))
+        return np.asarray(getattr(colour.models, curve.colour_science[0])(linear))
 
 
-def log_decoding(codes: npt.ArrayLike, curve: str) -> np.ndarray:
-    """Codes of the log ``curve`` -> scene-linear values, by colour-science."""
+def log_decoding(codes: npt.ArrayLike, curve: registry.LogCurve) -> np.ndarray:
+    """Codes of the log ``curve`` -> scene-linear values, by colour-science (the function
+    the curve names, ``curve.colour_science[1]``, with its defaults)."""
     import colour
 
-    with np.errstate(over="ignore"):
-        return np.asarray(getattr(colour.models, LOG_DECODINGS[curve][1])(codes))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return np.asarray(getattr(colour.models, curve.colour_science[1])(codes))
 
 
 #: The config's sRGB-encoded texture space (sRGB curve, Rec.709 primaries).

@@ -10,6 +10,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from ocio_thinfilm import config, registry
@@ -129,8 +130,14 @@ def test_functions_take_a_display_object_as_they_take_its_name():
 def test_the_colorimetry_knows_the_registrys_spaces_and_kinds():
     """The registry imports nothing of the pipeline, so the names it gives the
     colorimetry are checked here: every display's RGB space and every film table's kind."""
+    import colour
+
     for d in registry.ALL_DISPLAY_LIST:
         assert d.colorimetry in registry.RGB_COLORIMETRY
+    for g in registry.GAMUT_LIST:  # each gamut names a colourspace colour-science has
+        assert g.colour_science in colour.RGB_COLOURSPACES, g
+        assert registry.RGB_COLORIMETRY[g.name] == g.colour_science
+    assert {s.gamut for s in registry.SCENE_LINEAR_LIST} <= set(registry.GAMUT_LIST)
     for s in registry.THIN_FILM_LIST:
         assert s.kind in colorimetry.FILM_KINDS + ("morpho",)
 
@@ -232,12 +239,10 @@ def test_adding_a_display_is_one_entry(tmp_path):
     assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"
 
 
-def test_every_stage_maps_every_view_kind_and_log_curve():
-    """Each stage's one mapping keyed by view kind or log curve has an entry for every
-    kind and curve of the registry (a new kind or curve fails here until each stage says
-    what it does with it)."""
-    from evaluation.shaders import LOG_DECODINGS
-    from ocio_thinfilm.colour.log_curves import LOG_CURVES
+def test_every_stage_maps_every_view_kind_and_curve_kind():
+    """Each stage's one mapping keyed by view kind or curve kind has an entry for every
+    kind of the registry (a new kind fails here until each stage says what it does with
+    it); a log curve itself is never a key: its fields are the code."""
     from ocio_thinfilm.colour.views import ANALYTIC_MAPS
     from ocio_thinfilm.config.data import LUT_FILE_VIEWS
     from ocio_thinfilm.config.spaces import CURVE_DECODINGS
@@ -256,17 +261,64 @@ def test_every_stage_maps_every_view_kind_and_log_curve():
     assert {name: sorted(m) for name, m in by_kind.items()} == {
         name: sorted(kinds) for name in by_kind
     }
-    by_curve = dict(
-        LOG_CURVES=LOG_CURVES, CURVE_DECODINGS=CURVE_DECODINGS, LOG_DECODINGS=LOG_DECODINGS
-    )
-    curves = {e.curve for e in registry.ENCODED_LIST}
-    assert curves == set(registry.LOG_CURVES)
-    assert {name: sorted(m) for name, m in by_curve.items()} == {
-        name: sorted(curves) for name in by_curve
-    }
+    assert sorted(CURVE_DECODINGS) == sorted(registry.CURVE_KINDS)
+    assert [e.curve for e in registry.ENCODED_LIST] == list(registry.LOG_CURVE_LIST)
+    assert {c.kind for c in registry.LOG_CURVE_LIST} == set(registry.CURVE_KINDS)
     # the raw view has no transform anywhere; every other view has a config chain
     assert all(m["raw"] is None for m in by_kind.values())
     assert all(LINEAR_VIEWS[k] is not None for k in kinds - {"raw"})
+
+
+@pytest.mark.parametrize("encoded", registry.ENCODED_LIST, ids=lambda e: e.name)
+def test_every_log_curve_is_colour_sciences_curve(encoded):
+    """The mapping of each encoded space to its independent truth: the colour-science
+    functions and RGB colourspace the entry names exist, and the curve's published
+    constants (the model every stage derives its code from) are colour-science's curve
+    with its defaults to 1e-12 (measured 7e-16 / 5e-15): encoding over linear -0.2..1e4,
+    decoding over codes -0.1..1.1, and the code of black, which decodes to 0."""
+    import colour
+
+    from ocio_thinfilm.colour import log_curves
+
+    curve = encoded.curve
+    encode, decode = (getattr(colour.models, name) for name in curve.colour_science)
+    assert encoded.gamut.colour_science in colour.RGB_COLOURSPACES
+    linear = np.concatenate([np.linspace(-0.2, 2.0, 20001), np.geomspace(2.0, 1e4, 2001)])
+    linear = linear[linear > (curve.toe_origin if curve.kind == "quadratic-toe" else -1.0)]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        truth = encode(linear)
+    np.testing.assert_allclose(log_curves.encode(curve, linear), truth, rtol=0, atol=1e-12)
+    codes = np.linspace(-0.1, 1.1, 24001)
+    codes = codes[codes >= 0.0] if curve.kind == "quadratic-toe" else codes
+    with np.errstate(over="ignore", invalid="ignore"):
+        truth = decode(codes)
+    got = log_curves.decode(curve, codes)
+    np.testing.assert_allclose(got, truth, rtol=1e-12, atol=1e-12)
+    # black: the published code is colour-science's, and decodes to 0 exactly
+    assert encode(0.0) == pytest.approx(curve.black, abs=1e-12)
+    assert float(log_curves.decode(curve, curve.black)) == pytest.approx(0.0, abs=1e-15)
+    for x in (0.0, 0.18, 1.0):  # the scalar model too
+        assert curve.encode_one(x) == pytest.approx(float(encode(x)), abs=1e-12)
+
+
+def test_a_curve_breaking_its_models_assumptions_is_refused_at_import():
+    """A curve's assumptions are checked when it is made: V-Log's published toe misses
+    its log part by 3.1e-7 (refused at a tighter continuity), a wrong black, a mirrored
+    curve whose toe misses black, an unknown kind."""
+    v_log = registry.find_curve("Panasonic V-Log")
+    assert abs(v_log.gap + 3.11e-7) < 1e-9 and v_log.toe_intercept == 0.125
+    with pytest.raises(ValueError, match="meet -3.11e-07 apart"):
+        dataclasses.replace(v_log, continuity=1e-7)
+    with pytest.raises(ValueError, match="black encodes to 0.125, not 0.126"):
+        dataclasses.replace(v_log, black=0.126)
+    clog3 = registry.find_curve("Canon Log 3")
+    with pytest.raises(ValueError, match="toe passes through"):
+        dataclasses.replace(clog3, toe_offset=0.13)
+    with pytest.raises(ValueError, match="kind must be one of"):
+        dataclasses.replace(v_log, kind="cubic")
+    # derived from continuity (None), the toe meets the log part: no gap
+    derived = dataclasses.replace(v_log, toe_offset=None, black=v_log.encode_one(0.0) - 3.1e-7)
+    assert derived.gap == 0.0 and derived.toe_intercept == pytest.approx(0.125 - 3.11e-7)
 
 
 #: The registry's constants that hold one view's or one colour space's name.
@@ -278,8 +330,6 @@ def _named_literals(path: Path, names: set[str]) -> list[str]:
     of each comparison with a registry constant of :data:`NAME_CONSTANTS` (``view ==
     registry.COMPRESS_VIEW`` picks by name as much as ``view == "..."`` does)."""
     import ast
-
-    curves = set(registry.LOG_CURVES)
 
     found = []
     for node in ast.walk(ast.parse(path.read_text())):
@@ -297,12 +347,8 @@ def _named_literals(path: Path, names: set[str]) -> list[str]:
                 and isinstance(o.value, ast.Name)
                 and o.value.id == "registry"
             ]
-        elif isinstance(node, ast.Dict):  # curve names key the stages' curve mappings
-            operands = [
-                k
-                for k in node.keys
-                if k is not None and not (isinstance(k, ast.Constant) and k.value in curves)
-            ]
+        elif isinstance(node, ast.Dict):
+            operands = [k for k in node.keys if k is not None]
         found += [
             f"{o.lineno}: {o.value}"
             for o in operands
@@ -319,6 +365,7 @@ def test_no_view_or_space_is_picked_by_its_name_outside_the_registry(tmp_path):
     check can fail: copies of such comparisons are found)."""
     names = (
         set(registry.VIEWS)
+        | set(registry.LOG_CURVES)
         | set(registry.ENCODED_SPACES)
         | set(registry.SCENE_LINEAR_SPACES)
         | set(registry.THIN_FILM_SPACES)
@@ -364,6 +411,14 @@ def test_every_space_of_the_registry_has_one_kind():
     assert sorted(set(expected.values())) == sorted(registry.SPACE_KINDS)
     assert registry.space_kind("ACES 1.0 - SDR Video") is None
     assert registry.space_kind(None) is None  # type: ignore[arg-type]
+
+
+def test_the_readme_lists_the_registrys_log_spaces():
+    """README's list of the log input spaces names every encoded space of the registry."""
+    text = (ROOT / "README.md").read_text()
+    start = text.index("The config, `export view` and `export shader` take the camera")
+    listed = text[start : text.index("\n\n", start)]
+    assert [n for n in registry.ENCODED_SPACES if f"`{n}`" not in listed] == []
 
 
 def test_the_config_page_lists_the_registrys_views_and_spaces():

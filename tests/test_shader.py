@@ -94,10 +94,9 @@ def test_the_code_is_the_analytic_view_on_every_test_set(lang, display, view, se
 @pytest.mark.parametrize("source", shader.SHADER_SOURCES[1:])
 @pytest.mark.parametrize("display", ["sRGB", "Rec.2100-HLG"])
 def test_every_input_space_is_decoded_exactly(lang, source, display, sets):
-    """The scene-linear spaces, the log spaces (ACEScct, DaVinci Intermediate, LogC4,
-    S-Log3) and the texture space: the same sets as values of the input space
-    (colour-science encodes each log space with its own function of its curve), both
-    views."""
+    """The scene-linear spaces, the log spaces (every encoded space of the registry) and
+    the texture space: the same sets as values of the input space (colour-science
+    encodes each log space with the function its registry curve names), both views."""
     scale = registry.as_display(display).scale
     for view in shader.SHADER_VIEWS:
         code = _view(lang, display, view, source)

@@ -10,8 +10,8 @@
   clamp);
 - :mod:`.adaptation` -- the von Kries chromatic adaptation (a film's illuminant to
   D65, the ACES whites);
-- :mod:`.log_curves` -- the log curves of the encoded input spaces (ACEScct, DaVinci
-  Intermediate, ARRI LogC4, S-Log3).
+- :mod:`.log_curves` -- the log curves of the encoded input spaces, encoded and
+  decoded by the kind of each registry curve.
 """
 
 __all__ = ["colorimetry", "adaptation", "encodings", "clip", "compress", "views", "log_curves"]

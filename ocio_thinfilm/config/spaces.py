@@ -4,23 +4,23 @@ The reference, the scene-linear spaces, the encoded (log) spaces, the sRGB textu
 ``Raw`` and the display colour spaces, each a dict for
 :func:`ocio_thinfilm.config.factories.colorspace_factory`, from the registry.
 
-An encoded space decodes with its curve (:data:`CURVE_DECODINGS`, one entry per curve of
-:data:`ocio_thinfilm.registry.LOG_CURVES`) to its linear space, then that space's matrix
-to CIE-XYZ-D65. Every transform is one that OCIO 2.1 reads (the config's profile
-version): ACEScct is OCIO's built-in ``ACEScct_to_ACES2065-1`` (with the AP1 -> AP0
-matrix undone), the camera and grading logs a ``LogCameraTransform`` with the curve's
-numbers (:data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`): OCIO 2.1 has no built-in
-for DaVinci Intermediate or LogC4.
+An encoded space decodes with its curve (:data:`CURVE_DECODINGS`, one entry per kind of
+:data:`ocio_thinfilm.registry.CURVE_KINDS`, built from the curve's numbers) to its linear
+space, then that space's matrix to CIE-XYZ-D65. Every transform is one that OCIO 2.1
+reads (the config's profile version): OCIO's built-in where the curve names one (ACEScct,
+its AP1 -> AP0 matrix undone), else ``LogCameraTransform`` and matrices only.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
+
 from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.colour.log_curves import LOG_CURVES
 from ocio_thinfilm.lut import display_transforms, ocio_ops
 
 __all__ = [
@@ -55,48 +55,120 @@ def matrix_to_reference(colorimetry_name: str) -> ocio_ops.Transform:
     )
 
 
-def _acescct_decoding() -> list[ocio_ops.Transform]:
-    """ACEScct codes -> ACEScg: OCIO's built-in to ACES2065-1, then AP0 -> AP1 undone.
+def _builtin_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
+    """Codes -> linear: the curve's OCIO built-in to ACES2065-1, its gamut's undone.
 
     The two matrices cancel when OCIO optimises, so the path is per channel, as OCIO's
-    Baker requires of a shaper.
+    Baker requires of a shaper (ACEScct: ``ACEScct_to_ACES2065-1``, then the inverse of
+    ``ACEScg_to_ACES2065-1``).
     """
     import PyOpenColorIO as ocio
 
-    to_linear = ocio.BuiltinTransform("ACEScg_to_ACES2065-1")
+    assert curve.ocio_builtin is not None
+    decoding, gamut = curve.ocio_builtin
+    to_linear = ocio.BuiltinTransform(gamut)
     to_linear.setDirection(ocio.TRANSFORM_DIR_INVERSE)
-    return [ocio.BuiltinTransform("ACEScct_to_ACES2065-1"), to_linear]
+    return [ocio.BuiltinTransform(decoding), to_linear]
 
 
-def _log_camera_decoding(curve: str) -> Callable[[], list[ocio_ops.Transform]]:
-    """Return a factory of the inverse ``LogCameraTransform`` of ``curve`` (OCIO >= 2.0)."""
+def _log_camera(
+    base: float,
+    log_slope: float,
+    log_offset: float,
+    lin_slope: float,
+    lin_offset: float,
+    lin_break: float,
+    linear_slope: float,
+    *,
+    inverse: bool = True,
+) -> ocio_ops.Transform:
+    """Return a ``LogCameraTransform`` (OCIO >= 2.0; its toe's offset from continuity)."""
+    import PyOpenColorIO as ocio
 
-    def decoding() -> list[ocio_ops.Transform]:
-        import PyOpenColorIO as ocio
-
-        c = LOG_CURVES[curve]
-        t = ocio.LogCameraTransform(
-            base=c.base,
-            logSideSlope=[c.log_slope] * 3,
-            logSideOffset=[c.log_offset] * 3,
-            linSideSlope=[c.lin_slope] * 3,
-            linSideOffset=[c.lin_offset] * 3,
-            linSideBreak=[c.lin_break] * 3,
-            direction=ocio.TRANSFORM_DIR_INVERSE,
-        )
-        t.setLinearSlopeValue([c.linear_slope] * 3)
-        return [t]
-
-    return decoding
+    t = ocio.LogCameraTransform(
+        base=base,
+        logSideSlope=[log_slope] * 3,
+        logSideOffset=[log_offset] * 3,
+        linSideSlope=[lin_slope] * 3,
+        linSideOffset=[lin_offset] * 3,
+        linSideBreak=[lin_break] * 3,
+        direction=ocio.TRANSFORM_DIR_INVERSE if inverse else ocio.TRANSFORM_DIR_FORWARD,
+    )
+    t.setLinearSlopeValue([linear_slope] * 3)
+    return t
 
 
-#: Log curve (:data:`ocio_thinfilm.registry.LOG_CURVES`) -> a factory of its OCIO 2.1
-#: transforms, code values -> scene-linear values of the same gamut, per channel.
-CURVE_DECODINGS: dict[str, Callable[[], list[ocio_ops.Transform]]] = {
-    "ACEScct": _acescct_decoding,
-    "DaVinci Intermediate": _log_camera_decoding("DaVinci Intermediate"),
-    "ARRI LogC4": _log_camera_decoding("ARRI LogC4"),
-    "S-Log3": _log_camera_decoding("S-Log3"),
+def _gap(curve: registry.LogCurve) -> float:
+    """Return the curve's gap at its break, rounded to 12 decimals.
+
+    libm's last bits do not reach the file; a continuous curve's round-off gives 0.
+    """
+    return float(ocio_ops.quantize(curve.gap, 12))
+
+
+def _log_part(curve: registry.LogCurve, toe_slope: float) -> ocio_ops.Transform:
+    """Return codes -> linear by the curve's log part, below its break a line.
+
+    The line passes through the toe's code at the break (OCIO derives its offset from
+    continuity): the gap of a published toe (V-Log's 3.1e-7, at most
+    ``curve.continuity``) moves into the log side's offset, so the toe, and black,
+    decode exactly.
+    """
+    c = curve
+    offset = c.log_offset - _gap(c)
+    return _log_camera(
+        c.base, c.log_slope, offset, c.lin_slope, c.lin_offset, c.lin_break, toe_slope
+    )
+
+
+def _log_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
+    """Return a ``"log"`` curve's decoding: an inverse ``LogCameraTransform`` or a built-in."""
+    if curve.ocio_builtin is not None:
+        return _builtin_decoding(curve)
+    return [_log_part(curve, curve.toe_slope)]
+
+
+def _mirrored_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
+    """Return a ``"mirrored-log"`` curve's decoding (Canon Log 3's three segments).
+
+    The log part and toe, then below ``-lin_break`` the mirrored log part, as an
+    identity-toed ``LogCameraTransform`` on the negated values (``P(u) = u`` for ``u <=
+    lin_break``, else ``U^-1(black + s u)``).
+    """
+    c = curve
+    s = c.toe_slope
+    negate = ocio_ops.matrix(-np.eye(3))
+    offset = (c.log_offset - _gap(c) - c.black) / s
+    mirror = _log_camera(
+        c.base, c.log_slope / s, offset, c.lin_slope, c.lin_offset, c.lin_break, 1.0
+    )
+    return [_log_part(c, s), negate, mirror, negate]
+
+
+def _quadratic_decoding(curve: registry.LogCurve) -> list[ocio_ops.Transform]:
+    """Return a ``"quadratic-toe"`` curve's decoding (Apple Log) in OCIO 2.1 ops.
+
+    The log part with a line below its break (slope ``s``, the quadratic's there,
+    through its code ``P_t``), then for ``u = R_t - w > 0`` the square root ``R_t - q_t
+    (1 - sqrt(1 - s u / P_t))`` as two identity-toed ``LogCameraTransform`` (a natural
+    log, then its exponential halved), ``q_t = R_t - toe_origin``: exactly
+    ``toe_origin + sqrt(code / toe_slope)``.
+    """
+    c = curve
+    q_t = c.lin_break - c.toe_origin
+    s = 2.0 * c.toe_slope * q_t
+    flip = ocio_ops.matrix(-np.eye(3), [c.lin_break] * 3)
+    log = _log_camera(math.e, -1.0, 0.0, -s / c.toe_break, 1.0, 0.0, 1.0, inverse=False)
+    root = _log_camera(math.e, -2.0, 0.0, -1.0 / q_t, 1.0, 0.0, 1.0)
+    return [_log_part(c, s), flip, log, root, flip]
+
+
+#: Curve kind (:data:`ocio_thinfilm.registry.CURVE_KINDS`) -> its OCIO 2.1 transforms,
+#: code values -> scene-linear values of the same gamut, per channel.
+CURVE_DECODINGS: dict[str, Callable[[registry.LogCurve], list[ocio_ops.Transform]]] = {
+    "log": _log_decoding,
+    "mirrored-log": _mirrored_decoding,
+    "quadratic-toe": _quadratic_decoding,
 }
 
 
@@ -104,9 +176,9 @@ def encoded_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
     """Return an encoded space -> CIE-XYZ-D65: its curve's decoding, then its gamut's matrix.
 
     The code values are limited first to those of linear +-:data:`ocio_ops.LIMIT` (the
-    curve's encoding of them, :data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`, in
-    float64, printed to 7 significant digits), so the curve's exponential never
-    overflows to Inf (and Inf - Inf to NaN in a matrix) at any optimisation level.
+    curve's encoding of them, ``LogCurve.encode_one``, in float64, printed to 7
+    significant digits), so the curve's exponential never overflows to Inf (and Inf -
+    Inf to NaN in a matrix) at any optimisation level.
 
     Parameters
     ----------
@@ -117,12 +189,12 @@ def encoded_to_reference(encoded: registry.EncodedSpace) -> ocio_ops.Transform:
     -------
     PyOpenColorIO.GroupTransform
     """
-    curve = LOG_CURVES[encoded.curve]
+    curve = encoded.curve
     lo, hi = (float(f"{curve.encode_one(v):.7g}") for v in (-ocio_ops.LIMIT, ocio_ops.LIMIT))
     return ocio_ops.group(
         [ocio_ops.range_(lo, hi)]
-        + CURVE_DECODINGS[encoded.curve]()
-        + [matrix_to_reference(encoded.gamut.colorimetry)]
+        + CURVE_DECODINGS[curve.kind](curve)
+        + [matrix_to_reference(encoded.gamut.name)]
     )
 
 

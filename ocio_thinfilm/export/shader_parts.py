@@ -3,7 +3,7 @@
 Each part is one GLSL or DCTL function of :func:`ocio_thinfilm.export.shader.shader_source`:
 the helpers (OCIO's Range, the normalised distance), the input space's decoding to
 CIE-XYZ-D65 and its inverse (by the encoded space's log curve,
-:data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`, or the texture space's sRGB curve),
+its kind and numbers, or the texture space's sRGB curve),
 the map of the view's kind (the clip or the compression) and its inverse, and the
 display's encoding and decoding (sRGB piecewise, BT.1886, SMPTE ST 2084, BT.2100 HLG)
 with the HDR scale.
@@ -15,7 +15,6 @@ import math
 
 from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import clip, colorimetry, compress, encodings
-from ocio_thinfilm.colour.log_curves import LOG_CURVES
 from ocio_thinfilm.export.shader_language import GLSL, Language, matrix_rows
 from ocio_thinfilm.lut import ocio_ops
 from ocio_thinfilm.lut.view_transforms import HLG_GAMMA
@@ -106,54 +105,77 @@ def _piecewise_decode(L: Language, encoding: registry.Encoding, v: str) -> str:
     )
 
 
-def _log_decoding(L: Language, curve_name: str) -> list[str]:
-    """Return the lines decoding ``r``, ``g``, ``b`` from the log curve ``curve_name``.
+def _unlog(L: Language, c: registry.LogCurve, v: str) -> str:
+    """Return the log part's inverse of the expression ``v``.
 
-    Any curve of :data:`ocio_thinfilm.colour.log_curves.LOG_CURVES`: codes limited to
-    those of linear +-1e6, then the toe's line below the break, ``(2 ** (code * S - O) -
-    lin_offset) / lin_slope`` above it (S, O: the log side's scale and offset in base 2).
+    ``(2 ** (v * S - O) - lin_offset) / lin_slope`` (S, O: the log side's scale and
+    offset in base 2).
     """
-    c = LOG_CURVES[curve_name]
-    lo = c.encode_one(-ocio_ops.LIMIT)
-    hi = c.encode_one(ocio_ops.LIMIT)
     scale = math.log2(c.base) / c.log_slope
-    offset = c.log_offset * scale
-    power = f"{L.exp2}({{ch}} * {L.lit(scale)} - {L.lit(offset)})"
+    power = f"{L.exp2}({v} * {L.lit(scale)} - {L.lit(c.log_offset * scale)})"
     if c.lin_offset:
         power = f"({power} - {L.lit(c.lin_offset)})"
     if c.lin_slope != 1.0:
         power = f"{power} / {L.lit(c.lin_slope)}"
-    toe = f"({{ch}} - {L.lit(c.linear_offset)}) / {L.lit(c.linear_slope)}"
-    lines = [f"    // {curve_name} codes -> linear"]
-    for ch in "rgb":
-        lines.append(
-            f"    {ch} = ocio_thinfilm_range({ch}, {L.lit(lo)}, {L.lit(hi)});"
-            f"  {ch} = {ch} <= {L.lit(c.code_break)} ? {toe.format(ch=ch)} : "
-            f"{power.format(ch=ch)};"
-        )
-    return lines
+    return power
 
 
-def _log_encoding(L: Language, curve_name: str) -> list[str]:
-    """Return the lines encoding ``r``, ``g``, ``b`` with the log curve ``curve_name``.
-
-    The inverse of :func:`_log_decoding`.
-    """
-    c = LOG_CURVES[curve_name]
+def _relog(L: Language, c: registry.LogCurve, v: str) -> str:
+    """Return the log part of the expression ``v`` (the inverse of :func:`_unlog`)."""
     scale = math.log2(c.base) / c.log_slope
-    offset = c.log_offset * scale
-    inner = "{ch}"
+    inner = v
     if c.lin_slope != 1.0:
         inner = f"{L.lit(c.lin_slope)} * {inner}"
     if c.lin_offset:
         inner = f"{inner} + {L.lit(c.lin_offset)}"
-    lines = [f"    // linear -> {curve_name} codes"]
+    return f"({L.log2}({inner}) + {L.lit(c.log_offset * scale)}) / {L.lit(scale)}"
+
+
+def _log_decoding(L: Language, c: registry.LogCurve) -> list[str]:
+    """Return the lines decoding ``r``, ``g``, ``b`` from the log curve ``c``.
+
+    Codes limited to those of linear +-1e6, then by the curve's kind
+    (:data:`ocio_thinfilm.registry.CURVE_KINDS`): the toe (a line, or the quadratic's
+    root) up to the toe's code at the break, the log part above it, and for a mirrored
+    curve the negated log part of ``2 black - code`` below the mirrored break.
+    """
+    lo, hi = c.encode_one(-ocio_ops.LIMIT), c.encode_one(ocio_ops.LIMIT)
+    if c.kind == "quadratic-toe":
+        root = f"{L.sqrt}({L.max}({{ch}}, {L.lit(0.0)}) / {L.lit(c.toe_slope)})"
+        toe = f"{L.lit(c.toe_origin)} + {root}"
+    else:
+        toe = f"({{ch}} - {L.lit(c.toe_intercept)}) / {L.lit(c.toe_slope)}"
+    lines = [f"    // {c.name} codes -> linear"]
     for ch in "rgb":
+        value = f"{ch} <= {L.lit(c.toe_break)} ? {toe.format(ch=ch)} : {_unlog(L, c, ch)}"
+        if c.kind == "mirrored-log":
+            mirror = f"({L.lit(2.0 * c.black)} - {ch})"
+            lower = L.lit(2.0 * c.black - c.toe_break)
+            value = f"{ch} < {lower} ? -({_unlog(L, c, mirror)}) : ({value})"
         lines.append(
-            f"    {ch} = {ch} <= {L.lit(c.lin_break)} ? {L.lit(c.linear_slope)} * {ch} + "
-            f"{L.lit(c.linear_offset)} : ({L.log2}({inner.format(ch=ch)}) + {L.lit(offset)}) / "
-            f"{L.lit(scale)};"
+            f"    {ch} = ocio_thinfilm_range({ch}, {L.lit(lo)}, {L.lit(hi)});  {ch} = {value};"
         )
+    return lines
+
+
+def _log_encoding(L: Language, c: registry.LogCurve) -> list[str]:
+    """Return the lines encoding ``r``, ``g``, ``b`` with the log curve ``c``.
+
+    The inverse of :func:`_log_decoding`.
+    """
+    lines = [f"    // linear -> {c.name} codes"]
+    for ch in "rgb":
+        if c.kind == "quadratic-toe":
+            d = f"({ch} - {L.lit(c.toe_origin)})"
+            square = f"{L.lit(c.toe_slope)} * {d} * {d}"
+            toe = f"({ch} > {L.lit(c.toe_origin)} ? {square} : {L.lit(0.0)})"
+        else:
+            toe = f"{L.lit(c.toe_slope)} * {ch} + {L.lit(c.toe_intercept)}"
+        value = f"{ch} <= {L.lit(c.lin_break)} ? {toe} : {_relog(L, c, ch)}"
+        if c.kind == "mirrored-log":
+            mirror = f"{L.lit(2.0 * c.black)} - {_relog(L, c, f'(-{ch})')}"
+            value = f"{ch} < {L.lit(-c.lin_break)} ? {mirror} : ({value})"
+        lines.append(f"    {ch} = {value};")
     return lines
 
 

@@ -35,8 +35,7 @@ from __future__ import annotations
 import numpy as np
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import clip, colorimetry, compress, encodings
-from ocio_thinfilm.colour.log_curves import LOG_CURVES
+from ocio_thinfilm.colour import clip, colorimetry, compress, encodings, log_curves
 from ocio_thinfilm.colour.views import analytic_map
 from ocio_thinfilm.lut import lattice_fit, ocio_ops
 
@@ -142,8 +141,8 @@ def _to_XYZ(cfg, start, values):
     encoded = registry.find_encoded(start)
     if encoded is None:
         return _apply(cfg, start, "CIE-XYZ-D65", values)
-    linear = LOG_CURVES[encoded.curve].decode(values)
-    return colorimetry.RGB_to_XYZ(linear, encoded.gamut.colorimetry)
+    linear = log_curves.decode(encoded.curve, values)
+    return colorimetry.RGB_to_XYZ(linear, encoded.gamut.name)
 
 
 def _from_XYZ(cfg, start, XYZ):
@@ -151,8 +150,8 @@ def _from_XYZ(cfg, start, XYZ):
     encoded = registry.find_encoded(start)
     if encoded is None:
         return _apply(cfg, "CIE-XYZ-D65", start, XYZ)
-    linear = colorimetry.XYZ_to_RGB(XYZ, encoded.gamut.colorimetry)
-    return LOG_CURVES[encoded.curve].encode(linear)
+    linear = colorimetry.XYZ_to_RGB(XYZ, encoded.gamut.name)
+    return log_curves.encode(encoded.curve, linear)
 
 
 def _view_codes(cfg, start, display, view, coords, XYZ, knobs):

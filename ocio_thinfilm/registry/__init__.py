@@ -26,6 +26,7 @@ from __future__ import annotations
 from typing import Literal, TypeAlias, overload
 
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.registry.curves import BLACK_TOLERANCE, CURVE_KINDS
 from ocio_thinfilm.registry.displays import (
     CLIP_FILE_STEM,
     COMPRESS_FILE_STEM,
@@ -39,6 +40,7 @@ from ocio_thinfilm.registry.displays import (
 )
 from ocio_thinfilm.registry.spaces import (
     ENCODED_LIST,
+    GAMUT_LIST,
     LOG_CURVE_LIST,
     RAW_SPACE,
     REFERENCE,
@@ -48,6 +50,7 @@ from ocio_thinfilm.registry.spaces import (
     TEXTURE_SPACE,
     THIN_FILM_LIST,
     EncodedSpace,
+    Gamut,
     LogCurve,
     SceneSpace,
     ThinFilmSpace,
@@ -93,6 +96,11 @@ __all__ = [
     "LogCurve",
     "LOG_CURVE_LIST",
     "LOG_CURVES",
+    "CURVE_KINDS",
+    "BLACK_TOLERANCE",
+    "find_curve",
+    "Gamut",
+    "GAMUT_LIST",
     "THIN_FILM_LIST",
     "DISPLAYS",
     "HDR_DISPLAYS",
@@ -392,7 +400,7 @@ def linear_space_of(name: str) -> SceneSpace | None:
     if name in SCENE_LINEAR_BY_NAME:
         return SCENE_LINEAR_BY_NAME[name]
     encoded = find_encoded(name)
-    return None if encoded is None else encoded.gamut
+    return None if encoded is None else encoded.linear
 
 
 def find_encoded(name: str) -> EncodedSpace | None:
@@ -409,13 +417,41 @@ def find_encoded(name: str) -> EncodedSpace | None:
 
     Examples
     --------
-    >>> find_encoded("S-Log3 S-Gamut3.Cine").curve, find_encoded("ACEScg")
+    >>> find_encoded("S-Log3 S-Gamut3.Cine").curve.name, find_encoded("ACEScg")
     ('S-Log3', None)
     """
     for encoded in ENCODED_LIST:
         if encoded.name == name:
             return encoded
     return None
+
+
+def find_curve(name: str) -> LogCurve:
+    """Return the log curve called ``name`` (a name of :data:`LOG_CURVES`).
+
+    Parameters
+    ----------
+    name : str
+        A log curve's name.
+
+    Returns
+    -------
+    LogCurve
+
+    Raises
+    ------
+    ocio_thinfilm.checks.ParameterError
+        For a name the registry does not have.
+
+    Examples
+    --------
+    >>> find_curve("Apple Log").kind
+    'quadratic-toe'
+    """
+    for curve in LOG_CURVE_LIST:
+        if curve.name == name:
+            return curve
+    raise ParameterError("curve", f" must be one of {LOG_CURVES}, got {name!r}")
 
 
 def validate() -> None:
@@ -493,6 +529,9 @@ def validate() -> None:
     )
     if len(set(spaces_all)) != len(spaces_all):
         raise ValueError(f"registry: colour space names must be unique: {spaces_all}")
+    gamuts = [g.name for g in GAMUT_LIST]
+    if len(set(gamuts)) != len(gamuts):
+        raise ValueError(f"registry: gamut names must be unique: {gamuts}")
     for c in SCENE_LINEAR_LIST:
         if c.colorimetry not in RGB_COLORIMETRY:
             raise ValueError(f"registry: {c.name!r}: unknown colorimetry {c.colorimetry!r}")
@@ -500,11 +539,11 @@ def validate() -> None:
         if d.colorimetry not in RGB_COLORIMETRY:
             raise ValueError(f"registry: {d.name!r}: unknown colorimetry {d.colorimetry!r}")
     for encoded in ENCODED_LIST:
-        if encoded.linear not in SCENE_LINEAR_SPACES:
+        if SCENE_LINEAR_BY_NAME.get(encoded.linear.name) != encoded.linear:
             raise ValueError(
                 f"registry: {encoded.name!r} encodes an unknown space {encoded.linear!r}"
             )
-        if encoded.curve not in LOG_CURVES or not encoded.family:
+        if not isinstance(encoded.curve, LogCurve) or not encoded.family:
             raise ValueError(f"registry: {encoded.name!r}: bad curve or family {encoded!r}")
     if sorted(set(_SPACE_KIND.values())) != sorted(SPACE_KINDS):
         raise ValueError(f"registry: a colour space of each kind {SPACE_KINDS}")
