@@ -131,6 +131,11 @@ class SceneSpace:
         Its name as three.js's working colour space (``THREE.LinearSRGBColorSpace``'s
         value), for the film tables a three.js module reads; ``None`` (default) where
         three.js does not work in it.
+    blender : tuple of str or None, optional
+        ``(name, interop id)`` of the colour space in Blender's own OCIO config (its
+        name and its OCIO interop id), for the film tables a Blender script loads in a
+        scene of that working space (Blender 5: ``bpy.data.colorspace.working_space``);
+        ``None`` (default) where Blender has none.
     """
 
     name: str
@@ -139,6 +144,7 @@ class SceneSpace:
     shaper_from_zero: bool = False
     materialx: str | None = None
     threejs: str | None = None
+    blender: tuple[str, str] | None = None
 
     @property
     def colorimetry(self) -> str:
@@ -208,11 +214,13 @@ _ACESCG_SPACE = SceneSpace(
     description="ACEScg: AP1 primaries, ACES white (Bradford from D65)",
     shaper_from_zero=True,
     materialx="acescg",
+    blender=("ACEScg", "lin_ap1_scene"),
 )
 _REC2020_SPACE = SceneSpace(
     name="Linear Rec.2020",
     gamut=_REC2020,
     description="Scene-linear Rec.2020 primaries, D65",
+    blender=("Linear Rec.2020", "lin_rec2020_scene"),
 )
 _DWG_SPACE = SceneSpace(
     name="Linear DaVinci Wide Gamut",
@@ -450,6 +458,7 @@ SCENE_LINEAR_LIST: tuple[SceneSpace, ...] = (
         name="ACES2065-1",
         gamut=_AP0,
         description="ACES2065-1: AP0 primaries, ACES white (Bradford from D65)",
+        blender=("ACES2065-1", "lin_ap0_scene"),
     ),
     _ACESCG_SPACE,
     SceneSpace(
@@ -458,12 +467,14 @@ SCENE_LINEAR_LIST: tuple[SceneSpace, ...] = (
         description="Scene-linear Rec.709 / sRGB primaries, D65",
         materialx="lin_rec709",
         threejs="srgb-linear",
+        blender=("Linear Rec.709", "lin_rec709_scene"),
     ),
     SceneSpace(
         name="Linear P3-D65",
         gamut=_P3,
         description="Scene-linear P3 primaries, D65",
         materialx="lin_displayp3",
+        blender=("Linear DCI-P3 D65", "lin_p3d65_scene"),
     ),
     _REC2020_SPACE,
 )

@@ -54,11 +54,16 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import PurePosixPath
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError
+from ocio_thinfilm.config.data import ROLES
 from ocio_thinfilm.export.hosts import TableFiles, thickness_range
 
 __all__ = [
     "BLENDER_SPACES",
+    "WORKING_INTEROP_IDS",
+    "wider_working_spaces",
+    "clippable",
     "DEFAULT_SPACE",
     "BlenderTables",
     "blender_script",
@@ -68,19 +73,16 @@ __all__ = [
 
 #: The tables' space when none is named: ``export material``'s default (the config's
 #: scene_linear role), Blender's default working space.
-DEFAULT_SPACE = "Linear Rec.709 (sRGB)"
+DEFAULT_SPACE = ROLES["scene_linear"]
 
-#: Blender's names of the registry's scene-linear spaces: the registry's name -> (the
-#: colour space's name in Blender's OCIO config, its OCIO interop id). Blender 5's
-#: working space (``bpy.data.colorspace.working_space``, set in the Properties' Color
-#: Management panel or by ``bpy.ops.wm.set_working_color_space``) is one of the first
-#: three; the script matches the scene's working space to a table by either name.
+#: Blender's names of the registry's scene-linear spaces (their ``blender`` field): the
+#: registry's name -> (the colour space's name in Blender's OCIO config, its OCIO interop
+#: id). Blender 5's working space (``bpy.data.colorspace.working_space``, set in the
+#: Properties' Color Management panel or by ``bpy.ops.wm.set_working_color_space``) is
+#: Linear Rec.709, Linear Rec.2020 or ACEScg; the script matches the scene's working
+#: space to a table by either name.
 BLENDER_SPACES: dict[str, tuple[str, str]] = {
-    "Linear Rec.709 (sRGB)": ("Linear Rec.709", "lin_rec709_scene"),
-    "Linear Rec.2020": ("Linear Rec.2020", "lin_rec2020_scene"),
-    "ACEScg": ("ACEScg", "lin_ap1_scene"),
-    "Linear P3-D65": ("Linear DCI-P3 D65", "lin_p3d65_scene"),
-    "ACES2065-1": ("ACES2065-1", "lin_ap0_scene"),
+    space.name: space.blender for space in registry.SCENE_LINEAR_LIST if space.blender
 }
 
 
@@ -170,21 +172,92 @@ def _tables_entry(tables: BlenderTables, parameters: tuple[str, str, str, str]) 
         f'        "reflectance": {_quote(reflectance)},\n'
         f'        "transmittance": {transmittance},\n'
         f'        "outside": ({fraction!r}, {lowest!r}),\n'
-        f'        "wider": {_tuple(_WIDER.get(tables.space, ()))},\n'
-        f'        "clip": {tables.space in _CLIPPABLE},\n'
+        f'        "wider": {_tuple(wider_working_spaces(tables.space))},\n'
+        f'        "clip": {clippable(tables.space)},\n'
         "    },\n"
     )
 
 
-#: The wider working spaces of Blender 5 for tables of a space, and the spaces with a
-#: display's primaries (``--gamut clip``): what the script advises for colours outside
-#: the loaded tables' gamut.
-_WIDER = {
-    "Linear Rec.709 (sRGB)": ("Linear Rec.2020", "ACEScg"),
-    "Linear P3-D65": ("Linear Rec.2020", "ACEScg"),
-    "Linear Rec.2020": ("ACEScg",),
-}
-_CLIPPABLE = ("Linear Rec.709 (sRGB)", "Linear P3-D65", "Linear Rec.2020")
+#: Blender 5's working spaces (``bpy.data.colorspace.working_space``), by their
+#: interop ids (the registry's ``blender`` field).
+WORKING_INTEROP_IDS = ("lin_rec709_scene", "lin_rec2020_scene", "lin_ap1_scene")
+
+
+def _primaries(space: str) -> tuple[tuple[float, float], ...]:
+    """Return the xy of a scene-linear space's primaries and white (colour-science's)."""
+    import colour
+
+    gamut = colour.RGB_COLOURSPACES[registry.SCENE_LINEAR_BY_NAME[space].gamut.colour_science]
+    return tuple(map(tuple, gamut.primaries.tolist())) + (tuple(gamut.whitepoint.tolist()),)
+
+
+def _inside(point: tuple[float, float], triangle: Sequence[tuple[float, float]]) -> bool:
+    """Whether ``point`` lies in ``triangle`` (edges included, 1e-9 of slack)."""
+    (x, y), signs = point, []
+    for (x0, y0), (x1, y1) in zip(triangle, [*triangle[1:], triangle[0]], strict=True):
+        signs.append((x1 - x0) * (y - y0) - (y1 - y0) * (x - x0))
+    return all(s >= -1e-9 for s in signs) or all(s <= 1e-9 for s in signs)
+
+
+def wider_working_spaces(space: str) -> tuple[str, ...]:
+    """Return Blender 5's working spaces whose gamut holds ``space``'s and more.
+
+    What the script advises for colours outside the loaded tables' gamut: tables in one
+    of these, with that working space.
+
+    Parameters
+    ----------
+    space : str
+        A scene-linear space of the registry.
+
+    Returns
+    -------
+    tuple of str
+        Registry names, in the registry's order.
+
+    Examples
+    --------
+    >>> wider_working_spaces("Linear Rec.709 (sRGB)")
+    ('ACEScg', 'Linear Rec.2020')
+    """
+    own = _primaries(space)
+    wider = []
+    for other, (_, interop) in BLENDER_SPACES.items():
+        if other == space or interop not in WORKING_INTEROP_IDS:
+            continue
+        theirs = _primaries(other)
+        if theirs[:3] != own[:3] and all(_inside(p, theirs[:3]) for p in own[:3]):
+            wider.append(other)
+    return tuple(wider)
+
+
+def clippable(space: str) -> bool:
+    """Return whether ``space`` has an SDR display's primaries and white (``--gamut clip``).
+
+    Parameters
+    ----------
+    space : str
+        A scene-linear space of the registry.
+
+    Returns
+    -------
+    bool
+        Whether the constant-lightness clip can map its tables.
+    """
+    import numpy as np
+
+    own = np.array(_primaries(space))
+    return any(
+        np.allclose(own, _display_primaries(display.colorimetry), atol=1e-12)
+        for display in registry.DISPLAY_LIST
+    )
+
+
+def _display_primaries(colorimetry: str) -> tuple[tuple[float, float], ...]:
+    import colour
+
+    gamut = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[colorimetry]]
+    return tuple(map(tuple, gamut.primaries.tolist())) + (tuple(gamut.whitepoint.tolist()),)
 
 
 def _tuple(names: Sequence[str]) -> str:
