@@ -390,7 +390,17 @@ EXPORT_OPTIONS = {
     | {"--resolve-shaper", "--compress-threshold", "--compress-limit"},
     "shader": {"--lang", "--from", "--display", "--view", "--out"}
     | {"--compress-threshold", "--compress-limit"},
-    "material": {"--films", "--film", "--out", "--space", "--size", "--gamut"},
+    "material": {
+        "--films",
+        "--film",
+        "--out",
+        "--space",
+        "--size",
+        "--gamut",
+        "--gltf",
+        "--jobs",
+        "--quiet",
+    },
 }
 #: What a sub-command requires besides --out, for the refusal of another's option.
 _REQUIRED = {"material": ["--films", "films.toml"]}

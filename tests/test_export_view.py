@@ -690,7 +690,7 @@ def test_bad_view_arguments(argv, says, tmp_path, capsys):
         (dict(view=None), "view is needed"),
         (dict(size=1000), "size must be in [2, "),
         (dict(value_range=(0.0, 2.0)), "value_range applies to the thin-film inputs only"),
-        (dict(fmt="spi3d", shaper=True), "shaper applies to .cube files"),
+        (dict(fmt="spi3d", shaper=True, out="v.spi3d"), "shaper applies to .cube files"),
         (dict(out="v.lut"), "fmt is needed: no format can be told from 'v.lut'"),
     ],
 )

@@ -182,7 +182,7 @@ def run(args: argparse.Namespace) -> int:
     # committed together at the end: a failure leaves every previous file as it was.
     for name in names:
         for path in render.frame_paths(name, out_dir, frame):
-            check_output_file(path)
+            check_output_file(path, in_new_folder=True)
     lookup = make_lookup(processors)
     messages = []
     with transaction() as tx:

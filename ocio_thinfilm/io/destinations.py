@@ -212,7 +212,9 @@ def check_writable(directory: StrPath, *, create: bool = True) -> Path:
     return d
 
 
-def check_output_file(path: StrPath, parameter: str = "out") -> Path:
+def check_output_file(
+    path: StrPath, parameter: str = "out", *, in_new_folder: bool = False
+) -> Path:
     """Fail early, with a one-line error, if the file ``path`` cannot be written.
 
     Special files (written through) need only exist.
@@ -223,6 +225,9 @@ def check_output_file(path: StrPath, parameter: str = "out") -> Path:
         The output file.
     parameter : str, optional
         The caller's name for ``path``, for the error message (default ``"out"``).
+    in_new_folder : bool, optional
+        Whether the file goes into an output folder the command creates (a render's
+        ``--out``): then that folder may be missing, but not its parent.
 
     Returns
     -------
@@ -240,9 +245,10 @@ def check_output_file(path: StrPath, parameter: str = "out") -> Path:
         mode, dest = destination(path)
         if mode == "replace":
             folder = dest.parent
-            if not folder.exists() and not folder.is_symlink():
+            missing = not folder.exists() and not folder.is_symlink()
+            if missing and not in_new_folder:
                 raise ValueError(f"{path}: its folder {folder} does not exist (create it first)")
-            check_writable(folder, create=False)
+            check_writable(folder, create=in_new_folder)
     except ParameterError:
         raise
     except ValueError as error:

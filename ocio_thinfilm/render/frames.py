@@ -360,7 +360,7 @@ def save_frame(
         scene = scene.with_film(film)
     stem = name if frame is None else f"{name}.{frame:04d}"
     for path in frame_paths(name, out_dir, frame):
-        check_output_file(path, parameter="out_dir")
+        check_output_file(path, parameter="out_dir", in_new_folder=True)
     channels = ["R", "G", "B"] + list(picture.aovs)
     data = np.concatenate([picture.xyz] + [a[..., None] for a in picture.aovs.values()], axis=-1)
     attrs = _exr_attributes(scene, picture, seed=seed, frame=frame or 1, display=display, view=view)
