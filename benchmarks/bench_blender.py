@@ -16,21 +16,22 @@ ramping from 0.05 um at the left to 0.95 um at the right (and, for two more rows
 - and the node group of a free-standing soap film (n = 1.33 in air) against its exact
   reflectance, in Cycles and in EEVEE (headless: EGL, on Mesa's llvmpipe here).
 
-Prints and writes reports/bench_blender.json and reports/bench_blender.md: DeltaE2000
+Prints and writes reports/bench_blender.json (``_reports.write_json``) and
+reports/bench_blender.md: DeltaE2000
 (p50 / p99 / max over the sphere away from its silhouette) of ours and Principled's
 against the exact film and against each other, and the Cycles render time of each
 (median of ``--runs`` renders of the same scene in one Blender, after a warm-up render);
-the picture docs/gallery/blender_soap.png (ours | Principled, sRGB), and
+with ``--update-docs`` also the picture docs/gallery/blender_soap.png (ours | Principled, sRGB), and
 docs/gallery/blender_bubble.png: the same sphere with a free-standing soap film (n = 1.33
 in air), reflection only (the scene of tests/test_blender.py's exact-reflectance test).
 
-Usage: python benchmarks/bench_blender.py [--size 128] [--samples 16] [--runs 7]
+Usage: PYTHONPATH=. python benchmarks/bench_blender.py [--size 128] [--samples 16] [--runs 7]
+[--update-docs]
 """
 
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import tempfile
 from pathlib import Path
@@ -39,6 +40,9 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 REPORT = ROOT / "reports"
 PICTURE = ROOT / "docs" / "gallery" / "blender_soap.png"
 BUBBLE = ROOT / "docs" / "gallery" / "blender_bubble.png"
@@ -65,7 +69,9 @@ def _png(images, path):
         raise OSError(f"cannot write {path}: {oiio.geterror()}")
 
 
-def measure(size: int, samples: int, runs: int) -> dict:
+def measure(size: int, samples: int, runs: int) -> tuple[dict, dict]:
+    """The result, and the pictures' images: ``"soap"`` (:data:`PICTURE`: ours,
+    Principled) and ``"bubble"`` (:data:`BUBBLE`)."""
     from evaluation import blender, materials
 
     if blender.bpy_python() is None:
@@ -101,7 +107,7 @@ def measure(size: int, samples: int, runs: int) -> dict:
         bubble, bubble_exact, _ = blender.render_film(
             Path(work), materials.SOAP_BUBBLE, "Bubble", **job
         )
-        _png([blender.read_exr(Path(work) / "Bubble_CYCLES.exr")], BUBBLE)
+        bubble_image = blender.read_exr(Path(work) / "Bubble_CYCLES.exr")
         once = {**job, "runs": 1}
         eevee, eevee_exact, _ = blender.render_film(
             Path(work), materials.SOAP_BUBBLE, "Bubble", engine="BLENDER_EEVEE", **once
@@ -112,7 +118,7 @@ def measure(size: int, samples: int, runs: int) -> dict:
     clipped = np.clip(exact, 0, None)  # Cycles clamps negative closure colours to 0
     ours_s = np.median(ours_answer["seconds"][1:])
     principled_s = np.median(principled_answer["seconds"][1:])
-    _png([ours_image, principled_image], PICTURE)
+    pictures = {"soap": [ours_image, principled_image], "bubble": [bubble_image]}
     return {
         "blender": ours_answer["version"],
         "size": size,
@@ -133,7 +139,7 @@ def measure(size: int, samples: int, runs: int) -> dict:
         },
         "seconds": {"ours": round(ours_s, 4), "principled": round(principled_s, 4)},
         "ratio": round(ours_s / principled_s, 3),
-    }
+    }, pictures
 
 
 def markdown(result: dict) -> str:
@@ -170,13 +176,23 @@ def main() -> None:
     parser.add_argument("--size", type=int, default=128)
     parser.add_argument("--samples", type=int, default=16)
     parser.add_argument("--runs", type=int, default=7)
+    _reports.add_update_docs(parser)
     args = parser.parse_args()
-    result = measure(args.size, args.samples, args.runs)
+    result, pictures = measure(args.size, args.samples, args.runs)
     REPORT.mkdir(exist_ok=True)
-    (REPORT / "bench_blender.json").write_text(json.dumps(result, indent=2) + "\n")
+    _reports.write_json("blender", result, indent=2)
     text = markdown(result)
     (REPORT / "bench_blender.md").write_text(text)
     print(text)
+    if args.update_docs:
+        _png(pictures["soap"], PICTURE)
+        _png(pictures["bubble"], BUBBLE)
+        print(f"wrote {PICTURE.relative_to(ROOT)} and {BUBBLE.relative_to(ROOT)}")
+    else:
+        print(
+            f"{PICTURE.relative_to(ROOT)} and {BUBBLE.relative_to(ROOT)} not written "
+            "(--update-docs writes them)"
+        )
 
 
 if __name__ == "__main__":

@@ -13,9 +13,10 @@ BT.709 (colour-science, CAT02 for ACEScg's white, as the tables were made) and c
 with colour-science's exact, unclamped reflectance (:mod:`evaluation.materials`):
 DeltaE2000 p50 / max over the disc, and at its centre pixel (normal incidence).
 
-Writes reports/bench_blender_spaces.{json,md}.
+Writes reports/bench_blender_spaces.json (``_reports.write_json``) and
+reports/bench_blender_spaces.md; never a tracked doc.
 
-Usage: python benchmarks/bench_blender_spaces.py [--size 65]
+Usage: PYTHONPATH=. python benchmarks/bench_blender_spaces.py [--size 65]
 """
 
 from __future__ import annotations
@@ -30,6 +31,9 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 REPORT = ROOT / "reports"
 THICKNESS = 0.25
 FILMS = (
@@ -158,7 +162,7 @@ def main() -> None:
     args = parser.parse_args()
     result = measure(args.size)
     REPORT.mkdir(exist_ok=True)
-    (REPORT / "bench_blender_spaces.json").write_text(json.dumps(result, indent=2) + "\n")
+    _reports.write_json("blender_spaces", result, indent=2)
     text = markdown(result)
     (REPORT / "bench_blender_spaces.md").write_text(text + "\n")
     print(text)

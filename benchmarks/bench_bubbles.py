@@ -27,12 +27,14 @@ a white backdrop (T), rendered with the written material (Cycles 1024 samples, E
 over the patch's columns (one thickness each; their mean colour: Cycles picks R or T at
 random per sample, so one pixel is noisy and the column's mean is not).
 
-Writes reports/bench_bubbles.{json,md} and docs/gallery/blender_bubbles.png (ours top,
-Principled bottom; Cycles 32, Cycles 128, EEVEE 16 in each one's render method (ours
-Blended, Principled Dithered), the converged Cycles render; sRGB).
+Writes reports/bench_bubbles.json (``_reports.write_json``) and reports/bench_bubbles.md;
+with ``--update-docs`` also docs/gallery/blender_bubbles.png (ours top, Principled bottom;
+Cycles 32, Cycles 128, EEVEE 16 in each one's render method (ours Blended, Principled
+Dithered), the converged Cycles render; sRGB).
 
-Usage: python benchmarks/bench_bubbles.py [--size 64] [--reference 1024] [--seeds 3]
-[--only-patch] (``--only-patch``: redo the colour check, keep the last run's noise table)
+Usage: PYTHONPATH=. python benchmarks/bench_bubbles.py [--size 64] [--reference 1024]
+[--seeds 3] [--only-patch] [--update-docs] (``--only-patch``: redo the colour check, keep
+the last run's noise table and draw no picture)
 """
 
 from __future__ import annotations
@@ -47,6 +49,9 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the evaluation package beside benchmarks/
+
+from benchmarks import _reports  # noqa: E402  (after the path above)
+
 REPORT = ROOT / "reports"
 PICTURE = ROOT / "docs" / "gallery" / "blender_bubbles.png"
 RAMP = (0.1, 0.9)
@@ -203,7 +208,8 @@ def patch_only() -> dict:
         return patch_colour(script, blender_name("Bubble"), work)
 
 
-def measure(size: int, reference: int, seeds: int) -> dict:
+def measure(size: int, reference: int, seeds: int) -> tuple[dict, list]:
+    """The result, and the picture's rows (ours, Principled) for :data:`PICTURE`."""
     from evaluation import blender, materials
     from ocio_thinfilm.export.hosts.blender import blender_name
 
@@ -233,7 +239,7 @@ def measure(size: int, reference: int, seeds: int) -> dict:
         )
         table, pictures = noise(variants, size, reference, seeds, work)
         colour_check = patch_colour(script, blender_name("Bubble"), work)
-    _png([pictures[STRUCTURES["add"]], pictures[PRINCIPLED]], PICTURE)
+    rows = [pictures[STRUCTURES["add"]], pictures[PRINCIPLED]]
     return {
         "version": blender.BPY_VERSION,
         "size": size,
@@ -242,7 +248,7 @@ def measure(size: int, reference: int, seeds: int) -> dict:
         "seeds": seeds,
         "rmse": table,
         "patch_delta_e": colour_check,
-    }
+    }, rows
 
 
 def markdown(result: dict) -> str:
@@ -283,19 +289,25 @@ def main() -> None:
     parser.add_argument("--reference", type=int, default=1024)
     parser.add_argument("--seeds", type=int, default=3)
     parser.add_argument("--only-patch", action="store_true")
+    _reports.add_update_docs(parser)
     args = parser.parse_args()
+    rows = None
     if args.only_patch:
-        result = json.loads((REPORT / "bench_bubbles.json").read_text())
+        result = json.loads(_reports.json_path("bubbles").read_text())
         result["patch_delta_e"] = patch_only()
     else:
-        result = measure(args.size, args.reference, args.seeds)
+        result, rows = measure(args.size, args.reference, args.seeds)
     REPORT.mkdir(exist_ok=True)
-    (REPORT / "bench_bubbles.json").write_text(json.dumps(result, indent=2) + "\n")
+    _reports.write_json("bubbles", result, indent=2)
     text = markdown(result)
     (REPORT / "bench_bubbles.md").write_text(text + "\n")
     print(text)
-    if not args.only_patch:
-        print(f"wrote {PICTURE.relative_to(ROOT)}")
+    if rows is not None:
+        if args.update_docs:
+            _png(rows, PICTURE)
+            print(f"wrote {PICTURE.relative_to(ROOT)}")
+        else:
+            print(f"{PICTURE.relative_to(ROOT)} not written (--update-docs writes it)")
 
 
 if __name__ == "__main__":

@@ -18,7 +18,8 @@ For the films of docs/films.toml and a 10 um soap film:
   one such pass (a float64 multiply on cache-resident arrays), plus one complex
   exponential per run of 64 columns.
 
-Writes ``reports/bench_material.json`` (``--json``); never a tracked doc. Timing with
+Writes ``reports/bench_material.json`` (``--json``; ``_reports.write_json``); never a
+tracked doc. Timing with
 ``time.perf_counter`` only. The machine's load average is recorded: the numbers are
 only comparable on an idle machine.
 
@@ -29,9 +30,9 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
-import json
 import math
 import os
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -39,21 +40,24 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from ocio_thinfilm import reproducible
-from ocio_thinfilm.checks import ParameterError, as_array
-from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.export.material import export_material, material_table
-from ocio_thinfilm.lut import film_tables, material_tables
-from ocio_thinfilm.lut.material_tables import MAX_SHARPNESS, Film
-from ocio_thinfilm.physics import exact, films
-from ocio_thinfilm.physics import films as films_module
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # benchmarks._reports
+
+from benchmarks import _reports  # noqa: E402  (after the path above)
+from ocio_thinfilm import reproducible  # noqa: E402
+from ocio_thinfilm.checks import ParameterError, as_array  # noqa: E402
+from ocio_thinfilm.colour import colorimetry  # noqa: E402
+from ocio_thinfilm.export.material import export_material, material_table  # noqa: E402
+from ocio_thinfilm.lut import film_tables, material_tables  # noqa: E402
+from ocio_thinfilm.lut.material_tables import MAX_SHARPNESS, Film  # noqa: E402
+from ocio_thinfilm.physics import exact, films  # noqa: E402
+from ocio_thinfilm.physics import films as films_module  # noqa: E402
 
 _COLUMN_BLOCKS = 8  # the previous implementation's constants
 _BLOCK_SAMPLES = 1 << 20
 
-ROOT = Path(__file__).resolve().parents[1]
 SPACE = "Linear Rec.709 (sRGB)"
-JSON = ROOT / "reports" / "bench_material.json"
+JSON = _reports.json_path("material")
 
 
 # --------------------------------------------------------------------------- #
@@ -427,8 +431,7 @@ def main() -> None:
         result["old_stride"] = args.old_stride
         result["speed"] = speed(chosen, args.repeats, args.workers, args.old_stride)
     result["load_average_after"] = round(os.getloadavg()[0], 2)
-    Path(args.json).write_text(json.dumps(result, indent=1) + "\n")
-    print(f"wrote {args.json}")
+    _reports.write_json("material", result, path=args.json, indent=1)
 
 
 if __name__ == "__main__":

@@ -24,7 +24,7 @@ CAT02 adaptation from the light's white to D65, then CIELAB (D65).
 file cannot name it: its recovered table is the same construction
 (``film_light_XYZ`` at the table's nodes, CAT02-adapted), not the package's.
 
-Writes reports/bench_rgb_vs_spectral.json (always) and prints the table; with
+Writes reports/bench_rgb_vs_spectral.json (``_reports.write_json``) and prints the table; with
 ``--update-docs`` also the table of docs/rgb_vs_spectral.md and
 docs/gallery/rgb_vs_spectral.png (strips at normal incidence: for the soap film, left,
 and anodised titanium, right, one block per light in the order above, each block the
@@ -32,15 +32,13 @@ spectral truth, the RGB path and the recovered table from top to bottom; every c
 adapted to D65 as the comparison, exposed so the film's brightest truth under D65 is
 Y = 0.5, constant-lightness clip to sRGB).
 
-Usage: python benchmarks/bench_rgb_vs_spectral.py [--update-docs] [--films A,B]
+Usage: PYTHONPATH=. python benchmarks/bench_rgb_vs_spectral.py [--update-docs] [--films A,B]
 """
 
 from __future__ import annotations
 
 import argparse
 import dataclasses
-import json
-import re
 import sys
 import time
 from pathlib import Path
@@ -49,7 +47,6 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 FILMS_TOML = ROOT / "docs" / "films.toml"
-JSON = ROOT / "reports" / "bench_rgb_vs_spectral.json"
 DOC = ROOT / "docs" / "rgb_vs_spectral.md"
 PICTURE = ROOT / "docs" / "gallery" / "rgb_vs_spectral.png"
 BEGIN, END = "<!-- rgb-vs-spectral:begin -->", "<!-- rgb-vs-spectral:end -->"
@@ -174,17 +171,6 @@ def table_markdown(result):
     return "\n".join(lines)
 
 
-def update_doc(result, path=DOC):
-    """Replace the marked block of docs/rgb_vs_spectral.md."""
-    text = path.read_text()
-    if BEGIN not in text:
-        raise SystemExit(f"{path} has no {BEGIN} marker")
-    block = f"{BEGIN}\n{table_markdown(result)}\n{END}"
-    path.write_text(
-        re.sub(re.escape(BEGIN) + ".*?" + re.escape(END), lambda m: block, text, flags=re.S)
-    )
-
-
 def strips(film, tabs):
     """The picture's column for one film: linear Rec.709 (H, STRIP_WIDTH, 3), adapted."""
     from ocio_thinfilm import reproducible
@@ -215,7 +201,7 @@ def strips(film, tabs):
     return np.concatenate(blocks[:-1], axis=0)
 
 
-def write_picture(films, tabs, path=PICTURE):
+def write_picture(films, tabs, path):
     """docs/gallery/rgb_vs_spectral.png (module docstring); ``tabs``: key -> the film's
     tables (:func:`tables`)."""
     from ocio_thinfilm import registry, reproducible
@@ -236,13 +222,12 @@ def write_picture(films, tabs, path=PICTURE):
 
 def main():
     sys.path.insert(0, str(ROOT))
+    from benchmarks import _reports
     from ocio_thinfilm.lut import film_lights
     from ocio_thinfilm.physics import films as films_module
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument(
-        "--update-docs", action="store_true", help="also rewrite the doc's table and picture"
-    )
+    _reports.add_update_docs(parser)
     parser.add_argument("--films", help="comma-separated keys of docs/films.toml (default all)")
     args = parser.parse_args()
     films = films_module.read_films(FILMS_TOML)
@@ -275,12 +260,13 @@ def main():
     if keys != list(films):
         print("(--films: reports/bench_rgb_vs_spectral.json left as it was)")
         return
-    JSON.write_text(json.dumps(result, indent=1) + "\n")
-    print(f"wrote {JSON.relative_to(ROOT)}")
+    _reports.write_json("rgb_vs_spectral", result, indent=1)
+    _reports.update_section(DOC, BEGIN, END, table_markdown(result), update=args.update_docs)
     if args.update_docs:
-        update_doc(result)
-        write_picture(films, kept)
-        print(f"wrote {DOC.relative_to(ROOT)} and {PICTURE.relative_to(ROOT)}")
+        write_picture(films, kept, PICTURE)
+        print(f"wrote {PICTURE.relative_to(ROOT)}")
+    else:
+        print(f"{PICTURE.relative_to(ROOT)} not redrawn (--update-docs draws it)")
 
 
 if __name__ == "__main__":

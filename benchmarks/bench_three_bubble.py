@@ -13,8 +13,8 @@ The flat films' page (:func:`evaluation.three_film.write_flat_site`) in headless
 - the alternative mechanism, premultiplied blending into the 8-bit sRGB canvas (``dst *=
   T``, then ``dst += R L``): blending acts on encoded values, so its error is computed
   from the same colours: |enc(bg) T + enc(R L) - enc(bg T + R L)|;
-- the pictures ``docs/gallery/threejs_bubble.png`` (a double-sided sphere of 0.35 µm
-  over a dark grey checker, white environment) and
+- with ``--update-docs``, the pictures ``docs/gallery/threejs_bubble.png`` (a
+  double-sided sphere of 0.35 µm over a dark grey checker, white environment) and
   ``docs/gallery/threejs_thickness_map.png`` (the sphere with a thickness map: 0.7 µm
   at the bottom of its uv to 0.2 µm at the top, a draining bubble).
 
@@ -23,11 +23,15 @@ whole runs' wall-clock times went negative on the shared two-core machine (±10 
 noise against 5 s of frames), and Chromium's GPU process, where SwiftShader draws, is
 not in the CPU time of the processes Python waits for.
 
-Run: ``PYTHONPATH=. python benchmarks/bench_three_bubble.py``.
+Writes reports/bench_three_bubble.json (``_reports.write_json``: the errors above, in
+1/255).
+
+Run: ``PYTHONPATH=. python benchmarks/bench_three_bubble.py [--update-docs]``.
 """
 
 from __future__ import annotations
 
+import argparse
 import base64
 import shutil
 import sys
@@ -37,8 +41,12 @@ from pathlib import Path
 import colour
 import numpy as np
 
-from evaluation import browser, materials, three_film
-from ocio_thinfilm.export.hosts.three import three_module
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # benchmarks._reports, the evaluation package
+
+from benchmarks import _reports  # noqa: E402  (after the path above)
+from evaluation import browser, materials, three_film  # noqa: E402
+from ocio_thinfilm.export.hosts.three import three_module  # noqa: E402
 
 STACK = materials.SOAP_BUBBLE
 RANGE_UM = (0.2, 0.7)
@@ -47,7 +55,7 @@ MAP_RANGE = (0.25, 0.65)
 CODES = [round(i * 255 / (SIZE - 1)) for i in range(SIZE)]
 CHECKER = ((0.8, 0.25, 0.05), (0.05, 0.4, 0.9))
 SQUARES, HALF, BUBBLE_UM, L = 8, 0.75, 0.45, 0.25
-GALLERY = Path(__file__).resolve().parents[1] / "docs" / "gallery"
+GALLERY = ROOT / "docs" / "gallery"
 
 
 def _scenes() -> list[dict]:
@@ -122,6 +130,9 @@ def _errors(frames: list) -> dict[str, float]:
 
 
 def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    _reports.add_update_docs(parser)
+    args = parser.parse_args()
     chromium = browser.chromium()
     if chromium is None:
         sys.exit("no chromium")
@@ -129,14 +140,25 @@ def main() -> None:
     errors = _errors(frames)
     import OpenImageIO as oiio
 
-    for index, name in ((2, "threejs_bubble.png"), (3, "threejs_thickness_map.png")):
-        image = oiio.ImageBuf(np.ascontiguousarray(frames[index][::-1]))
-        if not image.write(str(GALLERY / name)):
-            sys.exit(oiio.geterror())
+    pictures = ((2, "threejs_bubble.png"), (3, "threejs_thickness_map.png"))
+    if args.update_docs:
+        for index, name in pictures:
+            image = oiio.ImageBuf(np.ascontiguousarray(frames[index][::-1]))
+            if not image.write(str(GALLERY / name)):
+                sys.exit(oiio.geterror())
     print(f"three.js {browser.THREE_VERSION}, {SIZE}x{SIZE} px, SwiftShader (CPU):")
     for label, value in errors.items():
         print(f"  |canvas - exact| {label:32s} {value:6.2f}/255")
-    print(f"  pictures: {GALLERY / 'threejs_bubble.png'}, threejs_thickness_map.png")
+    _reports.write_json(
+        "three_bubble",
+        {"three": browser.THREE_VERSION, "size": SIZE, "canvas_vs_exact_255": errors},
+        indent=2,
+    )
+    shown = ", ".join(str((GALLERY / name).relative_to(ROOT)) for _, name in pictures)
+    if args.update_docs:
+        print(f"  pictures: {shown}")
+    else:
+        print(f"  pictures not written (--update-docs writes them): {shown}")
 
 
 if __name__ == "__main__":

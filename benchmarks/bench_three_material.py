@@ -9,6 +9,8 @@ ends in a 1-pixel ``readPixels`` so that it is finished. The page runs in Chromi
 virtual time (its clock stands still while script runs), so each time is the difference of
 two whole runs' wall-clock times: with ``FRAMES`` extra frames and with none.
 
+Writes reports/bench_three_material.json (``_reports.write_json``); never a tracked doc.
+
 Run: ``PYTHONPATH=. python benchmarks/bench_three_material.py [FRAMES]``.
 """
 
@@ -19,8 +21,12 @@ import sys
 import tempfile
 from pathlib import Path
 
-from evaluation import browser, materials, three_film
-from ocio_thinfilm.export.hosts.three import three_module
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # benchmarks._reports, the evaluation package
+
+from benchmarks import _reports  # noqa: E402  (after the path above)
+from evaluation import browser, materials, three_film  # noqa: E402
+from ocio_thinfilm.export.hosts.three import three_module  # noqa: E402
 
 STACK = materials.SOAP_BUBBLE  # n = 1.33 in air
 RANGE_UM = (0.0, 1.0)
@@ -69,6 +75,17 @@ def main(frames: int = 100) -> None:
         f"  film module (table R)              {ms['film']:7.2f} ms/frame\n"
         f"  MeshPhysicalMaterial, iridescence 1 {ms['iridescence']:6.2f} ms/frame\n"
         f"  ratio film / iridescence           {ms['film'] / ms['iridescence']:7.2f}"
+    )
+    _reports.write_json(
+        "three_material",
+        {
+            "three": browser.THREE_VERSION,
+            "size": SIZE,
+            "frames": frames,
+            "ms_per_frame": ms,
+            "ratio": ms["film"] / ms["iridescence"],
+        },
+        indent=2,
     )
 
 
