@@ -387,7 +387,18 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     table_display = (
         f"display gamut ({', '.join(registry.DISPLAYS)}): clipped display-linear RGB instead of XYZ"
     )
+    _add_film_parser(kinds, table_display)
+    _add_morpho_parser(kinds, table_display)
+    _add_clip_parser(kinds)
+    _add_view_parser(kinds)
+    _add_shader_parser(kinds)
+    _add_material_parser(kinds)
 
+
+def _add_film_parser(
+    kinds: argparse._SubParsersAction[argparse.ArgumentParser], table_display: str
+) -> None:
+    """Add ``export film`` and its options to ``kinds``."""
     swatches_count = 25  # ocio_thinfilm.export.swatches.SWATCH_COUNT (imported when run)
     f = kinds.add_parser(
         "film",
@@ -444,6 +455,11 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     )
     f.set_defaults(func=_run_film)
 
+
+def _add_morpho_parser(
+    kinds: argparse._SubParsersAction[argparse.ArgumentParser], table_display: str
+) -> None:
+    """Add ``export morpho`` and its options to ``kinds``."""
     m = kinds.add_parser(
         "morpho",
         help="the Morpho angle table (1D, input cos theta)",
@@ -453,6 +469,9 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     _add_lut_options(m, "morpho", "cos(theta)")
     m.set_defaults(func=_run_table)
 
+
+def _add_clip_parser(kinds: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Add ``export clip`` and its options to ``kinds``."""
     c = kinds.add_parser(
         "clip",
         help="the constant-lightness clip into a display gamut (3D)",
@@ -467,6 +486,9 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     _add_lut_options(c, "clip", "display-linear RGB per channel")
     c.set_defaults(func=_run_table)
 
+
+def _add_view_parser(kinds: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Add ``export view`` and its options to ``kinds``."""
     v = kinds.add_parser(
         "view",
         help="a display/view of the config as one LUT (display code values)",
@@ -500,6 +522,9 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     _add_knob_options(v, "the view")
     v.set_defaults(func=_run_view)
 
+
+def _add_shader_parser(kinds: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Add ``export shader`` and its options to ``kinds``."""
     s = kinds.add_parser(
         "shader",
         help="a display/view as GLSL or DCTL code (the Clip and Compress views, no LUT)",
@@ -518,6 +543,9 @@ def _add_export(sub: argparse._SubParsersAction[argparse.ArgumentParser]) -> Non
     _add_knob_options(s, "the code's defaults (GLSL uniforms, DCTL sliders)")
     s.set_defaults(func=_run_shader)
 
+
+def _add_material_parser(kinds: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    """Add ``export material`` and its options to ``kinds``."""
     mat = kinds.add_parser(
         "material",
         help="a film of a film file as a view-dependent material: R (and T) over "

@@ -363,27 +363,14 @@ def bake(
 
         for film in film_list:
             film_tables.user_film_table(film)
-    claim = claim_directory(out, parameter="out", last=("config.ocio",))
-    luts_claim = None
-    if luts is not None:
-        luts_claim = claim_directory(luts, parameter="luts")
-        a, b = luts_claim.path.resolve(), claim.path.resolve()
-        if a == b or a in b.parents or b in a.parents:
-            raise ParameterError(
-                "luts", f" {luts}: must not be, contain or lie inside the output directory {out}"
-            )
+    claim, luts_claim = _claims(out, luts)
     # the thin-film tables, two clip and two compression LUTs per SDR display, config.ocio
     n_files = len(registry.THIN_FILM_LIST) + 4 * len(registry.DISPLAYS) + 1
     n_files += len(film_list)
     stages = _stages(int(clip_size), compress_threshold, compress_limit)
     bar = progress_bar(show_progress, total=len(stages) + n_files, desc=f"bake {claim.path}")
     try:
-        for name, compute in stages:  # the long part, stage by stage (then cached)
-            if bar:
-                bar.set_postfix_str(name, refresh=False)
-            compute()
-            if bar:
-                bar.update(1)
+        _run_stages(stages, bar)
         with transaction() as tx:
             stage = tx.directory(claim)
             try:
@@ -406,6 +393,30 @@ def bake(
         if bar:
             bar.close()
     return claim.path / "config.ocio"
+
+
+def _claims(out: StrPath, luts: StrPath | None) -> tuple[Any, Any]:
+    """Claim the config folder and the LUT set's (:func:`claim_directory`), apart."""
+    claim = claim_directory(out, parameter="out", last=("config.ocio",))
+    if luts is None:
+        return claim, None
+    luts_claim = claim_directory(luts, parameter="luts")
+    a, b = luts_claim.path.resolve(), claim.path.resolve()
+    if a == b or a in b.parents or b in a.parents:
+        raise ParameterError(
+            "luts", f" {luts}: must not be, contain or lie inside the output directory {out}"
+        )
+    return claim, luts_claim
+
+
+def _run_stages(stages: Sequence[tuple[str, Callable[[], object]]], bar: Any) -> None:
+    """Run the bake's long computations (:func:`_stages`) in order, naming each on ``bar``."""
+    for name, compute in stages:
+        if bar:
+            bar.set_postfix_str(name, refresh=False)
+        compute()
+        if bar:
+            bar.update(1)
 
 
 def _stages(
