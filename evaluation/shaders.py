@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from evaluation.views import decode_display, encode_display
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry, compress
 from ocio_thinfilm.colour.views import analytic_map
@@ -173,9 +174,7 @@ def analytic_view(
     rgb = np.clip(colorimetry.XYZ_to_RGB(light, gamut), 0.0, entry.scale)
     if entry.hdr:
         return colour.models.eotf_inverse_ST2084(rgb * WHITE)
-    if entry.encoding.offset is None:
-        return colour.models.eotf_inverse_BT1886(rgb)
-    return colour.cctf_encoding(rgb, function="sRGB")
+    return encode_display(rgb, display)
 
 
 def analytic_inverse_view(
@@ -195,10 +194,7 @@ def analytic_inverse_view(
     gamut = entry.gamut.name
     code = np.clip(np.nan_to_num(np.asarray(codes, dtype=np.float64).reshape(-1, 3)), 0.0, 1.0)
     if not entry.hdr:
-        if entry.encoding.offset is None:
-            rgb = colour.models.eotf_BT1886(code)
-        else:
-            rgb = colour.cctf_decoding(code, function="sRGB")
+        rgb = decode_display(code, display)
     elif entry.transfer == "PQ":
         rgb = colour.models.eotf_ST2084(code) / WHITE / (entry.peak / WHITE)
     else:

@@ -125,14 +125,32 @@ def error_stats(truth: npt.ArrayLike, got: npt.ArrayLike, inside=None) -> dict[s
 
 def decode_display(code: npt.ArrayLike, display: str) -> np.ndarray:
     """SDR display code values (clamped to [0, 1]) -> display-linear RGB, by
-    colour-science: the sRGB piecewise EOTF (IEC 61966-2-1) or BT.1886's EOTF with a
-    black level of 0 (a pure 2.4 power), as the registry's encoding says."""
+    colour-science: the sRGB piecewise EOTF (IEC 61966-2-1), BT.1886's EOTF with a
+    black level of 0 (a pure 2.4 power) or a pure power of another gamma (DCI's 2.6),
+    as the registry's encoding says."""
     import colour
 
     code = np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
-    if registry.as_display(display, hdr=False).encoding.offset is None:
+    encoding = registry.as_display(display, hdr=False).encoding
+    if encoding.offset is None and encoding.gamma == 2.4:
         return colour.models.eotf_BT1886(code)
+    if encoding.offset is None:
+        return colour.gamma_function(code, encoding.gamma)
     return colour.cctf_decoding(code, function="sRGB")
+
+
+def encode_display(rgb: npt.ArrayLike, display: str) -> np.ndarray:
+    """SDR display-linear RGB -> code values, by colour-science: the inverse of
+    :func:`decode_display` (unclamped; a pure power takes negatives to 0)."""
+    import colour
+
+    rgb = np.asarray(rgb, dtype=np.float64)
+    encoding = registry.as_display(display, hdr=False).encoding
+    if encoding.offset is None and encoding.gamma == 2.4:
+        return colour.models.eotf_inverse_BT1886(rgb)
+    if encoding.offset is None:
+        return colour.gamma_function(np.maximum(rgb, 0.0), 1.0 / encoding.gamma)
+    return colour.cctf_encoding(rgb, function="sRGB")
 
 
 def colour_science_rgb(XYZ: npt.ArrayLike, name: str) -> np.ndarray:

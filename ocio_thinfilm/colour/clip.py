@@ -68,7 +68,7 @@ __all__ = [
 ]
 
 #: The display gamuts we ship, by the name used in the OCIO config (:mod:`.registry`).
-DISPLAYS = registry.DISPLAYS
+DISPLAYS = registry.GAMUT_DISPLAYS
 
 #: Magnitude to which components are limited before clipping (+-Inf included).
 LIMIT = 1e100
@@ -88,14 +88,14 @@ def _space(display: registry.DisplayLike) -> str:
     A name as it is, an SDR display of the registry as its object.
     """
     if isinstance(display, (registry.Display, registry.HDRDisplay)):
-        return registry.as_display(display, hdr=False).name
+        return registry.as_display(display, hdr=False).gamut.name
     return display
 
 
 def _display_matrix(display: registry.DisplayLike) -> np.ndarray:
     """XYZ -> RGB of ``display`` (:func:`_space`)."""
     display = _space(display)
-    if display not in registry.RGB_COLORIMETRY:
+    if registry.colorimetry_of(display) is None:
         raise ParameterError("display", f" must be one of {DISPLAYS}, got {display!r}")
     return colorimetry.matrix_XYZ_to_RGB(display)
 

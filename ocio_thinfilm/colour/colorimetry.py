@@ -359,11 +359,13 @@ def _matrix_cached(space: str) -> np.ndarray:
 
     if registry.space_kind(space) == "reference":  # the reference XYZ: no matrix
         return np.eye(3)
-    if space not in registry.RGB_COLORIMETRY:
+    gamut = registry.colorimetry_of(space)
+    if gamut is None:
         raise ParameterError(
-            "space", f" must be one of {sorted(registry.RGB_COLORIMETRY)}, got {space!r}"
+            "space",
+            f" must be one of {sorted(registry.RGB_COLORIMETRY)} or a display, got {space!r}",
         )
-    cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[space]]
+    cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[gamut]]
     # Normalised primary matrix from the primaries and white: RGB = 1 is the white.
     rgb_to_xyz = _normalised_primary_matrix(cs.primaries, cs.whitepoint)
     d65 = np.asarray(colour.CCS_ILLUMINANTS[DEFAULT_OBSERVER]["D65"], dtype=np.float64)

@@ -59,7 +59,7 @@ def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
     Returns
     -------
     dict
-        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
+        Display name (:data:`ocio_thinfilm.registry.GAMUT_DISPLAYS`) -> its
         :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` (each computed once, then cached).
 
     Raises
@@ -67,7 +67,7 @@ def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
     ValueError
         For a ``clip_size`` outside [9, 129].
     """
-    return {display: clip_lut.clip_lut(display, clip_size) for display in registry.DISPLAYS}
+    return {display: clip_lut.clip_lut(display, clip_size) for display in registry.GAMUT_DISPLAYS}
 
 
 #: The names of the compression's knobs in the functions that bake the config.
@@ -97,7 +97,7 @@ def compress_luts(
     Returns
     -------
     dict
-        Display name (:data:`ocio_thinfilm.registry.DISPLAYS`) -> its
+        Display name (:data:`ocio_thinfilm.registry.GAMUT_DISPLAYS`) -> its
         :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT`.
 
     Raises
@@ -115,7 +115,7 @@ def compress_luts(
         display: compress_lut.compress_lut(
             display, threshold=threshold, limit=limit, clip_size=clip_size
         )
-        for display in registry.DISPLAYS
+        for display in registry.GAMUT_DISPLAYS
     }
 
 

@@ -15,7 +15,7 @@ from typing import Any
 
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.checks import ParameterError, as_count
-from ocio_thinfilm.colour import clip, colorimetry
+from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import view as export_view
 from ocio_thinfilm.export.files import CLF_WRITER, FORMATS, lut_contents, progress_bar, write_lut
@@ -262,7 +262,7 @@ def export_set(directory: StrPath, *, show_progress: bool = False) -> list[Path]
     views = [
         (source, display, view, fmt)
         for source, view, fmts in EXPORT_SET_VIEWS
-        for display in clip.DISPLAYS
+        for display in registry.DISPLAYS
         for fmt in fmts
     ]
     written = []
@@ -365,7 +365,7 @@ def bake(
             film_tables.user_film_table(film)
     claim, luts_claim = _claims(out, luts)
     # the thin-film tables, two clip and two compression LUTs per SDR display, config.ocio
-    n_files = len(registry.THIN_FILM_LIST) + 4 * len(registry.DISPLAYS) + 1
+    n_files = len(registry.THIN_FILM_LIST) + 4 * len(registry.GAMUT_DISPLAYS) + 1
     n_files += len(film_list)
     stages = _stages(int(clip_size), compress_threshold, compress_limit)
     bar = progress_bar(show_progress, total=len(stages) + n_files, desc=f"bake {claim.path}")
@@ -438,7 +438,7 @@ def _stages(
     ]
     stages += [
         (f"clip {display}", partial(clip_lut.clip_lut, display, clip_size))
-        for display in registry.DISPLAYS
+        for display in registry.GAMUT_DISPLAYS
     ]
     stages += [
         (
@@ -451,7 +451,7 @@ def _stages(
                 clip_size=clip_size,
             ),
         )
-        for display in registry.DISPLAYS
+        for display in registry.GAMUT_DISPLAYS
     ]
     return stages
 

@@ -55,7 +55,8 @@ def write_image(
         ``"float"`` ...); default uint8 for a PNG (or no extension) and half for
         anything else.
     attributes : mapping, optional
-        Metadata: values may be int, float, str or a tuple (list) of floats (e.g. the
+        Metadata: values may be int, float, str, a tuple (list) of ints (e.g. the PNG
+        ``CICP``) or of floats (e.g. the
         EXR ``chromaticities``).
     tx : Transaction, optional
         Stage the file in this transaction (committed by the caller) instead of
@@ -101,7 +102,9 @@ def write_image(
     if ext == ".exr":
         spec.attribute("compression", "zip")
     for key, value in (attributes or {}).items():
-        if isinstance(value, (tuple, list)):
+        if isinstance(value, (tuple, list)) and all(isinstance(v, int) for v in value):
+            spec.attribute(key, oiio.TypeDesc(f"int[{len(value)}]"), tuple(value))
+        elif isinstance(value, (tuple, list)):
             spec.attribute(key, oiio.TypeDesc(f"float[{len(value)}]"), tuple(map(float, value)))
         else:
             spec.attribute(key, value)

@@ -437,7 +437,7 @@ def clip_lut(
     ----------
     display : str or registry display, optional
         A display of :data:`ocio_thinfilm.registry.DISPLAYS` or its name (default
-        ``"sRGB"``).
+        ``"sRGB"``); a display with another's gamut gets that display's tables.
     size : int, optional
         Edge length of the black pass's Lut3D, an integer in [9, 129] (default
         :data:`CLIP_SIZE`, 65).
@@ -473,7 +473,7 @@ def clip_lut(
     >>> lut.black.flags.writeable
     False
     """
-    name = registry.as_display(display, hdr=False).name
+    name = registry.as_display(display, hdr=False).gamut.name  # shared tables
     size = check_size(size, 9, 129, "size")
     white_edge = white_size(size) if white_edge is None else white_edge
     return _clip_lut(name, size, check_size(white_edge, 7, 129, "white_edge"))

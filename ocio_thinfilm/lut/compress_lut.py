@@ -452,7 +452,7 @@ def compress_lut(
     ValueError
         For an unknown display, an edge out of range or a bad curve parameter.
     """
-    name = registry.as_display(display, hdr=False).name
+    name = registry.as_display(display, hdr=False).gamut.name  # shared tables
     size = check_size(size, 9, 129, "size")
     white_edge = check_size(white_edge, 7, 129, "white_edge")
     soft.compression_curve(0.0, threshold, limit, power)  # validates the parameters

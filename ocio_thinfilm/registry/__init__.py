@@ -7,7 +7,9 @@ display is one :class:`Display` entry in :data:`DISPLAY_LIST` (then ``ocio-thinf
 bake``); an HDR display is one
 :class:`HDRDisplay` entry in :data:`HDR_DISPLAY_LIST`, which reuses the clip LUTs of the
 SDR display with its primaries (:data:`DISPLAYS` are the SDR displays, the gamuts the
-clip is baked for; :data:`ALL_DISPLAYS` are the config's displays, HDR ones included).
+clip is baked for, except that displays with one gamut share the tables of the first of
+them, :data:`GAMUT_DISPLAYS`; :data:`ALL_DISPLAYS` are the config's displays, HDR ones
+included).
 
 Displays travel through the package as these objects, the way colour-science passes an
 ``RGB_Colourspace``: a public function that takes a ``display`` accepts the object or its
@@ -103,6 +105,9 @@ __all__ = [
     "GAMUT_LIST",
     "THIN_FILM_LIST",
     "DISPLAYS",
+    "GAMUT_DISPLAY_LIST",
+    "GAMUT_DISPLAYS",
+    "colorimetry_of",
     "HDR_DISPLAYS",
     "ALL_DISPLAY_LIST",
     "ALL_DISPLAYS",
@@ -122,8 +127,12 @@ __all__ = [
 ]
 
 
-#: Names, in order (DISPLAYS: the SDR displays, the gamuts the clip is baked for).
+#: Names, in order (DISPLAYS: the SDR displays).
 DISPLAYS = tuple(d.name for d in DISPLAY_LIST)
+#: The SDR displays the clip tables are baked for: one per gamut (primaries and white),
+#: the first display with it; the others share its tables (``Display.gamut``).
+GAMUT_DISPLAY_LIST = tuple(d for d in DISPLAY_LIST if d.gamut is d)
+GAMUT_DISPLAYS = tuple(d.name for d in GAMUT_DISPLAY_LIST)
 HDR_DISPLAYS = tuple(d.name for d in HDR_DISPLAY_LIST)
 #: The config's displays: SDR, then HDR (the objects and their names).
 ALL_DISPLAY_LIST: tuple[Display | HDRDisplay, ...] = DISPLAY_LIST + HDR_DISPLAY_LIST
@@ -229,6 +238,33 @@ def as_display(
         choices = ALL_DISPLAYS if hdr else DISPLAYS
         raise ParameterError(parameter, f" must be one of {choices}, got {display!r}")
     return entry
+
+
+def colorimetry_of(name: str) -> str | None:
+    """Return the RGB space (a key of :data:`RGB_COLORIMETRY`) a name stands for.
+
+    A gamut's name stands for itself, a display's name for its gamut (so the clip's
+    math may be given either).
+
+    Parameters
+    ----------
+    name : str
+        A gamut of :data:`GAMUT_LIST` or a display of :data:`ALL_DISPLAYS`.
+
+    Returns
+    -------
+    str or None
+        The gamut's name, or ``None`` for a name that is neither.
+
+    Examples
+    --------
+    >>> colorimetry_of("P3-DCI"), colorimetry_of("Rec.2100-PQ"), colorimetry_of("ACEScg")
+    ('DCI-P3', 'Rec.2020', 'ACEScg')
+    """
+    if name in RGB_COLORIMETRY:
+        return name
+    entry = find_display(name)
+    return None if entry is None else entry.colorimetry
 
 
 def display_name(display: DisplayLike | None, *, parameter: str = "display") -> str | None:
@@ -458,9 +494,9 @@ def validate() -> None:
     """Check the registry's entries against each other (run once, at import).
 
     Names unique and non-empty, encodings well formed, LUT stems file-name safe and
-    unique, exactly one raw view, last. The clip's math (:mod:`.clip`, :mod:`.tables`)
-    looks matrices up by the display's name, so a display's name must equal its
-    colorimetry space. (That the colorimetry knows those spaces and the film kinds is
+    unique, exactly one raw view, last; a display named like a gamut has that gamut (the
+    clip's math takes either name, :func:`colorimetry_of`). (That the colorimetry
+    knows those spaces and the film kinds is
     checked by ``tests/test_registry.py``: the registry imports nothing of the
     pipeline.)
 
@@ -489,10 +525,10 @@ def validate() -> None:
         if not re.fullmatch(r"[A-Za-z0-9_]+", stem):
             raise ValueError(f"registry: LUT file stem {stem!r} is not file-name safe")
     for d in DISPLAY_LIST:
-        if d.colorimetry != d.name:
+        if d.name in RGB_COLORIMETRY and d.colorimetry != d.name:
             raise ValueError(
-                f"registry: display {d.name!r}: the clip looks its matrix up by "
-                f"name, so its colorimetry space must be {d.name!r}"
+                f"registry: display {d.name!r} is named like a gamut, so its gamut "
+                f"must be {d.name!r}, not {d.colorimetry!r}"
             )
         e = d.encoding
         if not e.description or not e.gamma > 0 or not (e.offset is None or 0 < e.offset < 1):
@@ -504,7 +540,7 @@ def validate() -> None:
         raise ValueError(f"registry: display colour spaces must be unique: {spaces}")
     for h in HDR_DISPLAY_LIST:
         if (
-            h.gamut not in DISPLAY_LIST
+            h.gamut not in GAMUT_DISPLAY_LIST
             or h.transfer not in ("PQ", "HLG")
             or not h.builtin.startswith("DISPLAY - CIE-XYZ-D65_to_")
             or not h.peak > HDR_REFERENCE_WHITE

@@ -1,9 +1,11 @@
-"""The registry's displays: SDR displays (the gamuts the clip is baked for) and HDR ones.
+"""The registry's displays: SDR displays and HDR ones, and the display gamuts.
 
 Adding a display is one :class:`Display` entry in :data:`DISPLAY_LIST` (then
-``ocio-thinfilm bake``); an HDR display is one :class:`HDRDisplay` entry in
-:data:`HDR_DISPLAY_LIST`, which reuses the clip LUTs of the SDR display with its
-primaries. Part of :mod:`ocio_thinfilm.registry` (import it from there).
+``ocio-thinfilm bake``); its gamut (primaries and white) is a :class:`Gamut` object,
+and displays with the same gamut share one set of clip tables (those of the first of
+them). An HDR display is one :class:`HDRDisplay` entry in :data:`HDR_DISPLAY_LIST`,
+which reuses the clip LUTs of the SDR display with its primaries. Part of
+:mod:`ocio_thinfilm.registry` (import it from there).
 """
 
 from __future__ import annotations
@@ -11,8 +13,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ocio_thinfilm.registry.curves import Gamut
+
 __all__ = [
     "Encoding",
+    "SRGB_GAMUT",
+    "P3_GAMUT",
+    "REC2020_GAMUT",
+    "DCI_P3_GAMUT",
     "Display",
     "HDRDisplay",
     "HDR_REFERENCE_WHITE",
@@ -51,10 +59,11 @@ class Display:
     Parameters
     ----------
     name : str
-        The OCIO display name (also the gamut the clip works in).
-    colorimetry : str
-        Its RGB space (primaries, white), a key of :data:`RGB_COLORIMETRY`; equal to
-        ``name`` (:func:`validate`).
+        The OCIO display name.
+    primaries : Gamut
+        Its gamut: primaries and white (scene white D65 is shown at this white, by a
+        Bradford adaptation where they differ). Displays with the same gamut share the
+        clip tables of the first of them (:attr:`gamut`).
     colorspace : str
         The config's display colour space.
     description : str
@@ -66,23 +75,37 @@ class Display:
         The display's part of LUT file names.
     png_colorspace : str
         The OpenImageIO colour interop ID a PNG for it is tagged with.
+    png_cicp : tuple of 4 int, optional
+        The PNG's cICP code points (ITU-T H.273: primaries, transfer, matrix, full
+        range) where OpenImageIO has no interop ID for the display (``None``: derived
+        from ``png_colorspace``).
     """
 
     name: str
-    colorimetry: str
+    primaries: Gamut
     colorspace: str
     description: str
     encoding: Encoding
     lut_stem: str
     png_colorspace: str
+    png_cicp: tuple[int, int, int, int] | None = None
 
     #: An SDR display (its volume is its RGB parallelepiped up to white).
     hdr: ClassVar[bool] = False
 
     @property
+    def colorimetry(self) -> str:
+        """Its RGB space: the name of its gamut (a key of ``RGB_COLORIMETRY``)."""
+        return self.primaries.name
+
+    @property
     def gamut(self) -> Display:
-        """The SDR display whose gamut (and clip LUTs) this display uses: itself."""
-        return self
+        """The SDR display whose clip tables it uses.
+
+        The first of :data:`DISPLAY_LIST` with its primaries and white: itself, unless an
+        earlier display has them.
+        """
+        return next(d for d in DISPLAY_LIST if d.primaries == self.primaries)
 
     @property
     def scale(self) -> float:
@@ -107,8 +130,14 @@ class Display:
         --------
         >>> DISPLAY_LIST[1].clip_lut_stem(white=True)
         'ConstantLightnessClip_DisplayP3_WhiteFaces'
+
+        A display with another's gamut names that display's files:
+
+        >>> DISPLAY_LIST[3].name, DISPLAY_LIST[3].clip_lut_stem()
+        ('Rec.1886 Rec.709', 'ConstantLightnessClip_sRGB_BlackFaces')
         """
-        return f"{CLIP_FILE_STEM}_{self.lut_stem}" + ("_WhiteFaces" if white else "_BlackFaces")
+        stem = self.gamut.lut_stem
+        return f"{CLIP_FILE_STEM}_{stem}" + ("_WhiteFaces" if white else "_BlackFaces")
 
     def compress_lut_stem(self, white: bool = False) -> str:
         """Return the file stem of one of this display's two compression squeezes.
@@ -131,7 +160,8 @@ class Display:
         >>> DISPLAY_LIST[0].compress_lut_stem()
         'ConstantLightnessCompress_sRGB_BlackFaces'
         """
-        return f"{COMPRESS_FILE_STEM}_{self.lut_stem}" + ("_WhiteFaces" if white else "_BlackFaces")
+        stem = self.gamut.lut_stem
+        return f"{COMPRESS_FILE_STEM}_{stem}" + ("_WhiteFaces" if white else "_BlackFaces")
 
 
 #: Luminance (cd/m2) at which an HDR display shows the reference white Y = 1: the HDR
@@ -241,12 +271,20 @@ CLIP_FILE_STEM = "ConstantLightnessClip"
 COMPRESS_FILE_STEM = "ConstantLightnessCompress"
 
 
+#: The display gamuts: primaries and white (colour-science's colourspaces).
+SRGB_GAMUT = Gamut("sRGB", "sRGB")
+P3_GAMUT = Gamut("Display P3", "Display P3")
+REC2020_GAMUT = Gamut("Rec.2020", "ITU-R BT.2020")
+#: SMPTE RP 431-2 (DCI) primaries and the DCI white (x, y = 0.314, 0.351).
+DCI_P3_GAMUT = Gamut("DCI-P3", "DCI-P3")
+
 _SRGB_PIECEWISE = Encoding("sRGB piecewise (IEC 61966-2-1)", gamma=2.4, offset=0.055)
+_BT1886 = Encoding("BT.1886 gamma 2.4", gamma=2.4)
 
 DISPLAY_LIST = (
     Display(
         name="sRGB",
-        colorimetry="sRGB",
+        primaries=SRGB_GAMUT,
         colorspace="sRGB - Display",
         description="sRGB (IEC 61966-2-1) display: Rec.709 primaries, D65, sRGB piecewise encoding",
         encoding=_SRGB_PIECEWISE,
@@ -255,7 +293,7 @@ DISPLAY_LIST = (
     ),
     Display(
         name="Display P3",
-        colorimetry="Display P3",
+        primaries=P3_GAMUT,
         colorspace="Display P3 - Display",
         description="Apple Display P3: P3 primaries, D65, sRGB piecewise encoding",
         encoding=_SRGB_PIECEWISE,
@@ -264,12 +302,33 @@ DISPLAY_LIST = (
     ),
     Display(
         name="Rec.2020",
-        colorimetry="Rec.2020",
+        primaries=REC2020_GAMUT,
         colorspace="Rec.1886 Rec.2020 - Display",
         description="ITU-R BT.2020 primaries, D65, BT.1886 gamma 2.4 encoding",
-        encoding=Encoding("BT.1886 gamma 2.4", gamma=2.4),
+        encoding=_BT1886,
         lut_stem="Rec2020",
         png_colorspace="g24_rec2020_display",
+    ),
+    Display(
+        name="Rec.1886 Rec.709",
+        primaries=SRGB_GAMUT,
+        colorspace="Rec.1886 Rec.709 - Display",
+        description="ITU-R BT.1886 broadcast reference monitor: Rec.709 primaries, D65, "
+        "BT.1886 gamma 2.4 encoding (black level 0)",
+        encoding=_BT1886,
+        lut_stem="Rec1886Rec709",
+        png_colorspace="g24_rec709_display",
+    ),
+    Display(
+        name="P3-DCI",
+        primaries=DCI_P3_GAMUT,
+        colorspace="P3-DCI - Display",
+        description="DCI cinema projector (SMPTE RP 431-2): P3 primaries, DCI white "
+        "(scene D65 white shown at the DCI white, Bradford adaptation), gamma 2.6 encoding",
+        encoding=Encoding("gamma 2.6 (SMPTE RP 431-2)", gamma=2.6),
+        lut_stem="P3DCI",
+        png_colorspace="g26_p3dci_display",
+        png_cicp=(11, 17, 0, 1),
     ),
 )
 

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from ocio_thinfilm.registry.curves import Gamut, LogCurve
+from ocio_thinfilm.registry.displays import DISPLAY_LIST, P3_GAMUT, REC2020_GAMUT
 
 __all__ = [
     "ThinFilmSpace",
@@ -199,13 +200,8 @@ def _gamut(name: str, colour_science: str | None = None) -> Gamut:
     return Gamut(name, colour_science or name)
 
 
-#: The gamuts of the explicit scene-linear spaces and the displays.
-_SRGB, _REC709, _P3, _REC2020 = (
-    _gamut("sRGB"),
-    _gamut("Rec.709", "ITU-R BT.709"),
-    _gamut("Display P3"),
-    _gamut("Rec.2020", "ITU-R BT.2020"),
-)
+#: The gamuts of the explicit scene-linear spaces (the displays' are in :mod:`.displays`).
+_REC709, _P3, _REC2020 = _gamut("Rec.709", "ITU-R BT.709"), P3_GAMUT, REC2020_GAMUT
 _ACESCG, _AP0 = _gamut("ACEScg"), _gamut("ACES2065-1")
 
 _ACESCG_SPACE = SceneSpace(
@@ -486,8 +482,10 @@ SCENE_LINEAR_BY_NAME = {s.name: s for s in SCENE_LINEAR_LIST}
 #: The log curves of the encoded spaces, in their order.
 LOG_CURVE_LIST = tuple(e.curve for e in ENCODED_LIST)
 
-#: The gamuts: the display gamuts (sRGB primaries) and those of the scene-linear spaces.
-GAMUT_LIST = (_SRGB,) + tuple(dict.fromkeys(s.gamut for s in SCENE_LINEAR_LIST))
+#: The gamuts: those of the displays and those of the scene-linear spaces, once each.
+GAMUT_LIST = tuple(
+    dict.fromkeys([d.primaries for d in DISPLAY_LIST] + [s.gamut for s in SCENE_LINEAR_LIST])
+)
 #: Our names of RGB colorimetries (primaries and white) -> colour-science's
 #: ``colour.RGB_COLOURSPACES`` names (derived from :data:`GAMUT_LIST`).
 RGB_COLORIMETRY = {g.name: g.colour_science for g in GAMUT_LIST}

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -388,13 +389,16 @@ def save_frame(
         raw = all((region[2] or view) in raw_views for region in picture.regions)
         png_tag = "data" if raw else png_colorspace(display)
         entry = registry.find_display(display)
+        png_attributes: dict[str, Any] = {"png:compressionLevel": 3, "oiio:ColorSpace": png_tag}
+        if not raw and entry is not None and not entry.hdr and entry.png_cicp is not None:
+            png_attributes["CICP"] = entry.png_cicp
         # HDR code values need 16 bits (PQ: 8-bit steps are visible banding)
         png_job = pool.submit(
             write_image,
             out_dir / f"{stem}.png",
             rgb,
             dtype="uint16" if entry is not None and entry.hdr else "uint8",
-            attributes={"png:compressionLevel": 3, "oiio:ColorSpace": png_tag},
+            attributes=png_attributes,
             tx=tx,
         )
         return [exr_job.result(), png_job.result()]
