@@ -23,7 +23,9 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
-    assert clip.DISPLAYS == registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020")
+    assert registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020", "Rec.1886 Rec.709", "P3-DCI")
+    # the clip's tables: one set per gamut (Rec.1886 Rec.709 has sRGB's)
+    assert clip.DISPLAYS == registry.GAMUT_DISPLAYS == ("sRGB", "Display P3", "Rec.2020", "P3-DCI")
     assert registry.VIEWS == (
         "Constant-Lightness Clip",
         "Constant-Lightness Compress",
@@ -154,8 +156,12 @@ def test_entries_are_frozen():
         (
             "DISPLAY_LIST",
             registry.DISPLAY_LIST[:2]
-            + (dataclasses.replace(registry.DISPLAY_LIST[2], colorimetry="Rec.2100"),),
-            "colorimetry",
+            + (
+                dataclasses.replace(
+                    registry.DISPLAY_LIST[2], primaries=registry.DISPLAY_LIST[0].primaries
+                ),
+            ),
+            "named like a gamut",
         ),
         (
             "DISPLAY_LIST",
@@ -189,31 +195,37 @@ def test_validation_rejects_bad_entries(monkeypatch, attr, value, message):
 
 
 def test_adding_a_display_is_one_entry(tmp_path):
-    """A copy of the package with one more Display entry (Rec.709) in the registry
-    generates a config with that display, its views, clip LUT files and PNG tag."""
+    """A copy of the package with two more Display entries generates a config with those
+    displays, their views, LUT files and PNG tags: Adobe RGB, a new gamut, gets clip
+    tables of its own; Gamma 2.2 Rec.709, sRGB's gamut, shares sRGB's (no new files)."""
     package = tmp_path / "ocio_thinfilm"
     shutil.copytree(ROOT / "ocio_thinfilm", package, ignore=shutil.ignore_patterns("__pycache__"))
     source = (package / "registry" / "displays.py").read_text()
-    anchor = "\nDISPLAY_LIST = (\n"
+    anchor = "\n)\n\n_SDR = "  # the end of DISPLAY_LIST: after the displays it has
     assert source.count(anchor) == 1
-    entry = (
-        '    Display(name="Rec.709", colorimetry="Rec.709", '
-        'colorspace="Rec.1886 Rec.709 - Display", '
-        'description="BT.709 primaries, D65, BT.1886 gamma 2.4", '
-        'encoding=Encoding("BT.1886 gamma 2.4", gamma=2.4), lut_stem="Rec709", '
-        'png_colorspace="g24_rec709_display"),\n'
+    entries = (
+        '    Display(name="Adobe RGB", primaries=Gamut("Adobe RGB (1998)", "Adobe RGB (1998)"), '
+        'colorspace="Adobe RGB - Display", description="Adobe RGB (1998), gamma 563/256", '
+        'encoding=Encoding("gamma 2.2", gamma=563 / 256), lut_stem="AdobeRGB", '
+        'png_colorspace="g22_adobergb_display"),\n'
+        '    Display(name="Gamma 2.2 Rec.709", primaries=SRGB_GAMUT, '
+        'colorspace="Gamma 2.2 Rec.709 - Display", description="Rec.709, gamma 2.2", '
+        'encoding=Encoding("gamma 2.2", gamma=2.2), lut_stem="G22Rec709", '
+        'png_colorspace="g22_rec709_display"),\n'
     )
-    (package / "registry" / "displays.py").write_text(source.replace(anchor, anchor + entry))
+    (package / "registry" / "displays.py").write_text(
+        source.replace(anchor, "\n" + entries + anchor[1:])
+    )
     code = (
-        "import json; from ocio_thinfilm import config\n"
+        "import json; from ocio_thinfilm import config, registry\n"
         "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
-        "from ocio_thinfilm.lut import display_transforms\n"
         "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"
         "cfg = config.generate_config(data)\n"
-        "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Rec.709')),\n"
-        "    sorted(n for n in data.luts if 'Rec709' in n), list(clip.DISPLAYS),\n"
-        "    render.png_colorspace('Rec.709'),\n"
-        "    display_transforms.registry.as_display('Rec.709').encoding.description]))\n"
+        "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Adobe RGB')),\n"
+        "    list(cfg.getViews('Gamma 2.2 Rec.709')), sorted(data.luts), list(clip.DISPLAYS),\n"
+        "    [render.png_colorspace(n) for n in ('Adobe RGB', 'Gamma 2.2 Rec.709')],\n"
+        "    registry.as_display('Gamma 2.2 Rec.709').clip_lut_stem(),\n"
+        "    list(registry.RGB_COLORIMETRY)]))\n"
     )
     env = dict(os.environ, PYTHONPATH=str(tmp_path))
     out = subprocess.run(
@@ -224,19 +236,24 @@ def test_adding_a_display_is_one_entry(tmp_path):
         cwd=tmp_path,
         check=True,
     )
-    displays, views, luts, clip_displays, tag, encoding = json.loads(
+    displays, views, shared_views, luts, clip_displays, tags, stem, gamuts = json.loads(
         out.stdout.strip().splitlines()[-1]
     )
-    assert displays[:4] == ["Rec.709", "sRGB", "Display P3", "Rec.2020"] == clip_displays
-    assert displays[4:] == list(registry.HDR_DISPLAYS)
-    assert views == list(registry.VIEWS)
-    assert luts == [
-        "ConstantLightnessClip_Rec709_BlackFaces.clf",
-        "ConstantLightnessClip_Rec709_WhiteFaces.clf",
-        "ConstantLightnessCompress_Rec709_BlackFaces.clf",
-        "ConstantLightnessCompress_Rec709_WhiteFaces.clf",
+    sdr, hdr = list(registry.DISPLAYS), list(registry.HDR_DISPLAYS)
+    assert displays == [*sdr, "Adobe RGB", "Gamma 2.2 Rec.709", *hdr]
+    assert views == shared_views == list(registry.VIEWS)
+    assert clip_displays == [*registry.GAMUT_DISPLAYS, "Adobe RGB"]
+    assert "Adobe RGB (1998)" in gamuts
+    own = [n for n in luts if "AdobeRGB" in n]
+    assert own == [
+        "ConstantLightnessClip_AdobeRGB_BlackFaces.clf",
+        "ConstantLightnessClip_AdobeRGB_WhiteFaces.clf",
+        "ConstantLightnessCompress_AdobeRGB_BlackFaces.clf",
+        "ConstantLightnessCompress_AdobeRGB_WhiteFaces.clf",
     ]
-    assert tag == "g24_rec709_display" and encoding == "BT.1886 gamma 2.4"
+    assert not [n for n in luts if "G22Rec709" in n]
+    assert stem == "ConstantLightnessClip_sRGB_BlackFaces"
+    assert tags == ["g22_adobergb_display", "g22_rec709_display"]
 
 
 def test_every_stage_maps_every_view_kind_and_curve_kind():
