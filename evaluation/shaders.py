@@ -1,7 +1,7 @@
 """Running the exported shaders where no host is installed, and the truth they are held to.
 
 - :func:`analytic_view` -- the double-precision view: the input decoded with
-  colour-science's own function of its log curve (the one the registry's curve names) and the
+  colour-science's own function of its log curve (evaluation/truth.py names it) and the
   package's colorimetry matrices, components limited to
   +-1e6 as the config does, the analytic map (``colour.clip.clip_XYZ``,
   ``colour.compress.compress_XYZ``) in the display's gamut (for HDR scaled into its
@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from evaluation.truth import log_decoding, log_encoding
 from evaluation.views import decode_display, encode_display
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry, compress
@@ -56,24 +57,6 @@ LIMIT = ocio_ops.LIMIT
 #: The HDR displays' reference white and peak, cd/m2 (ITU-R BT.2408; the registry's).
 WHITE = registry.HDR_REFERENCE_WHITE
 PEAK = 1000.0
-
-
-def log_encoding(linear: npt.ArrayLike, curve: registry.LogCurve) -> np.ndarray:
-    """Scene-linear values -> codes of the log ``curve``, by colour-science (the function
-    the curve names, ``curve.colour_science[0]``, with its defaults)."""
-    import colour
-
-    with np.errstate(divide="ignore", invalid="ignore"):  # log of the masked negatives
-        return np.asarray(getattr(colour.models, curve.colour_science[0])(linear))
-
-
-def log_decoding(codes: npt.ArrayLike, curve: registry.LogCurve) -> np.ndarray:
-    """Codes of the log ``curve`` -> scene-linear values, by colour-science (the function
-    the curve names, ``curve.colour_science[1]``, with its defaults)."""
-    import colour
-
-    with np.errstate(over="ignore", invalid="ignore"):
-        return np.asarray(getattr(colour.models, curve.colour_science[1])(codes))
 
 
 #: The config's sRGB-encoded texture space (sRGB curve, Rec.709 primaries).

@@ -32,10 +32,14 @@ __all__ = [
     "OCIO_DISPLAY_BUILTINS",
     "LogTruth",
     "colour_science_gamut",
+    "colour_science_RGB_to_XYZ",
     "log_encoding",
     "log_decoding",
     "missing",
 ]
+
+#: The D65 white's chromaticity (CIE 1931 2 degree), the scene white of the package.
+D65 = (0.3127, 0.3290)
 
 #: Our gamut name (``registry.GAMUT_LIST``) -> colour-science's colourspace of it.
 COLOUR_SCIENCE_GAMUTS: Mapping[str, str] = MappingProxyType(
@@ -150,6 +154,23 @@ def colour_science_gamut(name: str):
     display = registry.find_display(name)
     gamut = display.colorimetry if display is not None else name
     return colour.RGB_COLOURSPACES[COLOUR_SCIENCE_GAMUTS[gamut]]
+
+
+def colour_science_RGB_to_XYZ(name: str) -> np.ndarray:
+    """Return the linear RGB -> CIE-XYZ-D65 matrix of our gamut (or display) ``name``,
+    built here by colour-science from its colourspace's primaries and white: the
+    normalised primary matrix, Bradford-adapted to D65 where the white is another (DCI,
+    ACES), as the package's colorimetry says it does."""
+    import colour
+
+    space = colour_science_gamut(name)
+    npm = colour.normalised_primary_matrix(space.primaries, space.whitepoint)
+    if np.allclose(space.whitepoint, D65, atol=1e-4):
+        return npm
+    cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
+        colour.xy_to_XYZ(space.whitepoint), colour.xy_to_XYZ(D65), transform="Bradford"
+    )
+    return cat @ npm
 
 
 def log_encoding(linear: npt.ArrayLike, curve) -> np.ndarray:

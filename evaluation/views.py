@@ -3,14 +3,14 @@
 One definition of each: the committed config's path, OCIO's optimisation levels, a
 processor and a view applied to CIE-XYZ-D65 by OCIO's CPU processor (float32, as hosts
 run it), a view's code values on every test-colour set, the error statistics the view
-tests compare with their targets, the extreme inputs every view must survive,
-colour-science's names of the display gamuts, and display code values decoded back to
-display-linear light with colour-science's transfer functions (independent of the
-package's own encodings).
+tests compare with their targets, the extreme inputs every view must survive, and
+display code values decoded back to display-linear light with colour-science's
+transfer functions (independent of the package's own encodings).
 """
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
@@ -18,8 +18,13 @@ import numpy.typing as npt
 
 from ocio_thinfilm import registry
 
-#: The repository's baked config (``ocio-thinfilm bake`` writes it).
-COMMITTED_CONFIG = Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
+#: The repository's baked config (``ocio-thinfilm bake`` writes it); the environment
+#: variable ``OCIO_THINFILM_TEST_CONFIG`` points the tests at another bake of it (a
+#: config baked into /tmp before the committed one is re-baked for new registry entries).
+COMMITTED_CONFIG = Path(
+    os.environ.get("OCIO_THINFILM_TEST_CONFIG")
+    or Path(__file__).resolve().parents[1] / "configs" / "thinfilm" / "config.ocio"
+)
 
 #: OCIO's CPU optimisation levels the tests run every view at: our name -> the
 #: ``PyOpenColorIO`` attribute.
@@ -31,11 +36,6 @@ OPTIMIZATION_LEVELS = {
     "LOSSLESS": "OPTIMIZATION_LOSSLESS",
     "DEFAULT": "OPTIMIZATION_DEFAULT",
 }
-
-#: colour-science's name of each display gamut (``colour.RGB_COLOURSPACES``), typed here
-#: apart from the package's ``registry.RGB_COLORIMETRY``: a reference that looked the
-#: names up there would agree with a wrong entry of it.
-COLOUR_SCIENCE_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
 
 _F32_MAX = float(np.finfo(np.float32).max)
 #: CIE-XYZ-D65 inputs at and beyond every edge: black, denormals, negatives, above

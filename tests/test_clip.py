@@ -16,18 +16,18 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from evaluation.views import COLOUR_SCIENCE_NAMES
+from evaluation.truth import colour_science_RGB_to_XYZ
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 
-DISPLAYS = ("sRGB", "Display P3", "Rec.2020")
+#: Every SDR display of the registry (a display's name stands for its gamut).
+DISPLAYS = registry.DISPLAYS
 
 
 def reference_matrices(display):
-    """(XYZ->RGB, RGB->XYZ, white XYZ) from colour-science's primaries, computed here."""
-    import colour
-
-    cs = colour.RGB_COLOURSPACES[COLOUR_SCIENCE_NAMES[display]]
-    rgb_to_xyz = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
+    """(XYZ->RGB, RGB->XYZ, white XYZ) from colour-science's primaries and white
+    (Bradford to D65 for a DCI white), computed by evaluation/truth.py."""
+    rgb_to_xyz = colour_science_RGB_to_XYZ(display)
     return np.linalg.inv(rgb_to_xyz), rgb_to_xyz, rgb_to_xyz @ np.ones(3)
 
 

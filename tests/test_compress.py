@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from evaluation.colours import half_way_colours, object_colours
+from evaluation.truth import colour_science_RGB_to_XYZ
 from evaluation.views import (
-    COLOUR_SCIENCE_NAMES,
     OPTIMIZATION_LEVELS,
     apply_view,
     decode_display,
@@ -34,12 +34,9 @@ VIEW = "Constant-Lightness Compress"
 
 
 def _weights(display):
-    """Luminance weights of ``display`` from colour-science's primaries and white
-    (independent of our matrices)."""
-    import colour
-
-    space = colour.RGB_COLOURSPACES[COLOUR_SCIENCE_NAMES[display]]
-    return colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
+    """Luminance weights of ``display`` from colour-science's primaries and white,
+    Bradford to D65 for a DCI white (independent of our matrices)."""
+    return colour_science_RGB_to_XYZ(display)[1]
 
 
 def _aces_curve(d, thr, lim, p=1.2):

@@ -13,6 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation import truth
+from evaluation.views import COMMITTED_CONFIG
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.export import files as export
@@ -23,17 +25,16 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def test_every_module_lists_the_registrys_displays_views_and_spaces():
-    assert registry.DISPLAYS == ("sRGB", "Display P3", "Rec.2020", "Rec.1886 Rec.709", "P3-DCI")
-    # the clip's tables: one set per gamut (Rec.1886 Rec.709 has sRGB's)
-    assert clip.DISPLAYS == registry.GAMUT_DISPLAYS == ("sRGB", "Display P3", "Rec.2020", "P3-DCI")
-    assert registry.VIEWS == (
-        "Constant-Lightness Clip",
-        "Constant-Lightness Compress",
-        "Channel Clamp",
-        "ACES Gamut Compression",
-        "Raw",
-    )
-    assert registry.ALL_DISPLAYS == registry.DISPLAYS + ("Rec.2100-PQ", "Rec.2100-HLG", "P3-D65 PQ")
+    assert registry.DISPLAYS == tuple(d.name for d in registry.DISPLAY_LIST)
+    # the clip's tables: one set per gamut, the first display with those primaries (a
+    # display with an earlier one's gamut, e.g. Rec.1886 Rec.709 with sRGB's, has none)
+    firsts = {}
+    for d in registry.DISPLAY_LIST:
+        firsts.setdefault(d.primaries, d.name)
+    assert clip.DISPLAYS == registry.GAMUT_DISPLAYS == tuple(firsts.values())
+    assert registry.VIEWS == tuple(v.name for v in registry.VIEW_LIST)
+    assert registry.ALL_DISPLAYS == registry.DISPLAYS + registry.HDR_DISPLAYS
+    assert registry.HDR_DISPLAYS == tuple(d.name for d in registry.HDR_DISPLAY_LIST)
     assert tuple(d.name for d in registry.ALL_DISPLAY_LIST) == registry.ALL_DISPLAYS
     assert [render.png_colorspace(d) for d in registry.ALL_DISPLAYS] == [
         d.png_colorspace for d in registry.ALL_DISPLAY_LIST
@@ -51,7 +52,7 @@ def test_every_module_lists_the_registrys_displays_views_and_spaces():
 def test_the_baked_config_has_exactly_the_registrys_entries():
     import PyOpenColorIO as ocio
 
-    cfg = ocio.Config.CreateFromFile(str(ROOT / "configs" / "thinfilm" / "config.ocio"))
+    cfg = ocio.Config.CreateFromFile(str(COMMITTED_CONFIG))
     assert tuple(cfg.getDisplays()) == registry.ALL_DISPLAYS
     for d in registry.DISPLAY_LIST + registry.HDR_DISPLAY_LIST:
         assert tuple(cfg.getViews(d.name)) == registry.VIEWS
@@ -59,9 +60,9 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
         for white in (False, True):
             stem = d.clip_lut_stem(white)
             assert stem == d.gamut.clip_lut_stem(white)
-            assert (ROOT / "configs" / "thinfilm" / "luts" / f"{stem}.clf").is_file()
+            assert (COMMITTED_CONFIG.parent / "luts" / f"{stem}.clf").is_file()
     # HDR displays reuse their gamut's LUT files: none of their own
-    luts = {p.name for p in (ROOT / "configs" / "thinfilm" / "luts").iterdir()}
+    luts = {p.name for p in (COMMITTED_CONFIG.parent / "luts").iterdir()}
     assert luts == (
         {f"{d.clip_lut_stem(w)}.clf" for d in registry.DISPLAY_LIST for w in (False, True)}
         | {f"{d.compress_lut_stem(w)}.clf" for d in registry.DISPLAY_LIST for w in (False, True)}
@@ -69,7 +70,7 @@ def test_the_baked_config_has_exactly_the_registrys_entries():
     )
     for s in registry.THIN_FILM_LIST:
         assert cfg.getColorSpace(s.name).getFamily() == "Thin Film"
-        assert (ROOT / "configs" / "thinfilm" / "luts" / f"{s.lut_stem}.clf").is_file()
+        assert (COMMITTED_CONFIG.parent / "luts" / f"{s.lut_stem}.clf").is_file()
 
 
 def test_file_stems_come_from_the_registry():
@@ -118,12 +119,12 @@ def test_functions_take_a_display_object_as_they_take_its_name():
     from ocio_thinfilm.lut import clip_lut, ocio_ops, view_transforms
 
     rgb = np.random.default_rng(3).uniform(-0.2, 1.4, (200, 3))
-    for name in ("Display P3", "Rec.2100-HLG"):
-        entry = registry.as_display(name)
-        for view in ("Constant-Lightness Clip", "Channel Clamp"):
+    for entry in registry.ALL_DISPLAY_LIST:
+        name = entry.name
+        for view in (v.name for v in registry.VIEW_LIST if not v.raw):
             a = ocio_ops.apply(view_transforms.view_transform(entry, view, 9), rgb)
             b = ocio_ops.apply(view_transforms.view_transform(name, view, 9), rgb)
-            np.testing.assert_array_equal(a, b)
+            np.testing.assert_array_equal(a, b, err_msg=f"{name} / {view}")
         assert display_transforms.display_colorspace_transform(entry) is not None
     p3 = registry.as_display("Display P3")
     assert clip_lut.clip_lut(p3, 9) is clip_lut.clip_lut("Display P3", 9)
@@ -288,29 +289,30 @@ def test_every_stage_maps_every_view_kind_and_curve_kind():
 
 @pytest.mark.parametrize("encoded", registry.ENCODED_LIST, ids=lambda e: e.name)
 def test_every_log_curve_is_colour_sciences_curve(encoded):
-    """The mapping of each encoded space to its independent truth: the colour-science
-    functions and RGB colourspace the entry names exist, and the curve's published
+    """Each encoded space against its independent truth (evaluation/truth.py): the
+    colour-science functions and RGB colourspace of it exist, and the curve's published
     constants (the model every stage derives its code from) are colour-science's curve
-    with its defaults to 1e-12 (measured 7e-16 / 5e-15): encoding over linear -0.2..1e4,
+    with the truth's arguments to 1e-12 (measured 7e-16 / 5e-15): encoding over linear -0.2..1e4,
     decoding over codes -0.1..1.1, and the code of black, which decodes to 0."""
     import colour
 
     from ocio_thinfilm.colour import log_curves
 
     curve = encoded.curve
-    encode, decode = (getattr(colour.models, name) for name in curve.colour_science)
-    assert encoded.gamut.colour_science in colour.RGB_COLOURSPACES
+    entry = truth.COLOUR_SCIENCE_LOGS[curve.name]
+    encode, decode = entry.encode, entry.decode
+    assert truth.COLOUR_SCIENCE_GAMUTS[encoded.gamut.name] in colour.RGB_COLOURSPACES
     linear = np.concatenate([np.linspace(-0.2, 2.0, 20001), np.geomspace(2.0, 1e4, 2001)])
     linear = linear[linear > (curve.toe_origin if curve.kind == "quadratic-toe" else -1.0)]
     with np.errstate(invalid="ignore", divide="ignore"):
-        truth = encode(linear)
-    np.testing.assert_allclose(log_curves.encode(curve, linear), truth, rtol=0, atol=1e-12)
+        expected = encode(linear)
+    np.testing.assert_allclose(log_curves.encode(curve, linear), expected, rtol=0, atol=1e-12)
     codes = np.linspace(-0.1, 1.1, 24001)
     codes = codes[codes >= 0.0] if curve.kind == "quadratic-toe" else codes
     with np.errstate(over="ignore", invalid="ignore"):
-        truth = decode(codes)
+        expected = decode(codes)
     got = log_curves.decode(curve, codes)
-    np.testing.assert_allclose(got, truth, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(got, expected, rtol=1e-12, atol=1e-12)
     # black: the published code is colour-science's, and decodes to 0 exactly
     assert encode(0.0) == pytest.approx(curve.black, abs=1e-12)
     assert float(log_curves.decode(curve, curve.black)) == pytest.approx(0.0, abs=1e-15)

@@ -16,7 +16,7 @@ from evaluation import truth
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry, log_curves
 
-D65 = (0.3127, 0.3290)
+D65 = truth.D65
 
 
 @pytest.mark.parametrize(
@@ -52,14 +52,12 @@ def test_colour_sciences_colourspace_has_the_gamuts_primaries_and_white(gamut):
     ours = colour.RGB_COLOURSPACES[gamut.colour_science]
     np.testing.assert_allclose(space.primaries, ours.primaries, atol=1e-12)
     np.testing.assert_allclose(space.whitepoint, ours.whitepoint, atol=1e-12)
-    npm = colour.normalised_primary_matrix(space.primaries, space.whitepoint)
-    cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
-        colour.xy_to_XYZ(space.whitepoint), colour.xy_to_XYZ(D65), transform="Bradford"
-    )
-    rgb_to_xyz = cat @ npm if not np.allclose(space.whitepoint, D65, atol=1e-4) else npm
+    rgb_to_xyz = truth.colour_science_RGB_to_XYZ(gamut.name)
     np.testing.assert_allclose(
         colorimetry.matrix_XYZ_to_RGB(gamut.name), np.linalg.inv(rgb_to_xyz), atol=1e-9
     )
+    # RGB = 1 is the D65 white of the scene (Y = 1), whatever the gamut's own white
+    np.testing.assert_allclose(rgb_to_xyz @ np.ones(3), colour.xy_to_XYZ(D65), atol=1e-12)
 
 
 def test_every_display_has_a_gamut_with_a_truth():
