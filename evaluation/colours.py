@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 
 __all__ = [
@@ -142,8 +141,8 @@ def half_way_colours(
     the fraction of the way uniform at random.
 
     Independent of the package: the luminance weights come from colour-science's
-    primaries and white point, the boundary from a bisection along the ray against the
-    unit cube.
+    primaries and white point (evaluation/truth.py's colourspace), the boundary from a
+    bisection along the ray against the unit cube.
 
     Returns
     -------
@@ -151,10 +150,9 @@ def half_way_colours(
         (display-linear RGB (n, 3), Y (n,), the fraction of the way t (n,)); the grey
         of each colour is (Y, Y, Y).
     """
-    import colour
+    from evaluation.truth import colour_science_RGB_to_XYZ
 
-    space = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[display]]
-    w = colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
+    w = colour_science_RGB_to_XYZ(display)[1]  # Bradford to D65 for a DCI white
     rng = np.random.default_rng(seed)
     Y = rng.uniform(0.0005, 0.999, n)
     direction = rng.normal(size=(n, 3))

@@ -337,7 +337,24 @@ def _rising_steps(dist, out):
     return np.diff(out, axis=1)[rising[:, 1:] & rising[:, :-1]]
 
 
-@pytest.mark.parametrize("display", DISPLAYS)
+#: Measured deviations of a display's shipped compression view from the analytic map on
+#: the ramps, beyond the 0.03 this file asserts: a package defect, reported, not a
+#: tolerance (strict: the test fails once the view is fixed, until the entry goes).
+RAMP_DEFECTS = {
+    "P3-DCI": "the compress view is 0.048 of a boundary distance from the analytic map "
+    "(input distance 1.16; sRGB 0.019, Display P3 0.012, Rec.2020 0.012)",
+}
+
+
+@pytest.mark.parametrize(
+    "display",
+    [
+        pytest.param(d, marks=pytest.mark.xfail(reason=RAMP_DEFECTS[d], strict=True))
+        if d in RAMP_DEFECTS
+        else d
+        for d in DISPLAYS
+    ],
+)
 def test_ramps_compress_rises_where_the_clip_is_flat(ramp_distances, display):
     """Saturation ramps at fixed Y and hue (64 steps from the grey to 2.1 boundary
     distances or the spectral colour): the analytic compression's output distance
