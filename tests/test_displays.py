@@ -13,18 +13,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from evaluation import truth
 from evaluation.views import COMMITTED_CONFIG, apply_view, colour_science_rgb, decode_display
 from ocio_thinfilm import registry
 
 ROOT = Path(__file__).resolve().parent.parent
 D65 = (0.3127, 0.3290)
-
-#: Our display colour space -> OCIO's built-in transform from CIE-XYZ-D65 to its code
-#: values (with the same white handling), and colour-science's colourspace of its gamut.
-BUILTINS = {
-    "Rec.1886 Rec.709": ("DISPLAY - CIE-XYZ-D65_to_REC.1886-REC.709", "ITU-R BT.709"),
-    "P3-DCI": ("DISPLAY - CIE-XYZ-D65_to_G2.6-P3-DCI-BFD", "DCI-P3"),
-}
 
 
 @pytest.fixture(scope="module")
@@ -33,34 +27,41 @@ def cfg():
     return ocio.Config.CreateFromFile(str(COMMITTED_CONFIG))
 
 
-def _in_gamut_XYZ(colour_science_name: str, n: int = 2000) -> tuple[np.ndarray, np.ndarray]:
+def _in_gamut_XYZ(gamut: str, n: int = 2000) -> tuple[np.ndarray, np.ndarray]:
     """Random display-linear RGB in [0, 1] and its CIE-XYZ-D65, by colour-science
-    (Bradford from the gamut's white to D65, as OCIO's ``-BFD`` transforms)."""
-    import colour
-
+    (Bradford from the gamut's white to D65, as OCIO's ``-BFD`` transforms); ``gamut``
+    a gamut or display name (evaluation/truth.py's colourspace)."""
     rgb = np.random.default_rng(11).uniform(0.0, 1.0, (n, 3))
-    space = colour.RGB_COLOURSPACES[colour_science_name]
-    XYZ = colour.RGB_to_XYZ(rgb, space, np.array(D65), chromatic_adaptation_transform="Bradford")
-    return rgb, XYZ
+    # the matrix derived from the primaries and white, as OCIO's built-ins (colour-science's
+    # sRGB colourspace carries IEC 61966-2-1's rounded matrix, 1.7e-4 off)
+    return rgb, rgb @ truth.colour_science_RGB_to_XYZ(gamut).T
 
 
-@pytest.mark.parametrize("display", sorted(BUILTINS))
+@pytest.mark.parametrize("display", registry.ALL_DISPLAY_LIST, ids=lambda d: d.name)
 def test_the_display_colour_space_is_ocios_builtin(cfg, display):
-    """CIE-XYZ-D65 -> code values: our display colour space equals OCIO's built-in
-    display transform (float32 round-off), and decodes (colour-science) to the RGB."""
+    """CIE-XYZ-D65 -> code values: every display colour space equals OCIO's built-in
+    display transform of evaluation/truth.py (float32 round-off; an HDR one's input
+    scaled from Y = 1 at the reference white to Y = 1 at OCIO's 100 cd/m2, its codes
+    clamped to [0, 1]), and an SDR one decodes (colour-science) to the RGB."""
     import PyOpenColorIO as ocio
 
     from evaluation.views import apply_processor
 
-    builtin, colour_science = BUILTINS[display]
-    rgb, XYZ = _in_gamut_XYZ(colour_science)
-    entry = registry.as_display(display)
-    ours = apply_processor(cfg.getProcessor(registry.REFERENCE, entry.colorspace), XYZ)
+    builtin = truth.OCIO_DISPLAY_BUILTINS[display.name]
+    rgb, XYZ = _in_gamut_XYZ(display.colorimetry)
+    XYZ = XYZ * display.scale  # up to an HDR display's peak white
+    ours = apply_processor(cfg.getProcessor(registry.REFERENCE, display.colorspace), XYZ)
+    unit = registry.HDR_REFERENCE_WHITE / registry.OCIO_XYZ_UNIT if display.hdr else 1.0
     theirs = apply_processor(
-        ocio.Config.CreateRaw().getProcessor(ocio.BuiltinTransform(builtin)), XYZ
+        ocio.Config.CreateRaw().getProcessor(ocio.BuiltinTransform(builtin)), XYZ * unit
     )
-    np.testing.assert_allclose(ours, theirs, atol=2e-6)
-    np.testing.assert_allclose(decode_display(ours, display), rgb, atol=2e-5)
+    if display.hdr:  # our HDR codes end in a clamp to [0, 1] (HLG's inverse OOTF lifts
+        # saturated blues to 1.056); float32 round-off of the steep PQ: measured 1.6e-5
+        np.testing.assert_allclose(ours, np.clip(theirs, 0.0, 1.0), atol=3e-5)
+    else:
+        np.testing.assert_allclose(ours, theirs, atol=2e-6)
+    if not display.hdr:
+        np.testing.assert_allclose(decode_display(ours, display.name), rgb, atol=2e-5)
 
 
 def test_rec1886_shares_srgbs_tables_and_shows_the_same_light(cfg):
@@ -86,8 +87,8 @@ def test_p3dci_clip_keeps_in_gamut_colours_and_lightness(cfg):
     as they went in; colours outside come back in gamut at their luminance."""
     import colour
 
-    space = colour.RGB_COLOURSPACES["DCI-P3"]
-    rgb, XYZ = _in_gamut_XYZ("DCI-P3", 500)
+    space = truth.colour_science_gamut("P3-DCI")
+    rgb, XYZ = _in_gamut_XYZ("P3-DCI", 500)
     inside = rgb * 0.98 + 0.01
     XYZ_in = colour.RGB_to_XYZ(
         inside, space, np.array(D65), chromatic_adaptation_transform="Bradford"
@@ -107,7 +108,7 @@ def test_p3dci_clip_keeps_in_gamut_colours_and_lightness(cfg):
     assert out.min() >= 0.0 and out.max() <= 1.0
     back = colour.RGB_to_XYZ(out, space, np.array(D65), chromatic_adaptation_transform="Bradford")
     np.testing.assert_allclose(back[:, 1], 0.2, atol=2e-3)
-    assert np.abs(colour_science_rgb(locus, "DCI-P3") - out).max() > 0.1  # it was moved
+    assert np.abs(colour_science_rgb(locus, space.name) - out).max() > 0.1  # it was moved
 
 
 def test_config_growth_is_one_set_of_tables_per_gamut():
