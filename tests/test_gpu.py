@@ -24,6 +24,8 @@ import numpy as np
 import pytest
 
 from evaluation.views import COMMITTED_CONFIG
+from ocio_thinfilm import registry
+from ocio_thinfilm.config.data import ROLES
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -45,24 +47,30 @@ TOL = 2.0 / 255.0
 #: (measured once). Half-float LUT files (CLF 16f) would meet 2/255 at twice the text
 #: (the black pass 9.9 MB per display instead of 4.9 MB: the config past the 39 MB that
 #: tests/test_export.py allows; docs/hdr.md).
+#: The pure powers of Rec.1886 Rec.709 (2.4) and P3-DCI (2.6) do the same with
+#: half-float textures: 3.29/255 (Rec.1886 Rec.709 clip, Linear Rec.709 and texture
+#: input), 2.24/255 (P3-DCI clip) and 3.14/255 (P3-DCI compression), measured once.
 REACHED = {
     ("Rec.2020", "Constant-Lightness Compress", "f2"): 2.2 / 255.0,
+    ("Rec.1886 Rec.709", "Constant-Lightness Clip", "f2"): 3.4 / 255.0,
+    ("P3-DCI", "Constant-Lightness Clip", "f2"): 2.3 / 255.0,
+    ("P3-DCI", "Constant-Lightness Compress", "f2"): 3.3 / 255.0,
     ("P3-D65 PQ", "Constant-Lightness Clip", "f2"): 2.35 / 255.0,
     ("P3-D65 PQ", "Constant-Lightness Compress", "f2"): 3.4 / 255.0,
     ("Rec.2100-PQ", "Constant-Lightness Compress", "f2"): 2.4 / 255.0,
 }
 MODERATE = (-20.0, 100.0)
-SOURCES = [
-    "CIE-XYZ-D65",
-    "Linear Rec.709 (sRGB)",
-    "ACEScg",
-    "ACEScct",
-    "sRGB - Texture",
-    "Thin Film Phase-Change Thickness",
-    "Thin Film No-Phase-Change Thickness",
-    "Thin Film Morpho Iridescence",
-]
-THIN_FILM = {s for s in SOURCES if s.startswith("Thin Film")}
+#: The input spaces, one of each kind the config's views decode (the reference, the
+#: scene_linear role's space, the plain log spaces and their linear spaces, the texture
+#: space, every thin-film space); the camera logs' decodings run in tests/test_shader.py.
+SOURCES = list(
+    dict.fromkeys(
+        [registry.REFERENCE, ROLES["scene_linear"]]
+        + [name for e in registry.ENCODED_LIST if e.plain for name in (e.linear.name, e.name)]
+        + [registry.TEXTURE_SPACE, *registry.THIN_FILM_SPACES]
+    )
+)
+THIN_FILM = set(registry.THIN_FILM_SPACES)
 DTYPES = ("f4", "f2")
 F32_MAX = float(np.finfo(np.float32).max)
 PRECISE = ocio.OptimizationFlags(
@@ -248,15 +256,9 @@ def config():
     return ocio.Config.CreateFromFile(str(COMMITTED_CONFIG))
 
 
-def _views():
-    cfg = ocio.Config.CreateFromFile(str(COMMITTED_CONFIG))
-    return [(d, v) for d in cfg.getDisplays() for v in cfg.getViews(d)]
-
-
-try:
-    VIEWS = _views()
-except Exception:  # config missing or unreadable: the config fixture skips
-    VIEWS = [("sRGB", "Raw")]
+#: Every display and view of the registry (a display the baked config lacks fails: the
+#: config is re-baked with ``ocio-thinfilm bake``).
+VIEWS = [(d, v) for d in registry.ALL_DISPLAYS for v in registry.VIEWS]
 
 
 def _extremes():
@@ -506,7 +508,13 @@ def _extreme_xyz():
 Y0_IMAGINARY = np.array(
     [[1e4, 0, 1], [1e6, 0, 0], [0, 0, 1e6], [-1e6, 0, 0.5], [1e4, 0, 1e4]], np.float32
 )
-HLG_VIEWS = [(d, v) for d, v in VIEWS if d == "Rec.2100-HLG" and v != "Raw"]
+HLG_VIEWS = [
+    (d.name, v.name)
+    for d in registry.HDR_DISPLAY_LIST
+    if d.transfer == "HLG"
+    for v in registry.VIEW_LIST
+    if not v.raw
+]
 
 
 @pytest.mark.parametrize("display,view", HLG_VIEWS)
@@ -520,7 +528,7 @@ def test_gpu_hlg_extremes(gl, config, display, view):
 
     x = _extreme_xyz()
     worst = {}
-    for src in ("CIE-XYZ-D65", "Rec.2100-HLG - Display"):
+    for src in (registry.REFERENCE, registry.as_display(display).colorspace):
         proc = config.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD)
         cpu = x.copy()
         proc.getDefaultCPUProcessor().applyRGB(cpu)
