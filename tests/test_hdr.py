@@ -31,15 +31,15 @@ colour = pytest.importorskip("colour")
 
 #: Tolerance of a code value above 1 or below 0 (float32 rounding).
 TOL = 1e-4
-VIEW = "Constant-Lightness Clip"
+VIEW = registry.CLIP_VIEW
 #: The views with an analytic map: the clip and the soft compression (the same ray and
 #: faces, scale-covariant alike), and their maps of XYZ into an SDR gamut.
 MAPPED = {
-    "Constant-Lightness Clip": clip.clip_XYZ,
-    "Constant-Lightness Compress": compress.compress_XYZ,
+    registry.CLIP_VIEW: clip.clip_XYZ,
+    registry.COMPRESS_VIEW: compress.compress_XYZ,
 }
-#: Every view but Raw.
-NOT_RAW = [v for v in registry.VIEWS if v != "Raw"]
+#: Every view but the raw one.
+NOT_RAW = [v.name for v in registry.VIEW_LIST if not v.raw]
 WHITE = 203.0
 PEAK = 1000.0
 K = PEAK / WHITE
