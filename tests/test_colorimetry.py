@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from evaluation.truth import COLOUR_SCIENCE_GAMUTS
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.physics import exact, sampling, spectra
@@ -128,20 +129,12 @@ def test_bad_names_and_values_raise(call, name):
 # --------------------------------------------------------------------------- #
 # XYZ -> RGB
 # --------------------------------------------------------------------------- #
-@pytest.mark.parametrize(
-    "ours,theirs",
-    [
-        ("sRGB", "sRGB"),
-        ("Rec.709", "ITU-R BT.709"),
-        ("Display P3", "Display P3"),
-        ("Rec.2020", "ITU-R BT.2020"),
-        ("ACEScg", "ACEScg"),
-    ],
-)
+@pytest.mark.parametrize("ours,theirs", sorted(COLOUR_SCIENCE_GAMUTS.items()))
 def test_rgb_matrices_match_colour(colour, ours, theirs):
     """Reference: colour.XYZ_to_RGB from D65 XYZ (Bradford adaptation where the
-    space's white is not D65, as for ACEScg), with matrices derived from the
-    primaries. Also the round trip and RGB(white) = 1."""
+    space's white is not D65, as for ACEScg and DCI-P3), with matrices derived from the
+    primaries, for every gamut (evaluation/truth.py's colourspace of it). Also the round
+    trip and RGB(white) = 1."""
     rng = np.random.default_rng(7)
     XYZ = rng.uniform(-0.2, 1.2, (200, 3))
     cs = colour.RGB_COLOURSPACES[theirs].copy()
@@ -165,8 +158,9 @@ def test_srgb_matrix_close_to_the_published_iec_matrix(colour):
 
 
 def test_white_is_d65_for_every_display(colour):
-    """Reference: colour's D65 chromaticity; Y of the white = 1."""
-    for space in ("sRGB", "Display P3", "Rec.2020", "ACEScg"):
+    """Reference: colour's D65 chromaticity; Y of the white = 1 (scene white D65 is
+    shown at a display's own white, e.g. DCI's, by a Bradford adaptation)."""
+    for space in registry.ALL_DISPLAYS + tuple(COLOUR_SCIENCE_GAMUTS):
         w = colorimetry.white_XYZ(space)
         assert w[1] == pytest.approx(1.0, abs=1e-12)
         np.testing.assert_allclose(colour.XYZ_to_xy(w), D65_XY, atol=1e-12)
@@ -340,7 +334,7 @@ def test_matrices_are_colour_sciences(space):
     # normalised primary matrix and Bradford adaptation, to rounding
     import colour
 
-    cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[space]]
+    cs = colour.RGB_COLOURSPACES[COLOUR_SCIENCE_GAMUTS[space]]  # the independent name
     reference = np.linalg.inv(colour.normalised_primary_matrix(cs.primaries, cs.whitepoint))
     d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     if not np.allclose(cs.whitepoint, d65, atol=1e-4):
