@@ -200,21 +200,24 @@ def test_thickness_spaces_black_below_zero(baked_config, space, level):
 # The SDR display colour spaces' code limit
 # --------------------------------------------------------------------------- #
 def test_display_code_limit_is_the_code_of_the_input_limit():
-    """Reference: colour-science's IEC 61966-2-1 encoding and BT.1886 inverse EOTF of
-    display light 1e6 (ocio_ops.LIMIT, the limit of every scene space's input); the
-    display colour space passes codes up to it and clamps beyond, on the way from XYZ
-    and (through OCIO's inverse) on the way back."""
+    """Reference: colour-science's encoding of each SDR display (IEC 61966-2-1, BT.1886's
+    inverse EOTF, a pure power: ``evaluation.views.encode_display``) of display light
+    1e6 (ocio_ops.LIMIT, the limit of every scene space's input); the display colour
+    space passes codes up to it and clamps beyond, on the way from XYZ and (through
+    OCIO's inverse) on the way back."""
     import colour
 
+    from evaluation.views import encode_display
+    from ocio_thinfilm import registry
     from ocio_thinfilm.lut import display_transforms, ocio_ops
 
-    limits = {d: display_transforms.code_limit(d) for d in ("sRGB", "Display P3", "Rec.2020")}
+    limits = {d: display_transforms.code_limit(d) for d in registry.DISPLAYS}
+    for display, limit in limits.items():
+        expected = float(encode_display(ocio_ops.LIMIT, display))
+        assert limit == pytest.approx(expected, rel=1e-12), display
+    # pinned: the sRGB display's limit is IEC 61966-2-1's encoding of 1e6
     expected = colour.cctf_encoding(ocio_ops.LIMIT, function="sRGB")
     assert limits["sRGB"] == pytest.approx(expected, rel=1e-12)
-    assert limits["Display P3"] == pytest.approx(expected, rel=1e-12)
-    assert limits["Rec.2020"] == pytest.approx(
-        colour.models.eotf_inverse_BT1886(ocio_ops.LIMIT), rel=1e-12
-    )
     # ordinary codes round-trip unchanged; 1e30 and +Inf become the limit
     t = display_transforms.display_colorspace_transform("sRGB")
     code = np.array([[0.2, 0.5, 1.0], [-0.1, 0.3, 1.5], [1e30, np.inf, 0.0]], np.float32)

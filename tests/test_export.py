@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from ocio_thinfilm import registry
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.export import bake
@@ -68,12 +69,13 @@ def exported_set(tmp_path_factory):
 def test_export_set_covers_every_table_display_and_format(exported_set):
     names = _tree(exported_set)
     for fmt in ("clf", "cube", "spi1d"):
-        for stem in ("ThinFilm_PhaseChange", "ThinFilm_NoPhaseChange", "ThinFilm_Morpho"):
-            assert f"{stem}.{fmt}" in names
-    for display in ("sRGB", "DisplayP3", "Rec2020"):
+        for space in registry.THIN_FILM_LIST:
+            assert f"{space.file_stem}.{fmt}" in names
+    for display in registry.DISPLAY_LIST:
+        stem = display.lut_stem
         # the clip over display-linear RGB is not shipped (export clip still writes it)
-        assert not any(n.startswith(f"ConstantLightnessClip_{display}") for n in names)
-        assert f"ACEScct_to_{display}_ConstantLightnessClip.cube" in names  # display LUTs
+        assert not any(n.startswith(f"ConstantLightnessClip_{stem}") for n in names)
+        assert f"ACEScct_to_{stem}_ConstantLightnessClip.cube" in names  # display LUTs
     tables_size = sum(
         (exported_set / n).stat().st_size for n in names if not n.startswith("ACEScct_to_")
     )
@@ -81,7 +83,12 @@ def test_export_set_covers_every_table_display_and_format(exported_set):
     views_size = sum(
         (exported_set / n).stat().st_size for n in names if n.startswith("ACEScct_to_")
     )
-    assert tables_size + views_size <= 15_000_000  # the size budget of luts/ (committed)
+    # the size budget of luts/ (committed): one ACEScct .cube of 3.6-4.1 MB per SDR
+    # display of the registry
+    assert tables_size + views_size <= 15_000_000, (
+        f"luts/ would hold {(tables_size + views_size) / 1e6:.1f} MB for "
+        f"{len(registry.DISPLAYS)} displays, over its 15 MB budget"
+    )
 
 
 def _config_size():
