@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours, spectral_colours
-from evaluation.views import COMMITTED_CONFIG
+from evaluation.views import COMMITTED_CONFIG, decode_display, encode_display
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import read_image, write_image
@@ -26,7 +26,8 @@ ROOT = Path(__file__).resolve().parents[1]
 OIIOTOOL = shutil.which("oiiotool")
 pytestmark = pytest.mark.skipif(OIIOTOOL is None, reason="oiiotool (OpenImageIO) not on PATH")
 
-DISPLAYS = clip.DISPLAYS
+#: Every SDR display of the registry.
+DISPLAYS = registry.DISPLAYS
 #: dE2000 thresholds, oiiotool vs the analytic path (see the per-test comments).
 CLIP_P99, CLIP_MAX = 2.0, 5.0  # the 33^3 LUT on interference colours (measured 1.51 / 3.8)
 EXACT_MAX = 0.05  # matrix / clamp / ACES GC views: only table interpolation and float32
@@ -44,22 +45,14 @@ def oiiotool(*args):
 
 
 def decode(code, display):
-    """Display code values -> display-linear RGB (inverse of the display encoding)."""
-    import colour
-
-    code = np.asarray(code, dtype=np.float64)
-    if display == "Rec.2020":
-        return np.clip(code, 0, None) ** 2.4
-    return colour.cctf_decoding(code, function="sRGB")
+    """Display code values (clamped to [0, 1]) -> display-linear RGB: colour-science's
+    inverse of the registry display's encoding (``evaluation.views.decode_display``)."""
+    return decode_display(code, display)
 
 
 def encode(rgb, display):
-    import colour
-
-    rgb = np.clip(rgb, 0, 1)
-    if display == "Rec.2020":
-        return rgb ** (1 / 2.4)
-    return colour.cctf_encoding(rgb, function="sRGB")
+    """Display-linear RGB (clamped to [0, 1]) -> code values, by colour-science."""
+    return encode_display(np.clip(rgb, 0, 1), display)
 
 
 @pytest.fixture(scope="module")
