@@ -29,11 +29,13 @@ from evaluation.views import (
     error_stats,
     view_codes,
 )
+from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
-DISPLAYS = clip.DISPLAYS
+#: Every SDR display of the registry.
+DISPLAYS = registry.DISPLAYS
 VIEW = "Constant-Lightness Clip"
 
 
@@ -71,14 +73,25 @@ REACHED = {
     "ap0": (0.5, 1.6, 1e-3, 0.1),
     "mixtures": (0.5, 1.5, 1e-3, 0.1),
 }
+#: (display, set) pairs reaching more than REACHED, measured: P3-DCI's spectral mixtures
+#: (max dE2000 1.660).
+REACHED_BY_DISPLAY = {("P3-DCI", "mixtures"): (0.5, 1.7, 1e-3, 0.1)}
 #: (display, set) pairs that miss TARGET (a strict xfail each, so it turns into a
 #: failure once met): the dark violet beyond the blue primary (AP0 at Y ~ 0.05, where
 #: the interpolant between points on two faces still cuts the triangle's corner a
-#: little after the fit of the outside nodes).
+#: little after the fit of the outside nodes). Keyed by the display whose clip tables
+#: a display uses (``Display.gamut``: Rec.1886 Rec.709 has sRGB's, and its misses).
 MISSES = {
     ("sRGB", "ap0"): "max dE2000 1.57 (dark violet beyond the blue primary)",
     ("Display P3", "ap0"): "max dE2000 1.504 (dark violet beyond the blue primary)",
+    ("P3-DCI", "ap0"): "max dE2000 1.523 (dark violet beyond the blue primary)",
+    ("P3-DCI", "mixtures"): "max dE2000 1.660",
 }
+
+
+def _tables(display):
+    """The display whose clip tables ``display`` uses (its own or an earlier one's)."""
+    return registry.as_display(display).gamut.name
 
 
 def _check(m, limits):
@@ -98,7 +111,7 @@ def test_view_against_the_analytic_clip(measured, display, name):
         f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
         f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}"
     )
-    _check(m, REACHED[name])
+    _check(m, REACHED_BY_DISPLAY.get((_tables(display), name), REACHED[name]))
 
 
 @pytest.mark.parametrize(
@@ -107,8 +120,12 @@ def test_view_against_the_analytic_clip(measured, display, name):
         pytest.param(
             d,
             n,
-            marks=[pytest.mark.xfail(strict=True, reason=f"target not reached: {MISSES[d, n]}")]
-            if (d, n) in MISSES
+            marks=[
+                pytest.mark.xfail(
+                    strict=True, reason=f"target not reached: {MISSES[_tables(d), n]}"
+                )
+            ]
+            if (_tables(d), n) in MISSES
             else [],
         )
         for d in DISPLAYS
@@ -138,16 +155,21 @@ def ap0_below(cfg):
 #: beyond sRGB's and Display P3's blue, imaginary greens beyond Rec.2020's green), where
 #: the clip has a kink along the ray from the white point through the primary. A larger
 #: black pass is no cure within the size budget (benchmarks/bench_ap0_corners.py: 81^3,
-#: 12.5 MB per display, still reaches 1.47 / 1.41 / 1.505).
-AP0_REACHED = {"sRGB": 1.62, "Display P3": 1.54, "Rec.2020": 1.79}
+#: 12.5 MB per display, still reaches 1.47 / 1.41 / 1.505); P3-DCI 1.787. Keyed by the
+#: display whose tables a display uses (Rec.1886 Rec.709: sRGB's, measured 1.617).
+AP0_REACHED = {"sRGB": 1.62, "Display P3": 1.54, "Rec.2020": 1.79, "P3-DCI": 1.80}
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
 def test_ap0_below_white_within_what_the_design_reaches(ap0_below, display):
     de = ap0_below[display]
     print(f"{display}: AP0 below white max {de.max():.3f} p99 {np.percentile(de, 99):.3f}")
+    assert _tables(display) in AP0_REACHED, (
+        f"AP0_REACHED has no measured bound for the display {_tables(display)!r} (max "
+        f"{de.max():.3f} now): add it"
+    )
     assert np.percentile(de, 99) <= TARGET[0]
-    assert de.max() <= AP0_REACHED[display]
+    assert de.max() <= AP0_REACHED[_tables(display)]
 
 
 @pytest.mark.parametrize(
@@ -157,7 +179,8 @@ def test_ap0_below_white_within_what_the_design_reaches(ap0_below, display):
             d,
             marks=pytest.mark.xfail(
                 strict=True,
-                reason=f"target not reached: max dE2000 {AP0_REACHED[d]} (corners beyond "
+                reason=f"target not reached: max dE2000 {AP0_REACHED.get(_tables(d))} (corners "
+                "beyond "
                 "the primaries; size trade-off in reports/bench_ap0_corners.md)",
             ),
         )
@@ -294,10 +317,11 @@ def test_display_spaces_as_input_are_finite_at_every_level(cfg, level):
         for cs in cfg.getColorSpaces()
         if cs.getReferenceSpaceType() == ocio.REFERENCE_SPACE_DISPLAY
     ]
-    assert len(sources) == 6
+    assert sorted(sources) == sorted(d.colorspace for d in registry.ALL_DISPLAY_LIST)
+    raw = [v.name for v in registry.VIEW_LIST if v.raw]
     bad = []
     for src in sources:
-        targets = [(d, v) for d in cfg.getDisplays() for v in cfg.getViews(d) if v != "Raw"]
+        targets = [(d, v) for d in cfg.getDisplays() for v in cfg.getViews(d) if v not in raw]
         # (a conversion of a space to itself is no conversion: OCIO passes it through)
         targets += [(None, dst) for dst in ["CIE-XYZ-D65", *sources] if dst != src]
         for display, view in targets:
