@@ -14,6 +14,7 @@ from __future__ import annotations
 import base64
 import html
 import json
+import os
 import re
 import shlex
 import warnings
@@ -28,7 +29,12 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.export import knob_page, shader
 
-PAGE = Path(__file__).resolve().parents[1] / "docs" / "knobs.html"
+#: The committed page; ``OCIO_THINFILM_TEST_KNOB_PAGE`` points the tests at another
+#: generation of it (one written to /tmp before the committed page is regenerated).
+PAGE = Path(
+    os.environ.get("OCIO_THINFILM_TEST_KNOB_PAGE")
+    or Path(__file__).resolve().parents[1] / "docs" / "knobs.html"
+)
 #: 8-bit canvas codes against the analytic view's code values.
 TOLERANCE = 2.0 / 255.0
 
@@ -70,7 +76,8 @@ def _readback(chromium, tmp_path, query):
 
 @pytest.mark.parametrize(
     "display, threshold, limit",
-    [("sRGB", 0.8, 1.3), ("sRGB", 0.6, 1.5), ("Display P3", 0.9, 1.1), ("Rec.2020", 0.8, 1.3)],
+    # every display of the page at the default knobs; other knobs on two of them
+    [(d, 0.8, 1.3) for d in knob_page.DISPLAYS] + [("sRGB", 0.6, 1.5), ("Display P3", 0.9, 1.1)],
 )
 def test_the_page_draws_the_analytic_view(chromium, tmp_path, display, threshold, limit):
     """Every canvas pixel of every strip within 2/255 of the analytic view; the gaps
@@ -138,25 +145,30 @@ def test_the_strips_are_large_enough_to_compare():
 
 def _ramp_columns(XYZ, display):
     """The fractional column where a ramp leaves the display's gamut: colour-science's
-    RGB of the display's primaries leaving [0, 1] (linear between two columns)."""
-    import colour
+    RGB of the display's primaries and white (evaluation/truth.py) leaving [0, 1]
+    (linear between two columns)."""
+    from evaluation.truth import colour_science_RGB_to_XYZ
 
-    space = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[display]]
-    rgb = XYZ @ np.asarray(space.matrix_XYZ_to_RGB).T
+    rgb = XYZ @ np.linalg.inv(colour_science_RGB_to_XYZ(display)).T  # Bradford for DCI
     inside = np.minimum(rgb.min(axis=1), 1.0 - rgb.max(axis=1))
     c = int(np.argmax(inside < 0))
     assert c > 0
     return c - 1 + inside[c - 1] / (inside[c - 1] - inside[c])
 
 
-@pytest.mark.parametrize(
-    "display, threshold, limit, source",
-    [
-        ("sRGB", 0.8, 1.3, None),
-        ("Display P3", 0.6, 1.5, "ACEScg"),
-        ("Rec.2020", 0.9, 2.5, "Linear Rec.709 (sRGB)"),
-    ],
-)
+#: The controls set together: three examples of knobs and input space, and every other
+#: display of the page at the defaults.
+COMMAND_CASES = [
+    ("sRGB", 0.8, 1.3, None),
+    ("Display P3", 0.6, 1.5, "ACEScg"),
+    ("Rec.2020", 0.9, 2.5, "Linear Rec.709 (sRGB)"),
+]
+COMMAND_CASES += [
+    (d, 0.8, 1.3, None) for d in knob_page.DISPLAYS if d not in {c[0] for c in COMMAND_CASES}
+]
+
+
+@pytest.mark.parametrize("display, threshold, limit, source", COMMAND_CASES)
 def test_the_commands_marks_and_axes_follow_the_controls(
     chromium, tmp_path, display, threshold, limit, source
 ):
