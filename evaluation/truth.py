@@ -15,6 +15,8 @@ white of the package's colorimetry.
   cannot move the truth).
 - :data:`OCIO_DISPLAY_BUILTINS` -- our display name -> OCIO's built-in display transform
   (``BuiltinTransform``, CIE-XYZ-D65 -> code values) of the same encoding and gamut.
+- :data:`HDR_CICP` -- our HDR display name -> its ITU-T H.273 code points (the PNG's
+  cICP chunk).
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ __all__ = [
     "COLOUR_SCIENCE_GAMUTS",
     "COLOUR_SCIENCE_LOGS",
     "OCIO_DISPLAY_BUILTINS",
+    "HDR_CICP",
     "LogTruth",
     "colour_science_gamut",
     "colour_science_RGB_to_XYZ",
@@ -140,6 +143,18 @@ OCIO_DISPLAY_BUILTINS: Mapping[str, str] = MappingProxyType(
         "Rec.2100-PQ": "DISPLAY - CIE-XYZ-D65_to_REC.2100-PQ",
         "Rec.2100-HLG": "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit",
         "P3-D65 PQ": "DISPLAY - CIE-XYZ-D65_to_ST2084-P3-D65",
+    }
+)
+
+
+#: Our HDR display name (``registry.HDR_DISPLAYS``) -> ITU-T H.273 code points (colour
+#: primaries: BT.2020 = 9, P3-D65 = 12; transfer: PQ = 16, HLG = 18; RGB matrix 0; full
+#: range 1), what its PNG's cICP chunk must hold.
+HDR_CICP: Mapping[str, tuple[int, int, int, int]] = MappingProxyType(
+    {
+        "Rec.2100-PQ": (9, 16, 0, 1),
+        "Rec.2100-HLG": (9, 18, 0, 1),
+        "P3-D65 PQ": (12, 16, 0, 1),
     }
 )
 

@@ -25,6 +25,7 @@ D65 = truth.D65
         ("COLOUR_SCIENCE_GAMUTS", [g.name for g in registry.GAMUT_LIST], "gamut"),
         ("COLOUR_SCIENCE_LOGS", list(registry.LOG_CURVES), "log curve"),
         ("OCIO_DISPLAY_BUILTINS", list(registry.ALL_DISPLAYS), "display"),
+        ("HDR_CICP", list(registry.HDR_DISPLAYS), "HDR display"),
     ],
 )
 def test_each_truth_covers_exactly_the_registrys_entries(mapping, names, what):
