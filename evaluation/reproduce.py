@@ -24,7 +24,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-#: (display, view, language) of the shaders written.
+#: (display, view, language) of the shaders written. Pinned, not the registry's lists:
+#: the committed reference bytes (tests/test_reproducible.py) are of these samples.
 SHADERS = (
     ("Display P3", "Constant-Lightness Clip", "glsl"),
     ("Display P3", "Constant-Lightness Compress", "dctl"),

@@ -15,9 +15,11 @@ from pathlib import Path
 
 import numpy as np
 
+from ocio_thinfilm import registry
+
 ROOT = Path(__file__).resolve().parents[2]
-#: The views compared, left to right.
-VIEWS = ("Constant-Lightness Compress", "Constant-Lightness Clip", "ACES Gamut Compression")
+#: The views compared, left to right: the registry's views of these kinds.
+VIEWS = tuple(registry.view_of_kind(kind).name for kind in ("compress", "clip", "aces"))
 
 
 def ramps(display="sRGB", Y=0.2, n=129):
