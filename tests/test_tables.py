@@ -7,11 +7,13 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours, spectral_colours
+from evaluation.views import encode_display
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage, tables, view_transforms
 
-DISPLAYS = clip.DISPLAYS
+#: Every SDR display of the registry.
+DISPLAYS = registry.DISPLAYS
 
 
 @pytest.fixture(scope="module")
@@ -28,6 +30,8 @@ def grey_input(x):
 # Contract
 # --------------------------------------------------------------------------- #
 def test_views_and_default_tables():
+    # pinned: the view names are the config's published contract (users' configs and
+    # scripts name them); every list of views elsewhere derives from the registry
     assert registry.VIEWS == (
         "Constant-Lightness Clip",
         "Constant-Lightness Compress",
@@ -297,12 +301,9 @@ def test_lut_files_hold_no_negative_zero():
 # Views
 # --------------------------------------------------------------------------- #
 def _encode(rgb, display):
-    import colour
-
-    rgb = np.clip(rgb, 0, 1)
-    if display == "Rec.2020":
-        return rgb ** (1 / 2.4)
-    return colour.cctf_encoding(rgb, function="sRGB")
+    """Display-linear RGB (clamped to [0, 1]) -> codes, by colour-science's encoding of
+    the registry display (``evaluation.views.encode_display``)."""
+    return encode_display(np.clip(rgb, 0, 1), display)
 
 
 @pytest.mark.parametrize("display", DISPLAYS)
