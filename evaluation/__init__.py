@@ -18,6 +18,9 @@ Not part of the shipped package: a top-level package of the repository, beside
   tests of the browser pages (docs/knobs.html, docs/glsl.md's three.js page).
 - :mod:`.views`: the committed config's views applied the way a host does (OCIO's CPU
   processor), the extreme inputs, colour-science's decoding of display code values.
+- :mod:`.truth`: the independent truths in one declared mapping: colour-science's names
+  of each gamut and log curve, OCIO's built-in display transforms, the HDR displays'
+  H.273 code points (tests/test_truth.py: each covers exactly the registry's entries).
 - :mod:`.materials`: films' reflectance and transmittance colours from colour-science
   alone (exact TMM, CMFs, illuminant, RGB colourspaces) and their material tables as
   EXRs: the truth the renderer tests compare with.
