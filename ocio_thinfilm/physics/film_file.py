@@ -291,6 +291,35 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     unknown = sorted(set(table) - set(_FILM_KEYS))
     if unknown:
         raise where.error(unknown[0], f"unknown key; allowed: {', '.join(_FILM_KEYS)}")
+    stack, layers = _stack(where, table, known)
+    vary = _vary(where, table, layers)
+    thickness = _thicknesses(where, table, layers, vary)
+    lo, hi = _range(where, table)
+    angle, model, normalise = _model(where, table, layers)
+    light = _light(where, table)
+    name = table.get("name", NAME_FORMAT.format(key=key))
+    if not isinstance(name, str) or not name.strip() or name != name.strip():
+        raise where.error("name", f"must be a non-empty name without outer spaces, got {name!r}")
+    return Film(
+        key=key,
+        name=name,
+        stack=tuple(stack),
+        vary=vary,
+        thickness_nm=tuple(thickness),
+        range_um=(lo, hi),
+        angle_deg=angle,
+        model=model,
+        source=path,
+        normalise=normalise,
+        illuminant=light[0],
+        adaptation=light[1],
+    )
+
+
+def _stack(
+    where: _Where, table: dict, known: Mapping[str, Material]
+) -> tuple[list[Material], list[str]]:
+    """Return a film's ``stack`` as materials (incident medium lossless) and its layers."""
     if "stack" not in table:
         raise where.error(
             "stack", "the key is missing: list the incident medium, layer(s) and substrate"
@@ -330,12 +359,20 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
             )
         # a glass's bulk absorption (k ~ 1e-8): the incident medium is taken lossless
         stack[0] = Material(stack[0].name, stack[0].n, 0.0, stack[0].source, stack[0].path)
+    return stack, layers
+
+
+def _vary(where: _Where, table: dict, layers: list[str]) -> int:
+    """Return the index of the varying layer among ``layers``."""
     if "vary" in table:
-        vary = _layer(where, "vary", table["vary"], layers)
-    elif len(layers) == 1:
-        vary = 0
-    else:
-        raise where.error("vary", f"must name the varying layer, one of {layers}")
+        return _layer(where, "vary", table["vary"], layers)
+    if len(layers) == 1:
+        return 0
+    raise where.error("vary", f"must name the varying layer, one of {layers}")
+
+
+def _thicknesses(where: _Where, table: dict, layers: list[str], vary: int) -> list[float]:
+    """Return each layer's thickness (nm), 0 for the varying one."""
     thickness = [math.nan] * len(layers)
     thickness[vary] = 0.0
     given = table.get("thickness_nm", {})
@@ -362,6 +399,11 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     missing = [layers[j] for j in range(len(layers)) if math.isnan(thickness[j])]
     if missing:
         raise where.error("thickness_nm", f"needs the thickness of {', '.join(missing)} (nm)")
+    return thickness
+
+
+def _range(where: _Where, table: dict) -> tuple[float, float]:
+    """Return the film's thickness range ``range_um`` (lo, hi) in um."""
     rng = table.get("range_um", [0.0, 1.5])
     if not isinstance(rng, list) or len(rng) != 2:
         raise where.error("range_um", f"must be [lo, hi] in um, got {rng!r}")
@@ -370,6 +412,11 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
         raise where.error(
             "range_um", f"must satisfy 0 <= lo < hi <= {MAX_RANGE_UM:g} um, got [{lo:g}, {hi:g}]"
         )
+    return lo, hi
+
+
+def _model(where: _Where, table: dict, layers: list[str]) -> tuple[float, str, bool]:
+    """Return the film's ``angle_deg``, ``model`` and ``normalise``."""
     angle = _number(where, "angle_deg", table.get("angle_deg", 0.0))
     if not 0 <= angle < 90:
         raise where.error("angle_deg", f"must be in [0, 90) degrees, got {angle:g}")
@@ -381,6 +428,11 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     normalise = table.get("normalise", False)
     if not isinstance(normalise, bool):
         raise where.error("normalise", f"must be true or false, got {normalise!r}")
+    return angle, model, normalise
+
+
+def _light(where: _Where, table: dict) -> list[str]:
+    """Return the ``illuminant`` and ``adaptation`` the film is seen under."""
     light = []
     for option, default, check in (
         ("illuminant", viewing.SCENE_ILLUMINANT, viewing.check_illuminant),
@@ -390,23 +442,7 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
             light.append(check(table.get(option, default)))
         except ParameterError as error:
             raise where.error(option, error.detail.lstrip(": ")) from None
-    name = table.get("name", NAME_FORMAT.format(key=key))
-    if not isinstance(name, str) or not name.strip() or name != name.strip():
-        raise where.error("name", f"must be a non-empty name without outer spaces, got {name!r}")
-    return Film(
-        key=key,
-        name=name,
-        stack=tuple(stack),
-        vary=vary,
-        thickness_nm=tuple(thickness),
-        range_um=(lo, hi),
-        angle_deg=angle,
-        model=model,
-        source=path,
-        normalise=normalise,
-        illuminant=light[0],
-        adaptation=light[1],
-    )
+    return light
 
 
 def parse_films(text: str, path: str | Path = "<films>", *, taken: Iterable[str] = ()) -> dict:
