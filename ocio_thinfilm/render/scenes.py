@@ -380,20 +380,10 @@ class SoapScene(Scene):
     RADIUS = 0.44  # of the image's smaller side
     FILM_GAIN = 0.85
 
-    def render(
-        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
-    ) -> Picture:
-        """Render one frame: see :meth:`Scene.render`."""
-        x, y = _pixel_grid(width, height)
-        r = np.float32(self.RADIUS * min(width, height))
-        nx = (x - width / 2) / r
-        ny = (height / 2 - y) / r  # up
-        rho2 = nx * nx + ny * ny
-        inside = rho2 < 1.0
-        nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))  # towards the (orthographic) viewer
-        cos_view = nz
-        theta = np.degrees(reproducible.float32_of(np.arccos, np.clip(cos_view, 0.0, 1.0)))
-
+    def _thickness(
+        self, nx: np.ndarray, ny: np.ndarray, r: np.float32, seed: int, frame: int
+    ) -> tuple[np.ndarray, float]:
+        """Return the film's physical thickness (um) and the drained height."""
         # Height normalised to 0 at the top and 1 at the bottom, plus turbulence (air
         # currents) swirling around the bubble; draining raises the black line.
         h = (1.0 - ny) / 2.0
@@ -410,7 +400,34 @@ class SoapScene(Scene):
         )
         level = h + self.TURB * (turb - 0.45)
         level = np.clip((level - drain) / (1.0 - drain), 0.0, None)
-        t_phys = (self.T_BOTTOM * level).astype(np.float32)
+        return (self.T_BOTTOM * level).astype(np.float32), drain
+
+    @staticmethod
+    def _studio(nx: np.ndarray, ny: np.ndarray, nz: np.ndarray) -> np.ndarray:
+        """Return the studio environment's light seen in the mirror direction."""
+        # Studio environment seen in the mirror direction: a soft bright window at the
+        # upper left over a dim room, brighter above than below.
+        rx, ry, rz = 2 * nz * nx, 2 * nz * ny, 2 * nz * nz - 1
+        window = np.array([-0.45, 0.6, 0.66], np.float32)
+        window /= np.sqrt(reproducible.matmul(window, window))
+        key = _smoothstep(0.86, 0.97, rx * window[0] + ry * window[1] + rz * window[2])
+        return 0.55 + 0.3 * ry + 0.45 * key
+
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:
+        """Render one frame: see :meth:`Scene.render`."""
+        x, y = _pixel_grid(width, height)
+        r = np.float32(self.RADIUS * min(width, height))
+        nx = (x - width / 2) / r
+        ny = (height / 2 - y) / r  # up
+        rho2 = nx * nx + ny * ny
+        inside = rho2 < 1.0
+        nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))  # towards the (orthographic) viewer
+        cos_view = nz
+        theta = np.degrees(reproducible.float32_of(np.arccos, np.clip(cos_view, 0.0, 1.0)))
+
+        t_phys, drain = self._thickness(nx, ny, r, seed, frame)
         t_opt = _optical_thickness_um(
             np.where(inside, t_phys, 0.0), self.N_SOAP, np.where(inside, theta, 0.0)
         )
@@ -419,13 +436,7 @@ class SoapScene(Scene):
         else:
             film = lookup(FILM_TABLE, t_opt)
 
-        # Studio environment seen in the mirror direction: a soft bright window at the
-        # upper left over a dim room, brighter above than below.
-        rx, ry, rz = 2 * nz * nx, 2 * nz * ny, 2 * nz * nz - 1
-        window = np.array([-0.45, 0.6, 0.66], np.float32)
-        window /= np.sqrt(reproducible.matmul(window, window))
-        key = _smoothstep(0.86, 0.97, rx * window[0] + ry * window[1] + rz * window[2])
-        env = 0.55 + 0.3 * ry + 0.45 * key
+        env = self._studio(nx, ny, nz)
         # Background: a dark gradient, seen through the bubble too (transmission ~ 1).
         backdrop = _grey(0.012 + 0.03 * (y / height))
         edge = _smoothstep(1.0, 0.985, np.sqrt(rho2))  # anti-aliased silhouette
