@@ -291,14 +291,46 @@ _MARK_LABEL = 13
 
 def _body(rows: list[Row], layout: list[Band], height: int) -> str:
     """Return the page's visible HTML: controls, the labelled canvas, commands, notes."""
+    return _intro() + _controls() + _figure(rows, layout, height) + _commands() + _notes()
+
+
+def _intro() -> str:
+    """Return the page's title and what the compression does."""
+    return """<h1>Constant-Lightness Compress: choose the knobs</h1>
+<p>Smits &amp; Meyer's constant-lightness gamut clip (<i>Newton's Colors</i>, 1990,
+Section 3.2) moves colours outside the display's gamut towards the grey of the same
+luminance until they reach the gamut's boundary. The compression keeps that ray and the
+luminance and softens the cut: colours up to <b>threshold</b> of the way to the boundary stay
+as they are, and the rest is compressed with the ACES 1.3 power curve so that a colour
+<b>limit</b> boundary distances out lands on the boundary (further out: the clip). Each
+test row below is drawn through the clip (top strip) and through the compression (bottom
+strip); both are the GLSL that <code>ocio-thinfilm export shader</code> writes, run by your
+browser's WebGL2.</p>
+"""
+
+
+def _controls() -> str:
+    """Return the knobs: the display, the threshold and limit sliders, the defaults."""
     e = html.escape
     t_lo, t_hi, t_step = shader.THRESHOLD_SLIDER
     l_lo, l_hi, l_step = shader.LIMIT_SLIDER
     options = "".join(f'<option value="{e(d)}">{e(d)}</option>' for d in DISPLAYS)
-    sources = "".join(
-        f'<option value="{e(s)}"{" selected" if s == DEFAULT_SOURCE else ""}>{e(s)}</option>'
-        for s in SOURCES
-    )
+    return f"""<div id="controls">
+<label>Display <select id="display">{options}</select></label>
+<label>Threshold <input type="range" id="threshold" min="{t_lo:g}" max="{t_hi:g}"
+ step="{t_step:g}" value="{compress.THRESHOLD:g}"> <output id="threshold-value"></output></label>
+<label>Limit <input type="range" id="limit" min="{l_lo:g}" max="{l_hi:g}" step="{l_step:g}"
+ value="{compress.LIMIT:g}"> <output id="limit-value"></output></label>
+<button id="defaults" type="button">Defaults ({compress.THRESHOLD:g} / {compress.LIMIT:g})</button>
+</div>
+<p id="note"></p>
+<p id="status"></p>
+"""
+
+
+def _figure(rows: list[Row], layout: list[Band], height: int) -> str:
+    """Return the canvas with its strips' labels and the ramps' marks, and their key."""
+    e = html.escape
     labels, marks = [], []
     for band in layout:
         row = rows[band.row]
@@ -319,27 +351,7 @@ def _body(rows: list[Row], layout: list[Band], height: int) -> str:
                 f"<span>{letter}</span></div>"
                 for name, letter, title in _MARKS
             ]
-    return f"""<h1>Constant-Lightness Compress: choose the knobs</h1>
-<p>Smits &amp; Meyer's constant-lightness gamut clip (<i>Newton's Colors</i>, 1990,
-Section 3.2) moves colours outside the display's gamut towards the grey of the same
-luminance until they reach the gamut's boundary. The compression keeps that ray and the
-luminance and softens the cut: colours up to <b>threshold</b> of the way to the boundary stay
-as they are, and the rest is compressed with the ACES 1.3 power curve so that a colour
-<b>limit</b> boundary distances out lands on the boundary (further out: the clip). Each
-test row below is drawn through the clip (top strip) and through the compression (bottom
-strip); both are the GLSL that <code>ocio-thinfilm export shader</code> writes, run by your
-browser's WebGL2.</p>
-<div id="controls">
-<label>Display <select id="display">{options}</select></label>
-<label>Threshold <input type="range" id="threshold" min="{t_lo:g}" max="{t_hi:g}"
- step="{t_step:g}" value="{compress.THRESHOLD:g}"> <output id="threshold-value"></output></label>
-<label>Limit <input type="range" id="limit" min="{l_lo:g}" max="{l_hi:g}" step="{l_step:g}"
- value="{compress.LIMIT:g}"> <output id="limit-value"></output></label>
-<button id="defaults" type="button">Defaults ({compress.THRESHOLD:g} / {compress.LIMIT:g})</button>
-</div>
-<p id="note"></p>
-<p id="status"></p>
-<div id="figure">
+    return f"""<div id="figure">
 <div id="labels" style="height:{height}px">
 {chr(10).join(labels)}
 </div>
@@ -354,11 +366,27 @@ browser's WebGL2.</p>
 <p>On the ramps, <b>T</b> marks the threshold, <b>1</b> the selected display's gamut
 boundary (boundary distance d = 1: where the clip starts) and <b>L</b> the limit (a mark
 beyond a ramp's end is not shown).</p>
-<h2>Paste</h2>
+"""
+
+
+def _commands() -> str:
+    """Return the paste section: the DCTL's input space and the commands."""
+    e = html.escape
+    sources = "".join(
+        f'<option value="{e(s)}"{" selected" if s == DEFAULT_SOURCE else ""}>{e(s)}</option>'
+        for s in SOURCES
+    )
+    return f"""<h2>Paste</h2>
 <p><label>The DCTL's input space (the timeline's colour space)
 <select id="source">{sources}</select></label></p>
 <pre id="commands"></pre>
-<h2>Reading the strips</h2>
+"""
+
+
+def _notes() -> str:
+    """Return the notes on reading the strips and where the page comes from."""
+    e = html.escape
+    return f"""<h2>Reading the strips</h2>
 <ul>
 <li>A lower <b>threshold</b> starts the compression earlier: more of the in-gamut colours
 move (they lose saturation), and the shading of the colours outside is kept more
