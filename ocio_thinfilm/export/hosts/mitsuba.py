@@ -341,6 +341,44 @@ def bsdf(
     return out
 
 
+def _lobes(free: bool, varying: bool) -> tuple[list, Any]:
+    """Return the components' flags and their union (``varying``: a textured thickness)."""
+    sides = mi.BSDFFlags.FrontSide | (mi.BSDFFlags.BackSide if free else mi.BSDFFlags(0))
+    reflection = mi.BSDFFlags.DeltaReflection | sides
+    flags = [reflection]
+    if free:
+        flags.append(mi.BSDFFlags.DeltaTransmission | sides)
+    extra = mi.BSDFFlags(0)
+    if varying:
+        extra = mi.BSDFFlags.SpatiallyVarying
+    components = [f | extra for f in flags]
+    union = mi.BSDFFlags(0)
+    for f in components:
+        union = union | f
+    return components, union
+
+
+def _choose(
+    R: np.ndarray, T: np.ndarray, c: np.ndarray, has_r: Any, has_t: Any, free: bool, sample1: Any
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Return (reflect, ok, pdf, weight): each sample's lobe, validity, pdf and weight.
+
+    The lobe is chosen by the sample's mean reflectance against its transmittance.
+    """
+    r, t = R.mean(axis=0), T.mean(axis=0)
+    if has_r and has_t:
+        p_r = np.divide(r, r + t, out=np.ones_like(r), where=r + t > 0)
+        p_r = np.clip(p_r, MIN_REFLECTION_PROBABILITY, 1.0)
+    else:
+        p_r = np.full_like(r, 1.0 if has_r else 0.0)
+    reflect = np.asarray(sample1, dtype=np.float64) < p_r
+    ok = (c != 0) & (has_r | has_t) & (free | (c > 0))
+    pdf = np.where(reflect, p_r, 1.0 - p_r)
+    weight = np.where(reflect, R, T) / np.where(pdf > 0, pdf, 1.0)
+    ok = ok & (pdf > 0)
+    return reflect, ok, pdf, weight
+
+
 def _bsdf_class() -> type:
     """Return the plugin's class for the variant that is set (it subclasses its ``mi.BSDF``)."""
 
@@ -355,20 +393,9 @@ def _bsdf_class() -> type:
                 )
             self.sampler = FilmSampler(_film_from(props))
             self.thickness, self.scale, self.offset = _thickness(props, self.sampler.film)
-            sides = mi.BSDFFlags.FrontSide | (
-                mi.BSDFFlags.BackSide if self.sampler.free else mi.BSDFFlags(0)
+            self.m_components, self.m_flags = _lobes(
+                self.sampler.free, isinstance(self.thickness, mi.Texture)
             )
-            reflection = mi.BSDFFlags.DeltaReflection | sides
-            flags = [reflection]
-            if self.sampler.free:
-                flags.append(mi.BSDFFlags.DeltaTransmission | sides)
-            extra = mi.BSDFFlags(0)
-            if isinstance(self.thickness, mi.Texture):
-                extra = mi.BSDFFlags.SpatiallyVarying
-            self.m_components = [f | extra for f in flags]
-            self.m_flags = mi.BSDFFlags(0)
-            for f in self.m_components:
-                self.m_flags = self.m_flags | f
 
         def _thickness_nm(self, si: Any, active: Any) -> np.ndarray:
             if isinstance(self.thickness, float):
@@ -384,17 +411,7 @@ def _bsdf_class() -> type:
             )
             has_r = ctx.is_enabled(mi.BSDFFlags.DeltaReflection, 0)
             has_t = self.sampler.free and ctx.is_enabled(mi.BSDFFlags.DeltaTransmission, 1)
-            r, t = R.mean(axis=0), T.mean(axis=0)
-            if has_r and has_t:
-                p_r = np.divide(r, r + t, out=np.ones_like(r), where=r + t > 0)
-                p_r = np.clip(p_r, MIN_REFLECTION_PROBABILITY, 1.0)
-            else:
-                p_r = np.full_like(r, 1.0 if has_r else 0.0)
-            reflect = np.asarray(sample1, dtype=np.float64) < p_r
-            ok = (c != 0) & (has_r | has_t) & (self.sampler.free | (c > 0))
-            pdf = np.where(reflect, p_r, 1.0 - p_r)
-            weight = np.where(reflect, R, T) / np.where(pdf > 0, pdf, 1.0)
-            ok = ok & (pdf > 0)
+            reflect, ok, pdf, weight = _choose(R, T, c, has_r, has_t, self.sampler.free, sample1)
             sel = mi.Mask(reflect if reflect.ndim else bool(reflect))
             bs = mi.BSDFSample3f()
             bs.wo = dr.select(sel, mi.reflect(si.wi), -si.wi)
