@@ -336,3 +336,87 @@ def test_the_stages_after_lut_name_the_knobs_compress_threshold_and_compress_lim
     bad = tmp_path / "bad.py"
     bad.write_text("def f(lang: str, *, threshold: float = 0.8) -> str:\n    return lang\n")
     assert _knob_parameters(bad) == ["1 f"]
+
+
+#: The most code lines a function of the package may have (its docstring aside): a longer
+#: one does more than one thing.
+MAX_FUNCTION_LINES = 80
+
+#: Functions allowed over ``MAX_FUNCTION_LINES``: ``"path::name"`` -> why. An entry that
+#: is no longer long fails the test too (drop it).
+LONG_FUNCTION_EXCEPTIONS = {
+    "config/merge.py::merge_config": "split on the options branch",
+    "export/shader.py::shader_source": "split on the options branch",
+    "export/view.py::export_view": "split on the options branch",
+}
+
+
+def _docstring_lines(node: ast.AST) -> int:
+    """Lines of the docstring opening ``node``'s body (0 without one)."""
+    first = node.body[0] if getattr(node, "body", None) else None
+    if (
+        isinstance(first, ast.Expr)
+        and isinstance(first.value, ast.Constant)
+        and isinstance(first.value.value, str)
+    ):
+        return first.end_lineno - first.lineno + 1
+    return 0
+
+
+def _function_lengths(root: Path) -> dict[str, int]:
+    """``"path::name"`` -> code lines (docstring excluded) of every function and method
+    of the modules below ``root``; the longest where one name is defined twice."""
+    lengths: dict[str, int] = {}
+    for path in sorted(root.rglob("*.py")):
+        rel = path.relative_to(root).as_posix()
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                n = node.end_lineno - node.lineno + 1 - _docstring_lines(node)
+                key = f"{rel}::{node.name}"
+                lengths[key] = max(n, lengths.get(key, 0))
+    return lengths
+
+
+def _long_functions(root: Path, exceptions: dict[str, str]) -> tuple[dict, list]:
+    """(functions over the limit not excepted, exceptions that are not over the limit)."""
+    lengths = _function_lengths(root)
+    long = {k: n for k, n in lengths.items() if n > MAX_FUNCTION_LINES and k not in exceptions}
+    stale = sorted(k for k in exceptions if lengths.get(k, 0) <= MAX_FUNCTION_LINES)
+    return long, stale
+
+
+def test_no_package_function_is_over_80_lines(tmp_path):
+    """No function or method of the package has more than ``MAX_FUNCTION_LINES`` code
+    lines (its docstring not counted) but the listed exceptions, each still that long."""
+    assert _long_functions(PACKAGE, LONG_FUNCTION_EXCEPTIONS) == ({}, [])
+    body = "".join(f"    x{i} = {i}\n" for i in range(MAX_FUNCTION_LINES))
+    (tmp_path / "m.py").write_text(
+        f'def long():\n    """A docstring\n    of lines not counted."""\n{body}'
+        f'def fits():\n    """Doc."""\n{body[: body.rindex("    x")]}'
+    )
+    assert _function_lengths(tmp_path) == {
+        "m.py::long": MAX_FUNCTION_LINES + 1,
+        "m.py::fits": MAX_FUNCTION_LINES,
+    }
+    assert _long_functions(tmp_path, {}) == ({"m.py::long": MAX_FUNCTION_LINES + 1}, [])
+    excepted = {"m.py::long": "a reason", "m.py::fits": "stale"}
+    assert _long_functions(tmp_path, excepted) == ({}, ["m.py::fits"])
+
+
+def _mentions(root: Path, word: str) -> dict[str, list[int]]:
+    """Modules below ``root`` whose text says ``word`` (any case): path -> lines."""
+    found = {}
+    for path in sorted(root.rglob("*.py")):
+        lines = path.read_text().splitlines()
+        hits = [i for i, line in enumerate(lines, 1) if word in line.lower()]
+        if hits:
+            found[path.relative_to(root).as_posix()] = hits
+    return found
+
+
+def test_no_package_module_edits_sys_path(tmp_path):
+    """The package imports through the normal machinery: no module mentions
+    ``sys.path`` (``cli/report.py`` imports ``evaluation`` where it is importable)."""
+    assert _mentions(PACKAGE, "sys.path") == {}
+    (tmp_path / "m.py").write_text("import sys\nsys.path.insert(0, '.')\n")
+    assert _mentions(tmp_path, "sys.path") == {"m.py": [2]}
