@@ -403,6 +403,30 @@ def test_no_package_function_is_over_80_lines(tmp_path):
     assert _long_functions(tmp_path, excepted) == ({}, ["m.py::fits"])
 
 
+#: The most lines of a module's docstring: what the module is, what it defines, its
+#: references; discussion belongs in docs/.
+MAX_HEADER_LINES = 25
+
+
+def _long_headers(root: Path) -> dict[str, int]:
+    """Modules below ``root`` whose docstring has more than ``MAX_HEADER_LINES`` lines."""
+    lengths = {
+        path.relative_to(root).as_posix(): _docstring_lines(ast.parse(path.read_text()))
+        for path in sorted(root.rglob("*.py"))
+    }
+    return {k: n for k, n in lengths.items() if n > MAX_HEADER_LINES}
+
+
+def test_no_package_module_header_is_over_25_lines(tmp_path):
+    """A module's docstring says what it is and defines, with its references, in at most
+    ``MAX_HEADER_LINES`` lines (design discussion is in docs/)."""
+    assert _long_headers(PACKAGE) == {}
+    lines = "\n".join(["Line."] * (MAX_HEADER_LINES - 2))
+    (tmp_path / "long.py").write_text(f'"""Title.\n\n{lines}\n"""\n\nx = 1\n')
+    (tmp_path / "short.py").write_text(f'"""Title.\n{lines}\n"""\n\nx = 1\n')
+    assert _long_headers(tmp_path) == {"long.py": MAX_HEADER_LINES + 1}
+
+
 def _mentions(root: Path, word: str) -> dict[str, list[int]]:
     """Modules below ``root`` whose text says ``word`` (any case): path -> lines."""
     found = {}

@@ -2,42 +2,20 @@
 
 The result of ``ocio-thinfilm bake --into CONFIG`` is a new ``Config`` (written by
 :mod:`ocio_thinfilm.export.merged`, also as an OCIO archive, ``.ocioz``).
+:func:`merge_config` takes such a config (the ACES studio/CG configs OCIO ships built in,
+``ocio://...``) and adds, leaving everything else of it as it was:
 
-Studios run the ACES studio/CG configs (OCIO ships them built in, ``ocio://...``) and
-add to them. :func:`merge_config` takes such a config and adds, leaving everything
-else of it as it was:
+- the three thin-film input spaces (scene-referred);
+- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression`` (and ``Channel
+  Clamp``) on every SDR display whose display colour space has a supported gamut's
+  primaries and white, and on every HDR display that is one of the registry's, both
+  found by running the display colour space's own processor (:func:`match_displays`);
+- named transforms (the clip per matched gamut, the three tables) and ``luts`` on the
+  search path, with the LUT files the additions use.
 
-- the three thin-film input spaces (scene-referred: the table to CIE-XYZ-D65, then the
-  config's own conversion to its scene reference);
-- on every SDR display whose display colour space has the primaries and white of a
-  gamut the clip supports (sRGB / Rec.709, Display P3 / P3-D65, Rec.2020) -- found by
-  running the display colour space's own processor on test colours, whatever its name
-  and encoding -- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression``
-  (and ``Channel Clamp`` on displays without an ``Un-tone-mapped`` view, which is that
-  baseline already), each through one view transform per gamut;
-- the same views on every HDR display that is one of the registry's (BT.2020 or P3-D65
-  primaries, D65, ST 2084 or 1000 cd/m2 HLG), found the same way: its codes decoded with
-  colour-science's EOTF must be the gamut's RGB times one luminance per unit of its
-  display reference (100 cd/m2 in the ACES configs). The view transform shows Y = 1 at
-  203 cd/m2 there, as the project's own HDR displays do;
-- named transforms: the clip per matched gamut (display-linear in and out) and the
-  three tables (pixel value in, CIE XYZ out);
-- ``luts`` on the search path, with the LUT files the additions use.
-
-The conversions come from the config itself, through its ``cie_xyz_d65_interchange``
-role, as OCIO converts between scene and display colour spaces: when that colour space
-is display-referred (the ACES configs), scene reference -> CIE-XYZ-D65 is the config's
-default view transform followed by the interchange space's own transform (an identity
-there); a scene-referred interchange space gives it directly. The result must be
-linear (checked numerically), or the merge is refused.
-
-Why not ``PyOpenColorIO.ConfigMerger`` (OCIO 2.6): its reference-space adaptation
-(``adjust_input_reference_space``) finds each config's interchange space by heuristics
-against the built-in CG config, and its display/view merge adds views only to displays
-of the same name, so the input config would have to replicate the base's display names
-and display colour spaces just to be merged away again. Editing a copy of the base
-config with OCIO's Config API does exactly this job in a few calls, and everything not
-added is the base's own objects, untouched.
+The conversions come from the config's ``cie_xyz_d65_interchange`` role; the result
+must be linear (checked numerically), or the merge is refused. How displays are matched
+and why not ``PyOpenColorIO.ConfigMerger``: docs/config.md, *Design notes*.
 
 Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`.
 """

@@ -1,38 +1,20 @@
 """A static HTML page to choose the compression's knobs: the exported GLSL in WebGL2.
 
 ``docs/knobs.html`` is written by :func:`write_knob_page` and committed. Opened from disk
-(``file://``, no server), it draws test colours through the ``Constant-Lightness Clip``
-and ``Constant-Lightness Compress`` views of an SDR display, each view being the GLSL of
-:func:`ocio_thinfilm.export.shader.shader_source` (one WebGL2 program per shader; the
-CIE-XYZ-D65 test colours uploaded as an RGBA32F texture and read with ``texelFetch``;
-the view's code values written to the canvas). Sliders set the compression's uniforms
-``ocio_thinfilm_threshold`` and ``ocio_thinfilm_limit``, a select the display, and the
-page prints the knobs ready to paste: the ``ocio-thinfilm bake`` and ``export shader``
-options (the DCTL's input space from a second select: :data:`SOURCES`, ACEScct unless
-chosen) and the DCTL sliders' values. On the ramps, marks show where the threshold, the
-selected display's gamut boundary (boundary distance d = 1) and the limit fall.
+(``file://``, no server), it draws test colours (:func:`sample_rows`: the spectrum,
+Smits & Meyer's Figure 4; a soap film's colours, Eq. 7; saturated ramps at constant
+luminance) through the ``Constant-Lightness Clip`` and ``Constant-Lightness Compress``
+views of an SDR display, each the GLSL of
+:func:`ocio_thinfilm.export.shader.shader_source` in a WebGL2 program. Sliders set the
+compression's uniforms, a select the display, and the page prints the knobs ready to
+paste (the ``ocio-thinfilm bake`` and ``export shader`` options, the DCTL sliders'
+values; the DCTL's input space from :data:`SOURCES`).
 
-The test colours (:func:`sample_rows`) are computed here, by the package:
-
-- the spectrum, 380-700 nm, at two luminances (:func:`.colorimetry.spectral_locus_XYZ`;
-  Smits & Meyer's Figure 4);
-- a soap film's colours over optical thickness 0-1500 nm (:func:`.colorimetry.film_XYZ`,
-  phase change: Eq. 7);
-- three saturated ramps of light at constant luminance from the display white's grey
-  towards monochromatic colours, out to well beyond every display's gamut.
-
-The page takes settings from its URL query, ``?display=sRGB&threshold=0.6&limit=1.5``:
-its script sets the select and the sliders and dispatches their ``change`` and ``input``
-events, as a user's hand would. ``&readback=1`` then writes the canvas read back with
-``gl.readPixels`` (and the knobs and display it drew with) as JSON into the
-``<pre id="readback">`` element, with the commands, the ramps' axis labels, the marks'
-positions and the canvas's top (``tests/test_knob_page.py`` reads it from headless
-Chromium's ``--dump-dom``); ``&source=ACEScg`` sets the input space. The style sheet and
-the script are :mod:`.knob_page_script`'s.
-
-Display P3 draws into a canvas whose ``drawingBufferColorSpace`` is ``"display-p3"``
-where the browser has it; Rec.2020 codes are shown as they are (no browser shows a
-canvas as BT.2020 / BT.1886).
+The page takes settings from its URL query (``?display=sRGB&threshold=0.6&limit=1.5``,
+``&source=ACEScg``); ``&readback=1`` writes what it drew as JSON into
+``<pre id="readback">`` (``tests/test_knob_page.py`` reads it from headless Chromium).
+The style sheet and the script are :mod:`.knob_page_script`'s. More: docs/compress.md,
+*Design notes*.
 """
 
 from __future__ import annotations

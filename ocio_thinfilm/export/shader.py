@@ -3,50 +3,22 @@
 Where a host runs code per pixel, the ``Constant-Lightness Clip`` and
 ``Constant-Lightness Compress`` views need no LUT: the map is a few lines of arithmetic
 (Smits & Meyer 1990, Section 3.2). :func:`shader_source` writes the whole view, from an
-input colour space to display code values, as one function:
-
-1. the input's decoding and matrix to CIE-XYZ-D65, each stage limited to +-1e6 the way
-   the config's colour spaces and views limit it (NaN and -Inf become the lowest value,
-   +Inf the highest, as OCIO's Range does);
-2. an HDR display's scale into its SDR gamut: XYZ / k for PQ (k = peak / 203); for HLG
-   the BT.2100 inverse OOTF to scene light (ITU-R BT.2100-2, Table 5);
-3. XYZ -> the display's linear RGB and the map: the grey of the same luminance Y (the
-   display white scaled to Y, on R = G = B), the normalised distance ``d`` to the
-   display's parallelepiped along the ray from it (the largest of the fractions to the
-   six faces), and the scale ``k`` of the distance: ``1`` up to the threshold, the ACES
-   1.3 power curve (S-2020-001, power 1.2) to the limit, ``1 / d`` (the clip) beyond;
-   colours with ``Y <= 0`` are black, ``Y >= 1`` white (:mod:`ocio_thinfilm.colour.clip`
-   and :mod:`ocio_thinfilm.colour.compress` are the same map in NumPy);
-4. the display's encoding: the sRGB piecewise curve (IEC 61966-2-1), BT.1886's
-   ``L ** (1 / 2.4)``, SMPTE ST 2084 with Y = 1 at 203 cd/m2, or the BT.2100 HLG OETF
-   of the scene light.
-
-Both languages carry the view's inverse too (display code values -> the input space,
-the colour of the display's volume that the view maps onto each code: the
-compression's preimage at most ``limit`` boundary distances out, as the ACES gamut
-compression's ``invert``): GLSL ``vec3 ocio_thinfilm_view_inverse(vec3 code)``, the DCTL's
-``Invert`` check box.
-
-The clip is the compression with threshold = limit = 1. Colours whose ray ends on the
-boundary get the channels that meet a face set exactly to it (0 or 1), so display
-encodings with an infinite slope at 0 (BT.1886, ST 2084) do not turn float32 round-off
-into visible code values.
+input colour space to display code values, as one function (and its inverse): the
+input's decoding to CIE-XYZ-D65, an HDR display's scale into its SDR gamut (BT.2100
+inverse OOTF for HLG, ITU-R BT.2100-2 Table 5), the map along the ray to the grey of the
+same luminance (:mod:`ocio_thinfilm.colour.clip`, :mod:`ocio_thinfilm.colour.compress`;
+the ACES 1.3 power curve, S-2020-001), and the display's encoding (IEC 61966-2-1 sRGB,
+BT.1886, SMPTE ST 2084, BT.2100 HLG).
 
 - **GLSL** (:data:`LANGUAGES` ``"glsl"``): ``vec3 ocio_thinfilm_view(vec3 rgb)``, GLSL 3.30
-  and GLSL ES 3.00, no ``#version`` line (a host includes it: three.js, game engines,
-  Flame and Baselight Matchbox). The compression declares ``uniform float
-  ocio_thinfilm_threshold;`` and ``uniform float ocio_thinfilm_limit;``; uniforms a host
-  leaves unset (0) or sets outside ``0 < threshold < 1 < limit <= 100`` give the knobs the
-  file was exported with.
-- **DCTL** (``"dctl"``): the transform DCTL entry point ``__DEVICE__ float3
-  transform(int p_Width, int p_Height, int p_X, int p_Y, float p_R, float p_G, float
-  p_B)``; the compression has two ``DEFINE_UI_PARAMS`` sliders, ``Threshold`` and
-  ``Limit``, and every DCTL an ``Invert`` check box. Only DCTL's documented built-ins
-  (``_powf``, ``_fmaxf``, ``_sqrtf``, ``_logf``, ``_expf``, ``_exp2f``, ``_log2f``,
-  ``_saturatef``, ``make_float3``).
+  and GLSL ES 3.00, no ``#version`` line; the compression's uniforms
+  ``ocio_thinfilm_threshold`` and ``ocio_thinfilm_limit``;
+- **DCTL** (``"dctl"``): the transform DCTL entry point, ``Threshold`` and ``Limit``
+  sliders and an ``Invert`` check box; only DCTL's documented built-ins.
 
 Every constant (matrices, luminance weights, scales) comes from the same registry and
-colorimetry the config is built from.
+colorimetry the config is built from. The steps, the edge cases and the host contract
+in full: docs/shaders.md, *Design notes*.
 """
 
 from __future__ import annotations

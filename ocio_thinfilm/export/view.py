@@ -5,59 +5,14 @@ Input: the raw pixel values of any colour space of the config (``ACEScct``,
 Output: display code values of ``--display`` / ``--view``. The file takes the pixel
 as it is: nothing has to be scaled by hand first.
 
-How each format carries the input
----------------------------------
-A 3D LUT samples [0, 1]^3, so inputs that are not already in [0, 1] (scene-linear
-RGB, XYZ, and ACEScct too, see below) go through a *shaper* first, a per-channel
-curve onto [0, 1] that is part of the file:
-
-- ``.cube`` (OCIO's ``resolve_cube`` writer), two forms, each saying which in its first line:
-
-  - *plain* (the default for inputs whose code values in [0, 1] already cover what the
-    view needs: ACEScct): nothing but ``LUT_3D_SIZE`` and the
-    table over the default [0, 1] domain, which every reader applies alike (ffmpeg's
-    ``lut3d``, OBS, OpenShot, three.js, Photoshop, Resolve, OCIO, colour-science:
-    several of them ignore ``LUT_1D_*`` and ``DOMAIN_*`` lines);
-  - *Resolve* (``shaper=True``, ``--resolve-shaper``; always for the other inputs): a
-    1D shaper (``LUT_1D_SIZE``, ``LUT_1D_INPUT_RANGE``) and the 3D LUT in one file,
-    read by Resolve, OCIO, colour-science and Nuke's OCIOFileTransform. ffmpeg's
-    ``lut3d`` reads only the 3D part of such a file and takes the shaper's lines for
-    LUT entries (ΔE2000 mean 18).
-
-  The plain grid is uniform in ACEScct, whose cells near the display white are about
-  0.27 stops wide, where the clip bends every colour towards white: it is the
-  portable form, not the exact one (measured in ``tests/test_export_view.py``); the
-  Resolve form and ``.csp`` spend the grid where the view bends.
-- ``.csp`` (``cinespace``): the shaper as a prelut (knots placed uniformly in the
-  shaper, so dense where the curve is steep), then the 3D LUT. ffmpeg reads it.
-- ``.spi3d``: no domain and no shaper. For inputs that need one, a companion
-  ``<name>.shaper.spi1d`` (``From lo hi``) is written next to it: apply it first.
-- ``.clf``: the exact chain (``Processor.createGroupTransform``) when every op can
-  be written as CLF; the constant-lightness clip and ACES gamut compression use
-  ``FixedFunction`` ops that CLF cannot hold, so those views are written as the
-  exact shaper ops followed by the baked 3D LUT (the same table as the .cube),
-  in one CLF. ``.ctf`` (OCIO's superset of CLF) always holds the exact chain.
-- Thin-film inputs (thickness in um, cos(theta)): all channels equal, so the file is
-  a 1D LUT over ``--range`` (``.cube`` with ``LUT_1D_INPUT_RANGE``, ``.spi1d`` with
-  ``From``, ``.clf`` with a range matrix); ``.csp`` / ``.spi3d`` are refused.
-
-The 3D table
-------------
-The ``.cube`` and ``.csp`` tables of the SDR displays hold node values fitted by
-lattice regression (Garcia & Gupta 2009; :mod:`ocio_thinfilm.export.view_fit`,
-:mod:`ocio_thinfilm.lut.lattice_fit`) instead of samples of the view: sampled nodes
-blend, in every cell that straddles the gamut boundary, clipped values into colours
-that need no mapping. The fit weights the colours inside the display's gamut first and
-serves tetrahedral (ffmpeg) and trilinear (OCIO's ``FileTransform`` default,
-colour-science) interpolation at once. The plain ``.cube`` and the shaper forms of
-inputs beyond AP1 (linear Rec.709, P3, Rec.2020, XYZ) are fitted; the AP1 inputs'
-shaper forms (measured better sampled), ``.spi3d``, the CLF's baked table and the HDR
-displays keep sampled nodes.
-
-The shaper
-----------
-See :mod:`ocio_thinfilm.export.view_shaper`: a mirrored square root per channel of the
-input's linear RGB, over a domain that covers every object colour under D65.
+Formats: ``.cube`` (plain, or with a Resolve 1D shaper), ``.csp`` (the shaper as a
+prelut), ``.spi3d`` (with a companion ``.shaper.spi1d`` where the input needs one),
+``.clf`` / ``.ctf`` (the exact chain where CLF can hold it); thin-film inputs give a
+1D LUT over ``--range``. The SDR displays' ``.cube`` and ``.csp`` tables hold node
+values fitted by lattice regression (Garcia & Gupta 2009;
+:mod:`ocio_thinfilm.export.view_fit`, :mod:`ocio_thinfilm.lut.lattice_fit`); the shaper
+is :mod:`ocio_thinfilm.export.view_shaper`'s. How each format carries the input and
+which tables are fitted: docs/gamut_map.md, *Design notes*.
 """
 
 from __future__ import annotations

@@ -11,8 +11,7 @@
   RGB renderer's product of RGBs (docs/rgb_vs_spectral.md);
 - :mod:`.khr_iridescence` -- what glTF viewers draw for ``KHR_materials_iridescence``
   (three.js r187's model in numpy);
-- :mod:`.iridescence_fit` -- its parameters fitted to an exact film (the ``.glb``'s
-  fallback);
+- :mod:`.iridescence_fit` -- its parameters fitted to an exact film (``.glb`` fallback);
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
 - :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
 - :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its

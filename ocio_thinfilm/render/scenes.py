@@ -1,36 +1,20 @@
 """The paper's example scenes (Smits & Meyer 1990, Section 4, Figures 4-7).
 
-Stage 7 of the pipeline (after the tables and the config). A scene is geometry and
-shading only: it computes, per pixel, the *encoded* value a precomputed table is
-indexed with (optical thickness t' in micrometres for a film, the facing ratio
-cos(theta) for the Morpho multilayer) and composites the table's colour with the
-rest of the picture in scene-linear CIE XYZ. Colours of interference come *only*
-from the tables, through a ``lookup(spec, encoded)`` callable supplied by the
-renderer (:func:`ocio_thinfilm.render.processors.make_lookup` applies the config's
-thin-film colour spaces), so the pictures exercise the shipped LUT files end to end.
+Stage 7 of the pipeline. A scene is geometry and shading only: it computes, per pixel,
+the *encoded* value a precomputed table is indexed with (optical thickness t' in um for a
+film, cos(theta) for the Morpho multilayer) and composites the table's colour, from a
+``lookup(spec, encoded)`` callable (:func:`ocio_thinfilm.render.processors.make_lookup`:
+the config's thin-film colour spaces), in scene-linear CIE XYZ. Each scene declares the
+tables it needs (:class:`TableSpec`); what every scene is made of is
+:mod:`ocio_thinfilm.render.scene_base`. This module holds the scenes:
 
-Each scene *declares* the tables it needs (:class:`TableSpec`: kind, encoding
-range, entries); the renderer creates processors for those and nothing else. What
-every scene is made of (:class:`TableSpec`, :class:`Picture`, the base class
-:class:`Scene`) is :mod:`ocio_thinfilm.render.scene_base`; this module holds the scenes.
+- ``spectrum`` (Fig. 4): the visible spectrum and Newton's colours through four views;
+- ``oil`` (Fig. 5): an oil slick on wet asphalt, Eq. 12-13;
+- ``soap`` (Fig. 6): a soap bubble, black at the thin top;
+- ``morpho`` (Fig. 7): a wavy surface coloured by the Morpho angle table (Eq. 9 + 14).
 
-Scenes
-------
-- ``spectrum`` (Fig. 4): the visible spectrum and a strip of Newton's (near-spectral)
-  interference colours, through four views side by side.
-- ``oil`` (Fig. 5): an oil slick on wet asphalt, Eq. 12-13, seen by a camera looking
-  down at the ground; per-pixel view angle; asphalt from two noise calls (bump scale
-  and roughness) plus very fine bumps.
-- ``soap`` (Fig. 6): a soap bubble, thickness proportional to normalised height plus
-  turbulence, black at the thin top; view angle from the surface normal.
-- ``morpho`` (Fig. 7): a wavy iridescent surface coloured by the Morpho angle table
-  (Eq. 9 + 14), blue at normal incidence shifting to violet and dark with angle.
-
-Conventions: images are (H, W) arrays, row 0 at the top; scene-linear colour is
-CIE XYZ relative to D65 (Y = 1 is the perfect white reflector under the scene's
-unit illuminant); lengths in micrometres unless stated; everything float32 and
-vectorised over the image. Frame 1 is the still; animated parameters change with
-the frame number only, so every frame is independent of the others.
+Conventions (images, units, frames) and each scene's shading: docs/render.md,
+*Design notes*.
 """
 
 from __future__ import annotations

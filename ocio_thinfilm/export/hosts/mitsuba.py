@@ -10,35 +10,12 @@ subclasses that variant's ``mi.BSDF``); :func:`bsdf` builds a checked scene dict
     plate = {"type": "rectangle", "bsdf": tfm.bsdf("films.toml", "SoapFilm", thickness=0.3)}
 
 At every shading point the film's stack is evaluated exactly at the path's sampled
-wavelengths (``si.wavelengths``) and the angle of incidence by
-:func:`ocio_thinfilm.physics.exact.stack_pointwise` (transfer matrices, s and p averaged,
-dispersive complex indices from the film's materials, held on a 0.25 nm grid over
-360-830 nm and interpolated linearly; outside a material's data its edge value). The
-film is smooth (roughness 0):
-
-- a free-standing film (:func:`ocio_thinfilm.lut.material_tables.free_standing`: the
-  substrate is the incident medium, a soap bubble) reflects (delta reflection) and
-  transmits straight through (direction unchanged, like Mitsuba's ``thindielectric``),
-  choosing the reflection with probability mean R / (mean R + mean T) over the sampled
-  wavelengths, at least :data:`MIN_REFLECTION_PROBABILITY`; it is two-sided (from the
-  back the stack is reversed);
-- a film on a substrate, metal or dielectric, reflects only (one-sided, as Mitsuba's
-  ``conductor``): the light refracted into a dielectric substrate is not traced (the
-  substrate's body is black; dispersion would split the wavelengths' paths).
-
-Parameters (Mitsuba properties): ``filename`` (the film file) and ``film`` (its key), or
-``film`` alone holding the token :func:`film_token` returns for a
-:class:`~ocio_thinfilm.physics.films.Film` object; ``thickness``: the varying layer's
-physical thickness, a float in µm (default: the middle of the film's ``range_um``) or a
-nested texture evaluated at the shading point (``eval_1``; give bitmaps
-``raw = true``); ``thickness_scale``: ``"um"`` (default: the texture's value is µm) or
-``"range"`` (the value in [0, 1] maps linearly onto the film's ``range_um``);
-``roughness``: 0 only. A :class:`FilmSampler` holds the numpy side (no Mitsuba type).
-
-Scalar variants call the physics once per shading point (4 wavelengths); JIT variants
-(``llvm_ad_spectral``) render inside :func:`evaluated_mode` (numpy per wavefront: the
-symbolic loops and calls Mitsuba records by default cannot reach numpy). docs/mitsuba.md
-has the measurements.
+wavelengths and angle by :func:`ocio_thinfilm.physics.exact.stack_pointwise`. A
+free-standing film reflects and transmits (two-sided, choosing reflection with
+probability at least :data:`MIN_REFLECTION_PROBABILITY`); a film on a substrate reflects
+only. A :class:`FilmSampler` holds the numpy side (no Mitsuba type); JIT variants render
+inside :func:`evaluated_mode`. The BSDF's properties and its sampling in full:
+docs/mitsuba.md, *Design notes*.
 """
 
 from __future__ import annotations
