@@ -438,6 +438,55 @@ def _mentions(root: Path, word: str) -> dict[str, list[int]]:
     return found
 
 
+def _prose(path: Path) -> list[tuple[int, str]]:
+    """(first line, text) of every comment and docstring (any string statement) of
+    ``path``."""
+    import io
+    import tokenize
+
+    source = path.read_text()
+    found = [
+        (tok.start[0], tok.string)
+        for tok in tokenize.generate_tokens(io.StringIO(source).readline)
+        if tok.type == tokenize.COMMENT
+    ]
+    found += [
+        (node.lineno, node.value.value)
+        for node in ast.walk(ast.parse(source))
+        if isinstance(node, ast.Expr)
+        and isinstance(node.value, ast.Constant)
+        and isinstance(node.value.value, str)
+    ]
+    return sorted(found)
+
+
+def _prose_says(root: Path, word: str) -> dict[str, list[int]]:
+    """Modules below ``root`` whose comments or docstrings say ``word`` (any case, as a
+    word: not inside an identifier such as ``MEASURED_KNOBS``): path -> lines (a
+    docstring's first line)."""
+    import re
+
+    pattern = re.compile(rf"\b{re.escape(word)}\b", re.IGNORECASE)
+    found = {}
+    for path in sorted(root.rglob("*.py")):
+        hits = [line for line, text in _prose(path) if pattern.search(text)]
+        if hits:
+            found[path.relative_to(root).as_posix()] = hits
+    return found
+
+
+def test_no_package_module_quotes_measurements(tmp_path):
+    """Numbers measured on one machine go stale in code: timings, errors and sizes are
+    in docs/ (and reports/), and the code states only what its tests check; no comment
+    or docstring of the package says "measured"."""
+    assert _prose_says(PACKAGE, "measured") == {}
+    (tmp_path / "m.py").write_text(
+        'MEASURED = 1\n# Measured: 3 ms on a laptop\ndef f():\n    """Doc.\n\n    measured."""\n'
+        "# MEASURED_KNOBS is a name\n"
+    )
+    assert _prose_says(tmp_path, "measured") == {"m.py": [2, 4]}
+
+
 def test_no_package_module_edits_sys_path(tmp_path):
     """The package imports through the normal machinery: no module mentions
     ``sys.path`` (``cli/report.py`` imports ``evaluation`` where it is importable)."""

@@ -56,7 +56,7 @@ def _compress_knobs(args: argparse.Namespace, limit_max: float | None = None) ->
     ParameterError naming the library parameter (the command line names the option),
     raised before any warning. Knobs outside the tested range
     (:func:`ocio_thinfilm.lut.compress_lut.untested_knobs_note`) print one warning line
-    on stderr with the accuracy measured there.
+    on stderr with the accuracy the benchmark found there.
     """
     from ocio_thinfilm.lut import compress_lut
 

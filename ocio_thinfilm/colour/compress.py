@@ -417,7 +417,7 @@ def soft_black_RGB(
 
     ``sigma(d) = f(d) / d`` with ``f`` the unclipped :func:`compression_curve` (1 up to
     the threshold): the colour moves along the ray of Smits & Meyer (1990), Section 3.2,
-    to the curve's distance from its grey, measured against the faces through black
+    to the curve's distance from its grey, taken against the faces through black
     alone. Homogeneous of degree 1 like the clip's L, and Y is kept.
 
     Examples

@@ -38,8 +38,8 @@ __all__ = [
 #: the point chosen on the weight curve of ``benchmarks/bench_view_fit.py``.
 INSIDE_WEIGHT = 10.0
 #: Weight of the object colours outside the gamut: over a grid uniform in the input's
-#: code values (the plain ACEScct .cube) 1; over a shaper 3 (measured for linear
-#: Rec.709 -> sRGB: object colours max ΔE2000 4.04-4.07 at 1, 3.76-3.79 at 3).
+#: code values (the plain ACEScct .cube) 1; over a shaper 3, which lowers the object
+#: colours' worst error there (docs/gamut_map.md, *Design notes*).
 OBJECT_WEIGHT = 1.0
 SHAPER_OBJECT_WEIGHT = 3.0
 #: Weight of the spectral-line mixtures (far outside most gamuts).

@@ -74,7 +74,7 @@ TESTED_LIMIT = (1.1, 1.5)
 #: (at most ``min(0.5, 0.625 threshold)`` of the way to the boundary: half-way at the
 #: defaults) moved by at most dE2000 0.1.
 KNOB_TARGETS = {"p99": 0.5, "max": 1.5, "dY": 1e-3, "inside": 0.1}
-#: Measured by ``benchmarks/bench_compress_knobs.py`` (reports/bench_compress_knobs.json)
+#: From ``benchmarks/bench_compress_knobs.py`` (reports/bench_compress_knobs.json)
 #: at the grid's pairs outside the tested range: (threshold, limit) -> (dE2000 p99,
 #: dE2000 max, |dY| max, dE2000 max of the colours below the threshold, the targets
 #: missed), each the worst over the displays and test sets.
@@ -470,11 +470,11 @@ def _knob_distance(a: tuple[float, float], b: tuple[float, float]) -> float:
 
 
 def untested_knobs_note(threshold: float, limit: float) -> str | None:
-    """Return one line on knobs outside the tested range, with the measured figure.
+    """Return one line on knobs outside the tested range, with the benchmark's figure.
 
     ``None`` inside the range (:func:`knobs_tested`). Outside it, the line names the
-    tested range and the accuracy measured at the nearest measured pair
-    (:data:`MEASURED_KNOBS`: the pair itself when it was measured).
+    tested range and the accuracy the benchmark found at the nearest pair it ran
+    (:data:`MEASURED_KNOBS`: the pair itself when it ran it).
 
     Parameters
     ----------

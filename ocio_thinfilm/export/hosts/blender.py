@@ -634,8 +634,8 @@ def _build_material(group, transmits):
     output.location = (300, 0)
     tree.links.new(film.outputs["BSDF"], output.inputs["Surface"])
     if transmits:
-        # EEVEE: Blended shows the coloured transmission without noise (measured:
-        # docs/blender.md); Dithered (Alpha Hashed in 3.x) is stochastic and speckles
+        # EEVEE: Blended shows the coloured transmission without noise
+        # (docs/blender.md); Dithered (Alpha Hashed in 3.x) is stochastic and speckles
         if hasattr(material, "surface_render_method"):
             material.surface_render_method = "BLENDED"
         elif hasattr(material, "blend_method"):
