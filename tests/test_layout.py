@@ -7,8 +7,8 @@ them); ``physics``; ``colour``; ``lut``; ``config``; ``export``; ``render``; ``c
 import is checked, lazy ones inside functions included. The evaluation code (the report, the
 stability cases, the GPU harness, the test colour sets) is the top-level ``evaluation``
 package beside ``benchmarks/``, outside the shipped package: nothing in ``ocio_thinfilm``
-imports it (``cli/report.py`` loads it from a checkout), and it imports ``ocio_thinfilm``,
-never the other way round.
+imports it (``cli/report.py`` imports it where it is importable: a checkout), and it
+imports ``ocio_thinfilm``, never the other way round.
 """
 
 from __future__ import annotations
@@ -116,8 +116,8 @@ def test_every_stage_is_known_and_the_check_can_fail(tmp_path):
 
 
 def test_the_shipped_package_never_imports_the_evaluation_code(tmp_path):
-    """Only ``cli/report.py`` reaches ``evaluation`` (from a checkout, after checking that
-    it is there); a module that imports it would fail from a wheel."""
+    """Only ``cli/report.py`` reaches ``evaluation`` (after checking that it is
+    importable: a checkout); a module that imports it would fail from a wheel."""
     offenders = {str(p.relative_to(PACKAGE)): _imports_evaluation(p) for p in _modules()}
     offenders = {k: v for k, v in offenders.items() if v and k != "cli/report.py"}
     assert offenders == {}

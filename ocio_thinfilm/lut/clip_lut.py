@@ -9,7 +9,7 @@ triangle fitted by :mod:`ocio_thinfilm.lut.node_fit`); pass 2, U, a Lut3D over e
 display RGB whose nodes brighter than white hold U's analytic continuation. Where the
 nodes go is :mod:`ocio_thinfilm.lut.grid`, the 16-bit / half-float storage
 :mod:`ocio_thinfilm.lut.storage`. The two passes in detail, accuracy, size, load time
-and why the layout is so: docs/gamut_map.md (its *Design notes*).
+and why the layout is so: docs/gamut_map.md, *Design*.
 
 - :func:`clip_lut` / :class:`ClipLUT` -- the baked LUT data of one display and their
   CLF-writable cores; :meth:`ClipLUT.transforms` -- the whole chain;

@@ -9,7 +9,7 @@ S_b (:func:`ocio_thinfilm.colour.compress.soft_black_RGB`) a Lut3D over its own
 chromaticity chart (:func:`ocio_thinfilm.lut.grid.soft_plan`), S_w
 (:func:`ocio_thinfilm.colour.compress.soft_white_RGB`) a Lut3D on the clip's white-pass
 nodes. Every step keeps Y and moves along the same ray (tested against the analytic map
-in ``tests/test_compress.py``). The derivation: docs/compress.md, *Design notes*.
+in ``tests/test_compress.py``). The derivation: docs/compress.md, *Baked*.
 
 This module holds :class:`CompressLUT` (the two LUTs and their OCIO transforms) and
 :func:`compress_lut`; the node layouts are in :mod:`ocio_thinfilm.lut.grid`, the 16-bit

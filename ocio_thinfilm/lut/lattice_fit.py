@@ -8,7 +8,7 @@ interpolations hosts apply (tetrahedral: ffmpeg's ``lut3d``; trilinear: OpenColo
 ``FileTransform``, colour-science's ``LUT3D.apply``) at once. The normal equations (27
 diagonals, assembled by :func:`numpy.bincount`) are solved by a Jacobi-preconditioned
 conjugate gradient in numpy alone, every sum in a fixed order: the same inputs give the
-same bytes. More: docs/gamut_map.md, *Design notes*.
+same bytes. More: docs/gamut_map.md, *Fitted tables (lattice regression)*.
 
 - :func:`cell_weights` -- the 8 corner indices and weights of each input's cell for
   one interpolation;

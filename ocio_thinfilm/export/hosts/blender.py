@@ -13,7 +13,7 @@ Closest-filtered Image Texture nodes per table on the node-centred axes), and th
 is a Glossy BSDF tinted by R plus, for a free-standing film, a Transparent BSDF tinted by
 T. The script loads the tables of the scene's working space (:class:`BlenderTables`),
 finds them beside itself and is idempotent. Why nodes and not the GPU's filtering, the
-closures, the working spaces: docs/blender.md, *Design notes*.
+closures, the working spaces: docs/blender.md.
 """
 
 from __future__ import annotations

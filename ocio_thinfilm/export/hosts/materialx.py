@@ -12,7 +12,7 @@ standard library nodes only) that defines the film as a node and uses it:
 
 Without a transmittance table the material is the film's reflection over an opaque,
 black substrate (or a metal in the film's stack). The graph node by node:
-docs/materialx.md, *Design notes*.
+docs/materialx.md, *The node*.
 """
 
 from __future__ import annotations

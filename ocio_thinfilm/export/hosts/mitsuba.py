@@ -15,7 +15,7 @@ free-standing film reflects and transmits (two-sided, choosing reflection with
 probability at least :data:`MIN_REFLECTION_PROBABILITY`); a film on a substrate reflects
 only. A :class:`FilmSampler` holds the numpy side (no Mitsuba type); JIT variants render
 inside :func:`evaluated_mode`. The BSDF's properties and its sampling in full:
-docs/mitsuba.md, *Design notes*.
+docs/mitsuba.md, *Parameters*.
 """
 
 from __future__ import annotations

@@ -9,8 +9,8 @@ the GGX microfacet BRDF of punctual lights. The thickness is a uniform
 (``thinFilmThickness``, µm) or a thickness map (glTF ``KHR_materials_iridescence``'s
 convention); a free-standing film's transmittance goes through three.js's transmission
 pass. The module checks that three.js's shader chunks still hold the lines it replaces
-(written against three.js r187). What it changes, line by line, and the table's
-addressing: docs/threejs.md, *Design notes*.
+(written against three.js r187). What it changes, line by line: docs/threejs.md, *What
+it changes in three.js*; the table's addressing: its *Design notes*.
 """
 
 from __future__ import annotations
