@@ -15,7 +15,7 @@ The result of ``ocio-thinfilm bake --into CONFIG`` is a new ``Config`` (written 
 
 The conversions come from the config's ``cie_xyz_d65_interchange`` role; the result
 must be linear (checked numerically), or the merge is refused. How displays are matched
-and why not ``PyOpenColorIO.ConfigMerger``: docs/config.md, *Design notes*.
+and why not ``PyOpenColorIO.ConfigMerger``: docs/studio.md.
 
 Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`.
 """

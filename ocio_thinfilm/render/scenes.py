@@ -13,8 +13,8 @@ tables it needs (:class:`TableSpec`); what every scene is made of is
 - ``soap`` (Fig. 6): a soap bubble, black at the thin top;
 - ``morpho`` (Fig. 7): a wavy surface coloured by the Morpho angle table (Eq. 9 + 14).
 
-Conventions (images, units, frames) and each scene's shading: docs/render.md,
-*Design notes*.
+Each scene in pictures: docs/render.md, *Gallery*; the conventions (images, units,
+frames): its *Design notes*.
 """
 
 from __future__ import annotations
