@@ -443,3 +443,28 @@ def test_the_config_page_lists_the_registrys_views_and_spaces():
     text = (ROOT / "docs" / "config.md").read_text()
     names = registry.VIEWS + registry.SCENE_LINEAR_SPACES + registry.ENCODED_SPACES
     assert [n for n in names if f"`{n}`" not in text] == []
+
+
+def _paragraph(text: str, start: str) -> str:
+    """The paragraph of ``text`` that begins with ``start``."""
+    i = text.index(start)
+    return text[i : text.index("\n\n", i)]
+
+
+@pytest.mark.parametrize(
+    ("page", "start", "kind"),
+    [
+        ("README.md", "`configs/thinfilm/config.ocio` (profile 2.1", "display"),
+        ("docs/config.md", "| Displays |", "display"),
+        ("docs/config.md", "| Display spaces |", "space"),
+        ("docs/render.md", "| `--display` |", "sdr"),
+        ("docs/shaders.md", "What each file holds", "display"),
+    ],
+)
+def test_the_docs_list_every_display_of_the_registry(page, start, kind):
+    """The README and the docs name every display (and display colour space) the
+    registry has: a new display entry without its docs fails here."""
+    listed = _paragraph((ROOT / page).read_text(), start)
+    displays = registry.DISPLAY_LIST if kind == "sdr" else registry.ALL_DISPLAY_LIST
+    names = [d.colorspace if kind == "space" else d.name for d in displays]
+    assert [n for n in names if f"`{n}`" not in listed] == [], page
