@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours
-from evaluation.views import COMMITTED_CONFIG
+from evaluation.views import COMMITTED_CONFIG, decode_display
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import ocio_ops, view_transforms
@@ -85,10 +85,13 @@ def test_colour_spaces_displays_views(cfg):
     names = list(cfg.getColorSpaceNames())
     for name in SPACES:
         assert name in names, name
+    # the published display names, pinned: a rename breaks users' configs
     assert list(cfg.getDisplays()) == [
         "sRGB",
         "Display P3",
         "Rec.2020",
+        "Rec.1886 Rec.709",
+        "P3-DCI",
         "Rec.2100-PQ",
         "Rec.2100-HLG",
         "P3-D65 PQ",
@@ -201,9 +204,16 @@ def test_config_views_equal_package_view_transforms(cfg, ocio):
                 "CIE-XYZ-D65", display, view, ocio.TRANSFORM_DIR_FORWARD
             ).getDefaultCPUProcessor().applyRGB(out)
             ref = ocio_ops.apply(view_transforms.view_transform(display, view), X)
-            # 3e-4: code values near black through BT.1886's pure power (one Rec.2020
-            # compression pixel at 2.3e-4 = a linear 1e-9, file vs in-memory LUT ops)
-            np.testing.assert_allclose(out, ref, atol=3e-4, err_msg=f"{display} / {view}")
+            # 3e-4 in code values, or 1e-7 in display light: near black a pure power
+            # (BT.1886's 2.4, DCI's 2.6) turns a linear 1e-9 of the file's vs the
+            # in-memory LUT ops' rounding into up to 1.4e-3 of code
+            off = np.abs(out - ref) > 3e-4
+            np.testing.assert_allclose(
+                decode_display(out[off], display),
+                decode_display(ref[off], display),
+                atol=1e-7,
+                err_msg=f"{display} / {view}",
+            )
 
 
 def _hdr_nits(display, code):
