@@ -11,12 +11,11 @@ from __future__ import annotations
 from ocio_thinfilm import registry
 from ocio_thinfilm.config.factories import file_transform
 from ocio_thinfilm.lut import clip_lut, compress_lut, ocio_ops, tables
-from ocio_thinfilm.lut.options import KNOB_NAMES, MapOptions, as_options
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "named_lut",
     "clip_luts",
-    "KNOB_NAMES",
     "compress_luts",
     "lut_files",
     "lut_reference",
