@@ -19,6 +19,7 @@ from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.export import bake
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.io import MARKER
+from ocio_thinfilm.lut.options import MapOptions
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG_DIR = ROOT / "configs" / "thinfilm"
@@ -450,8 +451,8 @@ def test_export_lists_its_subcommands(capsys):
 
 
 def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
-    """``bake(out, luts=..., clip_size=...)`` names its parameters; ``ocio-thinfilm bake``
-    names --out, --luts and --clip-size for the same mistakes."""
+    """``bake(out, luts=..., options=MapOptions(clip_size=...))`` names its parameters;
+    ``ocio-thinfilm bake`` names --out, --luts and --clip-size for the same mistakes."""
     from ocio_thinfilm.export import bake as bake_module
 
     foreign = tmp_path / "foreign"
@@ -459,7 +460,7 @@ def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
     (foreign / "notes.txt").write_text("not ours")
     cases = [
         (
-            dict(out=tmp_path / "a", clip_size=1),
+            dict(out=tmp_path / "a", options=dict(clip_size=1)),
             ["--out", str(tmp_path / "a"), "--clip-size", "1"],
             "clip_size must be an integer in [9, 129], got 1",
             "--clip-size",
@@ -474,14 +475,17 @@ def test_bake_errors_name_out_luts_and_clip_size(tmp_path, capsys):
     ]
     for kwargs, argv, start, option in cases:
         with pytest.raises(ValueError) as raised:
-            bake_module.bake(kwargs.pop("out"), **kwargs)
+            options = kwargs.pop("options", None)
+            bake_module.bake(
+                kwargs.pop("out"), options=MapOptions(**options) if options else None, **kwargs
+            )
         message = str(raised.value)
         assert message.startswith(start) and "--" not in message, message
         assert cli.main(["bake", *argv, "--quiet"]) == 2
         err = capsys.readouterr().err.strip()
         assert err == f"ocio-thinfilm bake: error: {option}{raised.value.detail}", err
     with pytest.raises(TypeError, match="clip_size"):
-        bake_module.bake(tmp_path / "c", clip_size="65")
+        MapOptions(clip_size="65")  # type: ignore[arg-type]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["foreign"]
     assert [p.name for p in foreign.iterdir()] == ["notes.txt"]
 

@@ -23,6 +23,7 @@ from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export import bake
 from ocio_thinfilm.export import merged as export_merged
+from ocio_thinfilm.lut.options import MapOptions
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -370,8 +371,10 @@ def test_file_rules_name_colour_spaces():
 def test_ocioz_gives_the_folders_output(tmp_path):
     folder = tmp_path / "folder"
     folder.mkdir()
-    bake.write_config(folder, clip_size=9)
-    archive = export_merged.bake_archive(tmp_path / "thinfilm.ocioz", clip_size=9)
+    bake.write_config(folder, options=MapOptions(clip_size=9))
+    archive = export_merged.bake_archive(
+        tmp_path / "thinfilm.ocioz", options=MapOptions(clip_size=9)
+    )
     a = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
     b = ocio.Config.CreateFromFile(str(archive))
     b.validate()

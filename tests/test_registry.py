@@ -17,6 +17,7 @@ from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.lut import display_transforms
+from ocio_thinfilm.lut.options import MapOptions
 from ocio_thinfilm.render import frames as render
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -38,7 +39,8 @@ def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert [render.png_colorspace(d) for d in registry.ALL_DISPLAYS] == [
         d.png_colorspace for d in registry.ALL_DISPLAY_LIST
     ]
-    data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
+    small = MapOptions(clip_size=9, film_size=16, morpho_size=16)
+    data = config.config_data(inline=True, options=small)
     assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == list(
         registry.THIN_FILM_SPACES
     )
@@ -219,7 +221,9 @@ def test_adding_a_display_is_one_entry(tmp_path):
     code = (
         "import json; from ocio_thinfilm import config, registry\n"
         "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
-        "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"
+        "from ocio_thinfilm.lut.options import MapOptions\n"
+        "small = MapOptions(clip_size=9, film_size=64, morpho_size=32)\n"
+        "data = config.config_data(inline=True, options=small)\n"
         "cfg = config.generate_config(data)\n"
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Adobe RGB')),\n"
         "    list(cfg.getViews('Gamma 2.2 Rec.709')), sorted(data.luts), list(clip.DISPLAYS),\n"

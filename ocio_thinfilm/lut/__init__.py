@@ -20,6 +20,8 @@
 - :mod:`.storage` -- 16-bit codes that half-float textures keep;
 - :mod:`.clip_lut` -- the clip (Section 3.2) baked into two 3D LUTs;
 - :mod:`.compress_lut` -- the soft compression: a LUT before each of the clip's;
+- :mod:`.options` -- the bake's knobs (compression, clip size, table sizes) as one
+  validated object, :class:`~ocio_thinfilm.lut.options.MapOptions`;
 - :mod:`.view_transforms` -- every view: CIE-XYZ-D65 -> display code values;
 - :mod:`.lattice_fit` -- lattice regression (Garcia & Gupta 2009): node values whose
   interpolation best fits a map at given colours (the portable display LUTs).
@@ -40,6 +42,7 @@ __all__ = [
     "storage",
     "clip_lut",
     "compress_lut",
+    "options",
     "view_transforms",
     "lattice_fit",
 ]
