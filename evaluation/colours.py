@@ -133,6 +133,21 @@ def ap0_below_white(n: int = 200000, seed: int = 123) -> np.ndarray:
     return np.concatenate(out)[:n]
 
 
+def colour_science_RGB_to_XYZ(display: str) -> np.ndarray:
+    """Display-linear RGB -> CIE XYZ (D65) matrix from colour-science's primaries and
+    white for ``display`` (a display or gamut name), Bradford adapted to D65 where its
+    white is another (DCI): RGB (1, 1, 1) is the D65 white."""
+    import colour
+
+    cs = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[registry.colorimetry_of(display)]]
+    npm = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
+    d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
+    cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
+        colour.xy_to_XYZ(cs.whitepoint), colour.xy_to_XYZ(d65), transform="Bradford"
+    )
+    return cat @ npm
+
+
 def half_way_colours(
     display: str, n: int = 40000, seed: int = 11, reach: float = 0.5
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -151,10 +166,8 @@ def half_way_colours(
         (display-linear RGB (n, 3), Y (n,), the fraction of the way t (n,)); the grey
         of each colour is (Y, Y, Y).
     """
-    import colour
 
-    space = colour.RGB_COLOURSPACES[registry.RGB_COLORIMETRY[display]]
-    w = colour.normalised_primary_matrix(space.primaries, space.whitepoint)[1]
+    w = colour_science_RGB_to_XYZ(display)[1]
     rng = np.random.default_rng(seed)
     Y = rng.uniform(0.0005, 0.999, n)
     direction = rng.normal(size=(n, 3))

@@ -35,7 +35,13 @@ OPTIMIZATION_LEVELS = {
 #: colour-science's name of each display gamut (``colour.RGB_COLOURSPACES``), typed here
 #: apart from the package's ``registry.RGB_COLORIMETRY``: a reference that looked the
 #: names up there would agree with a wrong entry of it.
-COLOUR_SCIENCE_NAMES = {"sRGB": "sRGB", "Display P3": "Display P3", "Rec.2020": "ITU-R BT.2020"}
+COLOUR_SCIENCE_NAMES = {
+    "sRGB": "sRGB",
+    "Display P3": "Display P3",
+    "Rec.2020": "ITU-R BT.2020",
+    "P3-DCI": "DCI-P3",
+}
+
 
 _F32_MAX = float(np.finfo(np.float32).max)
 #: CIE-XYZ-D65 inputs at and beyond every edge: black, denormals, negatives, above

@@ -78,7 +78,12 @@ REACHED = {
 MISSES = {
     ("sRGB", "ap0"): "max dE2000 1.57 (dark violet beyond the blue primary)",
     ("Display P3", "ap0"): "max dE2000 1.504 (dark violet beyond the blue primary)",
+    ("P3-DCI", "ap0"): "max dE2000 1.523",
+    ("P3-DCI", "mixtures"): "max dE2000 1.660",
 }
+#: Where one display reaches less than :data:`REACHED` (measured): P3-DCI's clip tables,
+#: made as the others' for a gamut whose white is not D65, on the spectral-line mixtures.
+REACHED_BY_DISPLAY = {("P3-DCI", "mixtures"): (0.5, 1.7, 1e-3, 0.1)}
 
 
 def _check(m, limits):
@@ -98,7 +103,7 @@ def test_view_against_the_analytic_clip(measured, display, name):
         f"{display:10s} {name:13s} p99 {m['p99']:.3f} max {m['max']:.3f} "
         f"|dY| {m['dY']:.1e} in-gamut max {m['inside_max']:.3f}"
     )
-    _check(m, REACHED[name])
+    _check(m, REACHED_BY_DISPLAY.get((display, name), REACHED[name]))
 
 
 @pytest.mark.parametrize(
@@ -138,8 +143,8 @@ def ap0_below(cfg):
 #: beyond sRGB's and Display P3's blue, imaginary greens beyond Rec.2020's green), where
 #: the clip has a kink along the ray from the white point through the primary. A larger
 #: black pass is no cure within the size budget (benchmarks/bench_ap0_corners.py: 81^3,
-#: 12.5 MB per display, still reaches 1.47 / 1.41 / 1.505).
-AP0_REACHED = {"sRGB": 1.62, "Display P3": 1.54, "Rec.2020": 1.79}
+#: 12.5 MB per display, still reaches 1.47 / 1.41 / 1.505). P3-DCI reaches 1.787.
+AP0_REACHED = {"sRGB": 1.62, "Display P3": 1.54, "Rec.2020": 1.79, "P3-DCI": 1.79}
 
 
 @pytest.mark.parametrize("display", DISPLAYS)

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours, spectral_colours
-from evaluation.views import COMMITTED_CONFIG
+from evaluation.views import COMMITTED_CONFIG, decode_display, encode_display
 from ocio_thinfilm import registry
 from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.io import read_image, write_image
@@ -44,22 +44,14 @@ def oiiotool(*args):
 
 
 def decode(code, display):
-    """Display code values -> display-linear RGB (inverse of the display encoding)."""
-    import colour
-
-    code = np.asarray(code, dtype=np.float64)
-    if display == "Rec.2020":
-        return np.clip(code, 0, None) ** 2.4
-    return colour.cctf_decoding(code, function="sRGB")
+    """Display code values -> display-linear RGB (colour-science's decoding of the
+    registry display's encoding: :func:`evaluation.views.decode_display`)."""
+    return decode_display(code, display)
 
 
 def encode(rgb, display):
-    import colour
-
-    rgb = np.clip(rgb, 0, 1)
-    if display == "Rec.2020":
-        return rgb ** (1 / 2.4)
-    return colour.cctf_encoding(rgb, function="sRGB")
+    """Display-linear RGB (clamped to [0, 1]) -> code values (colour-science)."""
+    return encode_display(np.clip(rgb, 0, 1), display)
 
 
 @pytest.fixture(scope="module")

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from evaluation.colours import object_colours, spectral_colours
+from evaluation.views import encode_display
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage, tables, view_transforms
@@ -297,12 +298,9 @@ def test_lut_files_hold_no_negative_zero():
 # Views
 # --------------------------------------------------------------------------- #
 def _encode(rgb, display):
-    import colour
-
-    rgb = np.clip(rgb, 0, 1)
-    if display == "Rec.2020":
-        return rgb ** (1 / 2.4)
-    return colour.cctf_encoding(rgb, function="sRGB")
+    """Display-linear RGB (clamped) -> code values, by colour-science
+    (:func:`evaluation.views.encode_display`)."""
+    return encode_display(np.clip(rgb, 0, 1), display)
 
 
 @pytest.mark.parametrize("display", DISPLAYS)

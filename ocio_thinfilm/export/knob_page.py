@@ -244,18 +244,32 @@ def _json_script(data: object) -> str:
     return json.dumps(data, separators=(",", ":"), ensure_ascii=True).replace("</", "<\\/")
 
 
-_NOTES = {
-    "sRGB": "",
-    "Display P3": (
-        "Display P3 codes, drawn into a canvas tagged display-p3 (drawingBufferColorSpace): "
-        "a colour-managed browser shows them as Display P3 on a wide-gamut screen."
-    ),
-    "Rec.2020": (
-        "Rec.2020 codes are shown as they are: no browser shows a canvas as BT.2020 with "
-        "BT.1886, so these codes appear as if they were sRGB (duller, other hues). Compare "
-        "the knobs with them; judge the colours on a Rec.2020 monitor."
-    ),
-}
+#: The canvas colour spaces browsers have (WebGL's ``drawingBufferColorSpace``), by the
+#: display whose codes they show as they are meant.
+_CANVAS_SPACES = {"sRGB": "srgb", "Display P3": "display-p3"}
+
+
+def _note(display: registry.Display) -> str:
+    """Return what the page says under the canvas when ``display`` is chosen."""
+    if display.name == "sRGB":
+        return ""
+    if display.name in _CANVAS_SPACES:
+        return (
+            f"{display.name} codes, drawn into a canvas tagged "
+            f"{_CANVAS_SPACES[display.name]} (drawingBufferColorSpace): a colour-managed "
+            f"browser shows them as {display.name} on a wide-gamut screen."
+        )
+    same = display.primaries == registry.DISPLAY_LIST[0].primaries
+    looks = "the same hues, other tones" if same else "duller, other hues"
+    return (
+        f"{display.name} codes are shown as they are: browsers show a canvas only as "
+        f"{' or '.join(_CANVAS_SPACES)}, so these codes appear as if they were sRGB "
+        f"({looks}). Compare the knobs with them; judge the colours on a {display.name} "
+        "display."
+    )
+
+
+_NOTES = {d.name: _note(d) for d in registry.DISPLAY_LIST}
 _NO_P3 = (
     "This browser cannot tag a WebGL canvas as Display P3: the P3 codes are shown as if "
     "they were sRGB (duller, other hues)."

@@ -22,8 +22,8 @@ import numpy as np
 
 from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.options import MapOptions
 
 __all__ = [
     "DEFAULT_VIEW_SIZE",
@@ -120,8 +120,7 @@ def view_config(
     size: int = DEFAULT_VIEW_SIZE,
     display: registry.DisplayLike | None = None,
     *,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> tuple[ocio_ops.Config, str | None]:
     """Return the config in memory (LUTs inline, no files) and the shaper space's name.
 
@@ -136,9 +135,9 @@ def view_config(
         Edge of the 3D LUT the shaper is for (default :data:`DEFAULT_VIEW_SIZE`).
     display : str or registry display, optional
         The display (an HDR display widens the shaper's domain).
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3;
-        :func:`ocio_thinfilm.colour.compress.check_knobs`).
+    options : MapOptions, optional
+        The config's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -146,19 +145,12 @@ def view_config(
         The config, with the shaper space added when ``source`` needs one.
     shaper : str or None
         The shaper space's name, or ``None``.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range.
     """
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm import config as config_module
 
-    data = config_module.config_data(
-        inline=True, compress_threshold=compress_threshold, compress_limit=compress_limit
-    )
+    data = config_module.config_data(inline=True, options=options)
     cfg = config_module.generate_config(data, validate=False)
     sibling = linear_sibling(source)
     if sibling is None:

@@ -30,6 +30,7 @@ from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage
 from ocio_thinfilm.lut.clip_lut import ClipLUT, xyY_forward_transform, xyY_inverse_transform
 from ocio_thinfilm.lut.node_fit import chart_to_XYZ
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, lut3d_transform, transform_id
+from ocio_thinfilm.lut.options import check_clip_size
 from ocio_thinfilm.lut.tables import check_size
 
 __all__ = [
@@ -431,7 +432,7 @@ def compress_lut(
     size = check_size(size, 9, 129, "size")
     white_edge = check_size(white_edge, 7, 129, "white_edge")
     soft.compression_curve(0.0, threshold, limit, power)  # validates the parameters
-    clip_size = check_size(clip_size, 9, 129, "clip_size")
+    clip_size = check_clip_size(clip_size)
     return _compress_lut(
         name, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
     )
