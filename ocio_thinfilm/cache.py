@@ -1,30 +1,20 @@
 """The package's in-process caches, in one clearable store.
 
-Every memoised function of the package (the thin-film tables of
-:mod:`ocio_thinfilm.lut.tables`, the clip LUTs of :mod:`ocio_thinfilm.lut.clip_lut`,
-the colour-science data of :mod:`ocio_thinfilm.colour.colorimetry`, the noise lattices
-of :mod:`ocio_thinfilm.render.noise`) is a :class:`Memo` held here under its qualified
-name. A memo's key is the whole argument tuple of its pure function, so the key covers
-what the result depends on; caching never changes a result, :func:`clear` only makes
-the next call compute again.
+Every memoised function of the package (the thin-film tables, the clip LUTs, the
+colour-science data, the noise lattices) is a :class:`Memo` held here under its
+qualified name, keyed by the whole argument tuple of its pure function: caching never
+changes a result, :func:`clear` only makes the next call compute again.
 
 - :func:`memoize` -- decorator: a :class:`Memo` (least-recently-used, ``maxsize``
   entries, one computation at a time), registered in the store;
-- :func:`clear` -- empty every memo; with ``persistent=True`` also the memos' own
-  on-disk entries (those of :func:`persistent`, which are keyed by the code and
-  colour-science's version, so they never go stale: clearing them only costs the next
-  process the computation);
-- :func:`persistent` -- decorator: a memo that also keeps its arrays on disk (the
-  colour-science weights, the clip's fitted nodes), for the next process;
+- :func:`clear` -- empty every memo; with ``persistent=True`` also the on-disk entries;
+- :func:`persistent` -- decorator: a memo that also keeps its arrays on disk (keyed by
+  the code and colour-science's version), for the next process;
 - :func:`info` -- ``{name: CacheInfo(hits, misses, maxsize, currsize)}``;
-- :func:`entries` -- ``{name: (key, ...)}``: what each memo holds now, e.g. which
-  tables this process has computed (the tests' proof that a scene builds only what it
-  needs).
+- :func:`entries` -- ``{name: (key, ...)}``: what each memo holds now.
 
-``functools.lru_cache`` would do the memoising but hides its keys; this store shows
-them. It imports nothing from the package at import time (:func:`persistent` writes its
-files with :func:`ocio_thinfilm.io.atomic_file` when it first saves), so any module may
-use it.
+It imports nothing from the package at import time, so any module may use it; why not
+``functools.lru_cache``: docs/internals.md.
 
 >>> @memoize(maxsize=2)
 ... def square(x):

@@ -1,53 +1,22 @@
 """Arithmetic that gives the same bits on every CPU, so every written file does too.
 
 What the package writes (the config's LUTs, ``luts/``, the shaders, the knob page) must be
-the same bytes whatever machine computes it. Elementwise IEEE 754 operations (+, -, *, /,
-sqrt) are correctly rounded, so numpy gives their bits on every CPU and SIMD level. Three
-things do not:
-
-- BLAS (``a @ b``, ``np.dot``, ``np.einsum`` with ``optimize``): OpenBLAS picks a kernel
-  per CPU (``OPENBLAS_CORETYPE`` forces one), and kernels sum in other orders or fuse
-  multiply-adds, so the last bits move;
-- LAPACK (``np.linalg.inv``, ``solve``, ``eigvalsh``) and the libraries that use them
-  (colour-science's normalised primary matrices and chromatic adaptation);
-- transcendental functions whose SIMD versions differ in the last bit.
-
-A last-bit difference is harmless by itself, but it decides a stored value wherever
-that value lies on a rounding boundary: a 16-bit code of exactly 0.5 (32767.5) rounds
-either way, a matrix coefficient that is zero in exact arithmetic prints as
-``-3.9e-17`` or ``-3.8e-17``, and an iterative fit turns it into differences of 1e-11.
-So the package
-
-- multiplies matrices with :func:`matmul` (a fixed order of elementwise operations, no
-  BLAS) and inverts 3x3 matrices with :func:`inv3` (the adjugate: no LAPACK); the
-  colour spaces' matrices are computed that way from colour-science's primaries and
-  whites (:mod:`ocio_thinfilm.colour.colorimetry`), not by its BLAS-based functions;
-- rounds the tables of order 1 that colour-science interpolates with BLAS (the colour
-  matching functions and illuminants at the package's wavelengths) to
-  :func:`canonical`: 32 significant bits, a relative 2.3e-10, far below what colorimetry
-  resolves and far above the 2e-15 that CPUs disagree by there; values that are zero
-  in exact arithmetic become exactly 0;
-- rounds values to :func:`snap` (36 significant bits) before it quantises them, so a
-  value that lies on a rounding boundary in exact arithmetic rounds the same way
-  everywhere;
-- evaluates transcendental functions of float32 pictures (the renderer's) with
-  :func:`float32_of`: in float64, rounded to float32, because numpy's float32
-  ``sin``/``cos``/``exp``/``log`` differ in the last bit between its AVX-512, AVX2
-  and baseline loops, and float32 is what the renderer computes in.
-
-A value moved by 2e-15 crosses a boundary of :func:`canonical` with probability about
-2e-5, and one of :func:`snap` at a place that changes a 16-bit code with probability
-below 1e-9. ``tests/test_reproducible.py`` regenerates the files under other BLAS kernels
-and SIMD levels and compares their bytes.
+the same bytes whatever machine computes it. Correctly rounded elementwise operations
+give the same bits everywhere; BLAS, LAPACK and SIMD transcendental functions do not,
+and a last-bit difference decides a stored value that lies on a rounding boundary. So
+the package uses, instead:
 
 - :func:`matmul` -- ``a @ b`` in a fixed order, no BLAS;
 - :func:`pairwise_sum` -- a sum over the last axis by halves, a fixed binary tree that
-  numpy's SIMD loops evaluate (the material tables' integrations: 5 times faster than
-  :func:`matmul`'s sequential order, which no SIMD unit can run);
+  numpy's SIMD loops evaluate (the material tables' integrations);
 - :func:`inv3` -- the inverse of 3x3 matrices by the adjugate, no LAPACK;
 - :func:`canonical` -- a table rounded to 32 significant bits, tiny values to 0;
-- :func:`snap` -- values rounded to 36 significant bits;
+- :func:`snap` -- values rounded to 36 significant bits before they are quantised;
 - :func:`float32_of` -- a ufunc evaluated in float64 and rounded to float32.
+
+``tests/test_reproducible.py`` regenerates the files under other BLAS kernels and SIMD
+levels and compares their bytes. What differs between CPUs and why these roundings
+suffice: docs/internals.md.
 """
 
 from __future__ import annotations

@@ -87,6 +87,9 @@ MISSES = {
     ("P3-DCI", "ap0"): "max dE2000 1.523 (dark violet beyond the blue primary)",
     ("P3-DCI", "mixtures"): "max dE2000 1.660",
 }
+#: Where one display reaches less than :data:`REACHED` (measured): P3-DCI's clip tables,
+#: made as the others' for a gamut whose white is not D65, on the spectral-line mixtures.
+REACHED_BY_DISPLAY = {("P3-DCI", "mixtures"): (0.5, 1.7, 1e-3, 0.1)}
 
 
 def _tables(display):

@@ -364,8 +364,10 @@ def test_ramps_compress_rises_where_the_clip_is_flat(ramp_distances, display):
     dist, analytic, view, clip_view = ramp_distances[display]
     assert _rising_steps(dist, analytic).min() > 0.0
     rising = dist < compress.LIMIT
-    assert np.abs(view - analytic)[rising].max() < 0.03
     assert np.abs(clip_view[dist > 1.02] - 1.0).max() < 0.03  # on the boundary (LUT: 0.023)
+    worst = np.abs(view - analytic)[rising].max()
+    print(f"{display}: the view within {worst:.3f} boundary distances of the analytic map")
+    assert worst < 0.03
 
 
 def test_ramps_compress_view_rises_until_near_the_boundary(ramp_distances):

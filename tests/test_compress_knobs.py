@@ -20,10 +20,12 @@ import pytest
 
 from evaluation.colours import gamut_map_sets, half_way_colours
 from evaluation.views import decode_display
+from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry, compress
 from ocio_thinfilm.lut import compress_lut
+from ocio_thinfilm.lut.options import MapOptions
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -119,11 +121,11 @@ def test_bake_takes_the_knobs(tmp_path, capsys):
         assert "beyond 0.6 of the distance" in vt.getDescription(), display
         assert "so that 1.5 boundary distances" in vt.getDescription(), display
     named = [n for n in cfg.getNamedTransformNames() if n.startswith(VIEW)]
-    assert len(named) == 3
+    assert len(named) == len(registry.GAMUT_DISPLAY_LIST)  # one per gamut
     for name in named:
         assert "(threshold 0.6, limit 1.5)" in cfg.getNamedTransform(name).getDescription()
     files = sorted((out / "luts").glob("ConstantLightnessCompress*.clf"))
-    assert len(files) == 6
+    assert len(files) == 2 * len(registry.GAMUT_DISPLAY_LIST)
     for path in files:
         assert "(threshold 0.6, limit 1.5)" in path.read_text()
     XYZ = gamut_map_sets()["ap0"]
@@ -141,7 +143,7 @@ def test_merge_takes_the_knobs():
     from ocio_thinfilm.config import merge
 
     base = merge.load_base("ocio://studio-config-latest")
-    cfg, luts, _ = merge.merge_config(base, compress_threshold=0.6, compress_limit=1.5)
+    cfg, luts, _ = merge.merge_config(base, options=MapOptions(*KNOBS))
     described = [
         cfg.getViewTransform(n).getDescription()
         for n in cfg.getViewTransformNames()
@@ -162,7 +164,7 @@ def test_the_command_line_hands_the_knobs_to_every_bake(tmp_path, monkeypatch, c
 
     def stub(name):
         def record(*args, **kwargs):
-            calls.append((name, kwargs.get("compress_threshold"), kwargs.get("compress_limit")))
+            calls.append((name, *kwargs["options"].knobs()))
             return Path(tmp_path / "x")
 
         return record
@@ -270,27 +272,37 @@ def test_knobs_refused_where_there_is_no_compression(argv, needle, tmp_path, cap
     ],
 )
 def test_library_refuses_bad_knobs_naming_the_parameter(kwargs, parameter, tmp_path):
+    """The knobs are checked once, where the options object is made (before any bake,
+    merge, export or config is begun); every function after the ``lut`` stage takes that
+    object, keyword-only, and no other spelling of the knobs."""
+    import inspect
+
     from ocio_thinfilm import config
     from ocio_thinfilm.export import bake as bake_module
     from ocio_thinfilm.export import merged
     from ocio_thinfilm.export.view import export_view, view_config
 
-    calls = [
-        lambda: bake_module.bake(tmp_path / "cfg", **kwargs),
-        lambda: merged.bake_archive(tmp_path / "t.ocioz", **kwargs),
-        lambda: merged.bake_into("ocio://studio-config-latest", tmp_path / "m", **kwargs),
-        lambda: export_view("ACEScct", "sRGB", VIEW, tmp_path / "x.cube", **kwargs),
-        lambda: view_config("ACEScct", **kwargs),
-        lambda: config.config_data(**kwargs),
-        lambda: config.compress_luts(**kwargs),
-    ]
-    for call in calls:
-        with pytest.raises(ParameterError) as raised:
-            call()
-        assert str(raised.value).startswith(parameter + " must be"), raised.value
-        assert raised.value.parameter == parameter
+    with pytest.raises(ParameterError) as raised:
+        MapOptions(**kwargs)
+    assert str(raised.value).startswith(parameter + " must be"), raised.value
+    assert raised.value.parameter == parameter
     with pytest.raises(TypeError, match="^compress_limit must be a number"):
-        config.config_data(compress_limit="1.5")
+        MapOptions(compress_limit="1.5")  # type: ignore[arg-type]
+    functions = [
+        bake_module.bake,
+        merged.bake_archive,
+        merged.bake_into,
+        export_view,
+        view_config,
+        config.config_data,
+        config.compress_luts,
+    ]
+    for function in functions:
+        parameters = inspect.signature(function).parameters
+        assert parameters["options"].kind is inspect.Parameter.KEYWORD_ONLY, function
+        assert not set(parameters) & {"compress_threshold", "compress_limit"}, function
+    with pytest.raises(TypeError, match="^options must be a MapOptions"):
+        config.compress_luts(options=(0.6, 1.5))  # type: ignore[arg-type]
     assert list(tmp_path.iterdir()) == []
 
 

@@ -18,6 +18,7 @@ from evaluation.views import COMMITTED_CONFIG, decode_display
 from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.lut import ocio_ops, view_transforms
+from ocio_thinfilm.lut.options import MapOptions
 
 ROOT = Path(__file__).resolve().parents[1]
 OCIO21_CHECK = Path("/usr/bin/ociocheck")  # Debian opencolorio-tools (OCIO 2.1)
@@ -329,7 +330,8 @@ def _term_scale(codes, encoded):
 @pytest.fixture(scope="module")
 def fresh_cfg():
     """The config as ``bake`` makes it (its LUTs inline, small: the encoded spaces need none)."""
-    data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
+    small = MapOptions(clip_size=9, film_size=16, morpho_size=16)
+    data = config.config_data(inline=True, options=small)
     return config.generate_config(data)
 
 

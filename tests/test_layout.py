@@ -7,8 +7,8 @@ them); ``physics``; ``colour``; ``lut``; ``config``; ``export``; ``render``; ``c
 import is checked, lazy ones inside functions included. The evaluation code (the report, the
 stability cases, the GPU harness, the test colour sets) is the top-level ``evaluation``
 package beside ``benchmarks/``, outside the shipped package: nothing in ``ocio_thinfilm``
-imports it (``cli/report.py`` loads it from a checkout), and it imports ``ocio_thinfilm``,
-never the other way round.
+imports it (``cli/report.py`` imports it where it is importable: a checkout), and it
+imports ``ocio_thinfilm``, never the other way round.
 """
 
 from __future__ import annotations
@@ -116,8 +116,8 @@ def test_every_stage_is_known_and_the_check_can_fail(tmp_path):
 
 
 def test_the_shipped_package_never_imports_the_evaluation_code(tmp_path):
-    """Only ``cli/report.py`` reaches ``evaluation`` (from a checkout, after checking that
-    it is there); a module that imports it would fail from a wheel."""
+    """Only ``cli/report.py`` reaches ``evaluation`` (after checking that it is
+    importable: a checkout); a module that imports it would fail from a wheel."""
     offenders = {str(p.relative_to(PACKAGE)): _imports_evaluation(p) for p in _modules()}
     offenders = {k: v for k, v in offenders.items() if v and k != "cli/report.py"}
     assert offenders == {}
@@ -307,25 +307,42 @@ def test_no_package_module_is_over_700_lines(tmp_path):
     assert _too_long(tmp_path) == {"long.py": MAX_LINES + 1}
 
 
+#: The bake's knobs, fields of :class:`ocio_thinfilm.lut.options.MapOptions`, and the
+#: compression's math's names for its two: no public function after the ``lut`` stage
+#: takes them one by one.
+KNOB_PARAMETERS = {
+    "compress_threshold",
+    "compress_limit",
+    "clip_size",
+    "film_size",
+    "morpho_size",
+    "threshold",
+    "limit",
+}
+
+
 def _knob_parameters(path: Path) -> list[str]:
-    """``"line name"`` of every public function of ``path`` with a parameter called
-    ``threshold`` or ``limit``."""
+    """``"line name"`` of every public function of ``path`` with a parameter named as a
+    bake knob (:data:`KNOB_PARAMETERS`)."""
     found = []
     for node in ast.walk(ast.parse(path.read_text())):
         if isinstance(node, ast.FunctionDef) and not node.name.startswith("_"):
             a = node.args
             names = {p.arg for p in a.posonlyargs + a.args + a.kwonlyargs}
-            if names & {"threshold", "limit"}:
+            if names & KNOB_PARAMETERS:
                 found.append(f"{node.lineno} {node.name}")
     return found
 
 
-def test_the_stages_after_lut_name_the_knobs_compress_threshold_and_compress_limit(tmp_path):
-    """The compression's knobs have one name in the API of the config, the files, the
-    shaders and the renderer (``compress_threshold``, ``compress_limit``, as the options
-    ``--compress-threshold`` and ``--compress-limit``); only the compression's own math
-    (``colour.compress``, ``lut.compress_lut``), where they are its only parameters, calls
-    them ``threshold`` and ``limit``."""
+def test_the_stages_after_lut_take_the_knobs_as_one_options_object(tmp_path):
+    """The bake's knobs (the compression's threshold and limit, the clip LUTs' size, the
+    tables' sizes) are one validated object, :class:`ocio_thinfilm.lut.options.MapOptions`,
+    documented once: the public functions of the config, the files, the shaders, the
+    renderer and the command line take ``options`` and hand it down, never the knobs one
+    by one (``compress_threshold``, ``clip_size``, ...); only the ``lut`` stage and
+    before (``colour.compress``, ``lut.compress_lut``), where they are the math's own
+    parameters, name them (``threshold``, ``limit``). The command line makes the object
+    from its options (``--compress-threshold``, ``--clip-size``, ...)."""
     later = {name for name in STAGES if RANK[name] > RANK["lut"]}
     offenders = {
         str(p.relative_to(PACKAGE)): _knob_parameters(p)
@@ -334,5 +351,164 @@ def test_the_stages_after_lut_name_the_knobs_compress_threshold_and_compress_lim
     }
     assert {k: v for k, v in offenders.items() if v} == {}
     bad = tmp_path / "bad.py"
-    bad.write_text("def f(lang: str, *, threshold: float = 0.8) -> str:\n    return lang\n")
-    assert _knob_parameters(bad) == ["1 f"]
+    bad.write_text(
+        "def f(lang: str, *, threshold: float = 0.8) -> str:\n    return lang\n"
+        "def g(out: str, *, clip_size: int = 65) -> str:\n    return out\n"
+        "def h(out: str, *, compress_limit: float = 1.3) -> str:\n    return out\n"
+        "def k(out: str, *, options: object = None) -> str:\n    return out\n"
+        "def _private(clip_size: int) -> int:\n    return clip_size\n"
+    )
+    assert _knob_parameters(bad) == ["1 f", "3 g", "5 h"]
+
+
+#: The most code lines a function of the package may have (its docstring aside): a longer
+#: one does more than one thing.
+MAX_FUNCTION_LINES = 80
+
+#: Functions allowed over ``MAX_FUNCTION_LINES``: ``"path::name"`` -> why. An entry that
+#: is no longer long fails the test too (drop it).
+LONG_FUNCTION_EXCEPTIONS: dict[str, str] = {}
+
+
+def _docstring_lines(node: ast.AST) -> int:
+    """Lines of the docstring opening ``node``'s body (0 without one)."""
+    first = node.body[0] if getattr(node, "body", None) else None
+    if (
+        isinstance(first, ast.Expr)
+        and isinstance(first.value, ast.Constant)
+        and isinstance(first.value.value, str)
+    ):
+        return first.end_lineno - first.lineno + 1
+    return 0
+
+
+def _function_lengths(root: Path) -> dict[str, int]:
+    """``"path::name"`` -> code lines (docstring excluded) of every function and method
+    of the modules below ``root``; the longest where one name is defined twice."""
+    lengths: dict[str, int] = {}
+    for path in sorted(root.rglob("*.py")):
+        rel = path.relative_to(root).as_posix()
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                n = node.end_lineno - node.lineno + 1 - _docstring_lines(node)
+                key = f"{rel}::{node.name}"
+                lengths[key] = max(n, lengths.get(key, 0))
+    return lengths
+
+
+def _long_functions(root: Path, exceptions: dict[str, str]) -> tuple[dict, list]:
+    """(functions over the limit not excepted, exceptions that are not over the limit)."""
+    lengths = _function_lengths(root)
+    long = {k: n for k, n in lengths.items() if n > MAX_FUNCTION_LINES and k not in exceptions}
+    stale = sorted(k for k in exceptions if lengths.get(k, 0) <= MAX_FUNCTION_LINES)
+    return long, stale
+
+
+def test_no_package_function_is_over_80_lines(tmp_path):
+    """No function or method of the package has more than ``MAX_FUNCTION_LINES`` code
+    lines (its docstring not counted) but the listed exceptions, each still that long."""
+    assert _long_functions(PACKAGE, LONG_FUNCTION_EXCEPTIONS) == ({}, [])
+    body = "".join(f"    x{i} = {i}\n" for i in range(MAX_FUNCTION_LINES))
+    (tmp_path / "m.py").write_text(
+        f'def long():\n    """A docstring\n    of lines not counted."""\n{body}'
+        f'def fits():\n    """Doc."""\n{body[: body.rindex("    x")]}'
+    )
+    assert _function_lengths(tmp_path) == {
+        "m.py::long": MAX_FUNCTION_LINES + 1,
+        "m.py::fits": MAX_FUNCTION_LINES,
+    }
+    assert _long_functions(tmp_path, {}) == ({"m.py::long": MAX_FUNCTION_LINES + 1}, [])
+    excepted = {"m.py::long": "a reason", "m.py::fits": "stale"}
+    assert _long_functions(tmp_path, excepted) == ({}, ["m.py::fits"])
+
+
+#: The most lines of a module's docstring: what the module is, what it defines, its
+#: references; discussion belongs in docs/.
+MAX_HEADER_LINES = 25
+
+
+def _long_headers(root: Path) -> dict[str, int]:
+    """Modules below ``root`` whose docstring has more than ``MAX_HEADER_LINES`` lines."""
+    lengths = {
+        path.relative_to(root).as_posix(): _docstring_lines(ast.parse(path.read_text()))
+        for path in sorted(root.rglob("*.py"))
+    }
+    return {k: n for k, n in lengths.items() if n > MAX_HEADER_LINES}
+
+
+def test_no_package_module_header_is_over_25_lines(tmp_path):
+    """A module's docstring says what it is and defines, with its references, in at most
+    ``MAX_HEADER_LINES`` lines (design discussion is in docs/)."""
+    assert _long_headers(PACKAGE) == {}
+    lines = "\n".join(["Line."] * (MAX_HEADER_LINES - 2))
+    (tmp_path / "long.py").write_text(f'"""Title.\n\n{lines}\n"""\n\nx = 1\n')
+    (tmp_path / "short.py").write_text(f'"""Title.\n{lines}\n"""\n\nx = 1\n')
+    assert _long_headers(tmp_path) == {"long.py": MAX_HEADER_LINES + 1}
+
+
+def _mentions(root: Path, word: str) -> dict[str, list[int]]:
+    """Modules below ``root`` whose text says ``word`` (any case): path -> lines."""
+    found = {}
+    for path in sorted(root.rglob("*.py")):
+        lines = path.read_text().splitlines()
+        hits = [i for i, line in enumerate(lines, 1) if word in line.lower()]
+        if hits:
+            found[path.relative_to(root).as_posix()] = hits
+    return found
+
+
+def _prose(path: Path) -> list[tuple[int, str]]:
+    """(first line, text) of every comment and docstring (any string statement) of
+    ``path``."""
+    import io
+    import tokenize
+
+    source = path.read_text()
+    found = [
+        (tok.start[0], tok.string)
+        for tok in tokenize.generate_tokens(io.StringIO(source).readline)
+        if tok.type == tokenize.COMMENT
+    ]
+    found += [
+        (node.lineno, node.value.value)
+        for node in ast.walk(ast.parse(source))
+        if isinstance(node, ast.Expr)
+        and isinstance(node.value, ast.Constant)
+        and isinstance(node.value.value, str)
+    ]
+    return sorted(found)
+
+
+def _prose_says(root: Path, word: str) -> dict[str, list[int]]:
+    """Modules below ``root`` whose comments or docstrings say ``word`` (any case, as a
+    word: not inside an identifier such as ``MEASURED_KNOBS``): path -> lines (a
+    docstring's first line)."""
+    import re
+
+    pattern = re.compile(rf"\b{re.escape(word)}\b", re.IGNORECASE)
+    found = {}
+    for path in sorted(root.rglob("*.py")):
+        hits = [line for line, text in _prose(path) if pattern.search(text)]
+        if hits:
+            found[path.relative_to(root).as_posix()] = hits
+    return found
+
+
+def test_no_package_module_quotes_measurements(tmp_path):
+    """Numbers measured on one machine go stale in code: timings, errors and sizes are
+    in docs/ (and reports/), and the code states only what its tests check; no comment
+    or docstring of the package says "measured"."""
+    assert _prose_says(PACKAGE, "measured") == {}
+    (tmp_path / "m.py").write_text(
+        'MEASURED = 1\n# Measured: 3 ms on a laptop\ndef f():\n    """Doc.\n\n    measured."""\n'
+        "# MEASURED_KNOBS is a name\n"
+    )
+    assert _prose_says(tmp_path, "measured") == {"m.py": [2, 4]}
+
+
+def test_no_package_module_edits_sys_path(tmp_path):
+    """The package imports through the normal machinery: no module mentions
+    ``sys.path`` (``cli/report.py`` imports ``evaluation`` where it is importable)."""
+    assert _mentions(PACKAGE, "sys.path") == {}
+    (tmp_path / "m.py").write_text("import sys\nsys.path.insert(0, '.')\n")
+    assert _mentions(tmp_path, "sys.path") == {"m.py": [2]}

@@ -23,6 +23,7 @@ from ocio_thinfilm.colour import clip, colorimetry, compress
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export import bake
 from ocio_thinfilm.export import merged as export_merged
+from ocio_thinfilm.lut.options import MapOptions
 
 ocio = pytest.importorskip("PyOpenColorIO")
 
@@ -31,8 +32,9 @@ PROJECT = ROOT / "configs" / "thinfilm" / "config.ocio"
 OCIO21_CHECK = Path("/usr/bin/ociocheck")
 BASE21 = "ocio://studio-config-v1.0.0_aces-v1.3_ocio-v2.1"
 LATEST = "ocio://studio-config-latest"
-#: The SDR displays with sRGB / Rec.709, P3-D65 or Rec.2020 primaries and D65 white, by
-#: their published names (P3-D60 and P3-DCI have other whites), and the HDR displays
+#: The SDR displays with sRGB / Rec.709, P3-D65 or Rec.2020 primaries and D65 white or
+#: with P3 primaries and DCI white (the cinema projector), by their published names
+#: (P3-D60 has ACES white: no project display), and the HDR displays
 #: BT.2100 PQ / HLG and P3-D65 PQ (not Display P3 HDR, Apple's extended sRGB curve).
 _HDR = {
     "Rec.2100-HLG - Display": "Rec.2100-HLG",
@@ -45,6 +47,7 @@ EXPECTED = {
         "Rec.1886 Rec.709 - Display": "sRGB",
         "Rec.1886 Rec.2020 - Display": "Rec.2020",
         "P3-D65 - Display": "Display P3",
+        "P3-DCI - Display": "P3-DCI",
         **_HDR,
     },
     LATEST: {
@@ -60,10 +63,17 @@ EXPECTED = {
 SAME_ENCODING = {
     BASE21: [
         ("sRGB - Display", "sRGB"),
+        ("Rec.1886 Rec.709 - Display", "Rec.1886 Rec.709"),
         ("Rec.1886 Rec.2020 - Display", "Rec.2020"),
+        ("P3-DCI - Display", "P3-DCI"),
         *_HDR.items(),
     ],
-    LATEST: [("sRGB - Display", "sRGB"), ("Display P3 - Display", "Display P3"), *_HDR.items()],
+    LATEST: [
+        ("sRGB - Display", "sRGB"),
+        ("Display P3 - Display", "Display P3"),
+        ("Rec.1886 Rec.709 - Display", "Rec.1886 Rec.709"),
+        *_HDR.items(),
+    ],
 }
 
 
@@ -361,8 +371,10 @@ def test_file_rules_name_colour_spaces():
 def test_ocioz_gives_the_folders_output(tmp_path):
     folder = tmp_path / "folder"
     folder.mkdir()
-    bake.write_config(folder, clip_size=9)
-    archive = export_merged.bake_archive(tmp_path / "thinfilm.ocioz", clip_size=9)
+    bake.write_config(folder, options=MapOptions(clip_size=9))
+    archive = export_merged.bake_archive(
+        tmp_path / "thinfilm.ocioz", options=MapOptions(clip_size=9)
+    )
     a = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
     b = ocio.Config.CreateFromFile(str(archive))
     b.validate()
@@ -401,11 +413,11 @@ def test_into_refuses_config_without_interchange_or_display(tmp_path, capsys):
     )
     err = capsys.readouterr().err
     assert code == 2 and len(err.splitlines()) == 1, err
-    # an ACES config whose only display is P3-DCI (DCI white): nothing to add to
+    # an ACES config whose only display is P3-D60 (ACES white): nothing to add to
     dci = ocio.Config.CreateFromFile(BASE21)
     dci.clearDisplays()
     dci.addDisplayView(
-        "P3-DCI - Display", "Un-tone-mapped", "Un-tone-mapped", "P3-DCI - Display", "", "", ""
+        "P3-D60 - Display", "Un-tone-mapped", "Un-tone-mapped", "P3-D60 - Display", "", "", ""
     )
     dci.setActiveDisplays("")
     dci.setActiveViews("")

@@ -19,6 +19,7 @@ from ocio_thinfilm import config, registry
 from ocio_thinfilm.colour import clip, colorimetry
 from ocio_thinfilm.export import files as export
 from ocio_thinfilm.lut import display_transforms
+from ocio_thinfilm.lut.options import MapOptions
 from ocio_thinfilm.render import frames as render
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -39,7 +40,8 @@ def test_every_module_lists_the_registrys_displays_views_and_spaces():
     assert [render.png_colorspace(d) for d in registry.ALL_DISPLAYS] == [
         d.png_colorspace for d in registry.ALL_DISPLAY_LIST
     ]
-    data = config.config_data(inline=True, clip_size=9, film_size=16, morpho_size=16)
+    small = MapOptions(clip_size=9, film_size=16, morpho_size=16)
+    data = config.config_data(inline=True, options=small)
     assert [cs["name"] for cs in data.colorspaces if cs["family"] == "Thin Film"] == list(
         registry.THIN_FILM_SPACES
     )
@@ -220,7 +222,9 @@ def test_adding_a_display_is_one_entry(tmp_path):
     code = (
         "import json; from ocio_thinfilm import config, registry\n"
         "from ocio_thinfilm.colour import clip\nfrom ocio_thinfilm.render import frames as render\n"
-        "data = config.config_data(inline=True, clip_size=9, film_size=64, morpho_size=32)\n"
+        "from ocio_thinfilm.lut.options import MapOptions\n"
+        "small = MapOptions(clip_size=9, film_size=64, morpho_size=32)\n"
+        "data = config.config_data(inline=True, options=small)\n"
         "cfg = config.generate_config(data)\n"
         "print(json.dumps([list(cfg.getDisplays()), list(cfg.getViews('Adobe RGB')),\n"
         "    list(cfg.getViews('Gamma 2.2 Rec.709')), sorted(data.luts), list(clip.DISPLAYS),\n"
@@ -445,3 +449,28 @@ def test_the_config_page_lists_the_registrys_views_and_spaces():
     text = (ROOT / "docs" / "config.md").read_text()
     names = registry.VIEWS + registry.SCENE_LINEAR_SPACES + registry.ENCODED_SPACES
     assert [n for n in names if f"`{n}`" not in text] == []
+
+
+def _paragraph(text: str, start: str) -> str:
+    """The paragraph of ``text`` that begins with ``start``."""
+    i = text.index(start)
+    return text[i : text.index("\n\n", i)]
+
+
+@pytest.mark.parametrize(
+    ("page", "start", "kind"),
+    [
+        ("README.md", "`configs/thinfilm/config.ocio` (profile 2.1", "display"),
+        ("docs/config.md", "| Displays |", "display"),
+        ("docs/config.md", "| Display spaces |", "space"),
+        ("docs/render.md", "| `--display` |", "sdr"),
+        ("docs/shaders.md", "What each file holds", "display"),
+    ],
+)
+def test_the_docs_list_every_display_of_the_registry(page, start, kind):
+    """The README and the docs name every display (and display colour space) the
+    registry has: a new display entry without its docs fails here."""
+    listed = _paragraph((ROOT / page).read_text(), start)
+    displays = registry.DISPLAY_LIST if kind == "sdr" else registry.ALL_DISPLAY_LIST
+    names = [d.colorspace if kind == "space" else d.name for d in displays]
+    assert [n for n in names if f"`{n}`" not in listed] == [], page

@@ -31,6 +31,7 @@ from ocio_thinfilm.cli import main as cli
 from ocio_thinfilm.colour import colorimetry
 from ocio_thinfilm.io import read_image
 from ocio_thinfilm.lut import ocio_ops, view_transforms
+from ocio_thinfilm.lut.options import MapOptions
 from ocio_thinfilm.render import frames as render
 from ocio_thinfilm.render import processors, scenes
 
@@ -472,7 +473,7 @@ def test_missing_default_config_is_baked_first(tmp_path, monkeypatch):
 
     def small_bake(out, **kwargs):
         baked.append(Path(out))
-        return real_bake(out, clip_size=9)
+        return real_bake(out, options=MapOptions(clip_size=9))
 
     monkeypatch.setattr(processors, "DEFAULT_CONFIG", tmp_path / "thinfilm" / "config.ocio")
     monkeypatch.setattr(bake_module, "bake", small_bake)

@@ -195,12 +195,17 @@ def test_readme_headline_is_the_committed_reports():
 
 
 def test_report_outside_a_checkout_says_in_one_line_what_to_run(tmp_path, monkeypatch, capsys):
-    """Installed from a wheel, the package has no ``evaluation/`` beside it: the command
-    prints one line saying where the report runs, exit 2 (no ImportError traceback)."""
+    """Installed from a wheel, ``evaluation`` is not importable: the command prints one
+    line saying the report runs from a checkout, exit 2 (no ImportError traceback)."""
+    import sys
+
     from ocio_thinfilm.cli import report as report_cli
 
-    monkeypatch.setattr(report_cli, "CHECKOUT", tmp_path)
+    # None in sys.modules: ``import evaluation`` fails as where it is not installed
+    monkeypatch.setitem(sys.modules, "evaluation", None)
+    monkeypatch.setitem(sys.modules, "evaluation.report", None)
     assert main(["report", "--quick", "--out", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "checkout" in err[0] and ".[report]" in err[0], err
+    assert len(err) == 1 and report_cli.NEEDS_CHECKOUT in err[0], err
+    assert "checkout" in err[0] and ".[report]" in err[0], err
     assert not (tmp_path / "out").exists()

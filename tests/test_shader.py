@@ -30,6 +30,7 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.cli.main import main
 from ocio_thinfilm.export import shader
+from ocio_thinfilm.lut.options import MapOptions
 
 #: The target: float32 code values within 1e-3 (0.26 / 255) of the analytic view.
 TOLERANCE = 1e-3
@@ -216,7 +217,7 @@ def test_every_finite_input_gives_finite_codes_and_non_finite_ones_the_config_s(
 
 def test_glsl_uniforms_left_unset_or_invalid_give_the_exported_knobs(gl, sets):
     text = shader.shader_source(
-        "glsl", "sRGB", COMPRESS, compress_threshold=0.6, compress_limit=1.5
+        "glsl", "sRGB", COMPRESS, options=MapOptions(compress_threshold=0.6, compress_limit=1.5)
     )
     assert "uniform float ocio_thinfilm_threshold;" in text
     assert "uniform float ocio_thinfilm_limit;" in text
@@ -235,7 +236,9 @@ def test_glsl_uniforms_left_unset_or_invalid_give_the_exported_knobs(gl, sets):
 
 
 def test_dctl_sliders_and_built_ins(cxx):
-    text = shader.shader_source("dctl", "Rec.2100-PQ", COMPRESS, "ACEScct", compress_threshold=0.7)
+    text = shader.shader_source(
+        "dctl", "Rec.2100-PQ", COMPRESS, "ACEScct", options=MapOptions(compress_threshold=0.7)
+    )
     assert (
         "__DEVICE__ float3 transform(int p_Width, int p_Height, int p_X, int p_Y, "
         "float p_R, float p_G, float p_B)" in text
@@ -363,7 +366,10 @@ def test_library_refuses_bad_arguments_naming_them(kwargs, parameter):
     args.update(kwargs)
     knobs = {k: args.pop(k) for k in ("compress_threshold", "compress_limit") if k in args}
     with pytest.raises(ParameterError) as info:
-        shader.shader_source(args["lang"], args["display"], args["view"], args["source"], **knobs)
+        options = MapOptions(**knobs)  # a knob out of any range is refused here already
+        shader.shader_source(
+            args["lang"], args["display"], args["view"], args["source"], options=options
+        )
     assert info.value.parameter == parameter
 
 

@@ -39,6 +39,7 @@ from ocio_thinfilm.export.files import (
 )
 from ocio_thinfilm.io import is_stdout
 from ocio_thinfilm.lut import clip_lut
+from ocio_thinfilm.lut.options import MapOptions
 
 __all__ = ["register"]
 
@@ -49,40 +50,45 @@ _KNOB_OPTIONS = {
 }
 
 
-def _compress_knobs(args: argparse.Namespace, limit_max: float | None = None) -> dict[str, float]:
-    """Return the knobs as the library's keyword arguments, checked, and warn if untested.
+def _map_options(args: argparse.Namespace, limit_max: float | None = None) -> MapOptions:
+    """Return the options' knobs as one :class:`~ocio_thinfilm.lut.options.MapOptions`.
 
-    A knob out of range (a limit above ``limit_max`` too, where given) is a
-    ParameterError naming the library parameter (the command line names the option),
-    raised before any warning. Knobs outside the tested range
+    Made here, at the edge: a knob out of range (a limit above ``limit_max`` too, where
+    given) is a ParameterError naming the library parameter (the command line names the
+    option), raised before any warning. Knobs outside the tested range
     (:func:`ocio_thinfilm.lut.compress_lut.untested_knobs_note`) print one warning line
-    on stderr with the accuracy measured there.
+    on stderr with the accuracy the benchmark found there. ``--clip-size``, where the
+    command has it, goes in too.
     """
     from ocio_thinfilm.lut import compress_lut
 
-    names = tuple(dest for dest, _ in _KNOB_OPTIONS.values())
-    given = [
+    threshold, limit = (
         default if getattr(args, dest) is None else getattr(args, dest)
         for dest, default in _KNOB_OPTIONS.values()
-    ]
-    threshold, limit = compress_map.check_knobs(
-        *given, names=(names[0], names[1]), limit_max=limit_max
     )
+    clip_size = getattr(args, "clip_size", None)
+    options = MapOptions(
+        compress_threshold=threshold,
+        compress_limit=limit,
+        clip_size=clip_lut.CLIP_SIZE if clip_size is None else clip_size,
+    )
+    threshold, limit = options.knobs(limit_max=limit_max)
     note = compress_lut.untested_knobs_note(threshold, limit)
     if note is not None:
         command = " ".join(w for w in (args.command, getattr(args, "subcommand", None)) if w)
         print(f"ocio-thinfilm {command}: warning: {note}", file=sys.stderr)
-    return dict(zip(names, (threshold, limit), strict=True))
+    return options
 
 
-def _view_knobs(args: argparse.Namespace, limit_max: float | None = None) -> dict[str, float]:
+def _view_options(args: argparse.Namespace, limit_max: float | None = None) -> MapOptions | None:
     """Return the knobs of ``export view|shader``, refused for views other than the compression.
 
-    ``limit_max``: as :func:`_compress_knobs` (the shaders' largest limit).
+    ``None`` when no knob is given; ``limit_max``: as :func:`_map_options` (the shaders'
+    largest limit).
     """
     given = [o for o, (dest, _) in _KNOB_OPTIONS.items() if getattr(args, dest) is not None]
     if not given:
-        return {}
+        return None
     view = registry.as_view(args.view) if args.view in registry.VIEWS else None
     if view is None or view.kind != "compress":
         compress_view = registry.view_of_kind("compress").name
@@ -90,7 +96,7 @@ def _view_knobs(args: argparse.Namespace, limit_max: float | None = None) -> dic
             f"{given[0]} applies to 'export view|shader --view \"{compress_view}\"', "
             f"not --view {args.view!r}"
         )
-    return _compress_knobs(args, limit_max)
+    return _map_options(args, limit_max)
 
 
 def _add_knob_options(parser: argparse.ArgumentParser, what: str) -> None:
@@ -114,7 +120,7 @@ def _add_knob_options(parser: argparse.ArgumentParser, what: str) -> None:
 
 
 def _run_bake(args: argparse.Namespace) -> int:
-    knobs = _compress_knobs(args)
+    options = _map_options(args)
     if getattr(args, "into", None) or str(args.out).lower().endswith(".ocioz"):
         # --into CONFIG (merge into a studio config) and/or an .ocioz archive
         from ocio_thinfilm.config import merge
@@ -124,11 +130,10 @@ def _run_bake(args: argparse.Namespace) -> int:
             raise UsageError("--into needs --out DIR (or FILE.ocioz)")
         if args.luts is not None:
             raise UsageError("--luts goes with a plain bake, not with --into or .ocioz")
-        clip_size = bake_module.check_clip_size(args.clip_size)
         path = (
-            merged.bake_into(args.into, args.out, clip_size=clip_size, films=args.films, **knobs)
+            merged.bake_into(args.into, args.out, films=args.films, options=options)
             if args.into
-            else merged.bake_archive(args.out, clip_size=clip_size, films=args.films, **knobs)
+            else merged.bake_archive(args.out, films=args.films, options=options)
         )
         print(f"wrote {path}")
         if args.into:  # a merged config has the base config's profile: say who reads it
@@ -137,12 +142,7 @@ def _run_bake(args: argparse.Namespace) -> int:
             print(merge.profile_readers(ocio.Config.CreateFromFile(str(path))))
         return 0
     path = bake_module.bake(
-        args.out,
-        clip_size=args.clip_size,
-        show_progress=not args.quiet,
-        luts=args.luts,
-        films=args.films,
-        **knobs,
+        args.out, show_progress=not args.quiet, luts=args.luts, films=args.films, options=options
     )
     print(f"wrote {path}" + (f" and {args.luts}" if args.luts is not None else ""))
     return 0
@@ -260,7 +260,7 @@ def _run_view(args: argparse.Namespace) -> int:
         size=args.size,
         value_range=args.range,
         shaper=True if args.resolve_shaper else None,
-        **_view_knobs(args),
+        options=_view_options(args),
     )
     for path in paths:
         print(f"wrote {path}")
@@ -273,7 +273,7 @@ def _run_shader(args: argparse.Namespace) -> int:
 
     if args.lang is None:
         raise UsageError(f"--lang is needed for 'export shader': {' or '.join(shader.LANGUAGES)}")
-    knobs = _view_knobs(args, limit_max=shader.KNOB_LIMIT_MAX)
+    options = _view_options(args, limit_max=shader.KNOB_LIMIT_MAX)
     source = registry.REFERENCE if args.source is None else args.source
     out = args.out
     if out is None and args.display is not None and args.view is not None:
@@ -285,7 +285,7 @@ def _run_shader(args: argparse.Namespace) -> int:
         args.display,
         args.view,
         source,
-        **knobs,
+        options=options,
     )
     print(f"wrote {path}")
     return 0

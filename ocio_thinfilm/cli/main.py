@@ -19,10 +19,8 @@ command keeps:
   ``os._exit`` right after flushing its output, so there is no interpreter shutdown
   during which a signal could kill it silently.
 - Anything unexpected is one line too (exit 1); ``OCIO_THINFILM_DEBUG=1`` shows the
-  traceback.
-
-This module imports only the standard library at import time, so the handlers are in
-place before the heavy imports (numpy, colour-science, OpenColorIO) start.
+  traceback. This module imports only the standard library at import time, so the
+  handlers are in place before the heavy imports (numpy, colour-science, OCIO) start.
 """
 
 from __future__ import annotations

@@ -1,41 +1,42 @@
 """``ocio-thinfilm report``: measure everything on this machine, write reports/report.md.
 
-The report's code is not part of the installed package: it lives in the repository's
-``evaluation/`` folder beside ``benchmarks/`` (with matplotlib and mpmath, the
-``report`` extra), so the command runs from a checkout and says so in one line
-elsewhere.
+The report's code is not part of the installed package: it is the top-level
+``evaluation`` package of the repository, beside ``benchmarks/`` (with matplotlib and
+mpmath, the ``report`` extra). The command imports it as any package; where it is not
+importable (an installed wheel, no checkout) it says in one line to run from a checkout.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib.util
-import sys
 from pathlib import Path
 
 __all__ = ["register"]
 
-#: The checkout this module is in, if it is in one (evaluation/ beside ocio_thinfilm/).
-CHECKOUT = Path(__file__).resolve().parents[2]
+#: The one line ``report`` prints (exit 2) where ``evaluation`` is not importable.
+NEEDS_CHECKOUT = (
+    "the report needs a checkout of the repository (its evaluation/ folder is not "
+    "installed with the package): run it from the checkout's top folder, "
+    "pip install -e '.[report]' && python -m ocio_thinfilm report"
+)
 
 
 def _run_report():
-    """``evaluation.report.run_report`` from the checkout, or a one-line UsageError."""
+    """``evaluation.report.run_report``, or a one-line UsageError."""
     from ocio_thinfilm.checks import UsageError
 
-    if not (CHECKOUT / "evaluation" / "report" / "__init__.py").is_file():
-        raise UsageError(
-            "the report is not installed with the package; run it from a "
-            "checkout of the repository: pip install -e '.[report]' && "
-            "ocio-thinfilm report"
-        )
+    try:
+        found = importlib.util.find_spec("evaluation.report") is not None
+    except ImportError:  # no ``evaluation`` package at all
+        found = False
+    if not found:
+        raise UsageError(NEEDS_CHECKOUT)
     missing = [m for m in ("matplotlib", "mpmath") if importlib.util.find_spec(m) is None]
     if missing:
         raise UsageError(
             f"the report needs {' and '.join(missing)}: pip install -e '.[report]' in the checkout"
         )
-    if str(CHECKOUT) not in sys.path:
-        sys.path.insert(0, str(CHECKOUT))
     from evaluation.report import run_report
 
     return run_report

@@ -1,41 +1,20 @@
 """The constant-lightness parallelepiped clip (Smits & Meyer 1990, Section 3.2).
 
 Stage 3 of the pipeline. An out-of-gamut colour is pulled along the ray towards
-the grey of the same luminance Y on the display's neutral diagonal (black to the
-display's white, R = G = B -- not x = y = z) until it meets the display's RGB
-parallelepiped. Y is preserved; saturation drops; hue moves a little (more where a
-gamut face is nearly parallel to the plane of constant Y).
+the grey of the same luminance Y on the display's neutral diagonal (R = G = B) until it
+meets the display's RGB parallelepiped: Y is preserved, saturation drops. Two forms with
+identical results, each defined at every edge (in-gamut colours unchanged bit for bit,
+NaN pixels NaN, +-Inf finite and in gamut; docs/gamut_map.md, *Design notes*):
 
-Two forms with identical results (tested to 1e-9):
+- :func:`clip_XYZ` -- the paper's form in CIE XYZ (outcodes against the six planes);
+- :func:`clip_RGB` -- the faster form for colours in the display's linear RGB.
 
-- :func:`clip_XYZ` -- the paper's form in CIE XYZ: a Cohen-Sutherland style outcode
-  test against the six planes of the parallelepiped (three through the origin,
-  three parallel to them), the grey point ``W * Y / Y_W``, up to three plane
-  intersections, keep the one furthest from the input.
-- :func:`clip_RGB` -- the faster form the paper mentions for colours already in the
-  display's linear RGB: the same ray test against the unit cube.
+The clip is exactly U o L along the same ray (what the baked LUTs of
+:mod:`ocio_thinfilm.lut.clip_lut` rely on; a test checks it):
 
-Defined behaviour at every edge (both forms, float32 or float64 in, same dtype out):
-
-- in-gamut colours are returned unchanged (bit for bit);
-- ``Y <= 0`` gives black, ``Y >= Y_W`` gives white;
-- a NaN anywhere in a pixel gives NaN in that pixel only;
-- components are first limited to +-1e100, so +-Inf and huge values give a finite,
-  in-gamut result (the limit of the clip as the component grows);
-- a colour exactly on a face or edge is inside; rays nearly parallel to a face are
-  fine because every division is by ``grey - value`` of a channel that is out of
-  [0, 1] while the grey is inside (0, 1), so its magnitude exceeds min(g, 1 - g).
-
-The clip's two factors, along the same ray: the clip moves a colour towards its grey
-until it is inside all six faces, so it is exactly U o L (what the baked LUTs of
-:mod:`ocio_thinfilm.lut.clip_lut` rely on; a test checks U o L against :func:`clip_XYZ`):
-
-- :func:`clip_black_faces_RGB` -- L, the clip against the faces through black
-  (R, G, B >= 0) only;
-- :func:`clip_white_faces_RGB` -- U, the clip against the faces through white
-  (R, G, B <= 1) only;
-- :func:`clip_white_faces_continued_RGB` -- U for Y <= 1 and its analytic
-  continuation past white (the values the white pass's nodes brighter than white hold);
+- :func:`clip_black_faces_RGB` -- L, the clip against the faces through black only;
+- :func:`clip_white_faces_RGB` -- U, the clip against the faces through white only;
+- :func:`clip_white_faces_continued_RGB` -- U and its analytic continuation past white;
 - :func:`luminance_weights` -- the display's row ``w`` with ``Y = w . RGB``.
 
 Baselines for comparison: :func:`clamp_RGB` (per-channel clamp) and

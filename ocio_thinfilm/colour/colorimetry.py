@@ -13,17 +13,15 @@ Conventions
 
 Public functions
 ----------------
-- :func:`spectral_weights` -- (W, 3) integration weights for a wavelength grid
-- :func:`reflectance_to_XYZ` -- weights applied to a spectrum array
+- :func:`spectral_weights`, :func:`reflectance_to_XYZ` -- (W, 3) integration weights for
+  a wavelength grid, and applied to a spectrum array
 - :func:`film_XYZ` -- XYZ of the paper's single-film models (band-limited by default)
 - :func:`morpho_XYZ` -- XYZ of the Morpho multilayer (Eq. 9 + 14) against angle
-- :func:`matrix_XYZ_to_RGB`, :func:`XYZ_to_RGB`, :func:`RGB_to_XYZ`
-- :func:`white_XYZ`, :func:`delta_E2000`, :func:`spectral_locus_XYZ`, :func:`cmfs_at`
+- :func:`matrix_XYZ_to_RGB`, :func:`XYZ_to_RGB`, :func:`RGB_to_XYZ`, :func:`white_XYZ`,
+  :func:`delta_E2000`, :func:`spectral_locus_XYZ`, :func:`cmfs_at`
 
-Importing colour-science takes about 3 s, longer than rendering a scene. The few
-arrays taken from its datasets (weights, matrices, CMF samples) are therefore
-memoised on disk (:func:`persistent`), keyed by the arguments, the code that makes
-them and colour-science's version: only the first process imports colour.
+colour-science is slow to import, so the arrays taken from its datasets are memoised on
+disk (:func:`persistent`, keyed by the code): only the first process imports colour.
 """
 
 from __future__ import annotations

@@ -1,39 +1,16 @@
 """A soft constant-lightness gamut compression: the paper's ray, a smooth curve on it.
 
 Beside the hard clip of Smits & Meyer (1990), Section 3.2 (:mod:`.clip`), and built on
-the same ray: an out-of-gamut colour moves towards the grey of its own luminance Y (the
-display's white scaled to Y, on the neutral axis R = G = B), so Y is kept exactly and
-the result lies on the segment between the colour and its grey. The clip stops at the
-boundary, so every colour beyond it lands on it: a saturated ramp that leaves the gamut
-turns into a flat band. The compression instead measures how far out the colour is and
-maps that distance with a smooth, strictly increasing curve:
-
-- the normalised distance ``d`` is the colour's distance from its grey divided by the
-  distance from the grey to the gamut boundary along the same ray (``d = 1`` on the
-  boundary, ``d < 1`` inside). In display-linear RGB, with ``g = Y`` the grey's channel
-  value, it is ``d = max_i max((g - c_i) / g, (c_i - g) / (1 - g))``: the largest of
-  the ray's fractions to the six faces of the parallelepiped;
-- ``d <= threshold``: unchanged;
-- ``threshold < d < limit``: the distance becomes :func:`compression_curve` (d), the
-  power curve of the ACES 1.3 reference gamut compression (S-2020-001's
-  ``compress()``, power 1.2): value and slope continuous at the threshold, strictly
-  increasing, reaching 1 (the boundary) at ``limit``;
-- ``d >= limit``: the clip (the curve's value would pass 1).
-
-So the compression keeps ``1 - threshold`` of each display's gamut untouched towards
-its boundary (measured in ``benchmarks/bench_compress.py``), keeps the shading of
-colours up to ``limit`` boundary distances out, and equals the clip for colours further
-out and for every colour with Y <= 0 (black) or Y >= 1 (white).
+the same ray towards the grey of the colour's own luminance Y (kept exactly): where the
+clip stops every colour beyond the boundary on it, the compression maps the colour's
+normalised distance ``d`` (1 on the boundary) with :func:`compression_curve`, the power
+curve of the ACES 1.3 reference gamut compression (S-2020-001, power 1.2): unchanged up
+to ``threshold``, reaching the boundary at ``limit``, the clip beyond. The distance, the
+curve and why: docs/compress.md, *Design notes*.
 
 :func:`compress_RGB` (display-linear RGB) and :func:`compress_XYZ` have the clip's
-defined behaviour at every edge (NaN pixels stay NaN, +-Inf and huge values give a
-finite in-gamut result, float32 or float64 in, same dtype out).
-
-The compression is the clip of a smooth squeeze along the same ray, and both factor
-into a part for the faces through black and one for the faces through white, so
-``compress = U o S_w o L o S_b`` exactly (L and U: the clip's factors,
-:func:`ocio_thinfilm.colour.clip.clip_black_faces_RGB` and
-:func:`~ocio_thinfilm.colour.clip.clip_white_faces_RGB`; the baked view,
+defined behaviour at every edge. The compression factors as
+``compress = U o S_w o L o S_b`` exactly (L and U: the clip's factors; the baked view,
 :mod:`ocio_thinfilm.lut.compress_lut`, is one LUT per factor):
 
 - :func:`soft_black_RGB` -- S_b, the squeeze by the distance to the faces through black;
@@ -440,7 +417,7 @@ def soft_black_RGB(
 
     ``sigma(d) = f(d) / d`` with ``f`` the unclipped :func:`compression_curve` (1 up to
     the threshold): the colour moves along the ray of Smits & Meyer (1990), Section 3.2,
-    to the curve's distance from its grey, measured against the faces through black
+    to the curve's distance from its grey, taken against the faces through black
     alone. Homogeneous of degree 1 like the clip's L, and Y is kept.
 
     Examples

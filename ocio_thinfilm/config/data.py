@@ -24,7 +24,6 @@ from ocio_thinfilm import registry
 from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config import spaces
 from ocio_thinfilm.config.luts import (
-    KNOB_NAMES,
     clip_luts,
     clip_passes,
     compress_luts,
@@ -43,6 +42,7 @@ from ocio_thinfilm.lut import (
     tables,
     view_transforms,
 )
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "CONFIG_NAME",
@@ -230,12 +230,8 @@ def view_parts(
 def config_data(
     *,
     inline: bool = False,
-    clip_size: int = clip_lut.CLIP_SIZE,
-    film_size: int = tables.FILM_SIZE,
-    morpho_size: int = tables.MORPHO_SIZE,
     films: Sequence[Any] = (),
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> ConfigData:
     """Return the config as data.
 
@@ -245,51 +241,27 @@ def config_data(
         Put the LUTs into the transforms (an in-memory config needing no files, for
         baking and tests) if ``True``; otherwise (the default) colour spaces refer to
         ``luts/*.clf`` by FileTransform.
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-    film_size : int, optional
-        Entries of the thickness tables (default
-        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
-    morpho_size : int, optional
-        Entries of the Morpho angle table (default
-        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
     films : sequence of Film, optional
         Users' films (:class:`ocio_thinfilm.physics.films.Film`): one input colour
         space and named transform each (:func:`film_parts`); none (the default) leaves
         the config as it is without them.
-    compress_threshold : float, optional
-        The Constant-Lightness Compress view's threshold, in (0, 1) (default
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD`): the fraction of the distance
-        to the gamut boundary left untouched.
-    compress_limit : float, optional
-        Its limit, above 1 (default :data:`ocio_thinfilm.colour.compress.LIMIT`): the
-        distance mapped onto the boundary. The view's description, its LUTs' and its
-        named transforms' state both knobs.
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`: the
+        Constant-Lightness Compress view's knobs, the clip size, the table sizes);
+        ``None`` (default) for the defaults.
 
     Returns
     -------
     ConfigData
         Every colour space, view transform, display, role, file rule and named
         transform, and the LUT files (``luts``).
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range
-        (:func:`ocio_thinfilm.colour.compress.check_knobs`).
-    ValueError
-        For a size out of range.
     """
-    threshold, limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=KNOB_NAMES
-    )
-    by_display = clip_luts(clip_size)
-    soft_by_display = compress_luts(clip_size, compress_threshold=threshold, compress_limit=limit)
-    luts = lut_files(by_display, film_size, morpho_size, soft_by_display)
-    cs = spaces.scene_colorspaces() + thin_film_colorspaces(
-        luts, inline=inline, film_size=film_size, morpho_size=morpho_size
-    )
+    options = as_options(options)
+    threshold, limit = options.knobs()
+    by_display = clip_luts(options=options)
+    soft_by_display = compress_luts(options=options)
+    luts = lut_files(by_display, compress_by_display=soft_by_display, options=options)
+    cs = spaces.scene_colorspaces() + thin_film_colorspaces(luts, inline=inline, options=options)
     film_spaces, film_named, film_luts = film_parts(
         films, inline=inline, taken=[c["name"] for c in cs]
     )
@@ -327,8 +299,7 @@ def thin_film_colorspaces(
     luts: dict[str, ocio_ops.Transform],
     *,
     inline: bool = False,
-    film_size: int = tables.FILM_SIZE,
-    morpho_size: int = tables.MORPHO_SIZE,
+    options: MapOptions | None = None,
 ) -> list[dict[str, Any]]:
     """Return the thin-film input colour spaces of the registry as data.
 
@@ -338,17 +309,22 @@ def thin_film_colorspaces(
         The LUT files (:func:`lut_files`).
     inline : bool, optional
         Put the tables into the transforms (``True``) or refer to their files.
-    film_size, morpho_size : int, optional
-        Entries of the thickness and angle tables (their descriptions state them).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`; here the
+        table sizes, which the descriptions state); ``None`` (default) for the
+        defaults.
 
     Returns
     -------
     list of dict
         Keyword arguments of :func:`ocio_thinfilm.config.factories.colorspace_factory`.
     """
+    options = as_options(options)
     cs = []
     for space in registry.THIN_FILM_LIST:
-        table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
+        table = tables.thin_film_table(
+            space, film_size=options.film_size, morpho_size=options.morpho_size
+        )
         if space.table == "film":
             encoding = (
                 "Pixel value (all three channels equal) = optical thickness t' = "

@@ -9,14 +9,13 @@ FileTransform or put inline (:func:`lut_reference`).
 from __future__ import annotations
 
 from ocio_thinfilm import registry
-from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config.factories import file_transform
 from ocio_thinfilm.lut import clip_lut, compress_lut, ocio_ops, tables
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "named_lut",
     "clip_luts",
-    "KNOB_NAMES",
     "compress_luts",
     "lut_files",
     "lut_reference",
@@ -47,73 +46,46 @@ def named_lut(stem: str) -> str:
     return f"{stem}.clf"
 
 
-def clip_luts(clip_size: int = clip_lut.CLIP_SIZE) -> dict:
+def clip_luts(*, options: MapOptions | None = None) -> dict:
     """Return the clip LUTs of every SDR display of the registry.
 
     Parameters
     ----------
-    clip_size : int, optional
-        Edge length of the clip's black pass, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`; here its
+        ``clip_size``); ``None`` (default) for the defaults.
 
     Returns
     -------
     dict
         Display name (:data:`ocio_thinfilm.registry.GAMUT_DISPLAYS`) -> its
         :class:`~ocio_thinfilm.lut.clip_lut.ClipLUT` (each computed once, then cached).
-
-    Raises
-    ------
-    ValueError
-        For a ``clip_size`` outside [9, 129].
     """
-    return {display: clip_lut.clip_lut(display, clip_size) for display in registry.GAMUT_DISPLAYS}
+    size = as_options(options).clip_size
+    return {display: clip_lut.clip_lut(display, size) for display in registry.GAMUT_DISPLAYS}
 
 
-#: The names of the compression's knobs in the functions that bake the config.
-KNOB_NAMES = ("compress_threshold", "compress_limit")
-
-
-def compress_luts(
-    clip_size: int = clip_lut.CLIP_SIZE,
-    *,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
-) -> dict:
+def compress_luts(*, options: MapOptions | None = None) -> dict:
     """Return the compression LUTs of every SDR display of the registry.
 
     Parameters
     ----------
-    clip_size : int, optional
-        Edge length of the clip LUTs they run with, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-    compress_threshold : float, optional
-        The compression's threshold, in (0, 1) (default
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD`).
-    compress_limit : float, optional
-        The compression's limit, above 1 (default
-        :data:`ocio_thinfilm.colour.compress.LIMIT`).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`: the
+        compression's knobs and the clip size they run with); ``None`` (default) for
+        the defaults.
 
     Returns
     -------
     dict
         Display name (:data:`ocio_thinfilm.registry.GAMUT_DISPLAYS`) -> its
         :class:`~ocio_thinfilm.lut.compress_lut.CompressLUT`.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range
-        (:func:`ocio_thinfilm.colour.compress.check_knobs`).
-    ValueError
-        For a ``clip_size`` outside [9, 129].
     """
-    threshold, limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=KNOB_NAMES
-    )
+    options = as_options(options)
+    threshold, limit = options.knobs()
     return {
         display: compress_lut.compress_lut(
-            display, threshold=threshold, limit=limit, clip_size=clip_size
+            display, threshold=threshold, limit=limit, clip_size=options.clip_size
         )
         for display in registry.GAMUT_DISPLAYS
     }
@@ -121,9 +93,9 @@ def compress_luts(
 
 def lut_files(
     luts_by_display: dict,
-    film_size: int = tables.FILM_SIZE,
-    morpho_size: int = tables.MORPHO_SIZE,
+    *,
     compress_by_display: dict | None = None,
+    options: MapOptions | None = None,
 ) -> dict:
     """Return every LUT file the config uses.
 
@@ -134,15 +106,12 @@ def lut_files(
     ----------
     luts_by_display : dict
         SDR display (name or registry display) -> its ClipLUT (:func:`clip_luts`).
-    film_size : int, optional
-        Entries of the thickness tables (default
-        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
-    morpho_size : int, optional
-        Entries of the Morpho angle table (default
-        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
     compress_by_display : dict, optional
         SDR display -> its CompressLUT (:func:`compress_luts`); ``None`` (default) for
         no compression files.
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`; here the
+        table sizes); ``None`` (default) for the defaults.
 
     Returns
     -------
@@ -155,9 +124,12 @@ def lut_files(
         Naming ``luts_by_display`` or ``compress_by_display``, for a key that is not an
         SDR display of the registry.
     """
+    options = as_options(options)
     files = {}
     for space in registry.THIN_FILM_LIST:
-        table = tables.thin_film_table(space, film_size=film_size, morpho_size=morpho_size)
+        table = tables.thin_film_table(
+            space, film_size=options.film_size, morpho_size=options.morpho_size
+        )
         files[named_lut(space.lut_stem)] = table.transform()
     for display, lut in luts_by_display.items():
         entry = registry.as_display(display, hdr=False, parameter="luts_by_display")

@@ -2,42 +2,20 @@
 
 The result of ``ocio-thinfilm bake --into CONFIG`` is a new ``Config`` (written by
 :mod:`ocio_thinfilm.export.merged`, also as an OCIO archive, ``.ocioz``).
+:func:`merge_config` takes such a config (the ACES studio/CG configs OCIO ships built in,
+``ocio://...``) and adds, leaving everything else of it as it was:
 
-Studios run the ACES studio/CG configs (OCIO ships them built in, ``ocio://...``) and
-add to them. :func:`merge_config` takes such a config and adds, leaving everything
-else of it as it was:
+- the three thin-film input spaces (scene-referred);
+- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression`` (and ``Channel
+  Clamp``) on every SDR display whose display colour space has a supported gamut's
+  primaries and white, and on every HDR display that is one of the registry's, both
+  found by running the display colour space's own processor (:func:`match_displays`);
+- named transforms (the clip per matched gamut, the three tables) and ``luts`` on the
+  search path, with the LUT files the additions use.
 
-- the three thin-film input spaces (scene-referred: the table to CIE-XYZ-D65, then the
-  config's own conversion to its scene reference);
-- on every SDR display whose display colour space has the primaries and white of a
-  gamut the clip supports (sRGB / Rec.709, Display P3 / P3-D65, Rec.2020) -- found by
-  running the display colour space's own processor on test colours, whatever its name
-  and encoding -- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression``
-  (and ``Channel Clamp`` on displays without an ``Un-tone-mapped`` view, which is that
-  baseline already), each through one view transform per gamut;
-- the same views on every HDR display that is one of the registry's (BT.2020 or P3-D65
-  primaries, D65, ST 2084 or 1000 cd/m2 HLG), found the same way: its codes decoded with
-  colour-science's EOTF must be the gamut's RGB times one luminance per unit of its
-  display reference (100 cd/m2 in the ACES configs). The view transform shows Y = 1 at
-  203 cd/m2 there, as the project's own HDR displays do;
-- named transforms: the clip per matched gamut (display-linear in and out) and the
-  three tables (pixel value in, CIE XYZ out);
-- ``luts`` on the search path, with the LUT files the additions use.
-
-The conversions come from the config itself, through its ``cie_xyz_d65_interchange``
-role, as OCIO converts between scene and display colour spaces: when that colour space
-is display-referred (the ACES configs), scene reference -> CIE-XYZ-D65 is the config's
-default view transform followed by the interchange space's own transform (an identity
-there); a scene-referred interchange space gives it directly. The result must be
-linear (checked numerically), or the merge is refused.
-
-Why not ``PyOpenColorIO.ConfigMerger`` (OCIO 2.6): its reference-space adaptation
-(``adjust_input_reference_space``) finds each config's interchange space by heuristics
-against the built-in CG config, and its display/view merge adds views only to displays
-of the same name, so the input config would have to replicate the base's display names
-and display colour spaces just to be merged away again. Editing a copy of the base
-config with OCIO's Config API does exactly this job in a few calls, and everything not
-added is the base's own objects, untouched.
+The conversions come from the config's ``cie_xyz_d65_interchange`` role; the result
+must be linear (checked numerically), or the merge is refused. How displays are matched
+and why not ``PyOpenColorIO.ConfigMerger``: docs/studio.md.
 
 Public names: :func:`load_base`, :func:`match_displays`, :func:`merge_config`.
 """
@@ -54,9 +32,9 @@ import numpy as np
 from ocio_thinfilm import config, registry, reproducible
 from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import clip, colorimetry
-from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.io import StrPath
-from ocio_thinfilm.lut import clip_lut, ocio_ops
+from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "load_base",
@@ -445,10 +423,8 @@ def match_displays(cfg: ocio_ops.Config) -> dict[str, tuple[str, str]]:
 def merge_config(
     base: ocio_ops.Config,
     *,
-    clip_size: int = clip_lut.CLIP_SIZE,
     films: Sequence[Any] = (),
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> tuple[ocio_ops.Config, dict[str, ocio_ops.Transform], dict[str, tuple[str, str]]]:
     """Return ``base`` plus the additions (module docstring) as a new config.
 
@@ -462,17 +438,12 @@ def merge_config(
     base : PyOpenColorIO.Config
         The config to extend (:func:`load_base`); it is not changed (a deep copy is
         extended). Its profile must be 2.1 or newer.
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
     films : sequence of Film, optional
         Users' films (:class:`ocio_thinfilm.physics.films.Film`): an input colour space
         and a named transform each, as the built-in thin-film spaces.
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``; checked by
-        :func:`ocio_thinfilm.colour.compress.check_knobs`, a ParameterError naming the
-        parameter).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -491,16 +462,50 @@ def merge_config(
         (:func:`interchange`), no display matches, or a colour space, view transform,
         named transform or view to add already exists (merged before?).
     """
-    compress_threshold, compress_limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=config.KNOB_NAMES
-    )
+    options = as_options(options)
+    _check_profile(base)
+    conversions = interchange(base)
+    matches, unit_of, views_for = _merge_targets(base)
+    gamut_entries = [d for d in registry.DISPLAY_LIST if d in {t.gamut for t in views_for}]
+    if films:
+        _check_film_names(base, films)
+    data = config.config_data(films=films, options=options)
+    maps = (config.clip_luts(options=options), config.compress_luts(options=options))
+    film_names = [f.name for f in films]
+    cfg = copy.deepcopy(base)
+    _add_input_spaces(cfg, data, film_names, conversions[0])
+    _add_view_transforms(cfg, data, views_for, unit_of, maps, conversions)
+    _add_display_views(cfg, base, matches)
+    _add_named_transforms(cfg, data, [g.name for g in gamut_entries], film_names, maps)
+    _finish(cfg, base)
+    names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
+    names += [config.named_lut(config.film_lut_stem(f)) for f in films]
+    names += [
+        config.named_lut(stem(w))
+        for g in gamut_entries
+        for stem in (g.clip_lut_stem, g.compress_lut_stem)
+        for w in (False, True)
+    ]
+    return cfg, {name: data.luts[name] for name in names}, matches
+
+
+def _check_profile(base):
+    """Refuse a base config whose profile is older than :data:`MIN_PROFILE`."""
     version = (base.getMajorVersion(), base.getMinorVersion())
     if version < MIN_PROFILE:
         raise ValueError(
             f"the config's profile version {version[0]}.{version[1]} is below "
             f"{MIN_PROFILE[0]}.{MIN_PROFILE[1]} (needed by the clip's LUT ops)"
         )
-    scene_to_xyz, xyz_to_display = interchange(base)
+
+
+def _merge_targets(base):
+    """Return the matched displays, the HDR targets' luminance units and the targets.
+
+    ``(matches, unit_of, views_for)``: one view transform per target; an HDR display of
+    another luminance unit than the first one matched to the same target is dropped
+    from ``matches`` (left alone).
+    """
     matches, units = _matches(base)
     if not matches:
         raise ValueError(
@@ -508,64 +513,62 @@ def merge_config(
             f"{', '.join(clip.DISPLAYS)} (or Rec.709)"
         )
     targets = {g for _, g in matches.values()}
-    # one view transform per target: an HDR display of another luminance unit than the
-    # first one matched to the same target is left alone
     unit_of: dict[str, float] = {}
     for display, (_, target) in list(matches.items()):
         if display in units:
             if unit_of.setdefault(target, units[display]) != units[display]:
                 del matches[display]
     views_for = [d for d in registry.ALL_DISPLAY_LIST if d.name in targets]
-    gamut_entries = [d for d in registry.DISPLAY_LIST if d in {t.gamut for t in views_for}]
-    gamuts = [d.name for d in gamut_entries]
-    if films:  # the base config's names and aliases too (inactive spaces included)
-        from ocio_thinfilm.physics.films import check_names
+    return matches, unit_of, views_for
 
-        ocio = ocio_ops.module()
-        spaces = base.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)
-        check_names(
-            films,
-            [n for cs in spaces for n in [cs.getName(), *cs.getAliases()]]
-            + list(base.getNamedTransformNames()),
-        )
-    data = config.config_data(
-        clip_size=clip_size,
-        films=films,
-        compress_threshold=compress_threshold,
-        compress_limit=compress_limit,
+
+def _check_film_names(base, films):
+    """Refuse films named as a colour space, alias or named transform of ``base``.
+
+    Inactive colour spaces included.
+    """
+    from ocio_thinfilm.physics.films import check_names
+
+    ocio = ocio_ops.module()
+    spaces = base.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)
+    check_names(
+        films,
+        [n for cs in spaces for n in [cs.getName(), *cs.getAliases()]]
+        + list(base.getNamedTransformNames()),
     )
-    film_names = [f.name for f in films]
-    by_display = config.clip_luts(clip_size)
-    soft_by_display = config.compress_luts(
-        clip_size, compress_threshold=compress_threshold, compress_limit=compress_limit
-    )
-    cfg = copy.deepcopy(base)
 
-    def _taken(name):
-        return (
-            cfg.getColorSpace(name) is not None
-            or cfg.getViewTransform(name) is not None
-            or cfg.getNamedTransform(name) is not None
-        )
 
-    # input spaces: table -> CIE-XYZ-D65 -> the config's scene reference
-    spaces = [
-        s
-        for s in data.colorspaces
-        if s["name"] in registry.THIN_FILM_SPACES or s["name"] in film_names
-    ]
-    for spec in spaces:
-        if _taken(spec["name"]):
-            raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
+def _refuse_taken(cfg, name):
+    """Refuse to add ``name`` where ``cfg`` has a colour space, view or named transform."""
+    if (
+        cfg.getColorSpace(name) is not None
+        or cfg.getViewTransform(name) is not None
+        or cfg.getNamedTransform(name) is not None
+    ):
+        raise ValueError(f"the config already has {name!r} (merged before?)")
+
+
+def _add_input_spaces(cfg, data, film_names, scene_to_xyz):
+    """Add the input spaces: table -> CIE-XYZ-D65 -> the config's scene reference."""
+    for spec in data.colorspaces:
+        if spec["name"] not in registry.THIN_FILM_SPACES and spec["name"] not in film_names:
+            continue
+        _refuse_taken(cfg, spec["name"])
         spec = dict(
             spec,
             to_reference=ocio_ops.group([spec["to_reference"], ocio_ops.inverse([scene_to_xyz])]),
         )
         cfg.addColorSpace(config.colorspace_factory(**spec))
 
-    # view transforms: scene reference -> CIE-XYZ-D65 -> the view -> display reference
+
+def _add_view_transforms(cfg, data, views_for, unit_of, maps, conversions):
+    """Add one view transform per target and merged view.
+
+    Scene reference -> CIE-XYZ-D65 -> the view -> display reference.
+    """
+    scene_to_xyz, xyz_to_display = conversions
+    by_display, soft_by_display = maps
     described = {vt["name"]: vt for vt in data.view_transforms}
-    added_views = []
     for target in views_for:
         gamut = target.gamut.name
         # HDR: the project's display reference has Y = 1 at 203 cd/m2, the base's
@@ -577,8 +580,7 @@ def merge_config(
         )
         for view in MERGED_VIEWS:
             spec = described[f"{view} - {target.name}"]
-            if _taken(spec["name"]):
-                raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
+            _refuse_taken(cfg, spec["name"])
             parts = config.view_parts(
                 target, view, lut=by_display[gamut], luts=data.luts, compress=soft_by_display[gamut]
             )
@@ -592,6 +594,11 @@ def merge_config(
                     ),
                 )
             )
+
+
+def _add_display_views(cfg, base, matches):
+    """Add the merged views to the matched displays, and to the active views."""
+    added_views = []
     for display, (cs_name, gamut) in matches.items():
         views = list(base.getViews(display))
         for kind, view in zip(MERGED_KINDS, MERGED_VIEWS, strict=True):
@@ -605,7 +612,11 @@ def merge_config(
     active = list(base.getActiveViews())
     if active:
         cfg.setActiveViews(", ".join(active + [v for v in added_views if v not in active]))
-    # named transforms: the clip per gamut and the tables
+
+
+def _add_named_transforms(cfg, data, gamuts, film_names, maps):
+    """Add the named transforms: the clip and compression per gamut, and the tables."""
+    by_display, soft_by_display = maps
     film_named = [
         nt
         for nt in data.named_transforms
@@ -618,9 +629,12 @@ def merge_config(
         )
         + film_named
     ):
-        if _taken(spec["name"]):
-            raise ValueError(f"the config already has {spec['name']!r} (merged before?)")
+        _refuse_taken(cfg, spec["name"])
         cfg.addNamedTransform(config.named_transform_factory(**spec))
+
+
+def _finish(cfg, base):
+    """Put ``luts`` on the search path and say in the description what was added."""
     paths = list(cfg.getSearchPaths())
     if config.LUT_DIRECTORY not in paths:
         cfg.addSearchPath(config.LUT_DIRECTORY)
@@ -630,12 +644,3 @@ def merge_config(
         "thin-film input spaces, the constant-lightness clip views and "
         "named transforms."
     )
-    names = [config.named_lut(s.lut_stem) for s in registry.THIN_FILM_LIST]
-    names += [config.named_lut(config.film_lut_stem(f)) for f in films]
-    names += [
-        config.named_lut(stem(w))
-        for g in gamut_entries
-        for stem in (g.clip_lut_stem, g.compress_lut_stem)
-        for w in (False, True)
-    ]
-    return cfg, {name: data.luts[name] for name in names}, matches

@@ -14,18 +14,16 @@ from pathlib import Path
 from typing import Any
 
 from ocio_thinfilm import config, registry
-from ocio_thinfilm.checks import ParameterError, as_count
+from ocio_thinfilm.checks import ParameterError
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.export import view as export_view
 from ocio_thinfilm.export.files import CLF_WRITER, FORMATS, lut_contents, progress_bar, write_lut
 from ocio_thinfilm.io import StrPath, check_xml, claim_directory, transaction
 from ocio_thinfilm.lut import clip_lut, tables
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "DEFAULT_CONFIG_DIR",
-    "CLIP_SIZES",
-    "check_clip_size",
     "write_luts",
     "write_checked_config",
     "write_config",
@@ -36,41 +34,6 @@ __all__ = [
 ]
 
 DEFAULT_CONFIG_DIR = "configs/thinfilm"
-#: Edge lengths the clip LUTs may have.
-CLIP_SIZES = (9, 129)
-
-
-def check_clip_size(clip_size: int) -> int:
-    """Return ``clip_size`` as an int in the range :data:`CLIP_SIZES` allows.
-
-    Parameters
-    ----------
-    clip_size : int
-        Edge length of the clip LUTs: an integer in [9, 129] (a float equal to one is
-        accepted, :func:`ocio_thinfilm.checks.as_count`).
-
-    Returns
-    -------
-    int
-
-    Raises
-    ------
-    TypeError
-        If ``clip_size`` is not a number.
-    ParameterError
-        Naming ``clip_size``, for a bool, a non-integer or a value outside [9, 129].
-
-    Examples
-    --------
-    >>> check_clip_size(65)
-    65
-    >>> check_clip_size(7)
-    Traceback (most recent call last):
-    ...
-    ocio_thinfilm.checks.ParameterError: clip_size must be an integer in [9, 129], got 7
-    """
-    lo, hi = CLIP_SIZES
-    return as_count("clip_size", clip_size, lo, hi)
 
 
 def _check_staged_clfs(directory, final):
@@ -141,13 +104,9 @@ def write_checked_config(cfg: Any, directory: StrPath, processors: Iterable[Sequ
 def write_config(
     directory: StrPath,
     *,
-    clip_size: int = clip_lut.CLIP_SIZE,
-    film_size: int = tables.FILM_SIZE,
-    morpho_size: int = tables.MORPHO_SIZE,
     progress: Callable[[str], object] | None = None,
     films: Sequence[Any] = (),
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> Path:
     """Write ``config.ocio`` and ``luts/*.clf`` into the (existing, empty) ``directory``.
 
@@ -160,25 +119,14 @@ def write_config(
     ----------
     directory : str or os.PathLike
         The directory to write into.
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
-    film_size : int, optional
-        Entries of the thickness tables (default
-        :data:`ocio_thinfilm.lut.tables.FILM_SIZE`).
-    morpho_size : int, optional
-        Entries of the Morpho angle table (default
-        :data:`ocio_thinfilm.lut.tables.MORPHO_SIZE`).
     progress : callable, optional
         ``progress(step_name)``, called once per file written (the LUT file's name,
         then ``"config.ocio"``).
     films : sequence of Film, optional
         Users' films (:func:`load_films`): an input colour space each.
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
-        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
-        ParameterError naming the parameter).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -187,8 +135,6 @@ def write_config(
 
     Raises
     ------
-    ValueError
-        For a size out of range.
     PyOpenColorIO.Exception
         If the config does not validate or a processor cannot be built.
     OSError
@@ -197,14 +143,7 @@ def write_config(
     import PyOpenColorIO as ocio
 
     directory = Path(directory)
-    data = config.config_data(
-        clip_size=clip_size,
-        film_size=film_size,
-        morpho_size=morpho_size,
-        films=films,
-        compress_threshold=compress_threshold,
-        compress_limit=compress_limit,
-    )
+    data = config.config_data(films=films, options=options)
     write_luts(directory, data.luts, progress)
     cfg = config.generate_config(data, validate=False, working_dir=directory)
     # every FileTransform resolves and every processor builds
@@ -293,12 +232,10 @@ def export_set(directory: StrPath, *, show_progress: bool = False) -> list[Path]
 def bake(
     out: StrPath = DEFAULT_CONFIG_DIR,
     *,
-    clip_size: int = clip_lut.CLIP_SIZE,
     show_progress: bool = False,
     luts: StrPath | None = None,
     films: StrPath | Sequence[Any] | None = None,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> Path:
     """Write the config folder (config.ocio + luts/*.clf) and, optionally, the LUT set.
 
@@ -313,9 +250,6 @@ def bake(
     ----------
     out : str or os.PathLike, optional
         The config directory (default :data:`DEFAULT_CONFIG_DIR`).
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (:func:`check_clip_size`;
-        default :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
     show_progress : bool, optional
         Show a progress bar on stderr when it is a terminal (default ``False``).
     luts : str or os.PathLike, optional
@@ -326,13 +260,10 @@ def bake(
         read from one: each adds an input colour space and its named transform. Bad
         films are refused (a ParameterError naming ``films``) before anything is
         written.
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs in the config (defaults 0.8 and 1.3,
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
-        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
-        ParameterError naming the parameter).
-        The standalone LUT set (``luts``) holds no Compress view: the knobs do not
-        change it.
+    options : MapOptions, optional
+        The config's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`, checked
+        when it is made, before anything is written); ``None`` (default) for the
+        defaults. The standalone LUT set (``luts``) does not depend on them.
 
     Returns
     -------
@@ -341,22 +272,16 @@ def bake(
 
     Raises
     ------
-    TypeError
-        If ``clip_size`` is not a number.
     ParameterError
-        Naming ``clip_size``, ``out`` or ``luts``: a size out of range, a directory
-        this tool may not write (:func:`ocio_thinfilm.io.claim_directory`), or ``luts``
-        overlapping ``out``.
+        Naming ``out`` or ``luts``: a directory this tool may not write
+        (:func:`ocio_thinfilm.io.claim_directory`), or ``luts`` overlapping ``out``.
     ValueError
         If a directory cannot be created or written.
     OSError
         ``"cannot write ...: ..."`` if a file cannot be written; nothing is then
         replaced.
     """
-    clip_size = check_clip_size(clip_size)
-    compress_threshold, compress_limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=config.KNOB_NAMES
-    )
+    options = as_options(options)
     film_list = load_films(films)
     if film_list:  # the tables are computed (and a bad film refused) before any claim
         from ocio_thinfilm.lut import film_tables
@@ -367,21 +292,14 @@ def bake(
     # the thin-film tables, two clip and two compression LUTs per SDR display, config.ocio
     n_files = len(registry.THIN_FILM_LIST) + 4 * len(registry.GAMUT_DISPLAYS) + 1
     n_files += len(film_list)
-    stages = _stages(int(clip_size), compress_threshold, compress_limit)
+    stages = _stages(options)
     bar = progress_bar(show_progress, total=len(stages) + n_files, desc=f"bake {claim.path}")
     try:
         _run_stages(stages, bar)
         with transaction() as tx:
             stage = tx.directory(claim)
             try:
-                write_config(
-                    stage,
-                    clip_size=int(clip_size),
-                    progress=_advance(bar),
-                    films=film_list,
-                    compress_threshold=compress_threshold,
-                    compress_limit=compress_limit,
-                )
+                write_config(stage, progress=_advance(bar), films=film_list, options=options)
             except OSError as error:
                 raise OSError(f"cannot write {claim.path}: {error.strerror or error}") from None
             except Exception:
@@ -419,10 +337,8 @@ def _run_stages(stages: Sequence[tuple[str, Callable[[], object]]], bar: Any) ->
             bar.update(1)
 
 
-def _stages(
-    clip_size: int, compress_threshold: float, compress_limit: float
-) -> list[tuple[str, Callable[[], object]]]:
-    """Return the bake's long computations as (stage name, call), knobs checked.
+def _stages(options: MapOptions) -> list[tuple[str, Callable[[], object]]]:
+    """Return the bake's long computations as (stage name, call), for ``options``.
 
     Each is cached once computed (in the process, and the clip LUTs on disk), so the
     config written next reuses them: running them first only lets the progress name
@@ -432,12 +348,13 @@ def _stages(
 
     from ocio_thinfilm.lut import compress_lut
 
+    sizes = dict(film_size=options.film_size, morpho_size=options.morpho_size)
     stages: list[tuple[str, Callable[[], object]]] = [
-        (f"table {space.name}", partial(tables.thin_film_table, space))
+        (f"table {space.name}", partial(tables.thin_film_table, space, **sizes))
         for space in registry.THIN_FILM_LIST
     ]
     stages += [
-        (f"clip {display}", partial(clip_lut.clip_lut, display, clip_size))
+        (f"clip {display}", partial(clip_lut.clip_lut, display, options.clip_size))
         for display in registry.GAMUT_DISPLAYS
     ]
     stages += [
@@ -446,9 +363,9 @@ def _stages(
             partial(
                 compress_lut.compress_lut,
                 display,
-                threshold=compress_threshold,
-                limit=compress_limit,
-                clip_size=clip_size,
+                threshold=options.compress_threshold,
+                limit=options.compress_limit,
+                clip_size=options.clip_size,
             ),
         )
         for display in registry.GAMUT_DISPLAYS

@@ -2,30 +2,16 @@
 
 Every file is written by OpenColorIO's own writers
 (``GroupTransform.write`` for CLF, ``Baker`` for .cube / .spi1d / .spi3d / .csp),
-atomically (:mod:`ocio_thinfilm.io`), and without timestamps, so equal inputs give equal bytes.
+atomically (:mod:`ocio_thinfilm.io`), and without timestamps, so equal inputs give equal
+bytes. Every file takes the value itself as input (no hand scaling):
 
-Standalone LUTs (``export``)
-----------------------------
-Every file takes the value itself as input -- no hand scaling: a host applies it to
-the pixel as it is.
+- ``film`` / ``morpho``: a 1D table over ``--range`` (thickness in um, or cos(theta));
+  output CIE-XYZ-D65, or with ``--display`` the clipped display-linear RGB;
+- ``clip``: the constant-lightness clip of one display as a 3D LUT over display-linear
+  RGB in ``--range``;
+- ``view`` (:mod:`ocio_thinfilm.export.view`): a whole display/view of the config.
 
-- ``film`` / ``morpho``: a 1D table sampled uniformly over ``--range`` (thickness in
-  micrometres, or cos(theta) for Morpho). CLF carries the range as a matrix in front
-  of the LUT1D, ``.cube`` as ``LUT_1D_INPUT_RANGE``, ``.spi1d`` as ``From MIN MAX``.
-  Output: CIE-XYZ-D65, or with ``--display`` the display-linear RGB after the
-  constant-lightness clip. ``--index n`` makes the input the physical thickness t
-  (t' = n t, normal incidence).
-- ``clip``: the constant-lightness clip of one display as a 3D LUT over
-  display-linear RGB in ``--range`` (default -0.5..1.5; 0 and 1 fall on grid
-  nodes, so in-gamut colours are reproduced exactly). CLF carries the range as a
-  matrix, ``.cube`` as an exact affine 1D shaper (``LUT_1D_INPUT_RANGE``) in front of
-  the 3D LUT, ``.csp`` as its prelut. ``.spi3d`` has no input domain (it always takes
-  0..1), so it is refused unless ``--range 0 1``. Output: clipped display-linear
-  RGB. (The config's own clip LUTs work in projective chromaticity charts through
-  ``FixedFunction XYZ_TO_xyY`` ops, which these formats cannot hold.)
-- ``view`` (:mod:`ocio_thinfilm.export.view`): a whole display/view of the config from any of its
-  colour spaces, input the raw pixel values of that space, output display code
-  values.
+How each format carries the range: docs/config.md, *Design notes*.
 
 Functions: :func:`lut_contents`, :func:`write_lut`, :func:`export_lut`, :func:`progress_bar`
 (the shipped set, ``luts/``: :func:`ocio_thinfilm.export.bake.export_set`).

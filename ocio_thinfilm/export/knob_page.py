@@ -1,38 +1,20 @@
 """A static HTML page to choose the compression's knobs: the exported GLSL in WebGL2.
 
 ``docs/knobs.html`` is written by :func:`write_knob_page` and committed. Opened from disk
-(``file://``, no server), it draws test colours through the ``Constant-Lightness Clip``
-and ``Constant-Lightness Compress`` views of an SDR display, each view being the GLSL of
-:func:`ocio_thinfilm.export.shader.shader_source` (one WebGL2 program per shader; the
-CIE-XYZ-D65 test colours uploaded as an RGBA32F texture and read with ``texelFetch``;
-the view's code values written to the canvas). Sliders set the compression's uniforms
-``ocio_thinfilm_threshold`` and ``ocio_thinfilm_limit``, a select the display, and the
-page prints the knobs ready to paste: the ``ocio-thinfilm bake`` and ``export shader``
-options (the DCTL's input space from a second select: :data:`SOURCES`, ACEScct unless
-chosen) and the DCTL sliders' values. On the ramps, marks show where the threshold, the
-selected display's gamut boundary (boundary distance d = 1) and the limit fall.
+(``file://``, no server), it draws test colours (:func:`sample_rows`: the spectrum,
+Smits & Meyer's Figure 4; a soap film's colours, Eq. 7; saturated ramps at constant
+luminance) through the ``Constant-Lightness Clip`` and ``Constant-Lightness Compress``
+views of an SDR display, each the GLSL of
+:func:`ocio_thinfilm.export.shader.shader_source` in a WebGL2 program. Sliders set the
+compression's uniforms, a select the display, and the page prints the knobs ready to
+paste (the ``ocio-thinfilm bake`` and ``export shader`` options, the DCTL sliders'
+values; the DCTL's input space from :data:`SOURCES`).
 
-The test colours (:func:`sample_rows`) are computed here, by the package:
-
-- the spectrum, 380-700 nm, at two luminances (:func:`.colorimetry.spectral_locus_XYZ`;
-  Smits & Meyer's Figure 4);
-- a soap film's colours over optical thickness 0-1500 nm (:func:`.colorimetry.film_XYZ`,
-  phase change: Eq. 7);
-- three saturated ramps of light at constant luminance from the display white's grey
-  towards monochromatic colours, out to well beyond every display's gamut.
-
-The page takes settings from its URL query, ``?display=sRGB&threshold=0.6&limit=1.5``:
-its script sets the select and the sliders and dispatches their ``change`` and ``input``
-events, as a user's hand would. ``&readback=1`` then writes the canvas read back with
-``gl.readPixels`` (and the knobs and display it drew with) as JSON into the
-``<pre id="readback">`` element, with the commands, the ramps' axis labels, the marks'
-positions and the canvas's top (``tests/test_knob_page.py`` reads it from headless
-Chromium's ``--dump-dom``); ``&source=ACEScg`` sets the input space. The style sheet and
-the script are :mod:`.knob_page_script`'s.
-
-Display P3 draws into a canvas whose ``drawingBufferColorSpace`` is ``"display-p3"``
-where the browser has it; Rec.2020 codes are shown as they are (no browser shows a
-canvas as BT.2020 / BT.1886).
+The page takes settings from its URL query (``?display=sRGB&threshold=0.6&limit=1.5``,
+``&source=ACEScg``); ``&readback=1`` writes what it drew as JSON into
+``<pre id="readback">`` (``tests/test_knob_page.py`` reads it from headless Chromium).
+The style sheet and the script are :mod:`.knob_page_script`'s. More: docs/compress.md,
+*Design notes*.
 """
 
 from __future__ import annotations
@@ -262,18 +244,32 @@ def _json_script(data: object) -> str:
     return json.dumps(data, separators=(",", ":"), ensure_ascii=True).replace("</", "<\\/")
 
 
-_NOTES = {
-    "sRGB": "",
-    "Display P3": (
-        "Display P3 codes, drawn into a canvas tagged display-p3 (drawingBufferColorSpace): "
-        "a colour-managed browser shows them as Display P3 on a wide-gamut screen."
-    ),
-    "Rec.2020": (
-        "Rec.2020 codes are shown as they are: no browser shows a canvas as BT.2020 with "
-        "BT.1886, so these codes appear as if they were sRGB (duller, other hues). Compare "
-        "the knobs with them; judge the colours on a Rec.2020 monitor."
-    ),
-}
+#: The canvas colour spaces browsers have (WebGL's ``drawingBufferColorSpace``), by the
+#: display whose codes they show as they are meant.
+_CANVAS_SPACES = {"sRGB": "srgb", "Display P3": "display-p3"}
+
+
+def _note(display: registry.Display) -> str:
+    """Return what the page says under the canvas when ``display`` is chosen."""
+    if display.name == "sRGB":
+        return ""
+    if display.name in _CANVAS_SPACES:
+        return (
+            f"{display.name} codes, drawn into a canvas tagged "
+            f"{_CANVAS_SPACES[display.name]} (drawingBufferColorSpace): a colour-managed "
+            f"browser shows them as {display.name} on a wide-gamut screen."
+        )
+    same = display.primaries == registry.DISPLAY_LIST[0].primaries
+    looks = "the same hues, other tones" if same else "duller, other hues"
+    return (
+        f"{display.name} codes are shown as they are: browsers show a canvas only as "
+        f"{' or '.join(_CANVAS_SPACES)}, so these codes appear as if they were sRGB "
+        f"({looks}). Compare the knobs with them; judge the colours on a {display.name} "
+        "display."
+    )
+
+
+_NOTES = {d.name: _note(d) for d in registry.DISPLAY_LIST}
 _NO_P3 = (
     "This browser cannot tag a WebGL canvas as Display P3: the P3 codes are shown as if "
     "they were sRGB (duller, other hues)."
@@ -291,14 +287,46 @@ _MARK_LABEL = 13
 
 def _body(rows: list[Row], layout: list[Band], height: int) -> str:
     """Return the page's visible HTML: controls, the labelled canvas, commands, notes."""
+    return _intro() + _controls() + _figure(rows, layout, height) + _commands() + _notes()
+
+
+def _intro() -> str:
+    """Return the page's title and what the compression does."""
+    return """<h1>Constant-Lightness Compress: choose the knobs</h1>
+<p>Smits &amp; Meyer's constant-lightness gamut clip (<i>Newton's Colors</i>, 1990,
+Section 3.2) moves colours outside the display's gamut towards the grey of the same
+luminance until they reach the gamut's boundary. The compression keeps that ray and the
+luminance and softens the cut: colours up to <b>threshold</b> of the way to the boundary stay
+as they are, and the rest is compressed with the ACES 1.3 power curve so that a colour
+<b>limit</b> boundary distances out lands on the boundary (further out: the clip). Each
+test row below is drawn through the clip (top strip) and through the compression (bottom
+strip); both are the GLSL that <code>ocio-thinfilm export shader</code> writes, run by your
+browser's WebGL2.</p>
+"""
+
+
+def _controls() -> str:
+    """Return the knobs: the display, the threshold and limit sliders, the defaults."""
     e = html.escape
     t_lo, t_hi, t_step = shader.THRESHOLD_SLIDER
     l_lo, l_hi, l_step = shader.LIMIT_SLIDER
     options = "".join(f'<option value="{e(d)}">{e(d)}</option>' for d in DISPLAYS)
-    sources = "".join(
-        f'<option value="{e(s)}"{" selected" if s == DEFAULT_SOURCE else ""}>{e(s)}</option>'
-        for s in SOURCES
-    )
+    return f"""<div id="controls">
+<label>Display <select id="display">{options}</select></label>
+<label>Threshold <input type="range" id="threshold" min="{t_lo:g}" max="{t_hi:g}"
+ step="{t_step:g}" value="{compress.THRESHOLD:g}"> <output id="threshold-value"></output></label>
+<label>Limit <input type="range" id="limit" min="{l_lo:g}" max="{l_hi:g}" step="{l_step:g}"
+ value="{compress.LIMIT:g}"> <output id="limit-value"></output></label>
+<button id="defaults" type="button">Defaults ({compress.THRESHOLD:g} / {compress.LIMIT:g})</button>
+</div>
+<p id="note"></p>
+<p id="status"></p>
+"""
+
+
+def _figure(rows: list[Row], layout: list[Band], height: int) -> str:
+    """Return the canvas with its strips' labels and the ramps' marks, and their key."""
+    e = html.escape
     labels, marks = [], []
     for band in layout:
         row = rows[band.row]
@@ -319,27 +347,7 @@ def _body(rows: list[Row], layout: list[Band], height: int) -> str:
                 f"<span>{letter}</span></div>"
                 for name, letter, title in _MARKS
             ]
-    return f"""<h1>Constant-Lightness Compress: choose the knobs</h1>
-<p>Smits &amp; Meyer's constant-lightness gamut clip (<i>Newton's Colors</i>, 1990,
-Section 3.2) moves colours outside the display's gamut towards the grey of the same
-luminance until they reach the gamut's boundary. The compression keeps that ray and the
-luminance and softens the cut: colours up to <b>threshold</b> of the way to the boundary stay
-as they are, and the rest is compressed with the ACES 1.3 power curve so that a colour
-<b>limit</b> boundary distances out lands on the boundary (further out: the clip). Each
-test row below is drawn through the clip (top strip) and through the compression (bottom
-strip); both are the GLSL that <code>ocio-thinfilm export shader</code> writes, run by your
-browser's WebGL2.</p>
-<div id="controls">
-<label>Display <select id="display">{options}</select></label>
-<label>Threshold <input type="range" id="threshold" min="{t_lo:g}" max="{t_hi:g}"
- step="{t_step:g}" value="{compress.THRESHOLD:g}"> <output id="threshold-value"></output></label>
-<label>Limit <input type="range" id="limit" min="{l_lo:g}" max="{l_hi:g}" step="{l_step:g}"
- value="{compress.LIMIT:g}"> <output id="limit-value"></output></label>
-<button id="defaults" type="button">Defaults ({compress.THRESHOLD:g} / {compress.LIMIT:g})</button>
-</div>
-<p id="note"></p>
-<p id="status"></p>
-<div id="figure">
+    return f"""<div id="figure">
 <div id="labels" style="height:{height}px">
 {chr(10).join(labels)}
 </div>
@@ -354,11 +362,27 @@ browser's WebGL2.</p>
 <p>On the ramps, <b>T</b> marks the threshold, <b>1</b> the selected display's gamut
 boundary (boundary distance d = 1: where the clip starts) and <b>L</b> the limit (a mark
 beyond a ramp's end is not shown).</p>
-<h2>Paste</h2>
+"""
+
+
+def _commands() -> str:
+    """Return the paste section: the DCTL's input space and the commands."""
+    e = html.escape
+    sources = "".join(
+        f'<option value="{e(s)}"{" selected" if s == DEFAULT_SOURCE else ""}>{e(s)}</option>'
+        for s in SOURCES
+    )
+    return f"""<h2>Paste</h2>
 <p><label>The DCTL's input space (the timeline's colour space)
 <select id="source">{sources}</select></label></p>
 <pre id="commands"></pre>
-<h2>Reading the strips</h2>
+"""
+
+
+def _notes() -> str:
+    """Return the notes on reading the strips and where the page comes from."""
+    e = html.escape
+    return f"""<h2>Reading the strips</h2>
 <ul>
 <li>A lower <b>threshold</b> starts the compression earlier: more of the in-gamut colours
 move (they lose saturation), and the shading of the colours outside is kept more

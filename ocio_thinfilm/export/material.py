@@ -17,8 +17,8 @@ the tables as float OpenEXR images (docs/materials.md):
   ``(f (N - 1) + 0.5) / N`` bilinearly
   (:func:`~ocio_thinfilm.lut.material_tables.texture_coordinate`);
 - RGB of the space, white = the perfect reflector under the film's illuminant; colours
-  outside the space's gamut keep their negative channels (measured in
-  docs/materials.md: renderers carry them, and the config's views map them at display).
+  outside the space's gamut keep their negative channels (how far: docs/materials.md;
+  renderers carry them, and the config's views map them at display).
 """
 
 from __future__ import annotations
@@ -550,7 +550,7 @@ def export_material(
         the others by :func:`space_stem` (``<stem>_LinearRec2020_R.exr``); the host
         writers get the first's record with the others in ``others``.
     size : str or tuple of int, optional
-        ``"WxH"`` or ``(W, H)`` (default the measured
+        ``"WxH"`` or ``(W, H)`` (default
         :func:`~ocio_thinfilm.lut.material_tables.default_resolution`).
     hosts : mapping, optional
         File name -> host writer: each is called with the written tables
@@ -621,6 +621,19 @@ def export_material(
         if bar is not None:
             bar.close()
     tables = [_in_space(film, XYZ, name, gamut) for name in spaces]
+    images, records = _images_and_records(film, tables, stems, out)
+    files = dataclasses.replace(records[0], others=tuple(records[1:]))
+    texts: dict[str, str | bytes] = {name: writer(files) for name, writer in (hosts or {}).items()}
+    for name, binary in (binaries or {}).items():
+        texts[name] = binary(files, tables[0])
+    _write_files(out, images, texts)
+    return [out / name for name in (*images, *texts)]
+
+
+def _images_and_records(
+    film: Film, tables: list[MaterialTable], stems: list[str], out: Path
+) -> tuple[dict[str, tuple[str, np.ndarray, MaterialTable]], list[TableFiles]]:
+    """Return the EXRs to write (name -> quantity, pixels, table) and the spaces' records."""
     images: dict[str, tuple[str, np.ndarray, MaterialTable]] = {}
     records = []
     for table, tables_stem in zip(tables, stems, strict=True):
@@ -641,10 +654,15 @@ def export_material(
                 outside=outside_gamut(table),
             )
         )
-    files = dataclasses.replace(records[0], others=tuple(records[1:]))
-    texts: dict[str, str | bytes] = {name: writer(files) for name, writer in (hosts or {}).items()}
-    for name, binary in (binaries or {}).items():
-        texts[name] = binary(files, tables[0])
+    return images, records
+
+
+def _write_files(
+    out: Path,
+    images: dict[str, tuple[str, np.ndarray, MaterialTable]],
+    texts: dict[str, str | bytes],
+) -> None:
+    """Write the tables' EXRs and the host files into ``out``, all or none."""
     with atomic_directory(out, parameter="out", keep_others=True) as stage:
         for name, (quantity, pixels, table) in images.items():
             # the EXR's first scanline is the top: cos theta descending
@@ -660,4 +678,3 @@ def export_material(
                 (stage / name).write_bytes(text)
             else:
                 (stage / name).write_text(text, encoding="utf-8")
-    return [out / name for name in (*images, *texts)]

@@ -25,10 +25,9 @@ __all__ = ["MAX_SECONDS", "NS_PER_SAMPLE", "available_memory", "table_cost", "ch
 #: before anything is computed (:func:`check_size`).
 MAX_SECONDS = 600.0
 #: Time per sample (a texel at one wavelength, ns) of one worker of
-#: :func:`~ocio_thinfilm.lut.material_tables.film_angle_XYZ`, measured by
-#: benchmarks/bench_material.py on the development machine (the 10 um soap film, where
-#: per-row costs are amortised, on a busy 2-core machine: an upper estimate;
-#: docs/materials.md): the time estimate of :func:`check_size`.
+#: :func:`~ocio_thinfilm.lut.material_tables.film_angle_XYZ`, an upper estimate from
+#: benchmarks/bench_material.py (docs/materials.md): the time estimate of
+#: :func:`check_size`.
 NS_PER_SAMPLE = 45.0
 #: Bytes per texel of one table while it is made and written: its XYZ, RGB and clipped
 #: RGB (float64) and the EXR's float32 pixels.

@@ -18,13 +18,12 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from ocio_thinfilm import config
 from ocio_thinfilm.checks import ParameterError
-from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.config import merge
 from ocio_thinfilm.export.bake import load_films, write_checked_config, write_config, write_luts
 from ocio_thinfilm.io import StrPath, atomic_directory, atomic_file, check_writable
-from ocio_thinfilm.lut import clip_lut, ocio_ops
+from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = ["write_merged", "bake_into", "write_archive", "bake_archive"]
 
@@ -46,10 +45,8 @@ def write_merged(
     source: StrPath,
     directory: StrPath,
     *,
-    clip_size: int = clip_lut.CLIP_SIZE,
     films: Sequence[Any] = (),
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> tuple[Path, dict[str, tuple[str, str]]]:
     """Write the merged config (``config.ocio``, ``luts/``) into the existing ``directory``.
 
@@ -66,17 +63,12 @@ def write_merged(
         (:func:`~ocio_thinfilm.config.merge.load_base`).
     directory : str or os.PathLike
         The directory to write into.
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
     films : sequence of Film, optional
         Users' films (:func:`ocio_thinfilm.export.bake.load_films`), added as input
         colour spaces.
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
-        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
-        ParameterError naming the parameter).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -100,13 +92,7 @@ def write_merged(
     """
     ocio = ocio_ops.module()
     base = merge.load_base(source)
-    cfg, luts, matches = merge.merge_config(
-        base,
-        clip_size=clip_size,
-        films=films,
-        compress_threshold=compress_threshold,
-        compress_limit=compress_limit,
-    )
+    cfg, luts, matches = merge.merge_config(base, films=films, options=options)
     directory = Path(directory)
     _copy_base_files(base, source, directory)
     write_luts(directory, luts)
@@ -161,10 +147,8 @@ def bake_into(
     source: StrPath,
     out: StrPath,
     *,
-    clip_size: int = clip_lut.CLIP_SIZE,
     films: StrPath | Sequence[Any] | None = None,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> Path:
     """Merge into the base config and write the result: ``bake --into SOURCE --out OUT``.
 
@@ -176,17 +160,12 @@ def bake_into(
         An ``.ocioz`` archive to write atomically (:func:`write_archive`), or an output
         directory: new, empty or written by an earlier run (its files are committed
         together, ``config.ocio`` included).
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
     films : str, os.PathLike or sequence of Film, optional
         A film file or films (:func:`ocio_thinfilm.export.bake.load_films`), added as
         input colour spaces.
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
-        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
-        ParameterError naming the parameter).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -206,29 +185,26 @@ def bake_into(
     OSError
         If a file cannot be written.
     """
-    knobs = compress_map.check_knobs(compress_threshold, compress_limit, names=config.KNOB_NAMES)
+    options = as_options(options)
     film_list = load_films(films)
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."), create=False)
-    compress = dict(zip(config.KNOB_NAMES, knobs, strict=True))
     if out.suffix.lower() == ".ocioz":
         with tempfile.TemporaryDirectory() as tmp:
-            path, _ = write_merged(source, tmp, clip_size=clip_size, films=film_list, **compress)
+            path, _ = write_merged(source, tmp, films=film_list, options=options)
             return write_archive(path, out)
     if out.exists() and not out.is_dir():
         raise ParameterError("out", f" {out}: not a directory")
     with atomic_directory(out) as tmp:
-        write_merged(source, tmp, clip_size=clip_size, films=film_list, **compress)
+        write_merged(source, tmp, films=film_list, options=options)
     return out / "config.ocio"
 
 
 def bake_archive(
     out: StrPath,
     *,
-    clip_size: int = clip_lut.CLIP_SIZE,
     films: StrPath | Sequence[Any] | None = None,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> Path:
     """Write the project's config as an archive: ``bake --out thinfilm.ocioz``.
 
@@ -236,16 +212,11 @@ def bake_archive(
     ----------
     out : str or os.PathLike
         The ``.ocioz`` archive to write, atomically.
-    clip_size : int, optional
-        Edge length of the clip LUTs, an integer in [9, 129] (default
-        :data:`ocio_thinfilm.lut.clip_lut.CLIP_SIZE`).
     films : str, os.PathLike or sequence of Film, optional
         A film file or films, as for :func:`ocio_thinfilm.export.bake.bake`.
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3,
-        :data:`ocio_thinfilm.colour.compress.THRESHOLD` and ``LIMIT``), checked before
-        anything is written (:func:`ocio_thinfilm.colour.compress.check_knobs`: a
-        ParameterError naming the parameter).
+    options : MapOptions, optional
+        The bake's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -255,22 +226,14 @@ def bake_archive(
     Raises
     ------
     ValueError
-        If ``out``'s directory cannot be written, or for a ``clip_size`` out of range.
+        If ``out``'s directory cannot be written.
     OSError
         If the archive cannot be written.
     """
-    compress_threshold, compress_limit = compress_map.check_knobs(
-        compress_threshold, compress_limit, names=config.KNOB_NAMES
-    )
+    options = as_options(options)
     film_list = load_films(films)
     out = Path(out)
     check_writable(out.parent if str(out.parent) else Path("."), create=False)
     with tempfile.TemporaryDirectory() as tmp:
-        path = write_config(
-            tmp,
-            clip_size=clip_size,
-            films=film_list,
-            compress_threshold=compress_threshold,
-            compress_limit=compress_limit,
-        )
+        path = write_config(tmp, films=film_list, options=options)
         return write_archive(path, out)

@@ -3,50 +3,22 @@
 Where a host runs code per pixel, the ``Constant-Lightness Clip`` and
 ``Constant-Lightness Compress`` views need no LUT: the map is a few lines of arithmetic
 (Smits & Meyer 1990, Section 3.2). :func:`shader_source` writes the whole view, from an
-input colour space to display code values, as one function:
-
-1. the input's decoding and matrix to CIE-XYZ-D65, each stage limited to +-1e6 the way
-   the config's colour spaces and views limit it (NaN and -Inf become the lowest value,
-   +Inf the highest, as OCIO's Range does);
-2. an HDR display's scale into its SDR gamut: XYZ / k for PQ (k = peak / 203); for HLG
-   the BT.2100 inverse OOTF to scene light (ITU-R BT.2100-2, Table 5);
-3. XYZ -> the display's linear RGB and the map: the grey of the same luminance Y (the
-   display white scaled to Y, on R = G = B), the normalised distance ``d`` to the
-   display's parallelepiped along the ray from it (the largest of the fractions to the
-   six faces), and the scale ``k`` of the distance: ``1`` up to the threshold, the ACES
-   1.3 power curve (S-2020-001, power 1.2) to the limit, ``1 / d`` (the clip) beyond;
-   colours with ``Y <= 0`` are black, ``Y >= 1`` white (:mod:`ocio_thinfilm.colour.clip`
-   and :mod:`ocio_thinfilm.colour.compress` are the same map in NumPy);
-4. the display's encoding: the sRGB piecewise curve (IEC 61966-2-1), BT.1886's
-   ``L ** (1 / 2.4)``, SMPTE ST 2084 with Y = 1 at 203 cd/m2, or the BT.2100 HLG OETF
-   of the scene light.
-
-Both languages carry the view's inverse too (display code values -> the input space,
-the colour of the display's volume that the view maps onto each code: the
-compression's preimage at most ``limit`` boundary distances out, as the ACES gamut
-compression's ``invert``): GLSL ``vec3 ocio_thinfilm_view_inverse(vec3 code)``, the DCTL's
-``Invert`` check box.
-
-The clip is the compression with threshold = limit = 1. Colours whose ray ends on the
-boundary get the channels that meet a face set exactly to it (0 or 1), so display
-encodings with an infinite slope at 0 (BT.1886, ST 2084) do not turn float32 round-off
-into visible code values.
+input colour space to display code values, as one function (and its inverse): the
+input's decoding to CIE-XYZ-D65, an HDR display's scale into its SDR gamut (BT.2100
+inverse OOTF for HLG, ITU-R BT.2100-2 Table 5), the map along the ray to the grey of the
+same luminance (:mod:`ocio_thinfilm.colour.clip`, :mod:`ocio_thinfilm.colour.compress`;
+the ACES 1.3 power curve, S-2020-001), and the display's encoding (IEC 61966-2-1 sRGB,
+BT.1886, SMPTE ST 2084, BT.2100 HLG).
 
 - **GLSL** (:data:`LANGUAGES` ``"glsl"``): ``vec3 ocio_thinfilm_view(vec3 rgb)``, GLSL 3.30
-  and GLSL ES 3.00, no ``#version`` line (a host includes it: three.js, game engines,
-  Flame and Baselight Matchbox). The compression declares ``uniform float
-  ocio_thinfilm_threshold;`` and ``uniform float ocio_thinfilm_limit;``; uniforms a host
-  leaves unset (0) or sets outside ``0 < threshold < 1 < limit <= 100`` give the knobs the
-  file was exported with.
-- **DCTL** (``"dctl"``): the transform DCTL entry point ``__DEVICE__ float3
-  transform(int p_Width, int p_Height, int p_X, int p_Y, float p_R, float p_G, float
-  p_B)``; the compression has two ``DEFINE_UI_PARAMS`` sliders, ``Threshold`` and
-  ``Limit``, and every DCTL an ``Invert`` check box. Only DCTL's documented built-ins
-  (``_powf``, ``_fmaxf``, ``_sqrtf``, ``_logf``, ``_expf``, ``_exp2f``, ``_log2f``,
-  ``_saturatef``, ``make_float3``).
+  and GLSL ES 3.00, no ``#version`` line; the compression's uniforms
+  ``ocio_thinfilm_threshold`` and ``ocio_thinfilm_limit``;
+- **DCTL** (``"dctl"``): the transform DCTL entry point, ``Threshold`` and ``Limit``
+  sliders and an ``Invert`` check box; only DCTL's documented built-ins.
 
 Every constant (matrices, luminance weights, scales) comes from the same registry and
-colorimetry the config is built from.
+colorimetry the config is built from. The steps, the edge cases and the host contract
+in full: docs/shaders.md, *Design notes*.
 """
 
 from __future__ import annotations
@@ -56,10 +28,10 @@ from pathlib import Path
 from ocio_thinfilm import __version__, registry
 from ocio_thinfilm.checks import ParameterError, as_choice
 from ocio_thinfilm.colour import compress
-from ocio_thinfilm.config.luts import KNOB_NAMES
 from ocio_thinfilm.export import shader_parts
 from ocio_thinfilm.export.shader_language import TOKENS
 from ocio_thinfilm.io import StrPath, check_output_file, write_text
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "LANGUAGES",
@@ -151,8 +123,7 @@ def shader_source(
     view: str,
     source: str = registry.REFERENCE,
     *,
-    compress_threshold: float = compress.THRESHOLD,
-    compress_limit: float = compress.LIMIT,
+    options: MapOptions | None = None,
 ) -> str:
     """Return the view's map as GLSL or DCTL source code.
 
@@ -166,11 +137,11 @@ def shader_source(
         ``"Constant-Lightness Clip"`` or ``"Constant-Lightness Compress"``.
     source : str, optional
         The input colour space (:data:`SHADER_SOURCES`), default ``CIE-XYZ-D65``.
-    compress_threshold, compress_limit : float, optional
-        The compression's knobs, threshold and limit, as the code's defaults (the GLSL's
-        fallback for unset uniforms, the DCTL sliders' defaults): ``0 < threshold < 1 <
-        limit <=`` :data:`KNOB_LIMIT_MAX` (the names of ``export view`` and ``bake``).
-        Ignored by the clip.
+    options : MapOptions, optional
+        The knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`; ``None`` for the
+        defaults): the compression's threshold and limit are the code's defaults (the
+        GLSL's fallback for unset uniforms, the DCTL sliders' defaults), the limit at
+        most :data:`KNOB_LIMIT_MAX`. The clip ignores them.
 
     Returns
     -------
@@ -193,38 +164,13 @@ def shader_source(
     >>> "DCTLUI_SLIDER_FLOAT" in dctl, "DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert" in dctl
     (False, True)
     """
-    as_choice("lang", lang, LANGUAGES)
-    as_choice("display", display, registry.ALL_DISPLAYS)
-    as_choice("view", view, SHADER_VIEWS)
-    if registry.space_kind(source) == "thin-film":
-        raise ParameterError(
-            "source",
-            f" {source!r} is a spectral table, not a formula: its views are LUTs "
-            "(export view); the shaders take one of " + ", ".join(SHADER_SOURCES),
-        )
-    as_choice("source", source, SHADER_SOURCES)
-    t, lim = compress.check_knobs(
-        compress_threshold, compress_limit, names=KNOB_NAMES, limit_max=KNOB_LIMIT_MAX
-    )
+    _check_arguments(lang, display, view, source)
+    knobs = as_options(options).knobs(limit_max=KNOB_LIMIT_MAX)
     soft = bool(SHADER_MAPS[registry.as_view(view).kind])
     L = TOKENS[lang]
     entry = registry.as_display(display)
-    parts = [
-        _header(L, lang, source, entry, view, (t, lim) if soft else None),
-    ]
-    if soft and lang == "glsl":
-        parts.append("uniform float ocio_thinfilm_threshold;\nuniform float ocio_thinfilm_limit;\n")
-    if soft and lang == "dctl":
-        t_lo, t_hi, t_step = THRESHOLD_SLIDER
-        l_lo, l_hi, l_step = LIMIT_SLIDER
-        parts.append(
-            "DEFINE_UI_PARAMS(ocio_thinfilm_threshold, Threshold, DCTLUI_SLIDER_FLOAT, "
-            f"{t:g}, {min(t_lo, t):g}, {max(t_hi, t):g}, {t_step:g})\n"
-            "DEFINE_UI_PARAMS(ocio_thinfilm_limit, Limit, DCTLUI_SLIDER_FLOAT, "
-            f"{lim:g}, {min(l_lo, lim):g}, {max(l_hi, lim):g}, {l_step:g})\n"
-        )
-    if lang == "dctl":
-        parts.append("DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert, DCTLUI_CHECK_BOX, 0)\n")
+    parts = [_header(L, lang, source, entry, view, knobs if soft else None)]
+    parts += _declarations(lang, knobs if soft else None)
     parts += [
         shader_parts.helpers_code(L),
         shader_parts.input_code(L, source),
@@ -236,19 +182,70 @@ def shader_source(
         shader_parts.undisplay_code(L, entry, soft),
         shader_parts.output_code(L, source),
     ]
-    if soft:
-        check = (
-            f"if (!(t > {L.lit(0.0)} && t < {L.lit(1.0)} && l > {L.lit(1.0)} && "
-            f"l <= {L.lit(KNOB_LIMIT_MAX)})) {{ t = {L.lit(t)}; l = {L.lit(lim)}; }}"
+    parts.append(_entry_points(L, lang, knobs if soft else None))
+    return "\n".join(p.strip("\n") + "\n" for p in parts)
+
+
+def _check_arguments(lang, display, view, source):
+    """Refuse a language, display, view or input space the shaders do not write."""
+    as_choice("lang", lang, LANGUAGES)
+    as_choice("display", display, registry.ALL_DISPLAYS)
+    as_choice("view", view, SHADER_VIEWS)
+    if registry.space_kind(source) == "thin-film":
+        raise ParameterError(
+            "source",
+            f" {source!r} is a spectral table, not a formula: its views are LUTs "
+            "(export view); the shaders take one of " + ", ".join(SHADER_SOURCES),
         )
-        knob_lines = [
-            "    float t = ocio_thinfilm_threshold;",
-            "    float l = ocio_thinfilm_limit;",
-            f"    {check}",
-        ]
-        args = ", t, l"
-    else:
-        knob_lines, args = [], ""
+    as_choice("source", source, SHADER_SOURCES)
+
+
+def _declarations(lang, knobs):
+    """Return the knobs' uniforms (GLSL) or sliders (DCTL), and DCTL's Invert box.
+
+    ``knobs``: the compression's (threshold, limit) defaults; ``None`` for the clip.
+    """
+    parts = []
+    if knobs is not None and lang == "glsl":
+        parts.append("uniform float ocio_thinfilm_threshold;\nuniform float ocio_thinfilm_limit;\n")
+    if knobs is not None and lang == "dctl":
+        t, lim = knobs
+        t_lo, t_hi, t_step = THRESHOLD_SLIDER
+        l_lo, l_hi, l_step = LIMIT_SLIDER
+        parts.append(
+            "DEFINE_UI_PARAMS(ocio_thinfilm_threshold, Threshold, DCTLUI_SLIDER_FLOAT, "
+            f"{t:g}, {min(t_lo, t):g}, {max(t_hi, t):g}, {t_step:g})\n"
+            "DEFINE_UI_PARAMS(ocio_thinfilm_limit, Limit, DCTLUI_SLIDER_FLOAT, "
+            f"{lim:g}, {min(l_lo, lim):g}, {max(l_hi, lim):g}, {l_step:g})\n"
+        )
+    if lang == "dctl":
+        parts.append("DEFINE_UI_PARAMS(ocio_thinfilm_invert, Invert, DCTLUI_CHECK_BOX, 0)\n")
+    return parts
+
+
+def _knob_lines(L, knobs):
+    """Return the entry points' lines reading the knobs, and the extra call arguments.
+
+    A host's value outside the allowed range gives the defaults; none for the clip.
+    """
+    if knobs is None:
+        return [], ""
+    t, lim = knobs
+    check = (
+        f"if (!(t > {L.lit(0.0)} && t < {L.lit(1.0)} && l > {L.lit(1.0)} && "
+        f"l <= {L.lit(KNOB_LIMIT_MAX)})) {{ t = {L.lit(t)}; l = {L.lit(lim)}; }}"
+    )
+    lines = [
+        "    float t = ocio_thinfilm_threshold;",
+        "    float l = ocio_thinfilm_limit;",
+        f"    {check}",
+    ]
+    return lines, ", t, l"
+
+
+def _entry_points(L, lang, knobs):
+    """Return the entry points: GLSL's view and its inverse, or DCTL's ``transform``."""
+    knob_lines, args = _knob_lines(L, knobs)
     unmapped = "ocio_thinfilm_undisplay({}{})"
     if lang == "glsl":
         entry_lines = [
@@ -285,8 +282,7 @@ def shader_source(
             "}",
             "",
         ]
-    parts.append("\n".join(entry_lines))
-    return "\n".join(p.strip("\n") + "\n" for p in parts)
+    return "\n".join(entry_lines)
 
 
 def export_shader(
@@ -296,8 +292,7 @@ def export_shader(
     view: str,
     source: str = registry.REFERENCE,
     *,
-    compress_threshold: float = compress.THRESHOLD,
-    compress_limit: float = compress.LIMIT,
+    options: MapOptions | None = None,
 ) -> Path:
     """Write :func:`shader_source` to ``path`` (written aside, checked, then renamed).
 
@@ -306,7 +301,7 @@ def export_shader(
     path : str or os.PathLike
         The file to write (``.glsl``, ``.dctl`` or any name); the file named is
         replaced atomically, a directory in its place is refused.
-    lang, display, view, source, compress_threshold, compress_limit
+    lang, display, view, source, options
         As :func:`shader_source`.
 
     Returns
@@ -319,12 +314,5 @@ def export_shader(
     ValueError
         For a bad argument (naming it) or an output path that cannot be written.
     """
-    text = shader_source(
-        lang,
-        display,
-        view,
-        source,
-        compress_threshold=compress_threshold,
-        compress_limit=compress_limit,
-    )
+    text = shader_source(lang, display, view, source, options=options)
     return write_text(check_output_file(path, "path"), text)

@@ -5,59 +5,14 @@ Input: the raw pixel values of any colour space of the config (``ACEScct``,
 Output: display code values of ``--display`` / ``--view``. The file takes the pixel
 as it is: nothing has to be scaled by hand first.
 
-How each format carries the input
----------------------------------
-A 3D LUT samples [0, 1]^3, so inputs that are not already in [0, 1] (scene-linear
-RGB, XYZ, and ACEScct too, see below) go through a *shaper* first, a per-channel
-curve onto [0, 1] that is part of the file:
-
-- ``.cube`` (OCIO's ``resolve_cube`` writer), two forms, each saying which in its first line:
-
-  - *plain* (the default for inputs whose code values in [0, 1] already cover what the
-    view needs: ACEScct): nothing but ``LUT_3D_SIZE`` and the
-    table over the default [0, 1] domain, which every reader applies alike (ffmpeg's
-    ``lut3d``, OBS, OpenShot, three.js, Photoshop, Resolve, OCIO, colour-science:
-    several of them ignore ``LUT_1D_*`` and ``DOMAIN_*`` lines);
-  - *Resolve* (``shaper=True``, ``--resolve-shaper``; always for the other inputs): a
-    1D shaper (``LUT_1D_SIZE``, ``LUT_1D_INPUT_RANGE``) and the 3D LUT in one file,
-    read by Resolve, OCIO, colour-science and Nuke's OCIOFileTransform. ffmpeg's
-    ``lut3d`` reads only the 3D part of such a file and takes the shaper's lines for
-    LUT entries (ΔE2000 mean 18).
-
-  The plain grid is uniform in ACEScct, whose cells near the display white are about
-  0.27 stops wide, where the clip bends every colour towards white: it is the
-  portable form, not the exact one (measured in ``tests/test_export_view.py``); the
-  Resolve form and ``.csp`` spend the grid where the view bends.
-- ``.csp`` (``cinespace``): the shaper as a prelut (knots placed uniformly in the
-  shaper, so dense where the curve is steep), then the 3D LUT. ffmpeg reads it.
-- ``.spi3d``: no domain and no shaper. For inputs that need one, a companion
-  ``<name>.shaper.spi1d`` (``From lo hi``) is written next to it: apply it first.
-- ``.clf``: the exact chain (``Processor.createGroupTransform``) when every op can
-  be written as CLF; the constant-lightness clip and ACES gamut compression use
-  ``FixedFunction`` ops that CLF cannot hold, so those views are written as the
-  exact shaper ops followed by the baked 3D LUT (the same table as the .cube),
-  in one CLF. ``.ctf`` (OCIO's superset of CLF) always holds the exact chain.
-- Thin-film inputs (thickness in um, cos(theta)): all channels equal, so the file is
-  a 1D LUT over ``--range`` (``.cube`` with ``LUT_1D_INPUT_RANGE``, ``.spi1d`` with
-  ``From``, ``.clf`` with a range matrix); ``.csp`` / ``.spi3d`` are refused.
-
-The 3D table
-------------
-The ``.cube`` and ``.csp`` tables of the SDR displays hold node values fitted by
-lattice regression (Garcia & Gupta 2009; :mod:`ocio_thinfilm.export.view_fit`,
-:mod:`ocio_thinfilm.lut.lattice_fit`) instead of samples of the view: sampled nodes
-blend, in every cell that straddles the gamut boundary, clipped values into colours
-that need no mapping. The fit weights the colours inside the display's gamut first and
-serves tetrahedral (ffmpeg) and trilinear (OCIO's ``FileTransform`` default,
-colour-science) interpolation at once. The plain ``.cube`` and the shaper forms of
-inputs beyond AP1 (linear Rec.709, P3, Rec.2020, XYZ) are fitted; the AP1 inputs'
-shaper forms (measured better sampled), ``.spi3d``, the CLF's baked table and the HDR
-displays keep sampled nodes.
-
-The shaper
-----------
-See :mod:`ocio_thinfilm.export.view_shaper`: a mirrored square root per channel of the
-input's linear RGB, over a domain that covers every object colour under D65.
+Formats: ``.cube`` (plain, or with a Resolve 1D shaper), ``.csp`` (the shaper as a
+prelut), ``.spi3d`` (with a companion ``.shaper.spi1d`` where the input needs one),
+``.clf`` / ``.ctf`` (the exact chain where CLF can hold it); thin-film inputs give a
+1D LUT over ``--range``. The SDR displays' ``.cube`` and ``.csp`` tables hold node
+values fitted by lattice regression (Garcia & Gupta 2009;
+:mod:`ocio_thinfilm.export.view_fit`, :mod:`ocio_thinfilm.lut.lattice_fit`); the shaper
+is :mod:`ocio_thinfilm.export.view_shaper`'s. How each format carries the input and
+which tables are fitted: docs/gamut_map.md, *Design notes*.
 """
 
 from __future__ import annotations
@@ -65,6 +20,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -72,7 +28,6 @@ import numpy as np
 from ocio_thinfilm import cache, registry
 from ocio_thinfilm.checks import ParameterError, as_choice, as_pair
 from ocio_thinfilm.colour import compress as compress_map
-from ocio_thinfilm.config.data import KNOB_NAMES
 from ocio_thinfilm.export import view_fit
 from ocio_thinfilm.export.files import LUT_FORMATS, lut_format
 from ocio_thinfilm.export.view_shaper import (
@@ -85,6 +40,7 @@ from ocio_thinfilm.export.view_shaper import (
 )
 from ocio_thinfilm.io import StrPath, atomic_file, check_writable, write_text
 from ocio_thinfilm.lut import ocio_ops, storage
+from ocio_thinfilm.lut.options import MapOptions, as_options
 
 __all__ = [
     "VIEW_FORMATS",
@@ -258,7 +214,7 @@ def _metadata(source, display, view):
     )
 
 
-def _bake_text(cfg, fmt, source, shaper, entry, view, size, description, target=None, knobs=None):
+def _bake_text(cfg, fmt, source, shaper, entry, view, size, description, options, target=None):
     import PyOpenColorIO as ocio
 
     baker = ocio.Baker()
@@ -276,7 +232,7 @@ def _bake_text(cfg, fmt, source, shaper, entry, view, size, description, target=
     baker.setCubeSize(SHAPER_SIZE if fmt == "spi1d" else size)
     text = baker.bake()
     if target is None and _fitted_table(source, fmt, shaper, entry):
-        nodes = _fitted_nodes(source, entry.name, view, size, bool(shaper), knobs)
+        nodes = _fitted_nodes(source, entry.name, view, size, bool(shaper), options)
         text = _with_table(text, nodes)
     if fmt == "cube":
         text = _without_trailing_zeros(text)
@@ -300,17 +256,18 @@ def _bake_text(cfg, fmt, source, shaper, entry, view, size, description, target=
         "ocio_thinfilm.registry",
     )
 )
-def _fitted_nodes(source, display, view, size, shaper, knobs):
+def _fitted_nodes(source, display, view, size, shaper, options):
     """Return the fitted 3D table of a display LUT, memoised on disk (a fit takes seconds).
 
     :func:`ocio_thinfilm.export.view_fit.fit_view_table` for ``source`` (over its code
-    values, or with ``shaper`` over the shaper of :func:`view_config`). ``knobs``: the
-    compression's (threshold, limit) for the Constant-Lightness Compress view, ``None``
-    for the other views (which do not depend on them: one fit serves every knob).
+    values, or with ``shaper`` over the shaper of :func:`view_config`). ``options``: the
+    config's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`), the compression's
+    at their defaults for the views other than Constant-Lightness Compress (which do not
+    depend on them: one fit serves every knob).
     """
-    compress = {} if knobs is None else dict(zip(KNOB_NAMES, knobs, strict=True))
-    cfg, shaper_space = view_config(source, size, display, **compress)
-    fit = {} if knobs is None else dict(knobs=knobs)
+    cfg, shaper_space = view_config(source, size, display, options=options)
+    compress = registry.as_view(view).kind == "compress"
+    fit = dict(knobs=options.knobs()) if compress else {}
     if shaper and shaper_space:
         return view_fit.fit_view_table(
             cfg,
@@ -463,8 +420,7 @@ def export_view(
     size: int | None = None,
     value_range: Sequence[float] | None = None,
     shaper: bool | None = None,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> list[Path]:
     """Write the display LUT ``source`` -> ``display`` / ``view``.
 
@@ -475,84 +431,98 @@ def export_view(
     the Resolve form (1D shaper + 3D) for the others; True -- the Resolve form;
     False -- the plain form (only for the plain inputs (ACEScct)).
 
-    ``compress_threshold``, ``compress_limit``: the Constant-Lightness Compress view's
-    knobs (defaults 0.8 and 1.3), checked first
-    (:func:`ocio_thinfilm.colour.compress.check_knobs`: a ParameterError naming the
-    parameter); the file's description states them for that view. The other views do
-    not depend on them.
+    ``options``: the config's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`;
+    ``None`` for the defaults); the file's description states the compression's knobs
+    for the Constant-Lightness Compress view. The other views do not depend on them.
     """
-    import PyOpenColorIO as ocio
-
-    knob_values = compress_map.check_knobs(compress_threshold, compress_limit, names=KNOB_NAMES)
+    options = as_options(options)
     fmt = lut_format(out, fmt, LUT_FORMATS, "cube")
     size, value_range = _validate(source, display, view, size, fmt, value_range)
     assert source is not None and display is not None and view is not None  # _validate
     entry = registry.as_display(display)  # the objects from here on, their names for text
     view_entry = registry.as_view(view)
-    display, view = entry.name, view_entry.name
-    cube_shaper = None
+    cube_shaper = _shaper_form(source, fmt, shaper)
+    out = _output_path(out, source, entry.name, view_entry.name, fmt)
+    if view_entry.kind != "compress":  # the other views: one config (and fit) for any knob
+        options = replace(
+            options, compress_threshold=compress_map.THRESHOLD, compress_limit=compress_map.LIMIT
+        )
+    knobs = options.knobs() if view_entry.kind == "compress" else None
+    cfg, shaper_space = view_config(source, size, entry, options=options)
+    view = view_entry.name
+    if source in _THIN_FILM:
+        description = _description(source, entry, view, size, None, False, knobs)
+        meta = _metadata(source, entry.name, view)
+        return [
+            _write_1d(out, fmt, cfg, source, entry.name, view, size, value_range, meta, description)
+        ]
+    if fmt in ("clf", "ctf"):
+        return [_write_chain(out, fmt, cfg, source, entry, view, size, shaper_space, knobs)]
+    if fmt == "cube" and not cube_shaper:
+        shaper_space = None  # the plain form: the grid over ACEScct itself
+    return _write_3d_text(out, fmt, cfg, source, entry, view, size, shaper_space, options)
+
+
+def _shaper_form(source, fmt, shaper):
+    """Return whether a ``.cube`` carries the 1D shaper (None: not a 3D ``.cube``)."""
     if source in _THIN_FILM:
         if shaper is not None:
             raise ParameterError("shaper", f" applies to 3D LUTs; {source} gives a 1D LUT")
-    elif fmt == "cube" or shaper is not None:
-        cube_shaper = _cube_shaper(source, fmt, shaper)
+        return None
+    if fmt == "cube" or shaper is not None:
+        return _cube_shaper(source, fmt, shaper)
+    return None
+
+
+def _output_path(out, source, display, view, fmt):
+    """Return the file to write (default: named after the view), checked writable."""
     if out is None:
         out = Path(_stem(source, display, view) + "." + fmt)
     out = Path(out)
     if out.exists() and out.is_dir():
         raise ParameterError("out", f" {out} is a directory")
     check_writable(out.parent if str(out.parent) else Path("."), create=False)
+    return out
 
-    knobs = knob_values if view_entry.kind == "compress" else None
-    compress = dict(zip(KNOB_NAMES, knob_values, strict=True))
-    cfg, shaper_space = view_config(source, size, entry, **compress)
-    meta = _metadata(source, display, view)
-    if source in _THIN_FILM:
-        description = _description(source, entry, view, size, None, False, knobs)
-        return [
-            _write_1d(out, fmt, cfg, source, display, view, size, value_range, meta, description)
-        ]
-    if fmt in ("clf", "ctf"):
-        proc = cfg.getProcessor(source, display, view, ocio.TRANSFORM_DIR_FORWARD)
-        exact = list(proc.createGroupTransform())
-        description = _description(source, entry, view, size, None, False, knobs)
-        try:
-            return [_write_group(out, fmt, exact, meta, description + " Exact chain.")]
-        except ocio.Exception:
-            if fmt != "clf":
-                raise
-        # CLF cannot hold FixedFunction ops: the exact shaper ops, then the baked 3D LUT.
-        return [
-            _write_group(
-                out,
-                fmt,
-                _baked_3d_transforms(cfg, source, shaper_space, display, view, size),
-                meta,
-                _description(source, entry, view, size, shaper_space, True, knobs),
-            )
-        ]
-    if fmt == "cube" and not cube_shaper:
-        shaper_space = None  # the plain form: the grid over ACEScct itself
+
+def _write_chain(out, fmt, cfg, source, entry, view, size, shaper_space, knobs):
+    """Write a ``.clf`` / ``.ctf``: the exact chain.
+
+    CLF cannot hold FixedFunction ops: then the exact shaper ops and the baked 3D LUT.
+    """
+    import PyOpenColorIO as ocio
+
+    meta = _metadata(source, entry.name, view)
+    proc = cfg.getProcessor(source, entry.name, view, ocio.TRANSFORM_DIR_FORWARD)
+    exact = list(proc.createGroupTransform())
+    description = _description(source, entry, view, size, None, False, knobs)
+    try:
+        return _write_group(out, fmt, exact, meta, description + " Exact chain.")
+    except ocio.Exception:
+        if fmt != "clf":
+            raise
+    return _write_group(
+        out,
+        fmt,
+        _baked_3d_transforms(cfg, source, shaper_space, entry.name, view, size),
+        meta,
+        _description(source, entry, view, size, shaper_space, True, knobs),
+    )
+
+
+def _write_3d_text(out, fmt, cfg, source, entry, view, size, shaper_space, options):
+    """Write a baked 3D LUT (``.cube``, ``.csp``, ``.spi3d`` and its shaper's ``.spi1d``)."""
+    knobs = options.knobs() if registry.as_view(view).kind == "compress" else None
     description = _description(source, entry, view, size, shaper_space, True, knobs)
+    bake = dict(description=description, options=options)
     if fmt == "spi3d" and shaper_space:
         companion = out.with_name(out.stem + ".shaper.spi1d")
-        text3d = _bake_text(
-            cfg, "spi3d", shaper_space, None, entry, view, size, description, knobs=knobs
-        )
+        text3d = _bake_text(cfg, "spi3d", shaper_space, None, entry, view, size, **bake)
         text1d = _bake_text(
-            cfg,
-            "spi1d",
-            source,
-            shaper_space,
-            entry,
-            view,
-            size,
-            description,
-            target=shaper_space,
-            knobs=knobs,
+            cfg, "spi1d", source, shaper_space, entry, view, size, target=shaper_space, **bake
         )
         return [write_text(out, text3d), write_text(companion, text1d)]
-    text = _bake_text(cfg, fmt, source, shaper_space, entry, view, size, description, knobs=knobs)
+    text = _bake_text(cfg, fmt, source, shaper_space, entry, view, size, **bake)
     if fmt == "cube":  # OCIO's writer has no title line: say which form the file is
-        text = _cube_title(source, display, view, size, bool(shaper_space)) + "\n" + text
+        text = _cube_title(source, entry.name, view, size, bool(shaper_space)) + "\n" + text
     return [write_text(out, text)]

@@ -3,27 +3,12 @@
 A display LUT's 3D table sampled at its nodes blends, in every cell that straddles the
 gamut boundary, clipped values into colours that need no mapping. Here the nodes are
 instead fitted (:func:`ocio_thinfilm.lut.lattice_fit.fit_lattice`, Garcia & Gupta
-2009) to the view on colours the file will see, the colours inside the display's gamut
-weighted :data:`INSIDE_WEIGHT` times the others:
-
-- colours inside the display's gamut, uniform in display code values;
-- object colours: random reflectances of 1 to 3 rectangular bands on a base (a family
-  that reaches the optimal colours, the object-colour solid's boundary), many of them
-  bright, weight :data:`OBJECT_WEIGHT` (:data:`SHAPER_OBJECT_WEIGHT` over a shaper);
-- mixtures of up to three spectral lines at random luminance (saturated emissive
-  colours), weight :data:`SPREAD_WEIGHT`.
-
-The target is the analytic view where the package has it
-(:data:`ocio_thinfilm.colour.views.ANALYTIC_MAPS`: the clip, the compression with the
-file's knobs, the clamp), else the view as OCIO applies it. The fit serves the
-interpolations hosts apply by default, both at once: tetrahedral (ffmpeg's ``lut3d``)
-and trilinear (OpenColorIO's ``FileTransform``, colour-science's ``LUT3D.apply``).
-Fitted nodes may lie outside [0, 1] (hosts clamp the display code values); the file's
-input side (its grid, its shaper) is unchanged.
-
-The samples come from a fixed seed and the fit sums in a fixed order, so a bake is
-byte-identical across runs (:mod:`ocio_thinfilm.export.view` memoises the tables on
-disk).
+2009) to the view on colours the file will see (in-gamut colours, object colours,
+mixtures of spectral lines), those inside the display's gamut weighted
+:data:`INSIDE_WEIGHT` times the others, for tetrahedral and trilinear interpolation at
+once. The training set and the target: docs/gamut_map.md, *Design notes*. The samples
+come from a fixed seed and the fit sums in a fixed order, so a bake is byte-identical
+across runs.
 
 - :func:`fit_view_table` -- the fitted table of a view for a grid over a colour space
   of a config, shape (size, size, size, 3), indexed [r, g, b];
@@ -53,8 +38,8 @@ __all__ = [
 #: the point chosen on the weight curve of ``benchmarks/bench_view_fit.py``.
 INSIDE_WEIGHT = 10.0
 #: Weight of the object colours outside the gamut: over a grid uniform in the input's
-#: code values (the plain ACEScct .cube) 1; over a shaper 3 (measured for linear
-#: Rec.709 -> sRGB: object colours max ΔE2000 4.04-4.07 at 1, 3.76-3.79 at 3).
+#: code values (the plain ACEScct .cube) 1; over a shaper 3, which lowers the object
+#: colours' worst error there (docs/gamut_map.md, *Design notes*).
 OBJECT_WEIGHT = 1.0
 SHAPER_OBJECT_WEIGHT = 3.0
 #: Weight of the spectral-line mixtures (far outside most gamuts).

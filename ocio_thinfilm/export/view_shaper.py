@@ -11,10 +11,9 @@ so that scene values somewhat above white, which every view maps to white, stay
 inside; values beyond are clamped. A square root spends the grid on the upper half
 of the range, where this config's views bend hardest (every colour converges to the
 display white as Y approaches 1); a log or ACEScct allocation spends it on the
-shadows and leaves cells near white about 0.27 stops wide. Measured for ACEScct ->
-sRGB, Constant-Lightness Clip, 65^3, on object colours inside AP1 (ΔE2000
-p99 / max, tetrahedral): plain ACEScct grid 4.1 / 8.8; an affine sub-range of ACEScct
-2.1 / 5.2; the square-root shaper 0.6 / 2.0 (see ``tests/test_export_view.py``).
+shadows and leaves cells near white about 0.27 stops wide. Of the three the square-root
+shaper is the most accurate (``tests/test_export_view.py``; the figures:
+docs/gamut_map.md, *Design notes*).
 """
 
 from __future__ import annotations
@@ -23,8 +22,8 @@ import numpy as np
 
 from ocio_thinfilm import registry, reproducible
 from ocio_thinfilm.colour import colorimetry
-from ocio_thinfilm.colour import compress as compress_map
 from ocio_thinfilm.lut import ocio_ops
+from ocio_thinfilm.lut.options import MapOptions
 
 __all__ = [
     "DEFAULT_VIEW_SIZE",
@@ -83,11 +82,11 @@ def shaper_domain(
     1 where a channel's spectral weight is positive, 0 elsewhere, and the reverse),
     widened by 10 %, and at least [0, 1.5] (from 0 for a space whose
     ``shaper_from_zero`` is set: AP1, the ACES working gamut -- a mirrored square root
-    spends a fifth of the grid on the few object colours outside it, down to -0.09;
-    measured ACEScct -> sRGB 65^3: max ΔE2000 4.4 with them, 2.2 without; values below
-    0 are clamped to the AP1 boundary). (Nudging it so that black and white fall on grid
-    nodes was tried and made the worst case worse: ACEScct -> sRGB max 4.0 against
-    2.2; ``size`` is kept for that reason in the signature.) For an HDR ``display`` the
+    spends a fifth of the grid on the few object colours outside it, down to -0.09, and
+    doubles the worst error without them; values below 0 are clamped to the AP1
+    boundary). (Nudging it so that black and white fall on grid nodes was tried and made
+    the worst case worse; ``size`` is kept for that reason in the signature. The figures:
+    docs/gamut_map.md, *Design notes*.) For an HDR ``display`` the
     upper end is at least 1.5 times its peak (1000 / 203 in units of the reference
     white), so highlights up to the peak are not clamped by the shaper.
     """
@@ -121,8 +120,7 @@ def view_config(
     size: int = DEFAULT_VIEW_SIZE,
     display: registry.DisplayLike | None = None,
     *,
-    compress_threshold: float = compress_map.THRESHOLD,
-    compress_limit: float = compress_map.LIMIT,
+    options: MapOptions | None = None,
 ) -> tuple[ocio_ops.Config, str | None]:
     """Return the config in memory (LUTs inline, no files) and the shaper space's name.
 
@@ -137,9 +135,9 @@ def view_config(
         Edge of the 3D LUT the shaper is for (default :data:`DEFAULT_VIEW_SIZE`).
     display : str or registry display, optional
         The display (an HDR display widens the shaper's domain).
-    compress_threshold, compress_limit : float, optional
-        The Constant-Lightness Compress view's knobs (defaults 0.8 and 1.3;
-        :func:`ocio_thinfilm.colour.compress.check_knobs`).
+    options : MapOptions, optional
+        The config's knobs (:class:`~ocio_thinfilm.lut.options.MapOptions`); ``None``
+        (default) for the defaults.
 
     Returns
     -------
@@ -147,19 +145,12 @@ def view_config(
         The config, with the shaper space added when ``source`` needs one.
     shaper : str or None
         The shaper space's name, or ``None``.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``compress_threshold`` or ``compress_limit``, for knobs out of range.
     """
     import PyOpenColorIO as ocio
 
     from ocio_thinfilm import config as config_module
 
-    data = config_module.config_data(
-        inline=True, compress_threshold=compress_threshold, compress_limit=compress_limit
-    )
+    data = config_module.config_data(inline=True, options=options)
     cfg = config_module.generate_config(data, validate=False)
     sibling = linear_sibling(source)
     if sibling is None:

@@ -7,12 +7,10 @@
   material tables of ``export material``);
 - :mod:`.material_engine` -- their numeric core: a group of rows evaluated from the
   stack's phasor coefficients, on any number of threads with the same bits;
-- :mod:`.film_lights` -- a film under a coloured light: the spectral colour against an
-  RGB renderer's product of RGBs (docs/rgb_vs_spectral.md);
+- :mod:`.film_lights` -- a film under a coloured light against an RGB renderer's;
 - :mod:`.khr_iridescence` -- what glTF viewers draw for ``KHR_materials_iridescence``
   (three.js r187's model in numpy);
-- :mod:`.iridescence_fit` -- its parameters fitted to an exact film (the ``.glb``'s
-  fallback);
+- :mod:`.iridescence_fit` -- its parameters fitted to an exact film (``.glb`` fallback);
 - :mod:`.display_transforms` -- display matrices and encodings, the ACES baseline;
 - :mod:`.grid` -- where the gamut maps' LUT nodes go: charts, node layouts, shapers;
 - :mod:`.node_fit` -- the clip's black pass as planar geometry, and the fit of its
@@ -20,6 +18,7 @@
 - :mod:`.storage` -- 16-bit codes that half-float textures keep;
 - :mod:`.clip_lut` -- the clip (Section 3.2) baked into two 3D LUTs;
 - :mod:`.compress_lut` -- the soft compression: a LUT before each of the clip's;
+- :mod:`.options` -- the bake's knobs as one validated object (``MapOptions``);
 - :mod:`.view_transforms` -- every view: CIE-XYZ-D65 -> display code values;
 - :mod:`.lattice_fit` -- lattice regression (Garcia & Gupta 2009): node values whose
   interpolation best fits a map at given colours (the portable display LUTs).
@@ -40,6 +39,7 @@ __all__ = [
     "storage",
     "clip_lut",
     "compress_lut",
+    "options",
     "view_transforms",
     "lattice_fit",
 ]

@@ -1,45 +1,15 @@
 """The constant-lightness clip (paper Section 3.2) baked into two 3D LUTs, as OCIO transforms.
 
-The clip moves a colour along its constant-Y ray towards the grey Y W until it is inside
-all six faces: t = min(t_black, t_white). It therefore factors exactly as clip = U o L,
-L clipping only against R, G, B >= 0 and U only against R, G, B <= 1, both along the
-same ray (paper, Section 3.2; the analytic L and U are
+The clip factors exactly as clip = U o L along the same ray (L only against R, G, B >= 0,
+U only against R, G, B <= 1; the analytic ones are
 :func:`ocio_thinfilm.colour.clip.clip_black_faces_RGB` and
-:func:`~ocio_thinfilm.colour.clip.clip_white_faces_RGB`).
-
-Pass 1, L, is homogeneous of degree 1 (L(kX) = k L(X)): it moves the chromaticity
-radially from the white point onto the primaries' triangle and keeps Y. Its Lut3D
-therefore maps chromaticity to chromaticity: over the projective chart (u_a, u_b, Y) of
-:func:`ocio_thinfilm.lut.grid.black_plan` (``XYZ_TO_xyY`` of a matrix, the primaries'
-triangle on grid and tetrahedral split planes) it outputs the chart coordinates of L(X)
-and Y itself, constant along the Y axis and exactly linear in Y, so tetrahedral
-interpolation is exact along Y, dark colours keep their chromaticity however dark they
-are, and in-gamut chromaticities are nodes' identity. The nodes outside the triangle are
-not sampled but fitted to L (:func:`ocio_thinfilm.lut.node_fit.fit_outside_nodes`), so
-the interpolant does not cut the triangle's corners, and stored so that two faces are
-exactly 0 and none of them leaves the triangle in 16-bit files or half-float textures
-(:func:`ocio_thinfilm.lut.storage.face_frame`,
-:func:`~ocio_thinfilm.lut.storage.halves_inside`). OCIO's analytic xyY -> XYZ and one
-matrix give display RGB. Before the LUT, Y is limited to 1 (the pre-clip: a colour at or
-above white becomes white in pass 2).
-
-Pass 2, U, works on that RGB (no negative channel, Y <= 1) directly: every face, the
-white point and the planes R = G, G = B, R = B where the binding face changes are grid
-or split planes; below 1 the grid nodes sit at sRGB-encoded values and the LUT stores
-sRGB code values, so the identity (every in-gamut colour) is reproduced exactly and the
-display encoding costs nothing (sRGB, Display P3) or one analytic op (Rec.2020). Above 1
-each channel's nodes run up to its own largest value, 1 / (its luminance weight)
-(:func:`ocio_thinfilm.lut.grid.white_nodes`). Nodes brighter than white hold U's
-analytic continuation (:func:`ocio_thinfilm.colour.clip.clip_white_faces_continued_RGB`)
-rather than white, so the cells that straddle Y = 1 interpolate a smooth function:
-colours just below white, far outside the gamut, keep their Y. The LUT stores code
-values / :data:`WHITE_SCALE`; the one gain after a LUT is that 1.25. Design notes and
-measurements: docs/gamut_map.md.
-
-This module holds the LUTs and their OCIO transforms; where the nodes go is
-:mod:`ocio_thinfilm.lut.grid`, the fit of the black pass's outside nodes
-:mod:`ocio_thinfilm.lut.node_fit`, the 16-bit / half-float storage
-:mod:`ocio_thinfilm.lut.storage`.
+:func:`~ocio_thinfilm.colour.clip.clip_white_faces_RGB`). Pass 1, L, is a Lut3D over a
+projective chromaticity chart (exactly linear in Y, its nodes outside the primaries'
+triangle fitted by :mod:`ocio_thinfilm.lut.node_fit`); pass 2, U, a Lut3D over encoded
+display RGB whose nodes brighter than white hold U's analytic continuation. Where the
+nodes go is :mod:`ocio_thinfilm.lut.grid`, the 16-bit / half-float storage
+:mod:`ocio_thinfilm.lut.storage`. The two passes in detail, accuracy, size, load time
+and why the layout is so: docs/gamut_map.md, *Design*.
 
 - :func:`clip_lut` / :class:`ClipLUT` -- the baked LUT data of one display and their
   CLF-writable cores; :meth:`ClipLUT.transforms` -- the whole chain;
@@ -47,10 +17,6 @@ This module holds the LUTs and their OCIO transforms; where the nodes go is
 - :func:`xyz_limit_transform`, :func:`xyY_forward_transform`,
   :func:`xyY_inverse_transform`, :func:`working_decoding_transform` -- the chain's
   analytic ops.
-
-Accuracy against the analytic clip, size, load time, speed and why the layout is so:
-``benchmarks/bench_gamut_map.py``, ``benchmarks/bench_clip_size.py``,
-``benchmarks/bench_load.py`` and docs/gamut_map.md.
 """
 
 from __future__ import annotations

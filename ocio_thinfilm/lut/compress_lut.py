@@ -1,45 +1,20 @@
 """The soft constant-lightness compression as OCIO transforms.
 
-The compression of :mod:`ocio_thinfilm.colour.compress`: two small LUTs in front of the clip's
-two passes, which it reuses as they are.
+The compression of :mod:`ocio_thinfilm.colour.compress`: two small LUTs in front of the
+clip's two passes, which it reuses as they are. With ``f`` the compression curve
+continued past the limit and ``sigma(d) = f(d) / d``, the compression is the clip of a
+smooth squeeze, ``compress = clip o S`` with ``S(c) = Y + sigma(D) (c - Y)``, and S
+factors as the clip does (:mod:`.clip_lut`), so the chain is ``U o S_w o L o S_b``:
+S_b (:func:`ocio_thinfilm.colour.compress.soft_black_RGB`) a Lut3D over its own
+chromaticity chart (:func:`ocio_thinfilm.lut.grid.soft_plan`), S_w
+(:func:`ocio_thinfilm.colour.compress.soft_white_RGB`) a Lut3D on the clip's white-pass
+nodes. Every step keeps Y and moves along the same ray (tested against the analytic map
+in ``tests/test_compress.py``). The derivation: docs/compress.md, *Baked*.
 
-With ``f`` the compression curve continued past the limit (``clipped=False``: smooth and
-strictly increasing up to its asymptote, above 1 beyond the limit) and
-``sigma(d) = f(d) / d``, the compression is the clip of a smooth squeeze::
-
-    compress = clip o S,   S(c) = Y + sigma(D) (c - Y),   D = max(d_black, d_white)
-
-because S moves every colour along the paper's ray to the distance f(D): inside the
-gamut below the limit (the clip leaves it there) and outside beyond it (the clip puts it
-on the boundary, which is what the compression does there). ``d_black`` and ``d_white``
-are the ray's fractions to the faces through black and through white
-(:func:`ocio_thinfilm.colour.compress.boundary_distance` is their maximum). The clip is
-U o L (:mod:`.clip_lut`), and S factors the same way, so the chain is
-``U o S_w o L o S_b``:
-
-- S_b (:func:`ocio_thinfilm.colour.compress.soft_black_RGB`) squeezes by
-  ``sigma(d_black)`` alone. It is homogeneous like L, so its Lut3D works over a
-  chromaticity chart and keeps Y exactly: its own
-  (:func:`ocio_thinfilm.lut.grid.soft_plan`), with the three rays where its gradient
-  jumps on grid and split lines. It is smooth (no flat part: that is L's job, next).
-- L, the clip's black pass, then clips what S_b left beyond the faces through black.
-- S_w (:func:`ocio_thinfilm.colour.compress.soft_white_RGB`) recovers
-  ``d_black = f^-1(d_black')`` from the colour L gives it (d_black' <= 1; on the faces: the limit,
-  the continuous choice) and ``d_white = d_white' / sigma(d_black)``, and scales by
-  ``sigma(D) / sigma(d_black)`` towards the grey: the identity wherever the faces
-  through black bind. Its Lut3D uses the clip's white-pass nodes (per channel, up to 1 /
-  its luminance weight) with a shaper linear in the value between them, so interpolation
-  keeps Y, and its nodes brighter than white hold its continuation, so the cells that
-  straddle Y = 1 interpolate a smooth function.
-- U, the clip's white pass, clips what is still beyond the faces through white.
-
-Every step keeps Y and moves along the same ray, so the chain does (tested against the
-analytic map in ``tests/test_compress.py``). This module holds :class:`CompressLUT` (the
-two LUTs and their OCIO transforms) and :func:`compress_lut`; the analytic S_b and S_w
-are in :mod:`ocio_thinfilm.colour.compress`, their node layouts in
-:mod:`ocio_thinfilm.lut.grid`, the 16-bit storage in :mod:`ocio_thinfilm.lut.storage`.
-Sizes, accuracy and load time: ``benchmarks/bench_compress.py``,
-``benchmarks/bench_load.py`` and docs/compress.md.
+This module holds :class:`CompressLUT` (the two LUTs and their OCIO transforms) and
+:func:`compress_lut`; the node layouts are in :mod:`ocio_thinfilm.lut.grid`, the 16-bit
+storage in :mod:`ocio_thinfilm.lut.storage`. Sizes, accuracy and load time:
+``benchmarks/bench_compress.py``, ``benchmarks/bench_load.py`` and docs/compress.md.
 """
 
 from __future__ import annotations
@@ -55,6 +30,7 @@ from ocio_thinfilm.lut import clip_lut, grid, ocio_ops, storage
 from ocio_thinfilm.lut.clip_lut import ClipLUT, xyY_forward_transform, xyY_inverse_transform
 from ocio_thinfilm.lut.node_fit import chart_to_XYZ
 from ocio_thinfilm.lut.ocio_ops import group, lut1d_transform, lut3d_transform, transform_id
+from ocio_thinfilm.lut.options import check_clip_size
 from ocio_thinfilm.lut.tables import check_size
 
 __all__ = [
@@ -99,7 +75,7 @@ TESTED_LIMIT = (1.1, 1.5)
 #: (at most ``min(0.5, 0.625 threshold)`` of the way to the boundary: half-way at the
 #: defaults) moved by at most dE2000 0.1.
 KNOB_TARGETS = {"p99": 0.5, "max": 1.5, "dY": 1e-3, "inside": 0.1}
-#: Measured by ``benchmarks/bench_compress_knobs.py`` (reports/bench_compress_knobs.json)
+#: From ``benchmarks/bench_compress_knobs.py`` (reports/bench_compress_knobs.json)
 #: at the grid's pairs outside the tested range: (threshold, limit) -> (dE2000 p99,
 #: dE2000 max, |dY| max, dE2000 max of the colours below the threshold, the targets
 #: missed), each the worst over the displays and test sets.
@@ -456,7 +432,7 @@ def compress_lut(
     size = check_size(size, 9, 129, "size")
     white_edge = check_size(white_edge, 7, 129, "white_edge")
     soft.compression_curve(0.0, threshold, limit, power)  # validates the parameters
-    clip_size = check_size(clip_size, 9, 129, "clip_size")
+    clip_size = check_clip_size(clip_size)
     return _compress_lut(
         name, size, white_edge, (float(threshold), float(limit), float(power)), clip_size
     )
@@ -495,11 +471,11 @@ def _knob_distance(a: tuple[float, float], b: tuple[float, float]) -> float:
 
 
 def untested_knobs_note(threshold: float, limit: float) -> str | None:
-    """Return one line on knobs outside the tested range, with the measured figure.
+    """Return one line on knobs outside the tested range, with the benchmark's figure.
 
     ``None`` inside the range (:func:`knobs_tested`). Outside it, the line names the
-    tested range and the accuracy measured at the nearest measured pair
-    (:data:`MEASURED_KNOBS`: the pair itself when it was measured).
+    tested range and the accuracy the benchmark found at the nearest pair it ran
+    (:data:`MEASURED_KNOBS`: the pair itself when it ran it).
 
     Parameters
     ----------

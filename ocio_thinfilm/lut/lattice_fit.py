@@ -1,24 +1,14 @@
 """Lattice regression: 3D LUT node values fitted to a function through the interpolation.
 
-A 3D LUT's nodes are usually samples of the function it stands for. Where the function
-has a kink inside a cell (a gamut clip's boundary), interpolating the samples blends
-the clipped values into colours that need no mapping. Lattice regression (Garcia &
-Gupta 2009) chooses the node values instead so that the *interpolated* LUT is closest,
-in weighted least squares, to the function on sample inputs drawn from the inputs the
-LUT will see; colours that should pass unchanged can be weighted first.
-
-The interpolation is the one hosts apply. ffmpeg's ``lut3d`` filter interpolates a
-``.cube`` tetrahedrally by default; OpenColorIO's ``FileTransform`` (default
-interpolation) and colour-science's ``LUT3D.apply`` trilinearly. Both are linear in
-the node values, so the fit stacks both sets of equations (``methods``) and serves
-each host as it applies the file. The tetrahedral scheme is the usual one of
-OpenColorIO and ffmpeg: the six tetrahedra sharing each cell's main diagonal.
-
-The problem is sparse and banded (every node couples only to the 26 nodes around it),
-so it is assembled as 27 diagonals of the normal equations by :func:`numpy.bincount`
-and solved by a Jacobi-preconditioned conjugate gradient in numpy alone. Every sum
-is in a fixed order (``bincount`` and elementwise operations, no BLAS), so a fit is
-deterministic: the same inputs give the same bytes.
+Where a function has a kink inside a LUT cell (a gamut clip's boundary), interpolating
+its samples blends clipped values into colours that need no mapping. Lattice regression
+(Garcia & Gupta 2009) instead chooses the node values so that the *interpolated* LUT is
+closest, in weighted least squares, to the function on sample inputs, for the
+interpolations hosts apply (tetrahedral: ffmpeg's ``lut3d``; trilinear: OpenColorIO's
+``FileTransform``, colour-science's ``LUT3D.apply``) at once. The normal equations (27
+diagonals, assembled by :func:`numpy.bincount`) are solved by a Jacobi-preconditioned
+conjugate gradient in numpy alone, every sum in a fixed order: the same inputs give the
+same bytes. More: docs/gamut_map.md, *Fitted tables (lattice regression)*.
 
 - :func:`cell_weights` -- the 8 corner indices and weights of each input's cell for
   one interpolation;

@@ -353,76 +353,25 @@ def evaluate_rows(
     spectra : Spectra
         The reference engine: the paper model's rows, and the samples above.
     """
-    g = None
-    if film.model != "paper":
-        n_all = np.concatenate([blk.n for row in plan for blk in row if blk.n is not None], axis=1)
-        wl_all = np.concatenate([blk.wl for row in plan for blk in row])
-        c_all = np.concatenate(
-            [np.full(blk.wl.size, c[j]) for j, row in enumerate(plan) for blk in row]
-        )
-        g = _GroupCoefficients(
-            phasor.stack_coefficients(n_all, film.thickness_nm, film.vary, wl_all, c_all, transmit)
-        )
     prepared: list[list] = [[] for _ in plan]
-    if g is not None:
+    if film.model != "paper":
+        g = _group_coefficients(film, c, plan, transmit)
         # the blocks' columns are the same in every row: their runs, anchors and powers
         # for all the group's wavelengths at once
         blocks = plan[0]
         dds = [d[blk.cols] for blk in blocks]
         step = axis_step(d)
         run_of = [_runs(dd, step) for dd in dds]
-        phase = g.k.phase
         offsets = np.cumsum([0] + [blk.wl.size for row in plan for blk in row])
         if min(run_of) > 1:  # a uniform axis: one set of powers
-            W_all = _powers(phase, step, max(run_of))
-            starts = [dd[::run] for dd, run in zip(dds, run_of, strict=True)]
-            count = max(a.size for a in starts)
-            L = np.empty((count, phase.size))
-            for s_, b in enumerate(b for _ in plan for b in range(len(blocks))):
-                anchor_d = starts[b]
-                L[:, offsets[s_] : offsets[s_ + 1]] = np.pad(
-                    anchor_d, (0, count - anchor_d.size), mode="edge"
-                )[:, None]
-            A_all = phasor.cexp_i(phase, L)
-            # what every segment needs, for the whole group at once
-            Wr_all, Wi_all = np.ascontiguousarray(W_all.real), np.ascontiguousarray(W_all.imag)
-            lossy = phase.imag != 0
-            any_lossy = bool(lossy.any())
-            W2_all = Wr_all * Wr_all + Wi_all * Wi_all if any_lossy else None
-            size2_all = phasor.abs2(A_all) if any_lossy else None
-            # real, contiguous: (Re X A, -Im X A) and (Re Y A, -Im Y A) per polarisation
-            XA = [(x.real.copy(), -x.imag) for x in (phasor.cmul(g.X[i], A_all) for i in (0, 1))]
-            YA = [(y.real.copy(), -y.imag) for y in (phasor.cmul(g.Y[i], A_all) for i in (0, 1))]
-            starts_at = offsets[:-1]
-            seg_lossy = np.maximum.reduceat(lossy, starts_at)
-            gap = np.minimum.reduceat(np.minimum.reduce(g.gaps), starts_at)
-            gap_abs = np.minimum.reduceat(np.minimum.reduce(np.abs(g.gaps)), starts_at)
-            for s_, (j, b) in enumerate(
-                (j, b) for j in range(len(plan)) for b in range(len(blocks))
-            ):
-                part = slice(offsets[s_], offsets[s_ + 1])
-                lossless = not seg_lossy[s_]
-                direct = not (gap_abs[s_] if lossless else gap[s_]) >= _MARGIN
-                shared = (
-                    lossless,
-                    direct,
-                    Wr_all[:, part],
-                    Wi_all[:, part],
-                    None if W2_all is None else W2_all[:, part],
-                    [(xr[:, part], xi[:, part]) for xr, xi in XA],
-                    [(yr[:, part], yi[:, part]) for yr, yi in YA],
-                    None if size2_all is None else size2_all[:, part],
-                )
-                prepared[j].append(
-                    _prepare(g, part, dds[b], run_of[b], W_all[:, part], A_all[:, part], shared)
-                )
+            _prepare_uniform(g, len(plan), dds, run_of, step, offsets, prepared)
         else:
             for s_, (j, b) in enumerate(
                 (j, b) for j in range(len(plan)) for b in range(len(blocks))
             ):
                 part = slice(offsets[s_], offsets[s_ + 1])
-                W = _powers(phase[part], step, run_of[b])
-                A = phasor.cexp_i(phase[part], dds[b][:: run_of[b], None])
+                W = _powers(g.k.phase[part], step, run_of[b])
+                A = phasor.cexp_i(g.k.phase[part], dds[b][:: run_of[b], None])
                 prepared[j].append(_prepare(g, part, dds[b], run_of[b], W, A))
     for j, row in enumerate(plan):
         _row(
@@ -435,6 +384,78 @@ def evaluate_rows(
             out_R[j],
             None if out_T is None else out_T[j],
             spectra,
+        )
+
+
+def _group_coefficients(
+    film: Film, c: np.ndarray, plan: list[list[Block]], transmit: bool
+) -> _GroupCoefficients:
+    """Return the stack's coefficients of all a group's rows and blocks (one call)."""
+    n_all = np.concatenate([blk.n for row in plan for blk in row if blk.n is not None], axis=1)
+    wl_all = np.concatenate([blk.wl for row in plan for blk in row])
+    c_all = np.concatenate(
+        [np.full(blk.wl.size, c[j]) for j, row in enumerate(plan) for blk in row]
+    )
+    return _GroupCoefficients(
+        phasor.stack_coefficients(n_all, film.thickness_nm, film.vary, wl_all, c_all, transmit)
+    )
+
+
+def _prepare_uniform(
+    g: _GroupCoefficients,
+    rows: int,
+    dds: list[np.ndarray],
+    run_of: list[int],
+    step: float,
+    offsets: np.ndarray,
+    prepared: list[list],
+) -> None:
+    """Append each row's prepared runs to ``prepared`` on a uniform thickness axis.
+
+    One set of the step's powers, the runs' anchors and what every segment needs are
+    computed for the whole group at once.
+    """
+    phase = g.k.phase
+    blocks = len(dds)
+    W_all = _powers(phase, step, max(run_of))
+    starts = [dd[::run] for dd, run in zip(dds, run_of, strict=True)]
+    count = max(a.size for a in starts)
+    L = np.empty((count, phase.size))
+    for s_, b in enumerate(b for _ in range(rows) for b in range(blocks)):
+        anchor_d = starts[b]
+        L[:, offsets[s_] : offsets[s_ + 1]] = np.pad(
+            anchor_d, (0, count - anchor_d.size), mode="edge"
+        )[:, None]
+    A_all = phasor.cexp_i(phase, L)
+    # what every segment needs, for the whole group at once
+    Wr_all, Wi_all = np.ascontiguousarray(W_all.real), np.ascontiguousarray(W_all.imag)
+    lossy = phase.imag != 0
+    any_lossy = bool(lossy.any())
+    W2_all = Wr_all * Wr_all + Wi_all * Wi_all if any_lossy else None
+    size2_all = phasor.abs2(A_all) if any_lossy else None
+    # real, contiguous: (Re X A, -Im X A) and (Re Y A, -Im Y A) per polarisation
+    XA = [(x.real.copy(), -x.imag) for x in (phasor.cmul(g.X[i], A_all) for i in (0, 1))]
+    YA = [(y.real.copy(), -y.imag) for y in (phasor.cmul(g.Y[i], A_all) for i in (0, 1))]
+    starts_at = offsets[:-1]
+    seg_lossy = np.maximum.reduceat(lossy, starts_at)
+    gap = np.minimum.reduceat(np.minimum.reduce(g.gaps), starts_at)
+    gap_abs = np.minimum.reduceat(np.minimum.reduce(np.abs(g.gaps)), starts_at)
+    for s_, (j, b) in enumerate((j, b) for j in range(rows) for b in range(blocks)):
+        part = slice(offsets[s_], offsets[s_ + 1])
+        lossless = not seg_lossy[s_]
+        direct = not (gap_abs[s_] if lossless else gap[s_]) >= _MARGIN
+        shared = (
+            lossless,
+            direct,
+            Wr_all[:, part],
+            Wi_all[:, part],
+            None if W2_all is None else W2_all[:, part],
+            [(xr[:, part], xi[:, part]) for xr, xi in XA],
+            [(yr[:, part], yi[:, part]) for yr, yi in YA],
+            None if size2_all is None else size2_all[:, part],
+        )
+        prepared[j].append(
+            _prepare(g, part, dds[b], run_of[b], W_all[:, part], A_all[:, part], shared)
         )
 
 

@@ -17,7 +17,7 @@ cos theta = 0 (grazing) every film reflects everything (R = 1, T = 0).
 samples lie exactly on the ends of the range, so normal incidence, grazing incidence and
 both ends of the thickness range are table values, not extrapolations),
 :func:`texture_coordinate` the texture coordinate a host reads a value at, and
-:func:`default_resolution` the measured default size (docs/materials.md).
+:func:`default_resolution` the default size (chosen in docs/materials.md).
 """
 
 from __future__ import annotations
@@ -54,12 +54,12 @@ __all__ = [
 ]
 
 #: Texels of the thickness axis per shortest interference fringe (a thickness step of
-#: ``380 nm / (2 n)``), measured in docs/materials.md.
+#: ``380 nm / (2 n)``), chosen in docs/materials.md.
 TEXELS_PER_FRINGE = 40
 #: Bounds of the default width.
 MIN_WIDTH = 64
 MAX_WIDTH = 1536
-#: Rows of the cos theta axis, measured in docs/materials.md.
+#: Rows of the cos theta axis, chosen in docs/materials.md.
 DEFAULT_HEIGHT = 192
 #: The sharpest fringes (``|r_a r_b|`` of the varying layer) the wavelength step
 #: resolves: near grazing incidence ``|r_a r_b| -> 1`` and the full criterion asks for

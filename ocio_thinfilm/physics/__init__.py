@@ -4,6 +4,8 @@
   (Eq. 10/11), the multilayer of Eq. 9 and the Morpho geometry of Eq. 14;
 - :mod:`.exact` -- exact optics used as references: the Airy sum with Fresnel
   amplitudes, transfer matrices;
+- :mod:`.airy` -- the Airy sum's arithmetic (real, pointwise and band-limited), the
+  kernel of :func:`.exact.airy_reflectance`;
 - :mod:`.phasor` -- a stack at one angle as coefficients of its varying layer's phasor
   (the exact engine of the material tables, reproducible complex arithmetic);
 - :mod:`.sampling` -- wavelength grids, argument checks and the band-limited

@@ -21,13 +21,12 @@ import numpy as np
 import numpy.typing as npt
 
 from ocio_thinfilm.checks import ParameterError, as_array, as_count
+from ocio_thinfilm.physics.airy import airy_band_limited, airy_exact, airy_terms
 from ocio_thinfilm.physics.sampling import (
     MAX_LAYERS,
     as_angle,
     as_index,
     check_wavelengths,
-    cosine_series,
-    phase,
 )
 
 __all__ = [
@@ -162,108 +161,10 @@ def airy_reflectance(
     beta_path = n1 * cos1 * d  # delta = 2 pi (2 beta_path) / lambda
 
     r02 = _fresnel(n0, cos0, n2, cos2)
-    # Per polarisation, with z = e^{i delta} = rho e^{i psi} (rho = 1 for a lossless
-    # propagating film), |a + b z|^2 / |1 + a b z|^2 written out in real arithmetic:
-    #   num = |a|^2 + |b|^2 rho^2 + 2 rho (Re(a* b) cos psi - Im(a* b) sin psi)
-    #   den = 1 + |a b|^2 rho^2 + 2 rho (Re(a b) cos psi - Im(a b) sin psi)
-    # One cosine per sample serves s and p (the sine only when a coefficient is
-    # complex: TIR, absorption). Where den = 0 (|r01| = |r12| = 1 with r01 r12 z = -1:
-    # grazing incidence on an absentee layer) the film drops out: R = |r02|^2.
-    pols = []
-    for a, b, c in zip(r01, r12, r02, strict=True):
-        a, b = np.asarray(a), np.asarray(b)
-        cross_num, cross_den = np.conj(a) * b, a * b
-        # (constant, |b|^2 or |ab|^2 times rho^2, 2 Re(cross), -2 Im(cross)) for num, den
-        pols.append(
-            (
-                (np.abs(a) ** 2, np.abs(b) ** 2, 2.0 * cross_num.real, -2.0 * cross_num.imag),
-                (
-                    np.ones_like(np.abs(a)),
-                    np.abs(a * b) ** 2,
-                    2.0 * cross_den.real,
-                    -2.0 * cross_den.imag,
-                ),
-                np.abs(c) ** 2,
-                a,
-                b,
-            )
-        )
-    need_sin = any(np.any(q[0][3]) or np.any(q[1][3]) for q in pols)
-
-    def point(psi: np.ndarray, rho: np.ndarray | None = None) -> np.ndarray:
-        arrays = [x for q in pols for x in (*q[0], *q[1], *q[2:])]
-        lead = np.broadcast_shapes(psi.shape[:-1], *(np.shape(x) for x in arrays))
-        width = psi.shape[-1]
-        psi = np.broadcast_to(psi, lead + (width,)).reshape(-1, width)
-        if rho is not None:
-            rho = np.broadcast_to(rho, lead + (width,)).reshape(-1, width)
-
-        def column(x: npt.ArrayLike) -> np.ndarray:
-            return np.broadcast_to(x, lead).reshape(-1, 1)
-
-        flat = [
-            (
-                [column(x) for x in q[0]],
-                [column(x) for x in q[1]],
-                column(q[2]),
-                column(q[3]),
-                column(q[4]),
-            )
-            for q in pols
-        ]
-        out = np.empty(psi.shape)
-        chunk = max(1, 32768 // max(width, 1))  # rows per block: temporaries stay in cache
-        for start in range(0, psi.shape[0], chunk):
-            rows = slice(start, start + chunk)
-            cos_psi = np.cos(psi[rows])
-            sin_psi = np.sin(psi[rows]) if need_sin else None
-            rho_r = None if rho is None else rho[rows]
-            total = np.zeros(cos_psi.shape)
-            for num_coef, den_coef, bare, a, b in flat:
-                halves = []
-                for const, square, re2, im2 in (num_coef, den_coef):
-                    v = cos_psi * re2[rows]
-                    if sin_psi is not None:
-                        v += sin_psi * im2[rows]
-                    if rho_r is None:
-                        v += const[rows] + square[rows]
-                    else:
-                        v *= rho_r
-                        v += square[rows] * rho_r * rho_r
-                        v += const[rows]
-                    halves.append(v)
-                num, den = halves
-                if den.min() > 1e-6:
-                    num /= den
-                else:
-                    # |r01 r12| -> 1 (grazing incidence with TIR): num and den both
-                    # cancel; the complex quotient keeps full precision there.
-                    zz = cos_psi + 1j * (np.sin(psi[rows]) if sin_psi is None else sin_psi)
-                    if rho_r is not None:
-                        zz *= rho_r
-                    ar, br = a[rows], b[rows]
-                    num, den = ar + br * zz, 1.0 + ar * br * zz
-                    ok = den != 0
-                    num = np.where(
-                        ok,
-                        np.abs(np.divide(num, den, out=np.zeros_like(num), where=ok)) ** 2,
-                        bare[rows],
-                    )
-                total += num
-            total *= 0.5
-            out[rows] = total
-        return out.reshape(lead + (width,))
-
+    terms, need_sin = airy_terms(r01, r12, r02)
     path = 2.0 * beta_path
-    wavenumber = 2.0 * np.pi / wl
-
-    def exact() -> np.ndarray:
-        psi = np.real(path)[..., None] * wavenumber
-        decay = np.imag(path)[..., None]
-        return point(psi, np.exp(-decay * wavenumber) if np.any(decay) else None)
-
     if not band_limited:
-        return np.clip(exact(), 0.0, 1.0)
+        return np.clip(airy_exact(terms, need_sin, path, 2.0 * np.pi / wl), 0.0, 1.0)
     # Lossless propagating film: real path. Fourier-expand R over one period of delta.
     # (A property of the film, not of the product with d: a zero-thickness evanescent
     # film has a real path but R(delta) with poles, which no Fourier series captures.)
@@ -276,17 +177,7 @@ def airy_reflectance(
     real_path = np.broadcast_to(
         (np.abs(np.imag(film)) <= 1e-12 * np.abs(film)) & converged, np.shape(path)
     )
-    phi_c, dphi = phase(np.real(path), wl, True)
-    grid = 2.0 * np.pi * np.arange(harmonics) / harmonics
-    samples = point(np.broadcast_to(grid, np.shape(np.real(path)) + (harmonics,)))
-    spectrum = np.fft.rfft(samples, axis=-1) / harmonics
-    coefficients = [spectrum[..., 0].real] + [
-        2.0 * spectrum[..., k] for k in range(1, harmonics // 2)
-    ]
-    smooth = cosine_series(coefficients, phi_c, dphi)
-    if np.all(real_path):
-        return np.clip(smooth, 0.0, 1.0)
-    return np.clip(np.where(real_path[..., None], smooth, exact()), 0.0, 1.0)
+    return airy_band_limited(terms, need_sin, path, wl, real_path, harmonics)
 
 
 def transfer_matrix_reflectance(

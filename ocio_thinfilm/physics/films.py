@@ -166,8 +166,8 @@ def film_wavelengths(
     max_thickness_nm : float, optional
         The thickest the varying layer gets.
     max_sharpness : float, optional
-        A cap on the fringes' sharpness the step resolves (the material tables' measured
-        choice, :mod:`ocio_thinfilm.lut.material_tables`).
+        A cap on the fringes' sharpness the step resolves (the material tables' choice,
+        :mod:`ocio_thinfilm.lut.material_tables`).
     sharpness : float, optional
         The film's :func:`fringe_sharpness`, if the caller has it (it depends on the
         angle only; the material tables ask for several thicknesses at each angle).

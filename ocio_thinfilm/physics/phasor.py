@@ -234,6 +234,38 @@ def stack_coefficients(
     >>> R.round(7).tolist()
     [0.1215919]
     """
+    wl, n, depths, vary = _checked_stack(n_media, thicknesses, vary, wavelengths)
+    c = np.broadcast_to(as_array("cos_theta", cos_theta, minimum=0.0, maximum=1.0), wl.shape)
+    sin0 = np.sqrt(1.0 - c * c)
+    media = [n[i] for i in range(n.shape[0])]
+    cosines = [c.astype(np.complex128)]
+    cosines += [_snell(media[0], m, sin0) for m in media[1:]]
+    k0 = 2.0 * np.pi / wl
+    # 2 k0 n_j cos_j per medium: z_j = exp(i phase_j d_j)
+    phases = [cmul(cmul(m, cj), 2.0 * k0) for m, cj in zip(media, cosines, strict=True)]
+    v = vary + 1  # the varying layer's index among the media
+    z, roots = _fixed_phasors(phases, depths, v, wl.shape)
+    fluxes = _fluxes(media, cosines, wl.shape)
+    out: dict[str, list] = {key: [] for key in ("P", "Q", "S", "U", "power", "above")}
+    for polarisation in (0, 1):
+        P, Q, S, U, K, above = _moebius(media, cosines, z, roots, v, polarisation)
+        out["P"].append(P)
+        out["Q"].append(Q)
+        out["S"].append(S)
+        out["U"].append(U)
+        power = 0.5 * fluxes[polarisation] * abs2(K) if transmit else np.zeros(wl.shape)
+        out["power"].append(power)
+        out["above"].append(above)
+    return StackCoefficients(
+        phases[v],
+        *(tuple(out[key]) for key in ("P", "Q", "S", "U", "power", "above")),
+    )
+
+
+def _checked_stack(
+    n_media: npt.ArrayLike, thicknesses: npt.ArrayLike, vary: int, wavelengths: npt.ArrayLike
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+    """Check :func:`stack_coefficients`' stack; return (wavelengths, n, depths, vary)."""
     wl = np.atleast_1d(as_array("wavelengths", wavelengths, minimum=0.0, strict=True, unit=" nm"))
     if wl.ndim != 1:
         raise ParameterError("wavelengths", " must be a 1-D array of nm values")
@@ -251,77 +283,73 @@ def stack_coefficients(
     depths = np.atleast_1d(as_array("thicknesses", thicknesses, minimum=0.0, unit=" nm"))
     if depths.shape != (layers,):
         raise ParameterError("thicknesses", f" must give one thickness per layer ({layers})")
-    vary = as_count("vary", vary, 0, layers - 1)
-    c = np.broadcast_to(as_array("cos_theta", cos_theta, minimum=0.0, maximum=1.0), wl.shape)
-    sin0 = np.sqrt(1.0 - c * c)
-    media = [n[i] for i in range(n.shape[0])]
-    cosines = [c.astype(np.complex128)]
-    cosines += [_snell(media[0], m, sin0) for m in media[1:]]
-    k0 = 2.0 * np.pi / wl
-    # 2 k0 n_j cos_j per medium: z_j = exp(i phase_j d_j)
-    phases = [cmul(cmul(m, cj), 2.0 * k0) for m, cj in zip(media, cosines, strict=True)]
-    v = vary + 1  # the varying layer's index among the media
+    return wl, n, depths, as_count("vary", vary, 0, layers - 1)
+
+
+def _fixed_phasors(phases: list, depths: np.ndarray, v: int, shape: tuple) -> tuple[dict, dict]:
+    """Return the fixed layers' phasors z_j and their square roots, by medium index."""
     z, roots = {}, {}
-    for j in range(1, len(media) - 1):
+    for j in range(1, len(phases) - 1):
         if j != v:
             d = float(depths[j - 1])
-            z[j] = cexp_i(phases[j], d) if d > 0 else np.ones(wl.shape, complex)
-            roots[j] = cexp_i(phases[j], 0.5 * d) if d > 0 else np.ones(wl.shape, complex)
-    # flux factors of the power transmitted (stack_transmittance's _rouard)
+            z[j] = cexp_i(phases[j], d) if d > 0 else np.ones(shape, complex)
+            roots[j] = cexp_i(phases[j], 0.5 * d) if d > 0 else np.ones(shape, complex)
+    return z, roots
+
+
+def _fluxes(media: list, cosines: list, shape: tuple) -> list[np.ndarray]:
+    """Return the flux factors (s, p) of the power transmitted (as ``_rouard``)."""
     fluxes = []
     for polarisation in (0, 1):
         cs, c0 = cosines[-1], cosines[0]
         if polarisation == 1:
             cs, c0 = np.conj(cs), np.conj(c0)
         num, den = cmul(media[-1], cs).real, cmul(media[0], c0).real
-        fluxes.append(np.divide(num, den, out=np.zeros(wl.shape), where=den > 0))
-    out: dict[str, list] = {key: [] for key in ("P", "Q", "S", "U", "power", "above")}
-    one = np.ones(wl.shape, complex)
-    for polarisation in (0, 1):
-        rho = [
-            _fresnel_real(media[i], cosines[i], media[i + 1], cosines[i + 1], polarisation)
-            for i in range(len(media) - 1)
-        ]
+        fluxes.append(np.divide(num, den, out=np.zeros(shape), where=den > 0))
+    return fluxes
 
-        def tau(j: int, rho: list = rho, polarisation: int = polarisation) -> np.ndarray:
-            # the Fresnel transmission amplitude into media[j]; p: (1 + r_p) n_i / n_j
-            t = 1.0 + rho[j - 1]
-            return cmul(t, _cdiv(media[j - 1], media[j])) if polarisation == 1 else t
 
-        r = rho[-1].copy()
-        t = tau(len(media) - 1)
-        for j in range(len(media) - 2, v, -1):  # the fixed layers below the varying one
-            a = rho[j - 1]
-            rz = cmul(r, z[j])
-            den = 1.0 + cmul(a, rz)
-            ok = den != 0  # as _rouard: the interface's own reflection there
-            r = np.where(ok, _cdiv(a + rz, den), a)
-            t = np.where(ok, _cdiv(cmul(cmul(tau(j), t), roots[j]), den), 0)
-        a = rho[v - 1]
-        P, Q, S, U, K = r, a, cmul(a, r), one, cmul(tau(v), t)
-        above = []
-        for j in range(v - 1, 0, -1):  # the fixed layers above the varying one
-            above.append((S, U))
-            a = rho[j - 1]
-            az = cmul(a, z[j])
-            P, Q, S, U = (
-                cmul(a, S) + cmul(z[j], P),
-                cmul(a, U) + cmul(z[j], Q),
-                S + cmul(az, P),
-                U + cmul(az, Q),
-            )
-            K = cmul(cmul(tau(j), roots[j]), K)
-        out["P"].append(P)
-        out["Q"].append(Q)
-        out["S"].append(S)
-        out["U"].append(U)
-        power = 0.5 * fluxes[polarisation] * abs2(K) if transmit else np.zeros(wl.shape)
-        out["power"].append(power)
-        out["above"].append(tuple(above))
-    return StackCoefficients(
-        phases[v],
-        *(tuple(out[key]) for key in ("P", "Q", "S", "U", "power", "above")),
-    )
+def _moebius(media: list, cosines: list, z: dict, roots: dict, v: int, polarisation: int) -> tuple:
+    """Return (P, Q, S, U, K, above) of one polarisation.
+
+    The stack below the varying layer ``v`` by Rouard's recursion, then the layers
+    above composed with it.
+    """
+    one = np.ones(np.shape(media[0]), complex)
+    rho = [
+        _fresnel_real(media[i], cosines[i], media[i + 1], cosines[i + 1], polarisation)
+        for i in range(len(media) - 1)
+    ]
+
+    def tau(j: int) -> np.ndarray:
+        # the Fresnel transmission amplitude into media[j]; p: (1 + r_p) n_i / n_j
+        t = 1.0 + rho[j - 1]
+        return cmul(t, _cdiv(media[j - 1], media[j])) if polarisation == 1 else t
+
+    r = rho[-1].copy()
+    t = tau(len(media) - 1)
+    for j in range(len(media) - 2, v, -1):  # the fixed layers below the varying one
+        a = rho[j - 1]
+        rz = cmul(r, z[j])
+        den = 1.0 + cmul(a, rz)
+        ok = den != 0  # as _rouard: the interface's own reflection there
+        r = np.where(ok, _cdiv(a + rz, den), a)
+        t = np.where(ok, _cdiv(cmul(cmul(tau(j), t), roots[j]), den), 0)
+    a = rho[v - 1]
+    P, Q, S, U, K = r, a, cmul(a, r), one, cmul(tau(v), t)
+    above = []
+    for j in range(v - 1, 0, -1):  # the fixed layers above the varying one
+        above.append((S, U))
+        a = rho[j - 1]
+        az = cmul(a, z[j])
+        P, Q, S, U = (
+            cmul(a, S) + cmul(z[j], P),
+            cmul(a, U) + cmul(z[j], Q),
+            S + cmul(az, P),
+            U + cmul(az, Q),
+        )
+        K = cmul(cmul(tau(j), roots[j]), K)
+    return P, Q, S, U, K, tuple(above)
 
 
 def _fresnel_real(

@@ -505,6 +505,15 @@ def validate() -> None:
     ValueError
         Naming the first entry that breaks a rule.
     """
+    _check_names()
+    _check_displays()
+    _check_views()
+    _check_spaces()
+    _check_thin_film_spaces()
+
+
+def _check_names() -> None:
+    """Check that names are unique and non-empty, LUT stems unique and file-name safe."""
     import re
 
     for kind, names in (
@@ -524,6 +533,10 @@ def validate() -> None:
     for stem in stems:
         if not re.fullmatch(r"[A-Za-z0-9_]+", stem):
             raise ValueError(f"registry: LUT file stem {stem!r} is not file-name safe")
+
+
+def _check_displays() -> None:
+    """Check the displays: gamut-named ones, encodings, colour spaces, HDR entries."""
     for d in DISPLAY_LIST:
         if d.name in RGB_COLORIMETRY and d.colorimetry != d.name:
             raise ValueError(
@@ -547,6 +560,10 @@ def validate() -> None:
             or not h.png_colorspace
         ):
             raise ValueError(f"registry: HDR display {h.name!r}: bad entry {h!r}")
+
+
+def _check_views() -> None:
+    """Check one view of each kind, the raw one last; encodings' and curves' names."""
     if sorted(v.kind for v in VIEW_LIST) != sorted(VIEW_KINDS):
         raise ValueError(f"registry: one view of each kind {VIEW_KINDS}")
     for kind, names in (("encoded space", ENCODED_SPACES), ("log curve", LOG_CURVES)):
@@ -556,6 +573,10 @@ def validate() -> None:
         raise ValueError("registry: exactly one raw view, listed last")
     if any(not v.description for v in VIEW_LIST if not v.raw):
         raise ValueError("registry: every view but the raw one needs a description")
+
+
+def _check_spaces() -> None:
+    """Check colour space and gamut names unique, colorimetries and encodings known."""
     spaces_all = (
         [REFERENCE, TEXTURE_SPACE, RAW_SPACE]
         + list(SCENE_LINEAR_SPACES)
@@ -583,6 +604,10 @@ def validate() -> None:
             raise ValueError(f"registry: {encoded.name!r}: bad curve or family {encoded!r}")
     if sorted(set(_SPACE_KIND.values())) != sorted(SPACE_KINDS):
         raise ValueError(f"registry: a colour space of each kind {SPACE_KINDS}")
+
+
+def _check_thin_film_spaces() -> None:
+    """Check one thin-film space per table kind, each with a well-formed table."""
     kinds = [s.kind for s in THIN_FILM_LIST]
     if len(set(kinds)) != len(kinds):
         raise ValueError(f"registry: one thin-film space per table kind: {kinds}")

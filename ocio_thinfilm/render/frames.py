@@ -390,7 +390,7 @@ def save_frame(
         png_tag = "data" if raw else png_colorspace(display)
         entry = registry.find_display(display)
         png_attributes: dict[str, Any] = {"png:compressionLevel": 3, "oiio:ColorSpace": png_tag}
-        if not raw and entry is not None and not entry.hdr and entry.png_cicp is not None:
+        if not raw and isinstance(entry, registry.Display) and entry.png_cicp is not None:
             png_attributes["CICP"] = entry.png_cicp
         # HDR code values need 16 bits (PQ: 8-bit steps are visible banding)
         png_job = pool.submit(

@@ -39,7 +39,7 @@ __all__ = ["noise", "turbulence", "TABLE_SIZE", "MEAN_ABS_NOISE"]
 #: Lattice period: the noise repeats every 256 units along each axis.
 TABLE_SIZE = 256
 
-#: Mean of |noise| in 1, 2 and 3 dimensions (measured, 10^6 samples, seed 0): what
+#: Mean of |noise| in 1, 2 and 3 dimensions (sampled: 10^6 samples, seed 0): what
 #: a fully band-limited octave of :func:`turbulence` fades to.
 MEAN_ABS_NOISE = {1: 0.37, 2: 0.234, 3: 0.171}
 

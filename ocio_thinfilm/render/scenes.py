@@ -1,36 +1,20 @@
 """The paper's example scenes (Smits & Meyer 1990, Section 4, Figures 4-7).
 
-Stage 7 of the pipeline (after the tables and the config). A scene is geometry and
-shading only: it computes, per pixel, the *encoded* value a precomputed table is
-indexed with (optical thickness t' in micrometres for a film, the facing ratio
-cos(theta) for the Morpho multilayer) and composites the table's colour with the
-rest of the picture in scene-linear CIE XYZ. Colours of interference come *only*
-from the tables, through a ``lookup(spec, encoded)`` callable supplied by the
-renderer (:func:`ocio_thinfilm.render.processors.make_lookup` applies the config's
-thin-film colour spaces), so the pictures exercise the shipped LUT files end to end.
+Stage 7 of the pipeline. A scene is geometry and shading only: it computes, per pixel,
+the *encoded* value a precomputed table is indexed with (optical thickness t' in um for a
+film, cos(theta) for the Morpho multilayer) and composites the table's colour, from a
+``lookup(spec, encoded)`` callable (:func:`ocio_thinfilm.render.processors.make_lookup`:
+the config's thin-film colour spaces), in scene-linear CIE XYZ. Each scene declares the
+tables it needs (:class:`TableSpec`); what every scene is made of is
+:mod:`ocio_thinfilm.render.scene_base`. This module holds the scenes:
 
-Each scene *declares* the tables it needs (:class:`TableSpec`: kind, encoding
-range, entries); the renderer creates processors for those and nothing else. What
-every scene is made of (:class:`TableSpec`, :class:`Picture`, the base class
-:class:`Scene`) is :mod:`ocio_thinfilm.render.scene_base`; this module holds the scenes.
+- ``spectrum`` (Fig. 4): the visible spectrum and Newton's colours through four views;
+- ``oil`` (Fig. 5): an oil slick on wet asphalt, Eq. 12-13;
+- ``soap`` (Fig. 6): a soap bubble, black at the thin top;
+- ``morpho`` (Fig. 7): a wavy surface coloured by the Morpho angle table (Eq. 9 + 14).
 
-Scenes
-------
-- ``spectrum`` (Fig. 4): the visible spectrum and a strip of Newton's (near-spectral)
-  interference colours, through four views side by side.
-- ``oil`` (Fig. 5): an oil slick on wet asphalt, Eq. 12-13, seen by a camera looking
-  down at the ground; per-pixel view angle; asphalt from two noise calls (bump scale
-  and roughness) plus very fine bumps.
-- ``soap`` (Fig. 6): a soap bubble, thickness proportional to normalised height plus
-  turbulence, black at the thin top; view angle from the surface normal.
-- ``morpho`` (Fig. 7): a wavy iridescent surface coloured by the Morpho angle table
-  (Eq. 9 + 14), blue at normal incidence shifting to violet and dark with angle.
-
-Conventions: images are (H, W) arrays, row 0 at the top; scene-linear colour is
-CIE XYZ relative to D65 (Y = 1 is the perfect white reflector under the scene's
-unit illuminant); lengths in micrometres unless stated; everything float32 and
-vectorised over the image. Frame 1 is the still; animated parameters change with
-the frame number only, so every frame is independent of the others.
+Each scene in pictures: docs/render.md, *Gallery*; the conventions (images, units,
+frames): its *Design notes*.
 """
 
 from __future__ import annotations
@@ -380,20 +364,10 @@ class SoapScene(Scene):
     RADIUS = 0.44  # of the image's smaller side
     FILM_GAIN = 0.85
 
-    def render(
-        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
-    ) -> Picture:
-        """Render one frame: see :meth:`Scene.render`."""
-        x, y = _pixel_grid(width, height)
-        r = np.float32(self.RADIUS * min(width, height))
-        nx = (x - width / 2) / r
-        ny = (height / 2 - y) / r  # up
-        rho2 = nx * nx + ny * ny
-        inside = rho2 < 1.0
-        nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))  # towards the (orthographic) viewer
-        cos_view = nz
-        theta = np.degrees(reproducible.float32_of(np.arccos, np.clip(cos_view, 0.0, 1.0)))
-
+    def _thickness(
+        self, nx: np.ndarray, ny: np.ndarray, r: np.float32, seed: int, frame: int
+    ) -> tuple[np.ndarray, float]:
+        """Return the film's physical thickness (um) and the drained height."""
         # Height normalised to 0 at the top and 1 at the bottom, plus turbulence (air
         # currents) swirling around the bubble; draining raises the black line.
         h = (1.0 - ny) / 2.0
@@ -410,7 +384,34 @@ class SoapScene(Scene):
         )
         level = h + self.TURB * (turb - 0.45)
         level = np.clip((level - drain) / (1.0 - drain), 0.0, None)
-        t_phys = (self.T_BOTTOM * level).astype(np.float32)
+        return (self.T_BOTTOM * level).astype(np.float32), drain
+
+    @staticmethod
+    def _studio(nx: np.ndarray, ny: np.ndarray, nz: np.ndarray) -> np.ndarray:
+        """Return the studio environment's light seen in the mirror direction."""
+        # Studio environment seen in the mirror direction: a soft bright window at the
+        # upper left over a dim room, brighter above than below.
+        rx, ry, rz = 2 * nz * nx, 2 * nz * ny, 2 * nz * nz - 1
+        window = np.array([-0.45, 0.6, 0.66], np.float32)
+        window /= np.sqrt(reproducible.matmul(window, window))
+        key = _smoothstep(0.86, 0.97, rx * window[0] + ry * window[1] + rz * window[2])
+        return 0.55 + 0.3 * ry + 0.45 * key
+
+    def render(
+        self, width: int, height: int, *, lookup: Lookup, seed: int = 0, frame: int = 1
+    ) -> Picture:
+        """Render one frame: see :meth:`Scene.render`."""
+        x, y = _pixel_grid(width, height)
+        r = np.float32(self.RADIUS * min(width, height))
+        nx = (x - width / 2) / r
+        ny = (height / 2 - y) / r  # up
+        rho2 = nx * nx + ny * ny
+        inside = rho2 < 1.0
+        nz = np.sqrt(np.clip(1.0 - rho2, 0.0, 1.0))  # towards the (orthographic) viewer
+        cos_view = nz
+        theta = np.degrees(reproducible.float32_of(np.arccos, np.clip(cos_view, 0.0, 1.0)))
+
+        t_phys, drain = self._thickness(nx, ny, r, seed, frame)
         t_opt = _optical_thickness_um(
             np.where(inside, t_phys, 0.0), self.N_SOAP, np.where(inside, theta, 0.0)
         )
@@ -419,13 +420,7 @@ class SoapScene(Scene):
         else:
             film = lookup(FILM_TABLE, t_opt)
 
-        # Studio environment seen in the mirror direction: a soft bright window at the
-        # upper left over a dim room, brighter above than below.
-        rx, ry, rz = 2 * nz * nx, 2 * nz * ny, 2 * nz * nz - 1
-        window = np.array([-0.45, 0.6, 0.66], np.float32)
-        window /= np.sqrt(reproducible.matmul(window, window))
-        key = _smoothstep(0.86, 0.97, rx * window[0] + ry * window[1] + rz * window[2])
-        env = 0.55 + 0.3 * ry + 0.45 * key
+        env = self._studio(nx, ny, nz)
         # Background: a dark gradient, seen through the bubble too (transmission ~ 1).
         backdrop = _grey(0.012 + 0.03 * (y / height))
         edge = _smoothstep(1.0, 0.985, np.sqrt(rho2))  # anti-aliased silhouette

@@ -3,47 +3,17 @@
 :func:`blender_script` returns the text of a Python script that, run in Blender 3.4 or
 later (``blender --python FILE``, or the Text Editor's *Run Script*), builds
 
-- a shader node group named by the film's ``name`` (the film file's, default ``Thin
-  Film <key>``; the EXR header's and the other hosts' name): inputs ``Thickness`` (the
-  film's physical thickness in micrometres, default the middle of the table's range)
-  and ``Roughness``;
-  outputs ``BSDF`` (the film as a shader), ``Reflectance`` and, for a free-standing film,
-  ``Transmittance`` (the tables' colours at the shading point, to feed other shaders);
+- a shader node group named by the film's ``name``: inputs ``Thickness`` (um) and
+  ``Roughness``; outputs ``BSDF``, ``Reflectance`` and, for a free-standing film,
+  ``Transmittance``;
 - a material of the same name: that group into the material output.
 
-Inside the group the cosine of the incidence angle is ``|N . I|`` clamped to [0, 1] (the
-Geometry node's shading ``Normal`` and ``Incoming``, the unit vector towards the ray's
-origin; the absolute value serves back faces, where a free-standing film is the same
-seen from either side), the texture coordinates are ``u = (t - lo) / (hi - lo)`` and
-``v = cos(theta)`` (the table's node-centred axes: ``docs/blender.md``, the material
-table's contract: sample ``i`` of ``N`` at fraction ``i / (N - 1)``, so normal and grazing
-incidence are table rows), and each table is read bilinearly in nodes: four Image Texture
-nodes (colour space Non-Color, Closest interpolation, EXTEND) at the two samples around
-(u, v) along each axis, mixed by the fractional position between them. A GPU's own
-filtered read (EEVEE's Linear) picks a mipmap level from the screen-space derivatives
-of (u, v) and so blurs the table across thicknesses; measured in bpy 5.0.1's EEVEE on
-Mesa, it returned wrong colours outright (DeltaE2000 p50 16 against the exact film; 0.2
-with the nodes).
-
-The shader is a Glossy BSDF (multiscatter GGX, the ``Roughness`` input) tinted by the
-reflectance R, plus, where a transmittance table is given, a Transparent BSDF tinted by
-the transmittance T: light goes straight through a film far thinner than the object, and
-the two weights add to R + T, the film's energy. Cycles picks one of the two closures
-per sample by its weight, as it does for Principled BSDF's thin-film bubble: measured
-equally noisy (``benchmarks/bench_bubbles.py``; a Mix Shader with the same weights
-renders the same bits). EEVEE's render method is Blended (3.x: Alpha Blend): noise-free,
-where Dithered speckles.
-
-The script lists the film's tables in one or more spaces (:class:`BlenderTables`) and
-loads those of the scene's working space (Blender 5's ``bpy.data.colorspace``; Linear
-Rec.709 before, Blender's own config), else the first; it says in one line when the
-spaces differ, and once how much of the loaded table lies outside its space's gamut
-(counted at export) and what to do about it.
-
-The script finds the tables beside itself (their paths are relative to the script's
-folder, so the folder can be moved) and is idempotent: run again, it rebuilds the node
-group and the material of the same names in place (materials and objects that use them
-keep doing so) and reloads the images from disk; it touches no other data.
+Inside the group cos theta is ``|N . I|``, the tables are read bilinearly in nodes (four
+Closest-filtered Image Texture nodes per table on the node-centred axes), and the shader
+is a Glossy BSDF tinted by R plus, for a free-standing film, a Transparent BSDF tinted by
+T. The script loads the tables of the scene's working space (:class:`BlenderTables`),
+finds them beside itself and is idempotent. Why nodes and not the GPU's filtering, the
+closures, the working spaces: docs/blender.md.
 """
 
 from __future__ import annotations
@@ -664,8 +634,8 @@ def _build_material(group, transmits):
     output.location = (300, 0)
     tree.links.new(film.outputs["BSDF"], output.inputs["Surface"])
     if transmits:
-        # EEVEE: Blended shows the coloured transmission without noise (measured:
-        # docs/blender.md); Dithered (Alpha Hashed in 3.x) is stochastic and speckles
+        # EEVEE: Blended shows the coloured transmission without noise
+        # (docs/blender.md); Dithered (Alpha Hashed in 3.x) is stochastic and speckles
         if hasattr(material, "surface_render_method"):
             material.surface_render_method = "BLENDED"
         elif hasattr(material, "blend_method"):

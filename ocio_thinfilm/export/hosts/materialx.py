@@ -3,29 +3,16 @@
 :func:`materialx_document` writes a ``.mtlx`` document (MaterialX Specification 1.39,
 standard library nodes only) that defines the film as a node and uses it:
 
-- the node definition ``ND_<name>`` (node ``<name>``, output ``surfaceshader``;
-  ``<name>`` the film's name with the characters MaterialX names do not allow as ``_``:
-  :func:`materialx_identifier`) with the inputs ``thickness`` (float, µm, default the middle of the
-  film's range; connectable: a ``noise3d``, a texture, any float node) and ``roughness``
-  (vector2, default 0: a mirror);
-- its implementation, the node graph ``NG_<name>``: the tables' node-centred
-  axes read at ``(f (N - 1) + 0.5) / N`` for fraction ``f``: ``u`` = ``remap(thickness,
-  lo, hi, 0.5 / W, 1 - 0.5 / W)``, ``v`` = ``remap(cos θ, 0, 1, 0.5 / H, 1 - 0.5 / H)``
-  with cos θ = ``clamp(-dotproduct(viewdirection, normal), 0, 1)`` = N·V (MaterialX's
-  view direction points from the eye to the surface; both in world space), ``image``
-  of the reflectance table (and of the transmittance table) at ``(u, v)`` with
-  ``uaddressmode``/``vaddressmode`` ``clamp`` and ``filtertype`` ``linear`` (MaterialX
-  addresses images with v = 0 at the bottom row, the table's cos θ near 0);
-  ``generalized_schlick_bsdf`` with ``color0`` = ``color90`` = R (the Fresnel term is R
-  at the shading point's N·V over the whole lobe; ``color82`` left at its default
-  white, which adds no F82 tint); for a free-standing film, ``add`` of that and a
-  ``dielectric_bsdf`` with ``scatter_mode`` ``T``, ``ior`` 1 (no bending, no Fresnel
-  of its own) and ``tint`` = T: the energy is R + T, the table's; then ``surface``;
-- an instance ``SS_<name>`` of the node and the ``surfacematerial``
-  ``<name>``.
+- the node definition ``ND_<name>`` (``<name>``: :func:`materialx_identifier`) with the
+  inputs ``thickness`` (float, µm, connectable) and ``roughness`` (vector2, default 0);
+- its implementation, the node graph ``NG_<name>``: the tables' node-centred axes read
+  with ``image`` at (thickness, N·V), a ``generalized_schlick_bsdf`` tinted by R and, for
+  a free-standing film, ``add`` of a ``dielectric_bsdf`` transmitting T;
+- an instance ``SS_<name>`` of the node and the ``surfacematerial`` ``<name>``.
 
 Without a transmittance table the material is the film's reflection over an opaque,
-black substrate (or a metal in the film's stack).
+black substrate (or a metal in the film's stack). The graph node by node:
+docs/materialx.md, *The node*.
 """
 
 from __future__ import annotations

@@ -10,35 +10,12 @@ subclasses that variant's ``mi.BSDF``); :func:`bsdf` builds a checked scene dict
     plate = {"type": "rectangle", "bsdf": tfm.bsdf("films.toml", "SoapFilm", thickness=0.3)}
 
 At every shading point the film's stack is evaluated exactly at the path's sampled
-wavelengths (``si.wavelengths``) and the angle of incidence by
-:func:`ocio_thinfilm.physics.exact.stack_pointwise` (transfer matrices, s and p averaged,
-dispersive complex indices from the film's materials, held on a 0.25 nm grid over
-360-830 nm and interpolated linearly; outside a material's data its edge value). The
-film is smooth (roughness 0):
-
-- a free-standing film (:func:`ocio_thinfilm.lut.material_tables.free_standing`: the
-  substrate is the incident medium, a soap bubble) reflects (delta reflection) and
-  transmits straight through (direction unchanged, like Mitsuba's ``thindielectric``),
-  choosing the reflection with probability mean R / (mean R + mean T) over the sampled
-  wavelengths, at least :data:`MIN_REFLECTION_PROBABILITY`; it is two-sided (from the
-  back the stack is reversed);
-- a film on a substrate, metal or dielectric, reflects only (one-sided, as Mitsuba's
-  ``conductor``): the light refracted into a dielectric substrate is not traced (the
-  substrate's body is black; dispersion would split the wavelengths' paths).
-
-Parameters (Mitsuba properties): ``filename`` (the film file) and ``film`` (its key), or
-``film`` alone holding the token :func:`film_token` returns for a
-:class:`~ocio_thinfilm.physics.films.Film` object; ``thickness``: the varying layer's
-physical thickness, a float in µm (default: the middle of the film's ``range_um``) or a
-nested texture evaluated at the shading point (``eval_1``; give bitmaps
-``raw = true``); ``thickness_scale``: ``"um"`` (default: the texture's value is µm) or
-``"range"`` (the value in [0, 1] maps linearly onto the film's ``range_um``);
-``roughness``: 0 only. A :class:`FilmSampler` holds the numpy side (no Mitsuba type).
-
-Scalar variants call the physics once per shading point (4 wavelengths); JIT variants
-(``llvm_ad_spectral``) render inside :func:`evaluated_mode` (numpy per wavefront: the
-symbolic loops and calls Mitsuba records by default cannot reach numpy). docs/mitsuba.md
-has the measurements.
+wavelengths and angle by :func:`ocio_thinfilm.physics.exact.stack_pointwise`. A
+free-standing film reflects and transmits (two-sided, choosing reflection with
+probability at least :data:`MIN_REFLECTION_PROBABILITY`); a film on a substrate reflects
+only. A :class:`FilmSampler` holds the numpy side (no Mitsuba type); JIT variants render
+inside :func:`evaluated_mode`. The BSDF's properties and its sampling in full:
+docs/mitsuba.md, *Parameters*.
 """
 
 from __future__ import annotations
@@ -341,6 +318,44 @@ def bsdf(
     return out
 
 
+def _lobes(free: bool, varying: bool) -> tuple[list, Any]:
+    """Return the components' flags and their union (``varying``: a textured thickness)."""
+    sides = mi.BSDFFlags.FrontSide | (mi.BSDFFlags.BackSide if free else mi.BSDFFlags(0))
+    reflection = mi.BSDFFlags.DeltaReflection | sides
+    flags = [reflection]
+    if free:
+        flags.append(mi.BSDFFlags.DeltaTransmission | sides)
+    extra = mi.BSDFFlags(0)
+    if varying:
+        extra = mi.BSDFFlags.SpatiallyVarying
+    components = [f | extra for f in flags]
+    union = mi.BSDFFlags(0)
+    for f in components:
+        union = union | f
+    return components, union
+
+
+def _choose(
+    R: np.ndarray, T: np.ndarray, c: np.ndarray, has_r: Any, has_t: Any, free: bool, sample1: Any
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Return (reflect, ok, pdf, weight): each sample's lobe, validity, pdf and weight.
+
+    The lobe is chosen by the sample's mean reflectance against its transmittance.
+    """
+    r, t = R.mean(axis=0), T.mean(axis=0)
+    if has_r and has_t:
+        p_r = np.divide(r, r + t, out=np.ones_like(r), where=r + t > 0)
+        p_r = np.clip(p_r, MIN_REFLECTION_PROBABILITY, 1.0)
+    else:
+        p_r = np.full_like(r, 1.0 if has_r else 0.0)
+    reflect = np.asarray(sample1, dtype=np.float64) < p_r
+    ok = (c != 0) & (has_r | has_t) & (free | (c > 0))
+    pdf = np.where(reflect, p_r, 1.0 - p_r)
+    weight = np.where(reflect, R, T) / np.where(pdf > 0, pdf, 1.0)
+    ok = ok & (pdf > 0)
+    return reflect, ok, pdf, weight
+
+
 def _bsdf_class() -> type:
     """Return the plugin's class for the variant that is set (it subclasses its ``mi.BSDF``)."""
 
@@ -355,20 +370,9 @@ def _bsdf_class() -> type:
                 )
             self.sampler = FilmSampler(_film_from(props))
             self.thickness, self.scale, self.offset = _thickness(props, self.sampler.film)
-            sides = mi.BSDFFlags.FrontSide | (
-                mi.BSDFFlags.BackSide if self.sampler.free else mi.BSDFFlags(0)
+            self.m_components, self.m_flags = _lobes(
+                self.sampler.free, isinstance(self.thickness, mi.Texture)
             )
-            reflection = mi.BSDFFlags.DeltaReflection | sides
-            flags = [reflection]
-            if self.sampler.free:
-                flags.append(mi.BSDFFlags.DeltaTransmission | sides)
-            extra = mi.BSDFFlags(0)
-            if isinstance(self.thickness, mi.Texture):
-                extra = mi.BSDFFlags.SpatiallyVarying
-            self.m_components = [f | extra for f in flags]
-            self.m_flags = mi.BSDFFlags(0)
-            for f in self.m_components:
-                self.m_flags = self.m_flags | f
 
         def _thickness_nm(self, si: Any, active: Any) -> np.ndarray:
             if isinstance(self.thickness, float):
@@ -384,17 +388,7 @@ def _bsdf_class() -> type:
             )
             has_r = ctx.is_enabled(mi.BSDFFlags.DeltaReflection, 0)
             has_t = self.sampler.free and ctx.is_enabled(mi.BSDFFlags.DeltaTransmission, 1)
-            r, t = R.mean(axis=0), T.mean(axis=0)
-            if has_r and has_t:
-                p_r = np.divide(r, r + t, out=np.ones_like(r), where=r + t > 0)
-                p_r = np.clip(p_r, MIN_REFLECTION_PROBABILITY, 1.0)
-            else:
-                p_r = np.full_like(r, 1.0 if has_r else 0.0)
-            reflect = np.asarray(sample1, dtype=np.float64) < p_r
-            ok = (c != 0) & (has_r | has_t) & (self.sampler.free | (c > 0))
-            pdf = np.where(reflect, p_r, 1.0 - p_r)
-            weight = np.where(reflect, R, T) / np.where(pdf > 0, pdf, 1.0)
-            ok = ok & (pdf > 0)
+            reflect, ok, pdf, weight = _choose(R, T, c, has_r, has_t, self.sampler.free, sample1)
             sel = mi.Mask(reflect if reflect.ndim else bool(reflect))
             bs = mi.BSDFSample3f()
             bs.wo = dr.select(sel, mi.reflect(si.wi), -si.wi)

