@@ -187,21 +187,7 @@ def test_png_is_the_exr_through_the_chosen_view(stills):
     assert np.abs(expected - png).max() < 3 / 255
 
 
-#: SDR displays whose PNG does not carry the tag the registry names, measured: OpenImageIO
-#: 3 writes neither a cICP chunk nor gAMA for ``g24_rec2020_display`` (the PNG reads
-#: back as sRGB), though ``png_colorspace``'s docstring promises a cICP chunk.
-PNG_TAG_MISSES = {"Rec.2020": "the Rec.2020 PNG has no colour tag (reads back as sRGB)"}
-
-
-@pytest.mark.parametrize(
-    "display",
-    [
-        pytest.param(d, marks=pytest.mark.xfail(strict=True, reason=PNG_TAG_MISSES[d]))
-        if d in PNG_TAG_MISSES
-        else d
-        for d in registry.DISPLAYS
-    ],
-)
+@pytest.mark.parametrize("display", registry.DISPLAYS)
 def test_png_is_tagged_with_its_display(tmp_path, display):
     """Every SDR display: a display with cICP code points of its own (``png_cicp``,
     where OpenImageIO has no interop ID) gets that chunk; any other reads back, by

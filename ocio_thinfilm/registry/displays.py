@@ -77,8 +77,8 @@ class Display:
         The OpenImageIO colour interop ID a PNG for it is tagged with.
     png_cicp : tuple of 4 int, optional
         The PNG's cICP code points (ITU-T H.273: primaries, transfer, matrix, full
-        range) where OpenImageIO has no interop ID for the display (``None``: derived
-        from ``png_colorspace``).
+        range) where OpenImageIO writes no tag for ``png_colorspace`` (``None``: its
+        tag). BT.1886 displays take transfer 1 (BT.709), as video signals do.
     """
 
     name: str
@@ -308,6 +308,7 @@ DISPLAY_LIST = (
         encoding=_BT1886,
         lut_stem="Rec2020",
         png_colorspace="g24_rec2020_display",
+        png_cicp=(9, 1, 0, 1),
     ),
     Display(
         name="Rec.1886 Rec.709",

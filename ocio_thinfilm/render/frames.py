@@ -63,10 +63,11 @@ EXR_DOC = (
 def png_colorspace(display: str) -> str:
     """Return how a PNG for ``display`` is tagged.
 
-    sRGB gets PNG's sRGB chunk, Display P3 and Rec.2020 (BT.1886 gamma 2.4) a cICP
-    chunk, the displays of other configs (an ACES config merged with ``bake --into``)
-    ``"data"``, no tag -- never a wrong sRGB one. The HDR displays get their cICP chunk
-    (BT.2100 PQ: 9 16 0 1, HLG: 9 18 0 1, P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
+    sRGB gets PNG's sRGB chunk, Display P3, Rec.2020 and P3-DCI a cICP chunk
+    (``png_cicp`` where OpenImageIO writes none), Rec.1886 Rec.709 a gAMA chunk; the
+    displays of other configs (an ACES config merged with ``bake --into``) ``"data"``,
+    no tag -- never a wrong sRGB one. The HDR displays get their cICP chunk (BT.2100
+    PQ: 9 16 0 1, HLG: 9 18 0 1, P3-D65 PQ: 12 16 0 1) and 16 bits per channel.
 
     Parameters
     ----------
