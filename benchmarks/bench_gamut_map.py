@@ -272,8 +272,9 @@ def status_markdown(result):
         f"{max(m['p99'] for m in every):.2f} of the analytic clip, in-gamut colours within "
         f"{max(m['in_gamut_max'] for m in every):.2f}, |ΔY| ≤ {max(dY.values()):.1e}, in "
         "gamut, every processor finite at "
-        "every OCIO optimisation level; half-float GPU textures within 2/255 of the CPU "
-        "(asserted by tests/test_gpu.py, which prints what it measures)"
+        "every OCIO optimisation level; GPU float textures within 2/255 of the CPU, "
+        "half-float ones too but near black on the pure-power and PQ displays (up to "
+        "3.4/255: tests/test_gpu.py prints what it measures and xfails there)"
     )
     missed = [
         f"max ΔE2000 ≤ 1.5 on {name} ({v:.2f})" for name, v in worst.items() if v > TARGETS["max"]
