@@ -54,17 +54,16 @@ def test_bake_is_byte_identical_to_committed_config(tmp_path):
     _assert_identical_trees(out, CONFIG_DIR)
 
 
-def test_export_set_is_byte_identical_to_committed_luts(tmp_path):
-    bake.export_set(tmp_path)
-    _assert_identical_trees(tmp_path, LUTS_DIR)
-
-
 @pytest.fixture(scope="module")
 def exported_set(tmp_path_factory):
     """What ``ocio-thinfilm bake --luts`` ships, written by this code to a temp dir."""
     d = tmp_path_factory.mktemp("luts")
     bake.export_set(d)
     return d
+
+
+def test_export_set_is_byte_identical_to_committed_luts(exported_set):
+    _assert_identical_trees(exported_set, LUTS_DIR)
 
 
 def test_export_set_covers_every_table_display_and_format(exported_set):
