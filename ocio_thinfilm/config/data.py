@@ -502,50 +502,18 @@ def film_parts(
     luts : dict
         CLF file name -> GroupTransform.
     """
-    from ocio_thinfilm.checks import ParameterError
     from ocio_thinfilm.physics.films import check_names
 
     films = list(films)
     check_names(films, taken)
-    stems = [film_lut_stem(f) for f in films]
-    first: dict[str, Any] = {}
-    for film, stem in zip(films, stems, strict=True):
-        other = first.setdefault(stem.casefold(), film)
-        if other is not film:
-            raise ParameterError(
-                "films",
-                f" {film.source}: the films {other.key!r} and {film.key!r} would share the "
-                f"LUT file {named_lut(stem)} (every character of a key but letters, digits and "
-                "_ becomes _): rename one",
-            )
+    stems = _film_stems(films)
     spaces, named, luts = [], [], {}
     for film, stem in zip(films, stems, strict=True):
         table = film_tables.user_film_table(film)
         filename = named_lut(stem)
         luts[filename] = table.transform()
-        lo, hi = film.range_um
-        output = (
-            "the film's physical reflectance (a perfect reflector is Y = 1)"
-            if film.model == "exact"
-            else "the paper's normalised Eq. 7/8 reflectance (peak 1)"
-        )
-        if film.normalise:
-            output += ", scaled so that its brightest entry has Y = 1"
-        spaces.append(
-            dict(
-                name=film.name,
-                family="Thin Film",
-                encoding="scene-linear",
-                categories=["file-io"],
-                description=(
-                    f"{table.description} Pixel value (all three channels equal) = "
-                    f"physical thickness of the {film.varying.name} layer in "
-                    f"micrometres, clamped to [{lo:g}, {hi:g}]. Output: {output}, CIE "
-                    f"XYZ D65. From {Path(film.source).name}."
-                ),
-                to_reference=lut_reference(filename, luts, inline),
-            )
-        )
+        reference = lut_reference(filename, luts, inline)
+        spaces.append(_film_space(film, table.description, reference))
         named.append(
             dict(
                 name=TABLE_NAMED_TRANSFORM.format(space=film.name),
@@ -561,3 +529,46 @@ def film_parts(
             )
         )
     return spaces, named, luts
+
+
+def _film_stems(films: list[Any]) -> list[str]:
+    """Return the films' LUT file stems; refuse two films whose files would collide."""
+    from ocio_thinfilm.checks import ParameterError
+
+    stems = [film_lut_stem(f) for f in films]
+    first: dict[str, Any] = {}
+    for film, stem in zip(films, stems, strict=True):
+        other = first.setdefault(stem.casefold(), film)
+        if other is not film:
+            raise ParameterError(
+                "films",
+                f" {film.source}: the films {other.key!r} and {film.key!r} would share the "
+                f"LUT file {named_lut(stem)} (every character of a key but letters, digits and "
+                "_ becomes _): rename one",
+            )
+    return stems
+
+
+def _film_space(film: Any, table_description: str, to_reference: Any) -> dict:
+    """Return the input colour space of a user's film (pixel value: thickness in um)."""
+    lo, hi = film.range_um
+    output = (
+        "the film's physical reflectance (a perfect reflector is Y = 1)"
+        if film.model == "exact"
+        else "the paper's normalised Eq. 7/8 reflectance (peak 1)"
+    )
+    if film.normalise:
+        output += ", scaled so that its brightest entry has Y = 1"
+    return dict(
+        name=film.name,
+        family="Thin Film",
+        encoding="scene-linear",
+        categories=["file-io"],
+        description=(
+            f"{table_description} Pixel value (all three channels equal) = "
+            f"physical thickness of the {film.varying.name} layer in "
+            f"micrometres, clamped to [{lo:g}, {hi:g}]. Output: {output}, CIE "
+            f"XYZ D65. From {Path(film.source).name}."
+        ),
+        to_reference=to_reference,
+    )

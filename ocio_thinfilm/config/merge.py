@@ -6,10 +6,11 @@ The result of ``ocio-thinfilm bake --into CONFIG`` is a new ``Config`` (written 
 ``ocio://...``) and adds, leaving everything else of it as it was:
 
 - the three thin-film input spaces (scene-referred);
-- the views ``Constant-Lightness Clip`` and ``ACES Gamut Compression`` (and ``Channel
-  Clamp``) on every SDR display whose display colour space has a supported gamut's
-  primaries and white, and on every HDR display that is one of the registry's, both
-  found by running the display colour space's own processor (:func:`match_displays`);
+- the views ``Constant-Lightness Clip``, ``Constant-Lightness Compress`` and ``ACES
+  Gamut Compression`` (and ``Channel Clamp``) on every SDR display whose display colour
+  space has a supported gamut's primaries and white, and on every HDR display that is
+  one of the registry's, found by running the display colour space's own processor
+  (:func:`match_displays`);
 - named transforms (the clip per matched gamut, the three tables) and ``luts`` on the
   search path, with the LUT files the additions use.
 
